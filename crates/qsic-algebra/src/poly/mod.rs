@@ -1,0 +1,508 @@
+//! Dense univariate polynomials with integer coefficients.
+//!
+//! | entry point | does |
+//! |---|---|
+//! | [`Poly`] arithmetic | `+ − ×`, exact division, derivative, content, primitive part |
+//! | [`Poly::gcd`] | gcd by the subresultant pseudo-remainder sequence ([`gcd`]) |
+//! | [`Poly::squarefree_decomposition`] | Yun's algorithm ([`squarefree`]) |
+//! | [`Poly::count_real_roots_sturm`], [`Poly::count_roots_in_descartes`] | root counts ([`sturm`], [`descartes`]) |
+//! | [`Poly::sign_at`] | exact sign at a rational |
+//!
+//! Rational polynomials are handled as a primitive integer polynomial times a
+//! positive content: every question this crate answers (roots, signs up to a
+//! positive factor, gcds) is invariant under that scaling.
+
+pub mod descartes;
+pub mod gcd;
+pub mod squarefree;
+pub mod sturm;
+
+use crate::sign::Sign;
+use dashu_int::IBig;
+use dashu_ratio::RBig;
+use std::fmt;
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// A polynomial `c₀ + c₁x + … + cₙxⁿ` with integer coefficients.
+///
+/// Invariant: no trailing zero coefficient (the zero polynomial has none at all).
+#[derive(Clone, PartialEq, Eq, Hash, Default)]
+pub struct Poly {
+    c: Vec<IBig>,
+}
+
+impl Poly {
+    /// Builds a polynomial from coefficients, lowest degree first.
+    pub fn new(mut c: Vec<IBig>) -> Poly {
+        while c.last().is_some_and(|v| v.is_zero()) {
+            c.pop();
+        }
+        Poly { c }
+    }
+
+    /// Builds a polynomial from machine-integer coefficients, lowest degree first.
+    ///
+    /// ```
+    /// # use qsic_algebra::Poly;
+    /// let p = Poly::from_i64s(&[-2, 0, 1]); // x² − 2
+    /// assert_eq!(p.degree(), Some(2));
+    /// ```
+    pub fn from_i64s(c: &[i64]) -> Poly {
+        Poly::new(c.iter().map(|&v| IBig::from(v)).collect())
+    }
+
+    /// The zero polynomial.
+    pub fn zero() -> Poly {
+        Poly { c: Vec::new() }
+    }
+
+    /// The constant `v`.
+    pub fn constant(v: IBig) -> Poly {
+        Poly::new(vec![v])
+    }
+
+    /// `∏ (x − rᵢ)` for integer roots `rᵢ`.
+    pub fn from_roots(roots: &[i64]) -> Poly {
+        roots.iter().fold(Poly::constant(IBig::ONE), |acc, &r| {
+            &acc * &Poly::from_i64s(&[-r, 1])
+        })
+    }
+
+    /// `∏ (qᵢx − pᵢ)` for rational roots `pᵢ/qᵢ` given as pairs.
+    pub fn from_rational_roots(roots: &[(i64, i64)]) -> Poly {
+        roots.iter().fold(Poly::constant(IBig::ONE), |acc, &(p, q)| {
+            &acc * &Poly::from_i64s(&[-p, q])
+        })
+    }
+
+    /// The degree, `None` for the zero polynomial.
+    pub fn degree(&self) -> Option<usize> {
+        self.c.len().checked_sub(1)
+    }
+
+    /// `true` for the zero polynomial.
+    pub fn is_zero(&self) -> bool {
+        self.c.is_empty()
+    }
+
+    /// `true` for a nonzero constant.
+    pub fn is_constant(&self) -> bool {
+        self.c.len() <= 1
+    }
+
+    /// Coefficients, lowest degree first.
+    pub fn coeffs(&self) -> &[IBig] {
+        &self.c
+    }
+
+    /// The coefficient of `xⁱ` (zero beyond the degree).
+    pub fn coeff(&self, i: usize) -> IBig {
+        self.c.get(i).cloned().unwrap_or(IBig::ZERO)
+    }
+
+    /// The leading coefficient (zero for the zero polynomial).
+    pub fn leading(&self) -> IBig {
+        self.c.last().cloned().unwrap_or(IBig::ZERO)
+    }
+
+    /// Multiplies every coefficient by `k`.
+    pub fn scale(&self, k: &IBig) -> Poly {
+        Poly::new(self.c.iter().map(|v| v * k).collect())
+    }
+
+    /// The derivative.
+    pub fn derivative(&self) -> Poly {
+        Poly::new(
+            self.c
+                .iter()
+                .enumerate()
+                .skip(1)
+                .map(|(i, v)| v * IBig::from(i))
+                .collect(),
+        )
+    }
+
+    /// The gcd of the coefficients, non-negative (zero for the zero polynomial).
+    pub fn content(&self) -> IBig {
+        let mut g = IBig::ZERO;
+        for v in &self.c {
+            g = crate::int_gcd(&g, v);
+            if g.is_one() {
+                break;
+            }
+        }
+        g
+    }
+
+    /// The primitive part with a positive leading coefficient (zero stays zero).
+    pub fn primitive_part(&self) -> Poly {
+        if self.is_zero() {
+            return Poly::zero();
+        }
+        let mut g = self.content();
+        if self.leading() < IBig::ZERO {
+            g = -g;
+        }
+        Poly {
+            c: self.c.iter().map(|v| v / &g).collect(),
+        }
+    }
+
+    /// Exact division by a nonzero polynomial: `Some(q)` with `self = q·d`, or `None`
+    /// if `d` does not divide `self` in ℤ\[x\].
+    pub fn div_exact(&self, d: &Poly) -> Option<Poly> {
+        let dn = d.degree()?;
+        if self.is_zero() {
+            return Some(Poly::zero());
+        }
+        let n = self.degree()?;
+        if n < dn {
+            return None;
+        }
+        let mut r = self.c.clone();
+        let lead = d.c[dn].clone();
+        let mut q = vec![IBig::ZERO; n - dn + 1];
+        for k in (0..=n - dn).rev() {
+            let top = &r[k + dn];
+            if top.is_zero() {
+                continue;
+            }
+            if !(top % &lead).is_zero() {
+                return None;
+            }
+            let f = top / &lead;
+            for (j, dj) in d.c.iter().enumerate() {
+                r[k + j] -= &f * dj;
+            }
+            q[k] = f;
+        }
+        if r.iter().all(|v| v.is_zero()) {
+            Some(Poly::new(q))
+        } else {
+            None
+        }
+    }
+
+    /// Pseudo-remainder: `lc(d)^(deg self − deg d + 1) · self mod d`.
+    ///
+    /// # Panics
+    /// If `d` is zero.
+    pub fn pseudo_rem(&self, d: &Poly) -> Poly {
+        let dn = d.degree().expect("pseudo_rem by the zero polynomial");
+        let Some(n) = self.degree() else {
+            return Poly::zero();
+        };
+        if n < dn {
+            return self.clone();
+        }
+        let lead = &d.c[dn];
+        let mut r = self.c.clone();
+        for k in (0..=n - dn).rev() {
+            let top = r[k + dn].clone();
+            for v in r.iter_mut() {
+                *v *= lead;
+            }
+            if !top.is_zero() {
+                for (j, dj) in d.c.iter().enumerate() {
+                    r[k + j] -= &top * dj;
+                }
+            }
+            r.truncate(k + dn);
+        }
+        Poly::new(r)
+    }
+
+    /// `p(num/den) · den^n` for `den > 0`: the value at a rational, scaled to an integer
+    /// of the same sign.
+    pub fn eval_homogeneous(&self, num: &IBig, den: &IBig) -> IBig {
+        let n = self.c.len();
+        if n == 0 {
+            return IBig::ZERO;
+        }
+        // Horner on the homogenised form.
+        let mut acc = self.c[n - 1].clone();
+        let mut dpow = IBig::ONE;
+        for v in self.c[..n - 1].iter().rev() {
+            dpow *= den;
+            acc = acc * num + v * &dpow;
+        }
+        acc
+    }
+
+    /// The exact value at a rational.
+    pub fn eval(&self, x: &RBig) -> RBig {
+        let den = IBig::from(x.denominator().clone());
+        let v = self.eval_homogeneous(x.numerator(), &den);
+        let n = self.c.len().saturating_sub(1);
+        RBig::from_parts_signed(v, den.pow(n))
+    }
+
+    /// The exact sign at a rational.
+    pub fn sign_at(&self, x: &RBig) -> Sign {
+        let den = IBig::from(x.denominator().clone());
+        Sign::of(&self.eval_homogeneous(x.numerator(), &den))
+    }
+
+    /// The sign of the leading coefficient, i.e. the sign at +∞.
+    pub fn sign_at_pos_infinity(&self) -> Sign {
+        Sign::of(&self.leading())
+    }
+
+    /// The sign at −∞.
+    pub fn sign_at_neg_infinity(&self) -> Sign {
+        let s = Sign::of(&self.leading());
+        if self.degree().unwrap_or(0) % 2 == 1 {
+            -s
+        } else {
+            s
+        }
+    }
+
+    /// `xⁿ p(1/x)` with `n = deg p`: reverses the coefficients.
+    pub fn reverse(&self) -> Poly {
+        let mut c = self.c.clone();
+        c.reverse();
+        Poly::new(c)
+    }
+
+    /// `p(x + k)` (Taylor shift).
+    pub fn shift(&self, k: &IBig) -> Poly {
+        let mut c = self.c.clone();
+        let n = c.len();
+        if k.is_zero() {
+            return self.clone();
+        }
+        for i in 0..n {
+            for j in (i..n.saturating_sub(1)).rev() {
+                let t = &c[j + 1] * k;
+                c[j] += t;
+            }
+        }
+        Poly::new(c)
+    }
+
+    /// `p(k·x)`.
+    pub fn scale_var(&self, k: &IBig) -> Poly {
+        let mut pw = IBig::ONE;
+        let mut c = Vec::with_capacity(self.c.len());
+        for v in &self.c {
+            c.push(v * &pw);
+            pw *= k;
+        }
+        Poly::new(c)
+    }
+
+    /// `dⁿ p(x/d)`: integer coefficients `cᵢ d^(n−i)`.
+    pub fn scale_var_inverse(&self, d: &IBig) -> Poly {
+        let n = self.c.len();
+        let mut pw = IBig::ONE;
+        let mut c = vec![IBig::ZERO; n];
+        for i in (0..n).rev() {
+            c[i] = &self.c[i] * &pw;
+            pw *= d;
+        }
+        Poly::new(c)
+    }
+
+    /// Number of sign changes in the coefficient sequence (zeros skipped).
+    pub fn sign_variations(&self) -> usize {
+        let mut last = Sign::Zero;
+        let mut v = 0;
+        for c in &self.c {
+            let s = Sign::of(c);
+            if s == Sign::Zero {
+                continue;
+            }
+            if last != Sign::Zero && s != last {
+                v += 1;
+            }
+            last = s;
+        }
+        v
+    }
+
+    /// The multiplicity of `x` as a factor (number of low zero coefficients).
+    pub fn trailing_zeros(&self) -> usize {
+        self.c.iter().take_while(|v| v.is_zero()).count()
+    }
+
+    /// `self / x^k`, assuming the low `k` coefficients are zero.
+    pub fn shift_down(&self, k: usize) -> Poly {
+        Poly::new(self.c[k.min(self.c.len())..].to_vec())
+    }
+
+    /// Largest bit length of a coefficient.
+    pub fn max_bits(&self) -> usize {
+        use dashu_int::ops::{BitTest, UnsignedAbs};
+        self.c
+            .iter()
+            .map(|v| v.unsigned_abs().bit_len())
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// A float approximation of the value at `x` (for display and plotting only).
+    pub fn eval_f64(&self, x: f64) -> f64 {
+        self.c
+            .iter()
+            .rev()
+            .fold(0.0, |acc, v| acc * x + v.to_f64().value())
+    }
+}
+
+impl fmt::Debug for Poly {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Poly({self})")
+    }
+}
+
+impl fmt::Display for Poly {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.is_zero() {
+            return f.write_str("0");
+        }
+        let mut first = true;
+        for (i, v) in self.c.iter().enumerate().rev() {
+            if v.is_zero() {
+                continue;
+            }
+            let neg = *v < IBig::ZERO;
+            if first {
+                if neg {
+                    f.write_str("-")?;
+                }
+            } else {
+                f.write_str(if neg { " - " } else { " + " })?;
+            }
+            first = false;
+            let a = if neg { -v } else { v.clone() };
+            match i {
+                0 => write!(f, "{a}")?,
+                _ => {
+                    if !a.is_one() {
+                        write!(f, "{a}*")?;
+                    }
+                    if i == 1 {
+                        f.write_str("x")?;
+                    } else {
+                        write!(f, "x^{i}")?;
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+impl Add for &Poly {
+    type Output = Poly;
+    fn add(self, rhs: &Poly) -> Poly {
+        let n = self.c.len().max(rhs.c.len());
+        Poly::new(
+            (0..n)
+                .map(|i| match (self.c.get(i), rhs.c.get(i)) {
+                    (Some(a), Some(b)) => a + b,
+                    (Some(a), None) => a.clone(),
+                    (None, Some(b)) => b.clone(),
+                    (None, None) => IBig::ZERO,
+                })
+                .collect(),
+        )
+    }
+}
+
+impl Sub for &Poly {
+    type Output = Poly;
+    fn sub(self, rhs: &Poly) -> Poly {
+        self + &(-rhs)
+    }
+}
+
+impl Neg for &Poly {
+    type Output = Poly;
+    fn neg(self) -> Poly {
+        Poly {
+            c: self.c.iter().map(|v| -v).collect(),
+        }
+    }
+}
+
+impl Mul for &Poly {
+    type Output = Poly;
+    fn mul(self, rhs: &Poly) -> Poly {
+        if self.is_zero() || rhs.is_zero() {
+            return Poly::zero();
+        }
+        let mut c = vec![IBig::ZERO; self.c.len() + rhs.c.len() - 1];
+        for (i, a) in self.c.iter().enumerate() {
+            if a.is_zero() {
+                continue;
+            }
+            for (j, b) in rhs.c.iter().enumerate() {
+                c[i + j] += a * b;
+            }
+        }
+        Poly::new(c)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn arithmetic_and_exact_division() {
+        let p = Poly::from_roots(&[1, 2, -3]);
+        let q = Poly::from_roots(&[2]);
+        let r = p.div_exact(&q).expect("x-2 divides");
+        assert_eq!(r, Poly::from_roots(&[1, -3]));
+        assert!(p.div_exact(&Poly::from_roots(&[5])).is_none());
+        assert!(Poly::from_i64s(&[1, 2]).div_exact(&Poly::from_i64s(&[0, 2])).is_none());
+        assert_eq!(&(&p - &p), &Poly::zero());
+    }
+
+    #[test]
+    fn evaluation_and_signs() {
+        let p = Poly::from_rational_roots(&[(1, 3), (-2, 5)]); // (3x−1)(5x+2)
+        assert_eq!(p.sign_at(&RBig::from_parts_signed(IBig::from(1), IBig::from(3))), Sign::Zero);
+        assert_eq!(p.sign_at(&RBig::ZERO), Sign::Negative);
+        assert_eq!(p.sign_at(&RBig::from(7)), Sign::Positive);
+        assert_eq!(p.eval(&RBig::from(1)), RBig::from(14));
+        assert_eq!(Poly::from_i64s(&[0, 0, 0, -1]).sign_at_neg_infinity(), Sign::Positive);
+    }
+
+    #[test]
+    fn shifts_and_scalings_compose() {
+        let p = Poly::from_i64s(&[3, -1, 4, 1, -5]);
+        let k = IBig::from(3);
+        let shifted = p.shift(&k);
+        for x in -3..4 {
+            assert_eq!(shifted.eval(&RBig::from(x)), p.eval(&RBig::from(x + 3)));
+        }
+        let scaled = p.scale_var_inverse(&IBig::from(2));
+        // 2⁴ p(x/2) at x = 1 is 16 p(1/2)
+        assert_eq!(
+            RBig::from(scaled.eval(&RBig::from(1)).numerator().clone()),
+            p.eval(&RBig::from_parts_signed(IBig::ONE, IBig::from(2))) * RBig::from(16)
+        );
+        assert_eq!(p.reverse().reverse(), p);
+    }
+
+    #[test]
+    fn pseudo_remainder_identity() {
+        let a = Poly::from_i64s(&[5, -3, 0, 2, 7]);
+        let b = Poly::from_i64s(&[1, 0, 3]);
+        let r = a.pseudo_rem(&b);
+        assert!(r.degree().unwrap_or(0) < 2);
+        // lc(b)^3 a − r is divisible by b
+        let lhs = &a.scale(&IBig::from(27)) - &r;
+        assert!(lhs.div_exact(&b).is_some());
+    }
+
+    #[test]
+    fn content_and_primitive_part() {
+        let p = Poly::from_i64s(&[6, -12, -18]);
+        assert_eq!(p.content(), IBig::from(6));
+        assert_eq!(p.primitive_part(), Poly::from_i64s(&[-1, 2, 3]));
+    }
+}

@@ -1,0 +1,88 @@
+//! Square-free decomposition (Yun's algorithm) over ℤ.
+
+use super::Poly;
+
+impl Poly {
+    /// Square-free decomposition `p = c · ∏ fᵢ^mᵢ`: the list of `(fᵢ, mᵢ)`, each `fᵢ`
+    /// primitive, square-free, of positive degree and leading coefficient, pairwise coprime,
+    /// with increasing multiplicities. Constants give an empty list.
+    ///
+    /// ```
+    /// # use qsic_algebra::Poly;
+    /// let p = &Poly::from_roots(&[1, 1, 1, 2]) * &Poly::from_i64s(&[1, 0, 1]);
+    /// let d = p.squarefree_decomposition();
+    /// assert_eq!(d, vec![(&Poly::from_roots(&[2]) * &Poly::from_i64s(&[1, 0, 1]), 1), (Poly::from_roots(&[1]), 3)]);
+    /// ```
+    pub fn squarefree_decomposition(&self) -> Vec<(Poly, usize)> {
+        let mut out = Vec::new();
+        if self.degree().unwrap_or(0) == 0 {
+            return out;
+        }
+        let f = self.primitive_part();
+        let df = f.derivative();
+        let a0 = f.gcd(&df);
+        let mut b = exact(&f, &a0);
+        let c = exact(&df, &a0);
+        let mut d = &c - &b.derivative();
+        let mut i = 1;
+        while b.degree().unwrap_or(0) > 0 {
+            let a = b.gcd(&d);
+            let nb = exact(&b, &a);
+            let nc = exact(&d, &a);
+            if a.degree().unwrap_or(0) > 0 {
+                out.push((a, i));
+            }
+            d = &nc - &nb.derivative();
+            b = nb;
+            i += 1;
+        }
+        out
+    }
+
+    /// The square-free part: the product of the distinct irreducible factors, primitive.
+    pub fn squarefree_part(&self) -> Poly {
+        if self.degree().unwrap_or(0) == 0 {
+            return Poly::constant(dashu_int::IBig::ONE);
+        }
+        let f = self.primitive_part();
+        exact(&f, &f.gcd(&f.derivative())).primitive_part()
+    }
+
+    /// `true` if the polynomial has no repeated factor (constants are square-free).
+    pub fn is_squarefree(&self) -> bool {
+        self.gcd(&self.derivative()).degree().unwrap_or(0) == 0
+    }
+}
+
+/// Division known to be exact in ℤ\[x\] by Gauss's lemma (the divisor is primitive).
+fn exact(a: &Poly, d: &Poly) -> Poly {
+    a.div_exact(d)
+        .expect("division by a primitive gcd factor is exact (Gauss's lemma)")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #[test]
+        fn decomposition_rebuilds_the_polynomial(roots in prop::collection::vec((-6i64..6, 1i64..4), 1..7), k in 1i64..5) {
+            let p = Poly::from_rational_roots(&roots).scale(&dashu_int::IBig::from(k));
+            let d = p.squarefree_decomposition();
+            let rebuilt = d.iter().fold(Poly::from_i64s(&[1]), |acc, (f, m)| {
+                (0..*m).fold(acc, |a, _| &a * f)
+            });
+            prop_assert_eq!(rebuilt, p.primitive_part());
+            for (f, _) in &d {
+                prop_assert!(f.is_squarefree());
+            }
+            // multiplicity of each root equals the number of times it was drawn
+            for &(r, q) in &roots {
+                let count = roots.iter().filter(|&&(r2, q2)| r2 * q == r * q2).count();
+                let m = d.iter().find(|(f, _)| f.div_exact(&Poly::from_i64s(&[-r, q]).primitive_part()).is_some()).map(|(_, m)| *m);
+                prop_assert_eq!(m, Some(count));
+            }
+        }
+    }
+}

@@ -1,0 +1,70 @@
+//! Exact signs.
+
+use dashu_int::IBig;
+use dashu_ratio::RBig;
+use std::ops::{Mul, Neg};
+
+/// The sign of an exact quantity.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Sign {
+    /// Below zero.
+    Negative,
+    /// Exactly zero.
+    Zero,
+    /// Above zero.
+    Positive,
+}
+
+impl Sign {
+    /// The sign of an integer.
+    pub fn of(v: &IBig) -> Sign {
+        if v.is_zero() {
+            Sign::Zero
+        } else if *v < IBig::ZERO {
+            Sign::Negative
+        } else {
+            Sign::Positive
+        }
+    }
+
+    /// The sign of a rational.
+    pub fn of_rational(v: &RBig) -> Sign {
+        Sign::of(v.numerator())
+    }
+
+    /// The sign of a machine integer.
+    pub fn of_i128(v: i128) -> Sign {
+        match v.cmp(&0) {
+            std::cmp::Ordering::Less => Sign::Negative,
+            std::cmp::Ordering::Equal => Sign::Zero,
+            std::cmp::Ordering::Greater => Sign::Positive,
+        }
+    }
+
+    /// `true` for [`Sign::Zero`].
+    pub fn is_zero(self) -> bool {
+        self == Sign::Zero
+    }
+}
+
+impl Neg for Sign {
+    type Output = Sign;
+    fn neg(self) -> Sign {
+        match self {
+            Sign::Negative => Sign::Positive,
+            Sign::Zero => Sign::Zero,
+            Sign::Positive => Sign::Negative,
+        }
+    }
+}
+
+impl Mul for Sign {
+    type Output = Sign;
+    fn mul(self, rhs: Sign) -> Sign {
+        match (self, rhs) {
+            (Sign::Zero, _) | (_, Sign::Zero) => Sign::Zero,
+            (a, b) if a == b => Sign::Positive,
+            _ => Sign::Negative,
+        }
+    }
+}
