@@ -35,6 +35,10 @@ impl AlgebraicReal {
     /// All real roots of `p`, in increasing order, each once.
     pub fn real_roots_of(p: &Poly) -> Vec<AlgebraicReal> {
         let sf = p.squarefree_part();
+        if sf.degree() == Some(1) {
+            let v = RBig::from_parts_signed(-sf.coeff(0), sf.coeff(1));
+            return vec![AlgebraicReal::from_rational(v)];
+        }
         isolate_real_roots(&sf)
             .into_iter()
             .map(|iv| match iv {
@@ -126,11 +130,8 @@ impl AlgebraicReal {
                 RootInterval::Exact(v) => return q.sign_at(v),
                 RootInterval::Open(lo, hi) => {
                     if q.count_roots_in_descartes(lo, hi) == 0 {
-                        let s = q.sign_at(lo);
-                        if !s.is_zero() {
-                            return s;
-                        }
-                        return q.sign_at(hi);
+                        // no root of q inside; its ends may be roots, the midpoint is not
+                        return q.sign_at(&((lo + hi) / RBig::from(2)));
                     }
                 }
             }
@@ -157,8 +158,14 @@ impl AlgebraicReal {
     /// A float approximation (for display only).
     pub fn to_f64(&self) -> f64 {
         let mut a = self.clone();
-        a.refine_to(&RBig::from_parts_signed(1.into(), dashu_int::IBig::ONE << 60));
-        let (lo, hi) = (a.interval.lo().to_f64().value(), a.interval.hi().to_f64().value());
+        a.refine_to(&RBig::from_parts_signed(
+            1.into(),
+            dashu_int::IBig::ONE << 60,
+        ));
+        let (lo, hi) = (
+            a.interval.lo().to_f64().value(),
+            a.interval.hi().to_f64().value(),
+        );
         (lo + hi) / 2.0
     }
 
@@ -296,7 +303,9 @@ mod tests {
         let s3 = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-3, 0, 1]));
         assert!(s2[1] < s3[1] && s3[0] < s2[0]);
         // √2 from another polynomial: (x² − 2)(x − 5)
-        let other = AlgebraicReal::real_roots_of(&(&Poly::from_i64s(&[-2, 0, 1]) * &Poly::from_roots(&[5])));
+        let other = AlgebraicReal::real_roots_of(
+            &(&Poly::from_i64s(&[-2, 0, 1]) * &Poly::from_roots(&[5])),
+        );
         assert_eq!(other[1], s2[1]);
         assert!(other[1].is_valid());
         let between = s2[1].rational_between(&s3[1]);
@@ -304,11 +313,27 @@ mod tests {
         assert!(AlgebraicReal::from_rational(between) < s3[1]);
     }
 
+    /// Regression: the refined interval (1, 2) of √2 had both ends on roots of
+    /// q = 2(x − 1)(x − 2), and the sign was read at an end: zero.
+    #[test]
+    fn sign_with_roots_of_q_on_both_ends() {
+        let r = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 1]));
+        let q = Poly::from_i64s(&[4, -6, 2]);
+        assert_eq!(r[1].sign_of(&q), Sign::Negative);
+        assert_eq!(r[0].sign_of(&q), Sign::Positive);
+        assert_eq!(
+            AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-3, 2]))[0].as_rational(),
+            Some(&RBig::from_parts_signed(3.into(), 2.into()))
+        );
+    }
+
     #[test]
     fn signs_at_roots_with_common_factors() {
         // α = root of x³ − 2 (real), q = (x³ − 2)(x + 1) vanishes, q' does not
         let p = Poly::from_i64s(&[-2, 0, 0, 1]);
-        let a = AlgebraicReal::real_roots_of(&p).pop().expect("one real root");
+        let a = AlgebraicReal::real_roots_of(&p)
+            .pop()
+            .expect("one real root");
         let q = &p * &Poly::from_i64s(&[1, 1]);
         assert!(a.is_root_of(&q));
         assert_eq!(a.multiplicity_in(&(&q * &p)), 2);

@@ -171,7 +171,10 @@ impl SymMatrix4 {
     pub fn det(&self) -> IBig {
         let m = &self.m;
         let mut d = IBig::ZERO;
-        for (c, &cols) in [[1, 2, 3], [0, 2, 3], [0, 1, 3], [0, 1, 2]].iter().enumerate() {
+        for (c, &cols) in [[1, 2, 3], [0, 2, 3], [0, 1, 3], [0, 1, 2]]
+            .iter()
+            .enumerate()
+        {
             if m[0][c].is_zero() {
                 continue;
             }
@@ -230,8 +233,9 @@ impl SymMatrix4 {
                             .collect()
                     })
                     .collect();
-            } else if let Some((i, j)) =
-                (0..n).flat_map(|i| (i + 1..n).map(move |j| (i, j))).find(|&(i, j)| !s[i][j].is_zero())
+            } else if let Some((i, j)) = (0..n)
+                .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
+                .find(|&(i, j)| !s[i][j].is_zero())
             {
                 // 2×2 pivot [[0, b], [b, 0]]: one positive, one negative eigenvalue.
                 pos += 1;
@@ -266,7 +270,8 @@ impl SymMatrix4 {
 
 fn det3(m: &[[IBig; 4]; 4], r: &[usize; 3], c: &[usize; 3]) -> IBig {
     let a = |i: usize, j: usize| &m[r[i]][c[j]];
-    a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)) - a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0))
+    a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1))
+        - a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0))
         + a(0, 2) * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0))
 }
 
@@ -314,7 +319,12 @@ impl MatrixPencil {
                     if e.is_zero() {
                         continue;
                     }
-                    let sub_cols: Vec<usize> = cols.iter().enumerate().filter(|&(i, _)| i != c).map(|(_, &v)| v).collect();
+                    let sub_cols: Vec<usize> = cols
+                        .iter()
+                        .enumerate()
+                        .filter(|&(i, _)| i != c)
+                        .map(|(_, &v)| v)
+                        .collect();
                     let t = &e * &self.minor(&rows[1..], &sub_cols);
                     acc = if c % 2 == 0 { &acc + &t } else { &acc - &t };
                 }
@@ -404,13 +414,46 @@ mod tests {
 
     #[test]
     fn known_inertias() {
-        let d = |a, b, c, e| SymMatrix4::from_i64([[a, 0, 0, 0], [0, b, 0, 0], [0, 0, c, 0], [0, 0, 0, e]]).unwrap();
-        assert_eq!(d(1, 2, 0, -1).inertia(), Inertia { positive: 2, negative: 1, zero: 1 });
-        assert_eq!(d(0, 0, 0, 0).inertia(), Inertia { positive: 0, negative: 0, zero: 4 });
-        assert_eq!(d(-1, -1, -1, -1).inertia().negated(), Inertia { positive: 4, negative: 0, zero: 0 });
+        let d = |a, b, c, e| {
+            SymMatrix4::from_i64([[a, 0, 0, 0], [0, b, 0, 0], [0, 0, c, 0], [0, 0, 0, e]]).unwrap()
+        };
+        assert_eq!(
+            d(1, 2, 0, -1).inertia(),
+            Inertia {
+                positive: 2,
+                negative: 1,
+                zero: 1
+            }
+        );
+        assert_eq!(
+            d(0, 0, 0, 0).inertia(),
+            Inertia {
+                positive: 0,
+                negative: 0,
+                zero: 4
+            }
+        );
+        assert_eq!(
+            d(-1, -1, -1, -1).inertia().negated(),
+            Inertia {
+                positive: 4,
+                negative: 0,
+                zero: 0
+            }
+        );
         let m = SymMatrix4::from_rationals_primitive(&[
-            [RBig::from(2), RBig::from_parts_signed(1.into(), 2.into()), RBig::ZERO, RBig::ZERO],
-            [RBig::from_parts_signed(1.into(), 2.into()), RBig::ZERO, RBig::ZERO, RBig::ZERO],
+            [
+                RBig::from(2),
+                RBig::from_parts_signed(1.into(), 2.into()),
+                RBig::ZERO,
+                RBig::ZERO,
+            ],
+            [
+                RBig::from_parts_signed(1.into(), 2.into()),
+                RBig::ZERO,
+                RBig::ZERO,
+                RBig::ZERO,
+            ],
             [RBig::ZERO, RBig::ZERO, RBig::from(4), RBig::ZERO],
             [RBig::ZERO; 4],
         ]);

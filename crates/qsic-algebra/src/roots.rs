@@ -66,10 +66,8 @@ pub fn isolate_real_roots(p: &Poly) -> Vec<RootInterval> {
     }
     let sf = p.squarefree_part();
     let mut out = Vec::new();
-    // Pull out the root at zero exactly; it keeps the rest of the search away from 0.
-    let z = sf.trailing_zeros();
-    let q = sf.shift_down(z);
-    let k = root_bound_log2(&q);
+    let q = &sf;
+    let k = root_bound_log2(q);
     // x = 2^k (2t − 1), t ∈ (0, 1) covers (−2^k, 2^k).
     let two_k = IBig::ONE << k;
     let unit = q.shift(&-&two_k).scale_var(&(&two_k * IBig::from(2)));
@@ -86,9 +84,6 @@ pub fn isolate_real_roots(p: &Poly) -> Vec<RootInterval> {
         } else {
             out.push(fix_ends(&sf, to_x(&c), to_x(&(&c + IBig::ONE))));
         }
-    }
-    if z > 0 {
-        out.push(RootInterval::Exact(RBig::ZERO));
     }
     out.sort_by(|a, b| a.lo().cmp(b.lo()));
     out
@@ -118,28 +113,32 @@ fn bisect(p: Poly, c: IBig, level: usize, out: &mut Vec<(IBig, usize, bool)>) {
     }
 }
 
-/// Moves an end of an isolating interval of the square-free `p` off a root of `p`
-/// (ends of bisection intervals can fall on an exact rational root found beside them).
+/// Moves the ends of an interval holding exactly one root of the square-free `p` in its
+/// interior off the roots of `p` (ends of bisection intervals can fall on exact rational
+/// roots found beside them). The search uses `p` with its roots at the ends divided out,
+/// which changes sign across the interior root.
 fn fix_ends(p: &Poly, lo: RBig, hi: RBig) -> RootInterval {
+    let mut q = p.clone();
+    for end in [&lo, &hi] {
+        if q.sign_at(end).is_zero() {
+            let lin = Poly::new(vec![
+                -end.numerator().clone(),
+                IBig::from(end.denominator().clone()),
+            ]);
+            q = q
+                .div_exact(&lin)
+                .expect("a rational root gives a primitive linear factor");
+        }
+    }
     let two = RBig::from(2);
     let (mut lo, mut hi) = (lo, hi);
+    let s_lo = q.sign_at(&lo);
     while p.sign_at(&lo).is_zero() || p.sign_at(&hi).is_zero() {
         let mid = (&lo + &hi) / &two;
-        let s_mid = p.sign_at(&mid);
-        if s_mid.is_zero() {
-            return RootInterval::Exact(mid);
-        }
-        if p.sign_at(&lo).is_zero() {
-            // the root is in (mid, hi) iff the signs at mid and hi differ
-            if p.sign_at(&hi) * s_mid == Sign::Negative {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        } else if p.sign_at(&lo) * s_mid == Sign::Negative {
-            hi = mid;
-        } else {
-            lo = mid;
+        match q.sign_at(&mid) {
+            Sign::Zero => return RootInterval::Exact(mid),
+            s if s == s_lo => lo = mid,
+            _ => hi = mid,
         }
     }
     RootInterval::Open(lo, hi)
@@ -190,14 +189,21 @@ mod tests {
         assert_eq!(r.len(), expected, "{p}");
         let sf = p.squarefree_part();
         for w in r.windows(2) {
-            assert!(w[0].hi() <= w[1].lo() && w[0].lo() < w[1].lo(), "{p}: {w:?}");
+            assert!(
+                w[0].hi() <= w[1].lo() && w[0].lo() < w[1].lo(),
+                "{p}: {w:?}"
+            );
         }
         for iv in &r {
             match iv {
                 RootInterval::Exact(v) => assert_eq!(sf.sign_at(v), Sign::Zero),
                 RootInterval::Open(l, h) => {
                     assert!(l < h);
-                    assert_eq!(sf.sign_at(l) * sf.sign_at(h), Sign::Negative, "{p} on ({l}, {h})");
+                    assert_eq!(
+                        sf.sign_at(l) * sf.sign_at(h),
+                        Sign::Negative,
+                        "{p} on ({l}, {h})"
+                    );
                 }
             }
         }
@@ -207,15 +213,20 @@ mod tests {
     fn wilkinson_and_clustered() {
         let roots: Vec<i64> = (1..=20).collect();
         check_isolation(&Poly::from_roots(&roots), 20);
-        check_isolation(&Poly::from_rational_roots(&[(1, 1000), (2, 1000), (1, 999), (-1, 1)]), 4);
+        check_isolation(
+            &Poly::from_rational_roots(&[(1, 1000), (2, 1000), (1, 999), (-1, 1)]),
+            4,
+        );
         // Mignotte-like: x^4 − 2(100x − 1)² has two roots very close to 1/100
-        let m = &Poly::from_i64s(&[0, 0, 0, 0, 1]) - &(&Poly::from_i64s(&[-1, 100]) * &Poly::from_i64s(&[-2, 200]));
+        let m = &Poly::from_i64s(&[0, 0, 0, 0, 1])
+            - &(&Poly::from_i64s(&[-1, 100]) * &Poly::from_i64s(&[-2, 200]));
         check_isolation(&m, 4);
     }
 
     #[test]
     fn multiple_and_irrational_roots() {
-        let p = &(&Poly::from_roots(&[2, 2, 2]) * &Poly::from_i64s(&[-2, 0, 1])) * &Poly::from_i64s(&[-2, 0, 1]);
+        let p = &(&Poly::from_roots(&[2, 2, 2]) * &Poly::from_i64s(&[-2, 0, 1]))
+            * &Poly::from_i64s(&[-2, 0, 1]);
         check_isolation(&p, 3);
         check_isolation(&Poly::from_i64s(&[1, 0, 1]), 0);
         check_isolation(&Poly::from_i64s(&[0, 0, 5]), 1);
@@ -225,7 +236,8 @@ mod tests {
     fn huge_coefficients() {
         let big = IBig::from(10).pow(45);
         // (x − 10^45)(x + 1)(10^45 x − 1)
-        let p = &(&Poly::new(vec![-big.clone(), IBig::ONE]) * &Poly::from_i64s(&[1, 1])) * &Poly::new(vec![IBig::from(-1), big]);
+        let p = &(&Poly::new(vec![-big.clone(), IBig::ONE]) * &Poly::from_i64s(&[1, 1]))
+            * &Poly::new(vec![IBig::from(-1), big]);
         check_isolation(&p, 3);
     }
 
@@ -250,5 +262,39 @@ mod tests {
                 prop_assert!(iv.lo() <= v && v <= iv.hi());
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod regression_tests {
+    use super::*;
+
+    /// Regression: the interval around −4/3 had both ends on the exact roots −3/2 and −5/4.
+    #[test]
+    fn interval_ends_on_exact_neighbour_roots() {
+        let p = Poly::from_rational_roots(&[(-3, 2), (-4, 3), (-5, 4), (-1, 1)]);
+        let r = isolate_real_roots(&p);
+        assert_eq!(r.len(), 4);
+        for iv in &r {
+            if let RootInterval::Open(lo, hi) = iv {
+                assert_eq!(p.sign_at(lo) * p.sign_at(hi), Sign::Negative);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod regression_zero_root {
+    use super::*;
+
+    /// Regression: with the root 0 pulled out first, the interval of the root 2 of
+    /// x² − 2x was reported as (−8, 8), which also holds 0.
+    #[test]
+    fn root_at_zero_and_another() {
+        let r = isolate_real_roots(&Poly::from_i64s(&[0, -2, 1]));
+        assert_eq!(r.len(), 2);
+        assert_eq!(r[0], RootInterval::Exact(RBig::ZERO));
+        assert!(r[1].lo() >= &RBig::ZERO && r[1].hi() <= &RBig::from(8));
+        assert!(!(r[1].lo() < &RBig::ZERO && r[1].hi() > &RBig::ZERO));
     }
 }

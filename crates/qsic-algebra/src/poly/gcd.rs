@@ -87,8 +87,14 @@ mod tests {
         let a = &c * &Poly::from_i64s(&[1, 0, 1]);
         let b = &c * &Poly::from_roots(&[4, 4, -9]);
         assert_eq!(a.gcd(&b), c.primitive_part());
-        assert_eq!(Poly::from_roots(&[1]).gcd(&Poly::from_roots(&[2])), Poly::from_i64s(&[1]));
-        assert_eq!(Poly::zero().gcd(&Poly::from_i64s(&[-4, -2])), Poly::from_i64s(&[2, 1]));
+        assert_eq!(
+            Poly::from_roots(&[1]).gcd(&Poly::from_roots(&[2])),
+            Poly::from_i64s(&[1])
+        );
+        assert_eq!(
+            Poly::zero().gcd(&Poly::from_i64s(&[-4, -2])),
+            Poly::from_i64s(&[2, 1])
+        );
     }
 
     #[test]

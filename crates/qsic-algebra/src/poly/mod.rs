@@ -70,9 +70,11 @@ impl Poly {
 
     /// `∏ (qᵢx − pᵢ)` for rational roots `pᵢ/qᵢ` given as pairs.
     pub fn from_rational_roots(roots: &[(i64, i64)]) -> Poly {
-        roots.iter().fold(Poly::constant(IBig::ONE), |acc, &(p, q)| {
-            &acc * &Poly::from_i64s(&[-p, q])
-        })
+        roots
+            .iter()
+            .fold(Poly::constant(IBig::ONE), |acc, &(p, q)| {
+                &acc * &Poly::from_i64s(&[-p, q])
+            })
     }
 
     /// The degree, `None` for the zero polynomial.
@@ -457,18 +459,26 @@ mod tests {
         let r = p.div_exact(&q).expect("x-2 divides");
         assert_eq!(r, Poly::from_roots(&[1, -3]));
         assert!(p.div_exact(&Poly::from_roots(&[5])).is_none());
-        assert!(Poly::from_i64s(&[1, 2]).div_exact(&Poly::from_i64s(&[0, 2])).is_none());
+        assert!(Poly::from_i64s(&[1, 2])
+            .div_exact(&Poly::from_i64s(&[0, 2]))
+            .is_none());
         assert_eq!(&(&p - &p), &Poly::zero());
     }
 
     #[test]
     fn evaluation_and_signs() {
         let p = Poly::from_rational_roots(&[(1, 3), (-2, 5)]); // (3x−1)(5x+2)
-        assert_eq!(p.sign_at(&RBig::from_parts_signed(IBig::from(1), IBig::from(3))), Sign::Zero);
+        assert_eq!(
+            p.sign_at(&RBig::from_parts_signed(IBig::from(1), IBig::from(3))),
+            Sign::Zero
+        );
         assert_eq!(p.sign_at(&RBig::ZERO), Sign::Negative);
         assert_eq!(p.sign_at(&RBig::from(7)), Sign::Positive);
         assert_eq!(p.eval(&RBig::from(1)), RBig::from(14));
-        assert_eq!(Poly::from_i64s(&[0, 0, 0, -1]).sign_at_neg_infinity(), Sign::Positive);
+        assert_eq!(
+            Poly::from_i64s(&[0, 0, 0, -1]).sign_at_neg_infinity(),
+            Sign::Positive
+        );
     }
 
     #[test]

@@ -107,7 +107,8 @@ mod tests {
     #[test]
     fn clustered_roots() {
         // roots 1/1000, 2/1000, 3/1000 and a conjugate pair
-        let p = &Poly::from_rational_roots(&[(1, 1000), (2, 1000), (3, 1000)]) * &Poly::from_i64s(&[1, 1, 1]);
+        let p = &Poly::from_rational_roots(&[(1, 1000), (2, 1000), (3, 1000)])
+            * &Poly::from_i64s(&[1, 1, 1]);
         assert_eq!(p.count_real_roots_sturm(), 3);
     }
 }

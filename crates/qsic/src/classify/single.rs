@@ -1,0 +1,90 @@
+//! A quadric paired with itself: the "intersection" is the quadric, typed by its inertia.
+
+use super::morphology::{
+    ComplexType, Component, ComponentKind, Description, Morphology, PencilKind, RealType,
+};
+use super::Classification;
+use crate::quadric::Quadric;
+
+/// Classifies the single quadric `q` (taxonomy.md, "Single quadric"): by rank and by its
+/// inertia up to sign.
+pub fn classify_single(q: &Quadric) -> Classification {
+    let inertia = q.integer_matrix().inertia();
+    let (hi, lo) = if inertia.positive >= inertia.negative {
+        (inertia.positive, inertia.negative)
+    } else {
+        (inertia.negative, inertia.positive)
+    };
+    let comp = |kind, multiplicity, count, closed| Component {
+        kind,
+        multiplicity,
+        count,
+        closed,
+    };
+    use ComplexType as C;
+    use ComponentKind as K;
+    use RealType as R;
+    let (complex, real, components, summary) = match (hi, lo) {
+        (4, 0) => (
+            C::SmoothQuadric,
+            R::Empty,
+            vec![],
+            "a smooth quadric without real points",
+        ),
+        (3, 1) => (
+            C::SmoothQuadric,
+            R::Inertia31,
+            vec![comp(K::Quadric, 1, 1, Some(true))],
+            "an oval quadric (ellipsoid, hyperboloid of two sheets or elliptic paraboloid)",
+        ),
+        (2, 2) => (
+            C::SmoothQuadric,
+            R::Inertia22,
+            vec![comp(K::Quadric, 1, 1, Some(false))],
+            "a ruled quadric (hyperboloid of one sheet or hyperbolic paraboloid)",
+        ),
+        (3, 0) => (
+            C::Cone,
+            R::Point,
+            vec![comp(K::Point, 1, 1, Some(true))],
+            "an imaginary cone with a real vertex",
+        ),
+        (2, 1) => (
+            C::Cone,
+            R::RealCone,
+            vec![comp(K::Quadric, 1, 1, Some(false))],
+            "a real cone or cylinder",
+        ),
+        (2, 0) => (
+            C::PairOfPlanes,
+            R::Line,
+            vec![comp(K::Line, 1, 1, Some(false))],
+            "two conjugate planes meeting in a real line",
+        ),
+        (1, 1) => (
+            C::PairOfPlanes,
+            R::Same,
+            vec![comp(K::Plane, 1, 2, Some(false))],
+            "two real planes",
+        ),
+        _ => (
+            C::DoublePlane,
+            R::Same,
+            vec![comp(K::Plane, 2, 1, Some(false))],
+            "a real plane counted twice",
+        ),
+    };
+    Classification {
+        pencil: PencilKind::Single,
+        case: None,
+        segre: None,
+        signature: None,
+        index_sequence: None,
+        morphology: Some(Morphology { complex, real }),
+        description: Some(Description {
+            components,
+            singular_points: vec![],
+            summary,
+        }),
+    }
+}

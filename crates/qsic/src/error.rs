@@ -1,0 +1,95 @@
+//! The one error type of the `qsic` crate.
+
+use thiserror::Error;
+
+/// Everything that can go wrong when building or reading a quadric.
+///
+/// A singular pencil, a quadric paired with itself or an empty intersection are
+/// *classes*, never errors: classification of two valid quadrics cannot fail.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+pub enum Error {
+    /// A polynomial or number string could not be read.
+    ///
+    /// `column` is the 1-based character position in the string where the problem starts.
+    #[error("syntax error at column {column}: {message}")]
+    Syntax {
+        /// 1-based character column.
+        column: usize,
+        /// What was expected or found.
+        message: String,
+    },
+    /// A variable other than x, y, z, w.
+    #[error("unknown variable '{name}' at column {column} (allowed: x, y, z, w)")]
+    UnknownVariable {
+        /// The name as written.
+        name: String,
+        /// 1-based character column.
+        column: usize,
+    },
+    /// A term whose degree is not allowed: above 2, or, in a form that uses `w`, not exactly 2.
+    #[error("{message}")]
+    Degree {
+        /// Which term and why.
+        message: String,
+    },
+    /// A matrix that is not 4×4.
+    #[error("a quadric matrix must be 4x4, got {rows} rows{}", cols.map(|c| format!(" and a row of {c} entries")).unwrap_or_default())]
+    Shape {
+        /// Number of rows given.
+        rows: usize,
+        /// Length of the first row that is not 4 long, if any.
+        cols: Option<usize>,
+    },
+    /// A matrix with `a[row][col] != a[col][row]` (0-based indices).
+    #[error("matrix is not symmetric: entry ({row},{col}) = {a} but ({col},{row}) = {b}")]
+    NotSymmetric {
+        /// 0-based row.
+        row: usize,
+        /// 0-based column.
+        col: usize,
+        /// The value at (row, col).
+        a: String,
+        /// The value at (col, row).
+        b: String,
+    },
+    /// All coefficients are zero: that is not a quadric.
+    #[error("the zero form is not a quadric")]
+    ZeroQuadric,
+    /// A NaN or infinite floating-point value.
+    #[error("entry ({row},{col}) is not a finite number")]
+    NotFinite {
+        /// 0-based row.
+        row: usize,
+        /// 0-based column.
+        col: usize,
+    },
+    /// A number that cannot be read (e.g. a zero denominator).
+    #[error("bad number '{text}': {message}")]
+    BadNumber {
+        /// The number as written.
+        text: String,
+        /// Why it was rejected.
+        message: String,
+    },
+    /// An input larger than the documented limits (see [`crate::limits`]).
+    #[error("input exceeds a limit: {what} (limit {limit})")]
+    Limit {
+        /// What is too large.
+        what: String,
+        /// The limit in force.
+        limit: usize,
+    },
+    /// An entry of a matrix given as text could not be read (see [`crate::io::quadric_from_rows`]).
+    #[error("entry ({row},{col}): {source}")]
+    Entry {
+        /// 0-based row.
+        row: usize,
+        /// 0-based column.
+        col: usize,
+        /// Why the entry was refused: [`Error::BadNumber`] or [`Error::Limit`].
+        source: Box<Error>,
+    },
+    /// An invalid parameter of a shape constructor (e.g. a non-positive squared radius).
+    #[error("invalid shape parameter: {0}")]
+    InvalidShape(String),
+}

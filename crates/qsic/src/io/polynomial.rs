@@ -1,0 +1,985 @@
+//! Reading a quadric from a polynomial string in `x, y, z, w`: a tokenizer, a
+//! recursive-descent reader that expands as it goes into the 15 monomials of
+//! degree ≤ 2, then homogenization and the symmetric matrix.
+
+use super::number::{check_digits, excerpt, scan_numeral, NumeralError};
+use crate::error::Error;
+use crate::limits::{
+    MAX_COEFFICIENT_BITS, MAX_EXPANSION_BITS, MAX_INPUT_LEN, MAX_NESTING_DEPTH, MAX_POWER_EXPONENT,
+};
+use crate::quadric::Quadric;
+use dashu_int::ops::BitTest;
+use dashu_ratio::RBig;
+
+/// Reads a quadric from a polynomial in `x, y, z, w` of degree at most 2.
+///
+/// Two readings, decided on the expanded polynomial:
+/// - if `w` occurs in a monomial with a nonzero coefficient, the polynomial is a
+///   *projective form* and every monomial must have degree exactly 2;
+/// - otherwise it is an *affine equation* in `x, y, z` of degree ≤ 2,
+///   homogenized with `w`: a constant `c` becomes `c*w^2`, a linear term
+///   `a*x` becomes `a*x*w`. A polynomial without variables such as `5` thus
+///   reads as `5*w^2`, the plane at infinity counted twice.
+///
+/// The matrix `A` of the result satisfies `XᵀAX = p(X)`: `A[i][i]` is the
+/// coefficient of `vᵢ²` and `A[i][j] = A[j][i]` half that of `vᵢvⱼ`.
+///
+/// # Grammar
+/// With the usual precedence (power over product over sum):
+///
+/// ```text
+/// sum     := term (('+' | '-') term)*
+/// term    := sign* power (('*' | '/' | ε) sign* power)*     ε: juxtaposition before a variable or '('
+/// power   := atom (('^' | '**') integer)?
+/// atom    := number | 'x' | 'y' | 'z' | 'w' | '(' sum ')'
+/// ```
+///
+/// Variables are lower case. Numbers are unsigned numerals as in
+/// [`parse_number`](super::parse_number) (`3`, `0.25`, `1e-3`); a fraction is
+/// a division (`1/2*x^2`), and only division by a nonzero number is allowed.
+/// Juxtaposition is a product of the same precedence as `*`, so `2x^2` is
+/// `2*x^2`, `3 x*y` is `3*x*y`, `(x+1)(x-1)` a product, and `1/2x` is
+/// `(1/2)*x`; a number after a factor (`x 2`) is an error. A sign binds looser
+/// than a power: `-x^2` is `-(x^2)`. Exponents are integers from 0 to
+/// [`MAX_POWER_EXPONENT`]; chained powers `x^2^2` are refused as ambiguous.
+///
+/// Parentheses are expanded exactly. A product or power whose degree exceeds 2
+/// is refused at once, even if later terms would cancel it (`x^3 - x^3`), so
+/// no expansion grows beyond 15 coefficients. Reading takes time about linear
+/// in the length of the text for inputs of ordinary numbers.
+///
+/// # Errors
+/// - [`Error::Syntax`] with the 1-based character column for malformed input,
+///   division by zero or by a non-constant expression;
+/// - [`Error::UnknownVariable`] for any name but `x, y, z, w` (including `X`);
+/// - [`Error::Degree`] for a product or power of degree above 2, or, in a form
+///   using `w`, a monomial of degree 0 or 1;
+/// - [`Error::ZeroQuadric`] if the polynomial expands to zero (`x^2 - x^2`);
+/// - [`Error::Limit`] beyond the bounds of [`crate::limits`] (input length,
+///   digits, exponents, nesting, coefficient size).
+///
+/// # Examples
+/// ```
+/// use qsic::io::parse_quadric;
+///
+/// // The unit sphere, homogenized: diag(1, 1, 1, -1).
+/// let sphere = parse_quadric("x^2 + y^2 + z^2 - 1")?;
+/// assert_eq!(sphere.to_polynomial_string(), "x^2 + y^2 + z^2 - w^2");
+///
+/// // Parentheses are expanded; `2*x*y` contributes 1 to A[0][1] and A[1][0].
+/// let q = parse_quadric("(x+y)^2 - 2*(z-w)*(z+w)")?;
+/// assert_eq!(q.entry(0, 1), &1.into());
+/// assert_eq!(q.entry(3, 3), &2.into());
+///
+/// assert!(parse_quadric("x^2 + w").is_err()); // a form using w must be homogeneous
+/// # Ok::<(), qsic::error::Error>(())
+/// ```
+pub fn parse_quadric(text: &str) -> Result<Quadric, Error> {
+    if text.len() > MAX_INPUT_LEN {
+        return Err(Error::Limit {
+            what: format!("{} bytes in a polynomial string", text.len()),
+            limit: MAX_INPUT_LEN,
+        });
+    }
+    let mut budget = Budget {
+        left: MAX_EXPANSION_BITS,
+    };
+    let tokens = tokenize(text, &mut budget)?;
+    let mut parser = Parser {
+        text,
+        tokens,
+        pos: 0,
+        depth: 0,
+        budget,
+    };
+    let poly = parser.parse()?;
+    quadric_from_poly(poly)
+}
+
+/// The variables, in matrix order.
+const VARIABLES: [char; 4] = ['x', 'y', 'z', 'w'];
+
+/// Number of monomials of degree ≤ 2 in four variables.
+const N: usize = 15;
+
+/// The monomials of degree ≤ 2 as exponent vectors: 1, then x, y, z, w, then
+/// x², xy, xz, xw, y², yz, yw, z², zw, w².
+const MONOMIALS: [[u8; 4]; N] = [
+    [0, 0, 0, 0],
+    [1, 0, 0, 0],
+    [0, 1, 0, 0],
+    [0, 0, 1, 0],
+    [0, 0, 0, 1],
+    [2, 0, 0, 0],
+    [1, 1, 0, 0],
+    [1, 0, 1, 0],
+    [1, 0, 0, 1],
+    [0, 2, 0, 0],
+    [0, 1, 1, 0],
+    [0, 1, 0, 1],
+    [0, 0, 2, 0],
+    [0, 0, 1, 1],
+    [0, 0, 0, 2],
+];
+
+/// Total degree of monomial `k`.
+fn degree_of(k: usize) -> usize {
+    MONOMIALS[k].iter().map(|&e| usize::from(e)).sum()
+}
+
+/// Index of the monomial with exponents `e`, if its degree is at most 2.
+fn index_of(e: [u8; 4]) -> Option<usize> {
+    MONOMIALS.iter().position(|&m| m == e)
+}
+
+/// Monomial `k` written as in [`Quadric::to_polynomial_string`] (`x^2`, `x*y`, `1`).
+fn monomial_text(k: usize) -> String {
+    let factors: Vec<String> = MONOMIALS[k]
+        .iter()
+        .zip(VARIABLES)
+        .filter(|(&e, _)| e > 0)
+        .map(|(&e, v)| {
+            if e == 1 {
+                v.to_string()
+            } else {
+                format!("{v}^{e}")
+            }
+        })
+        .collect();
+    if factors.is_empty() {
+        "1".into()
+    } else {
+        factors.join("*")
+    }
+}
+
+/// A term `c·monomial` as text, e.g. `3*x`, `-x*w`, `-1/2`.
+fn term_text(c: &RBig, k: usize) -> String {
+    if k == 0 {
+        c.to_string()
+    } else if c.is_one() {
+        monomial_text(k)
+    } else if *c == RBig::NEG_ONE {
+        format!("-{}", monomial_text(k))
+    } else {
+        format!("{c}*{}", monomial_text(k))
+    }
+}
+
+/// What is left of [`MAX_EXPANSION_BITS`] for reading one polynomial.
+#[derive(Debug)]
+struct Budget {
+    left: usize,
+}
+
+impl Budget {
+    /// Accounts for a newly computed number: refuses it if it is larger than
+    /// [`MAX_COEFFICIENT_BITS`] or the total exceeds [`MAX_EXPANSION_BITS`].
+    fn charge(&mut self, c: &RBig) -> Result<(), Error> {
+        let bits = c.numerator().bit_len() + c.denominator().bit_len();
+        if bits > MAX_COEFFICIENT_BITS {
+            return Err(Error::Limit {
+                what: format!("a coefficient of {bits} bits while expanding the polynomial"),
+                limit: MAX_COEFFICIENT_BITS,
+            });
+        }
+        self.left = self.left.checked_sub(bits).ok_or_else(|| Error::Limit {
+            what: "total size of the numbers computed while expanding the polynomial, in bits"
+                .into(),
+            limit: MAX_EXPANSION_BITS,
+        })?;
+        Ok(())
+    }
+}
+
+/// A polynomial of degree ≤ 2 in x, y, z, w: one coefficient per entry of [`MONOMIALS`].
+///
+/// Boxed, so that the frames of the recursive reader stay small.
+#[derive(Clone, Debug, Default, PartialEq)]
+struct Poly {
+    c: Box<[RBig; N]>,
+}
+
+impl Poly {
+    fn constant(value: RBig) -> Self {
+        let mut p = Poly::default();
+        p.c[0] = value;
+        p
+    }
+
+    fn variable(i: usize) -> Self {
+        let mut p = Poly::default();
+        p.c[1 + i] = RBig::ONE;
+        p
+    }
+
+    fn is_zero(&self) -> bool {
+        self.c.iter().all(RBig::is_zero)
+    }
+
+    /// Degree of the highest nonzero monomial; 0 for the zero polynomial.
+    fn degree(&self) -> usize {
+        (0..N)
+            .filter(|&k| !self.c[k].is_zero())
+            .map(degree_of)
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// The constant value, if no variable has a nonzero coefficient.
+    fn as_constant(&self) -> Option<&RBig> {
+        self.c[1..].iter().all(RBig::is_zero).then_some(&self.c[0])
+    }
+
+    fn negate(&mut self) {
+        for c in self.c.iter_mut() {
+            *c = -std::mem::take(c);
+        }
+    }
+
+    /// `self += sign · other`.
+    fn add_assign(
+        &mut self,
+        other: &Poly,
+        negative: bool,
+        budget: &mut Budget,
+    ) -> Result<(), Error> {
+        for (a, b) in self.c.iter_mut().zip(other.c.iter()) {
+            if !b.is_zero() {
+                if negative {
+                    *a -= b;
+                } else {
+                    *a += b;
+                }
+                budget.charge(a)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// `self · factor` for a rational `factor`.
+    fn scale(&mut self, factor: &RBig, budget: &mut Budget) -> Result<(), Error> {
+        for c in self.c.iter_mut() {
+            if !c.is_zero() {
+                *c *= factor;
+                budget.charge(c)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The product, or `Ok(Err(degree))` if its degree would exceed 2.
+    ///
+    /// The degree of a product is the sum of the degrees (no zero divisors), so
+    /// the refusal is exact and decided before any multiplication.
+    fn mul(&self, other: &Poly, budget: &mut Budget) -> Result<Result<Poly, usize>, Error> {
+        let degree = if self.is_zero() || other.is_zero() {
+            0
+        } else {
+            self.degree() + other.degree()
+        };
+        if degree > 2 {
+            return Ok(Err(degree));
+        }
+        let mut out = Poly::default();
+        for (i, a) in self.c.iter().enumerate().filter(|(_, a)| !a.is_zero()) {
+            for (j, b) in other.c.iter().enumerate().filter(|(_, b)| !b.is_zero()) {
+                let mut e = MONOMIALS[i];
+                for (ek, fk) in e.iter_mut().zip(MONOMIALS[j]) {
+                    *ek += fk;
+                }
+                // degree(i) + degree(j) ≤ 2, so the monomial is in the table.
+                if let Some(k) = index_of(e) {
+                    out.c[k] += a * b;
+                    budget.charge(&out.c[k])?;
+                }
+            }
+        }
+        Ok(Ok(out))
+    }
+}
+
+/// A lexical token.
+#[derive(Debug)]
+enum Tok {
+    Number(RBig),
+    Variable(usize),
+    Plus,
+    Minus,
+    Star,
+    Slash,
+    /// `^` or `**`.
+    Power,
+    Open,
+    Close,
+    End,
+}
+
+/// A token with its place: 1-based character column and byte range.
+#[derive(Debug)]
+struct Token {
+    tok: Tok,
+    column: usize,
+    start: usize,
+    end: usize,
+}
+
+/// Splits `text` into tokens, ending with [`Tok::End`].
+fn tokenize(text: &str, budget: &mut Budget) -> Result<Vec<Token>, Error> {
+    let mut tokens = Vec::new();
+    let mut column = 1;
+    let mut rest = text.char_indices().peekable();
+    while let Some((start, ch)) = rest.next() {
+        let mut len = ch.len_utf8();
+        let mut width = 1;
+        let tok = match ch {
+            c if c.is_whitespace() => {
+                column += 1;
+                continue;
+            }
+            '+' => Tok::Plus,
+            '-' => Tok::Minus,
+            '/' => Tok::Slash,
+            '^' => Tok::Power,
+            '(' => Tok::Open,
+            ')' => Tok::Close,
+            '*' => {
+                if rest.next_if(|&(_, c)| c == '*').is_some() {
+                    len = 2;
+                    width = 2;
+                    Tok::Power
+                } else {
+                    Tok::Star
+                }
+            }
+            '0'..='9' | '.' => {
+                let (numeral, n) = scan_numeral(&text[start..]).map_err(|e| match e {
+                    NumeralError::Limit(limit) => limit,
+                    NumeralError::Malformed { message, .. } => Error::Syntax { column, message },
+                })?;
+                check_digits(numeral.digit_count())?;
+                // A numeral is ASCII: its byte length is its width in characters.
+                len = n;
+                width = n;
+                while rest.next_if(|&(i, _)| i < start + n).is_some() {}
+                let value = numeral.value();
+                budget.charge(&value)?;
+                Tok::Number(value)
+            }
+            c if c.is_alphabetic() || c == '_' => {
+                while rest
+                    .next_if(|&(_, c)| c.is_alphabetic() || c.is_ascii_digit() || c == '_')
+                    .is_some()
+                {}
+                let end = rest.peek().map_or(text.len(), |&(i, _)| i);
+                let name = &text[start..end];
+                match VARIABLES
+                    .iter()
+                    .position(|v| name.len() == 1 && name.starts_with(*v))
+                {
+                    Some(i) => {
+                        len = end - start;
+                        Tok::Variable(i)
+                    }
+                    None => {
+                        return Err(Error::UnknownVariable {
+                            name: excerpt(name),
+                            column,
+                        })
+                    }
+                }
+            }
+            c => {
+                return Err(Error::Syntax {
+                    column,
+                    message: format!("unexpected character '{c}'"),
+                })
+            }
+        };
+        tokens.push(Token {
+            tok,
+            column,
+            start,
+            end: start + len,
+        });
+        column += width;
+    }
+    tokens.push(Token {
+        tok: Tok::End,
+        column,
+        start: text.len(),
+        end: text.len(),
+    });
+    Ok(tokens)
+}
+
+/// Recursive-descent reader over the tokens, expanding as it goes.
+struct Parser<'a> {
+    text: &'a str,
+    tokens: Vec<Token>,
+    pos: usize,
+    depth: usize,
+    budget: Budget,
+}
+
+impl Parser<'_> {
+    fn peek(&self) -> &Token {
+        // The last token is End and is never consumed, so `pos` stays in range.
+        &self.tokens[self.pos.min(self.tokens.len() - 1)]
+    }
+
+    fn advance(&mut self) {
+        if !matches!(self.peek().tok, Tok::End) {
+            self.pos += 1;
+        }
+    }
+
+    fn syntax(column: usize, message: impl Into<String>) -> Error {
+        Error::Syntax {
+            column,
+            message: message.into(),
+        }
+    }
+
+    /// What the current token is, for messages.
+    fn describe(&self) -> String {
+        let t = self.peek();
+        match t.tok {
+            Tok::End => "the end of the input".into(),
+            Tok::Number(_) => format!("the number '{}'", excerpt(&self.text[t.start..t.end])),
+            _ => format!("'{}'", &self.text[t.start..t.end]),
+        }
+    }
+
+    /// The whole input as one polynomial.
+    fn parse(&mut self) -> Result<Poly, Error> {
+        if matches!(self.peek().tok, Tok::End) {
+            return Err(Self::syntax(1, "empty polynomial"));
+        }
+        let poly = self.sum()?;
+        match self.peek().tok {
+            Tok::End => Ok(poly),
+            Tok::Close => Err(Self::syntax(self.peek().column, "unmatched ')'")),
+            Tok::Number(_) => Err(Self::syntax(
+                self.peek().column,
+                format!(
+                    "expected an operator before {}; write the number first, as in '2*x' or '2x'",
+                    self.describe()
+                ),
+            )),
+            _ => Err(Self::syntax(
+                self.peek().column,
+                format!("expected an operator, found {}", self.describe()),
+            )),
+        }
+    }
+
+    fn sum(&mut self) -> Result<Poly, Error> {
+        let mut acc = self.term()?;
+        loop {
+            let negative = match self.peek().tok {
+                Tok::Plus => false,
+                Tok::Minus => true,
+                _ => return Ok(acc),
+            };
+            self.advance();
+            let t = self.term()?;
+            acc.add_assign(&t, negative, &mut self.budget)?;
+        }
+    }
+
+    /// Consumes any run of unary signs; true if their product is negative.
+    fn signs(&mut self) -> bool {
+        let mut negative = false;
+        loop {
+            match self.peek().tok {
+                Tok::Plus => {}
+                Tok::Minus => negative = !negative,
+                _ => return negative,
+            }
+            self.advance();
+        }
+    }
+
+    fn term(&mut self) -> Result<Poly, Error> {
+        let first = self.pos;
+        let negative = self.signs();
+        let mut acc = self.power()?;
+        loop {
+            let (divide, op_column) = match self.peek().tok {
+                Tok::Star => (false, Some(self.peek().column)),
+                Tok::Slash => (true, Some(self.peek().column)),
+                Tok::Variable(_) | Tok::Open => (false, None),
+                _ => break,
+            };
+            if op_column.is_some() {
+                self.advance();
+            }
+            let factor_negative = self.signs();
+            let mut factor = self.power()?;
+            if factor_negative {
+                factor.negate();
+            }
+            if divide {
+                let column = op_column.unwrap_or(1);
+                let divisor = factor.as_constant().ok_or_else(|| {
+                    Self::syntax(
+                        column,
+                        "can only divide by a number, not by an expression in x, y, z, w",
+                    )
+                })?;
+                if divisor.is_zero() {
+                    return Err(Self::syntax(column, "division by zero"));
+                }
+                let inverse = RBig::ONE / divisor;
+                acc.scale(&inverse, &mut self.budget)?;
+            } else {
+                acc = self.checked_product(&acc, &factor, first)?;
+            }
+        }
+        if negative {
+            acc.negate();
+        }
+        Ok(acc)
+    }
+
+    /// `a · b`, or [`Error::Degree`] naming the source text from token `first` to here.
+    fn checked_product(&mut self, a: &Poly, b: &Poly, first: usize) -> Result<Poly, Error> {
+        a.mul(b, &mut self.budget)?
+            .map_err(|degree| self.degree_error(first, degree))
+    }
+
+    fn degree_error(&self, first: usize, degree: usize) -> Error {
+        let from = &self.tokens[first.min(self.tokens.len() - 1)];
+        let to = &self.tokens[self
+            .pos
+            .saturating_sub(1)
+            .max(first)
+            .min(self.tokens.len() - 1)];
+        let snippet = self.text[from.start..to.end.max(from.start)].trim();
+        Error::Degree {
+            message: format!(
+                "term '{}' at column {} has degree {degree}; a quadric has degree at most 2",
+                excerpt(snippet),
+                from.column
+            ),
+        }
+    }
+
+    fn power(&mut self) -> Result<Poly, Error> {
+        let first = self.pos;
+        let base = self.atom()?;
+        if !matches!(self.peek().tok, Tok::Power) {
+            return Ok(base);
+        }
+        self.advance();
+        let t = self.peek();
+        let raw = &self.text[t.start..t.end];
+        let exponent_column = t.column;
+        if !matches!(t.tok, Tok::Number(_)) || !raw.bytes().all(|b| b.is_ascii_digit()) {
+            return Err(Self::syntax(
+                exponent_column,
+                format!(
+                    "the exponent must be a non-negative integer, found {}",
+                    self.describe()
+                ),
+            ));
+        }
+        let digits = raw.trim_start_matches('0');
+        let n = match digits.parse::<usize>() {
+            Ok(n) if n <= MAX_POWER_EXPONENT => n,
+            _ if digits.is_empty() => 0,
+            _ => {
+                return Err(Error::Limit {
+                    what: format!("exponent {} at column {exponent_column}", excerpt(raw)),
+                    limit: MAX_POWER_EXPONENT,
+                })
+            }
+        };
+        self.advance();
+        if matches!(self.peek().tok, Tok::Power) {
+            return Err(Self::syntax(
+                self.peek().column,
+                "chained powers are ambiguous; use parentheses, as in '(x^2)^2'",
+            ));
+        }
+        let base_degree = base.degree();
+        if base_degree * n > 2 {
+            return Err(self.degree_error(first, base_degree * n));
+        }
+        let mut acc = Poly::constant(RBig::ONE);
+        for _ in 0..n {
+            acc = self.checked_product(&acc, &base, first)?;
+        }
+        Ok(acc)
+    }
+
+    fn atom(&mut self) -> Result<Poly, Error> {
+        let column = self.peek().column;
+        let poly = match &self.peek().tok {
+            Tok::Number(value) => Poly::constant(value.clone()),
+            Tok::Variable(i) => Poly::variable(*i),
+            Tok::Open => {
+                if self.depth >= MAX_NESTING_DEPTH {
+                    return Err(Error::Limit {
+                        what: format!("nesting of parentheses at column {column}"),
+                        limit: MAX_NESTING_DEPTH,
+                    });
+                }
+                self.depth += 1;
+                self.advance();
+                let inner = self.sum()?;
+                if !matches!(self.peek().tok, Tok::Close) {
+                    return Err(Self::syntax(
+                        self.peek().column,
+                        format!(
+                            "expected ')' to close the '(' at column {column}, found {}",
+                            self.describe()
+                        ),
+                    ));
+                }
+                self.depth -= 1;
+                inner
+            }
+            _ => {
+                return Err(Self::syntax(
+                    column,
+                    format!(
+                        "expected a number, a variable or '(', found {}",
+                        self.describe()
+                    ),
+                ))
+            }
+        };
+        self.advance();
+        Ok(poly)
+    }
+}
+
+/// The quadric of an expanded polynomial: homogeneity check or homogenization, then the matrix.
+fn quadric_from_poly(poly: Poly) -> Result<Quadric, Error> {
+    if poly.is_zero() {
+        return Err(Error::ZeroQuadric);
+    }
+    let uses_w = (0..N).any(|k| MONOMIALS[k][3] > 0 && !poly.c[k].is_zero());
+    let mut m: [[RBig; 4]; 4] = Default::default();
+    for (k, c) in poly.c.iter().enumerate().filter(|(_, c)| !c.is_zero()) {
+        let mut e = MONOMIALS[k];
+        let degree = degree_of(k);
+        if uses_w && degree != 2 {
+            return Err(Error::Degree {
+                message: format!(
+                    "term '{}' has degree {degree}; a form in x,y,z,w must be homogeneous \
+                     of degree 2 (leave out w to write an affine equation in x, y, z)",
+                    term_text(c, k)
+                ),
+            });
+        }
+        // Homogenize: raise the power of w to reach degree 2 (degree ≤ 2 here).
+        e[3] += u8::try_from(2usize.saturating_sub(degree)).unwrap_or(0);
+        let mut vars = e
+            .iter()
+            .enumerate()
+            .flat_map(|(v, &p)| std::iter::repeat(v).take(usize::from(p)));
+        if let (Some(i), Some(j)) = (vars.next(), vars.next()) {
+            if i == j {
+                m[i][i] = c.clone();
+            } else {
+                let half = c / RBig::from(2);
+                m[i][j] = half.clone();
+                m[j][i] = half;
+            }
+        }
+    }
+    Quadric::from_matrix(m)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use dashu_int::{IBig, UBig};
+    use proptest::prelude::*;
+    use std::time::{Duration, Instant};
+
+    fn rat(n: i64, d: u64) -> RBig {
+        RBig::from_parts(IBig::from(n), UBig::from(d))
+    }
+
+    fn ints(m: [[i64; 4]; 4]) -> Quadric {
+        Quadric::from_integers(m).expect("a valid test matrix")
+    }
+
+    fn parse(text: &str) -> Quadric {
+        parse_quadric(text).unwrap_or_else(|e| panic!("{text:?} should parse: {e}"))
+    }
+
+    #[test]
+    fn homogenizes_affine_equations() {
+        let table: &[(&str, [[i64; 4]; 4])] = &[
+            (
+                "x^2+y^2+z^2-1",
+                [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, -1]],
+            ),
+            (
+                "x^2 + 2*x - 4*y + 6*z + 3",
+                [[1, 0, 0, 1], [0, 0, 0, -2], [0, 0, 0, 3], [1, -2, 3, 3]],
+            ),
+            ("5", [[0; 4], [0; 4], [0; 4], [0, 0, 0, 5]]),
+            (
+                "2*x*y - 2*z",
+                [[0, 1, 0, 0], [1, 0, 0, 0], [0, 0, 0, -1], [0, 0, -1, 0]],
+            ),
+        ];
+        for (text, m) in table {
+            assert_eq!(parse(text), ints(*m), "input {text:?}");
+        }
+    }
+
+    #[test]
+    fn expands_products_and_powers() {
+        let table: &[(&str, [[i64; 4]; 4])] = &[
+            ("(x+y)^2", [[1, 1, 0, 0], [1, 1, 0, 0], [0; 4], [0; 4]]),
+            ("(x+y)**2", [[1, 1, 0, 0], [1, 1, 0, 0], [0; 4], [0; 4]]),
+            ("2*x*y", [[0, 1, 0, 0], [1, 0, 0, 0], [0; 4], [0; 4]]),
+            (
+                "(x+y)^2 - 2*(z-w)*(z+w)",
+                [[1, 1, 0, 0], [1, 1, 0, 0], [0, 0, -2, 0], [0, 0, 0, 2]],
+            ),
+            ("-x^2", [[-1, 0, 0, 0], [0; 4], [0; 4], [0; 4]]),
+            ("-2^2*x^2", [[-4, 0, 0, 0], [0; 4], [0; 4], [0; 4]]),
+            ("x*-y*2", [[0, -1, 0, 0], [-1, 0, 0, 0], [0; 4], [0; 4]]),
+            ("- -x^2", [[1, 0, 0, 0], [0; 4], [0; 4], [0; 4]]),
+            (
+                "2x^2 + 4 y*z",
+                [[2, 0, 0, 0], [0, 0, 2, 0], [0, 2, 0, 0], [0; 4]],
+            ),
+            ("(x+1)(x-1)", [[1, 0, 0, 0], [0; 4], [0; 4], [0, 0, 0, -1]]),
+            (
+                "2x y + 2(z)w",
+                [[0, 1, 0, 0], [1, 0, 0, 0], [0, 0, 0, 1], [0, 0, 1, 0]],
+            ),
+            (
+                "x^0*y^2 + 2z^1*x",
+                [[0, 0, 1, 0], [0, 1, 0, 0], [1, 0, 0, 0], [0; 4]],
+            ),
+            ("(((x)))^2", [[1, 0, 0, 0], [0; 4], [0; 4], [0; 4]]),
+            (
+                "x^2 + (y - y)*z*w*x - 1",
+                [[1, 0, 0, 0], [0; 4], [0; 4], [0, 0, 0, -1]],
+            ),
+        ];
+        for (text, m) in table {
+            assert_eq!(parse(text), ints(*m), "input {text:?}");
+        }
+    }
+
+    #[test]
+    fn exact_rational_coefficients() {
+        let q = parse("x^2/3 + 0.1*y^2 + 1/2*z^2 + 1e-3*x*y + (x+w)^2/2");
+        assert_eq!(q.entry(0, 0), &(rat(1, 3) + rat(1, 2)));
+        assert_eq!(q.entry(1, 1), &rat(1, 10));
+        assert_eq!(q.entry(2, 2), &rat(1, 2));
+        assert_eq!(q.entry(0, 1), &rat(1, 2000));
+        assert_eq!(q.entry(0, 3), &rat(1, 2));
+        assert_eq!(q.entry(3, 3), &rat(1, 2));
+        let big = "123456789012345678901234567890";
+        let q = parse(&format!("{big}*x*y - w^2"));
+        assert_eq!(
+            q.entry(0, 1),
+            &(RBig::from(IBig::from_str_radix(big, 10).expect("digits")) / RBig::from(2))
+        );
+    }
+
+    #[test]
+    fn syntax_errors_carry_columns() {
+        let table: &[(&str, usize)] = &[
+            ("", 1),
+            ("   ", 1),
+            ("x^2 +", 6),
+            ("x^2 + * y", 7),
+            ("(x+y", 5),
+            ("x+y)", 4),
+            ("x^2 $ y", 5),
+            ("x^y", 3),
+            ("x^-2", 3),
+            ("x^2.5", 3),
+            ("x^2^2", 4),
+            ("x^2/y", 4),
+            ("x^2/(1-1)", 4),
+            ("x^2 2", 5),
+            ("x . y", 3),
+            ("()", 2),
+            ("x²", 2),
+        ];
+        for (text, column) in table {
+            match parse_quadric(text) {
+                Err(Error::Syntax { column: c, message }) => {
+                    assert_eq!(c, *column, "input {text:?}: {message}")
+                }
+                other => panic!("input {text:?}: expected a syntax error, got {other:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn unknown_variables_carry_columns() {
+        let table = [
+            ("x^2 + X", "X", 7),
+            ("2*xy", "xy", 3),
+            ("u^2", "u", 1),
+            ("x+é", "é", 3),
+            ("x^2 + 1e", "e", 8),
+        ];
+        for (text, name, column) in table {
+            assert_eq!(
+                parse_quadric(text),
+                Err(Error::UnknownVariable {
+                    name: name.into(),
+                    column
+                }),
+                "input {text:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn degree_errors_name_the_term() {
+        let table = [
+            ("x^3", "term 'x^3' at column 1 has degree 3"),
+            ("y^2 + x*y*z", "term 'x*y*z' at column 7 has degree 3"),
+            (
+                "(x+y)^3 - (x+y)^3",
+                "term '(x+y)^3' at column 1 has degree 3",
+            ),
+            ("x^2*y^2", "term 'x^2*y^2' at column 1 has degree 4"),
+            ("(x*y)^2", "term '(x*y)^2' at column 1 has degree 4"),
+            (
+                "x^2 + 3*x + w^2",
+                "term '3*x' has degree 1; a form in x,y,z,w",
+            ),
+            ("x^2 - w", "term '-w' has degree 1"),
+            ("x*w - 1/2", "term '-1/2' has degree 0"),
+        ];
+        for (text, want) in table {
+            match parse_quadric(text) {
+                Err(Error::Degree { message }) => {
+                    assert!(message.starts_with(want), "input {text:?}: {message}")
+                }
+                other => panic!("input {text:?}: expected a degree error, got {other:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn zero_polynomials_are_refused() {
+        for text in [
+            "0",
+            "x^2-x^2",
+            "0*x*y",
+            "(x+w)^2 - x^2 - 2*x*w - w^2",
+            "0.0/7",
+        ] {
+            assert_eq!(
+                parse_quadric(text),
+                Err(Error::ZeroQuadric),
+                "input {text:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_cancelled_w_leaves_an_affine_equation() {
+        assert_eq!(
+            parse("x^2 + w - w - 1"),
+            ints([[1, 0, 0, 0], [0; 4], [0; 4], [0, 0, 0, -1]])
+        );
+    }
+
+    #[test]
+    fn limits_are_enforced_quickly() {
+        let start = Instant::now();
+        let cases = [
+            "x".repeat(MAX_INPUT_LEN + 1),
+            "x^2 + 1e999999999".into(),
+            format!("x^2 + {}", "1".repeat(20_000)),
+            "x^17".into(),
+            "x^99999999999999999999999999".into(),
+            format!("{}x{}", "(".repeat(10_000), ")".repeat(10_000)),
+            // Numeric towers grow numbers, not degrees.
+            "((((((9^16)^16)^16)^16)^16)^16)*x^2".into(),
+            format!("{}x^2", "1e-9999*".repeat(20)),
+            format!("x^2 + {}", "(1e9999)^16+".repeat(200)),
+            // Each term is below the size limit, but together they ask for too much work.
+            format!("x^2 + {}1", "(1e-9999)^7+".repeat(8000)),
+        ];
+        for text in &cases {
+            assert!(
+                matches!(parse_quadric(text), Err(Error::Limit { .. })),
+                "input {}: {:?}",
+                excerpt(text),
+                parse_quadric(text)
+            );
+        }
+        assert!(
+            start.elapsed() < Duration::from_secs(5),
+            "took {:?}",
+            start.elapsed()
+        );
+    }
+
+    #[test]
+    fn nesting_at_the_limit_fits_in_a_small_stack() {
+        let text = format!(
+            "{}x{}^2",
+            "(".repeat(MAX_NESTING_DEPTH),
+            ")".repeat(MAX_NESTING_DEPTH)
+        );
+        let parsed = std::thread::Builder::new()
+            .stack_size(512 * 1024)
+            .spawn(move || parse_quadric(&text))
+            .expect("a thread")
+            .join()
+            .expect("no stack overflow");
+        assert_eq!(parsed, Ok(ints([[1, 0, 0, 0], [0; 4], [0; 4], [0; 4]])));
+    }
+
+    #[test]
+    fn deep_unary_signs_do_not_recurse() {
+        let text = format!("{}x^2", "-".repeat(50_000));
+        assert_eq!(parse(&text), ints([[1, 0, 0, 0], [0; 4], [0; 4], [0; 4]]));
+    }
+
+    /// A random nonzero symmetric matrix with small rational entries.
+    fn small_rational_matrix() -> impl Strategy<Value = [[RBig; 4]; 4]> {
+        let entry = (-20i64..=20, 1u64..=9).prop_map(|(n, d)| rat(n, d));
+        proptest::collection::vec(entry, 10).prop_map(|v| {
+            let mut m: [[RBig; 4]; 4] = Default::default();
+            let upper = (0..4).flat_map(|i| (i..4).map(move |j| (i, j)));
+            for ((i, j), value) in upper.zip(v) {
+                m[i][j] = value.clone();
+                m[j][i] = value;
+            }
+            m
+        })
+    }
+
+    proptest! {
+        #[test]
+        fn polynomial_string_round_trips(m in small_rational_matrix()) {
+            if let Ok(q) = Quadric::from_matrix(m) {
+                let text = q.to_polynomial_string();
+                prop_assert_eq!(parse_quadric(&text), Ok(q), "text {}", text);
+            }
+        }
+
+        #[test]
+        fn arbitrary_strings_do_not_panic(text in "\\PC{0,60}") {
+            let _ = parse_quadric(&text);
+        }
+
+        #[test]
+        fn polynomial_like_strings_do_not_panic(text in "[xyzwX0-9+*/^(). eE-]{0,60}") {
+            let _ = parse_quadric(&text);
+        }
+    }
+}

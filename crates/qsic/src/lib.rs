@@ -1,0 +1,30 @@
+//! qsic: the exact morphology of the intersection curve of two quadric surfaces.
+//!
+//! | module | owns |
+//! |---|---|
+//! | [`quadric`] | [`Quadric`], a validated symmetric 4×4 rational matrix |
+//! | [`io`] | reading quadrics from polynomial strings and matrices, exactly |
+//! | [`shapes`] | constructors for spheres, cylinders, cones, … from rational parameters |
+//! | [`pencil`] | the pencil `λA − μB`: characteristic form, real roots, Segre structure, inertia |
+//! | [`classify`] | [`classify()`]: regular (35 cases), singular and single pencils |
+//! | [`limits`] | documented bounds on untrusted input |
+//!
+//! ```
+//! use qsic::{classify, io::parse_quadric};
+//! let a = parse_quadric("x^2 + y^2 + z^2 - w^2").unwrap(); // unit sphere
+//! let b = parse_quadric("x^2 + y^2 - 2*x*w").unwrap();     // cylinder through its centre… tangent inside
+//! let c = classify(&a, &b);
+//! assert_eq!(c.pencil.key(), "regular");
+//! ```
+
+pub mod classify;
+pub mod error;
+pub mod io;
+pub mod limits;
+pub mod pencil;
+pub mod quadric;
+pub mod shapes;
+
+pub use classify::{classify, classify_allowing_zero, classify_single, Classification};
+pub use error::Error;
+pub use quadric::Quadric;

@@ -1,0 +1,305 @@
+//! The pencil `λA − μB` of two quadrics: its characteristic form `f(λ, μ) = det(λA − μB)`,
+//! the real roots with multiplicities and Jordan (Segre) structure, and the inertia of
+//! the members at each root and between roots.
+//!
+//! Notation: points of the pencil are `(λ : μ)`; the chart `μ = 1` is used for finite
+//! roots, and `(1 : 0)` is the root "at infinity" (`A` singular). The Jordan blocks of a
+//! root `α` come from the invariant factors of `λA − μB`: with `D_k` the gcd of the `k×k`
+//! minors, the elementary divisors at `α` have exponents `ord_α(D_k) − ord_α(D_{k−1})`.
+//! This is exact rational arithmetic and needs no arithmetic in `ℚ(α)`.
+
+use crate::quadric::Quadric;
+use qsic_algebra::matrix::{Inertia, MatrixPencil, SymMatrix4};
+use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
+
+/// A point `(λ : μ)` of the pencil where `det(λA − μB) = 0`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum PencilPoint {
+    /// `(α : 1)`, the member `αA − B`.
+    Finite(AlgebraicReal),
+    /// `(1 : 0)`, the member `A`.
+    Infinity,
+}
+
+/// A distinct real root of `f(λ, μ)`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PencilRoot {
+    /// Where.
+    pub point: PencilPoint,
+    /// Multiplicity as a root of `f`.
+    pub multiplicity: u8,
+    /// Sizes of the Jordan blocks (Segre symbol of this root), largest first; they add up to
+    /// the multiplicity, and their number is `4 − rank` of the member.
+    pub blocks: Vec<u8>,
+    /// Inertia of the singular member at the root.
+    pub inertia: Inertia,
+}
+
+/// The complete exact analysis of a regular pencil.
+#[derive(Clone, Debug)]
+pub struct PencilAnalysis {
+    /// `f(λ, 1) = det(λA − B)`; its degree is `4 −` the multiplicity of the root at ∞.
+    pub characteristic: Poly,
+    /// The distinct real roots, finite ones in increasing order, then ∞ if it is a root.
+    pub real_roots: Vec<PencilRoot>,
+    /// Block structures of the non-real roots, one entry per root (conjugates appear twice).
+    pub complex_roots: Vec<Vec<u8>>,
+    /// Inertia of `λA − B` at a sample point of each arc between consecutive real roots,
+    /// in the order of `real_roots` on the chart μ = 1: `arcs[0]` is left of the first
+    /// finite root, `arcs[i]` right of finite root `i − 1`. With no real root, one arc.
+    pub arcs: Vec<(RBig, Inertia)>,
+}
+
+/// Rounds up the data of a pencil needed by several analyses.
+pub(crate) struct PencilData {
+    pub a: SymMatrix4,
+    pub b: SymMatrix4,
+    pub pencil: MatrixPencil,
+    pub f: Poly,
+}
+
+impl PencilData {
+    pub fn new(qa: &Quadric, qb: &Quadric) -> PencilData {
+        let a = qa.integer_matrix();
+        let b = qb.integer_matrix();
+        let pencil = MatrixPencil::new(a.clone(), b.clone());
+        let f = pencil.det_poly();
+        PencilData { a, b, pencil, f }
+    }
+}
+
+/// `(ord at the finite roots via D_k, ord at infinity)` data for `k = 1, 2, 3`.
+struct MinorGcds {
+    /// `D_k` on the chart μ = 1, index `k − 1`.
+    finite: [Poly; 3],
+    /// `ord_∞(D_k) = min over k×k minors of (k − deg)`.
+    at_infinity: [usize; 3],
+}
+
+impl MinorGcds {
+    fn new(pencil: &MatrixPencil) -> MinorGcds {
+        let mut finite: [Poly; 3] = Default::default();
+        let mut at_infinity = [0usize; 3];
+        for k in 1..=3 {
+            let minors = pencil.minors(k);
+            let mut g = Poly::zero();
+            let mut inf = k;
+            for m in &minors {
+                g = g.gcd(m);
+                inf = inf.min(k - m.degree().unwrap_or(0));
+            }
+            finite[k - 1] = g;
+            at_infinity[k - 1] = inf;
+        }
+        MinorGcds {
+            finite,
+            at_infinity,
+        }
+    }
+}
+
+/// Jordan block sizes from the orders of a root in `D₁, D₂, D₃` and in `f = D₄`.
+fn blocks_from_orders(m: usize, ords: [usize; 3]) -> Vec<u8> {
+    let d = [ords[0], ords[1], ords[2], m];
+    let mut e: Vec<u8> = Vec::with_capacity(4);
+    let mut prev = 0;
+    for v in d {
+        let x = v.saturating_sub(prev);
+        if x > 0 {
+            e.push(x as u8);
+        }
+        prev = v;
+    }
+    e.sort_unstable_by(|a, b| b.cmp(a));
+    e
+}
+
+/// Splits the square-free `p` into the parts whose roots have order `j` in `d`.
+fn split_by_order(p: &Poly, d: &Poly) -> Vec<(Poly, usize)> {
+    let mut out = Vec::new();
+    let mut rest = p.clone();
+    if !d.is_zero() {
+        for (dj, j) in d.squarefree_decomposition() {
+            let h = rest.gcd(&dj);
+            if h.degree().unwrap_or(0) > 0 {
+                rest = rest.div_exact(&h).expect("h divides rest");
+                out.push((h, j));
+            }
+        }
+    }
+    if rest.degree().unwrap_or(0) > 0 {
+        out.push((rest, 0));
+    }
+    out
+}
+
+/// Signs of `E₁…E₄` of `λA − B` at a real algebraic `λ`.
+fn inertia_at(e: &[Poly; 4], x: &AlgebraicReal) -> Inertia {
+    Inertia::from_minor_sum_signs([
+        x.sign_of(&e[0]),
+        x.sign_of(&e[1]),
+        x.sign_of(&e[2]),
+        x.sign_of(&e[3]),
+    ])
+}
+
+/// Inertia of `λA − B` at a rational `λ`.
+fn inertia_at_rational(e: &[Poly; 4], x: &RBig) -> Inertia {
+    Inertia::from_minor_sum_signs([
+        e[0].sign_at(x),
+        e[1].sign_at(x),
+        e[2].sign_at(x),
+        e[3].sign_at(x),
+    ])
+}
+
+impl PencilAnalysis {
+    /// Analyses the pencil of a regular pair (`f ≢ 0`).
+    pub(crate) fn compute(data: &PencilData) -> PencilAnalysis {
+        let f = &data.f;
+        let deg = f.degree().unwrap_or(0);
+        let m_inf = 4 - deg;
+        let decomposition = f.squarefree_decomposition();
+        let simple = m_inf <= 1 && decomposition.iter().all(|(_, m)| *m == 1);
+        let gcds = if simple {
+            None
+        } else {
+            Some(MinorGcds::new(&data.pencil))
+        };
+
+        // Pieces of the square-free decomposition with equal (multiplicity, orders in D1..D3).
+        let mut pieces: Vec<(Poly, usize, [usize; 3])> = Vec::new();
+        for (g, m) in &decomposition {
+            match &gcds {
+                None => pieces.push((g.clone(), *m, [0, 0, 0])),
+                Some(gc) => {
+                    let mut cur = vec![(g.clone(), [0usize; 3])];
+                    for k in (0..3).rev() {
+                        let mut next = Vec::new();
+                        for (p, ords) in cur {
+                            for (h, j) in split_by_order(&p, &gc.finite[k]) {
+                                let mut o = ords;
+                                o[k] = j;
+                                next.push((h, o));
+                            }
+                        }
+                        cur = next;
+                    }
+                    pieces.extend(cur.into_iter().map(|(p, o)| (p, *m, o)));
+                }
+            }
+        }
+
+        let e = data.pencil.principal_minor_sums();
+        let mut real_roots: Vec<PencilRoot> = Vec::new();
+        let mut complex_roots = Vec::new();
+        for (p, m, ords) in &pieces {
+            let blocks = blocks_from_orders(*m, *ords);
+            let roots = AlgebraicReal::real_roots_of(p);
+            for _ in roots.len()..p.degree().unwrap_or(0) {
+                complex_roots.push(blocks.clone());
+            }
+            for r in roots {
+                let inertia = inertia_at(&e, &r);
+                real_roots.push(PencilRoot {
+                    point: PencilPoint::Finite(r),
+                    multiplicity: *m as u8,
+                    blocks: blocks.clone(),
+                    inertia,
+                });
+            }
+        }
+        real_roots.sort_by(|x, y| match (&x.point, &y.point) {
+            (PencilPoint::Finite(a), PencilPoint::Finite(b)) => a.cmp(b),
+            _ => std::cmp::Ordering::Equal,
+        });
+
+        // Sample points of the arcs.
+        let mut arcs = Vec::new();
+        let finite: Vec<&AlgebraicReal> = real_roots
+            .iter()
+            .filter_map(|r| match &r.point {
+                PencilPoint::Finite(a) => Some(a),
+                PencilPoint::Infinity => None,
+            })
+            .collect();
+        if finite.is_empty() {
+            let x = RBig::ZERO;
+            arcs.push((x.clone(), inertia_at_rational(&e, &x)));
+        } else {
+            let first = RBig::from(finite[0].interval().lo().floor() - IBig::ONE);
+            arcs.push((first.clone(), inertia_at_rational(&e, &first)));
+            for w in finite.windows(2) {
+                let x = w[0].rational_between(w[1]);
+                arcs.push((x.clone(), inertia_at_rational(&e, &x)));
+            }
+            let last = RBig::from(finite[finite.len() - 1].interval().hi().ceil() + IBig::ONE);
+            arcs.push((last.clone(), inertia_at_rational(&e, &last)));
+        }
+
+        if m_inf > 0 {
+            let blocks = match &gcds {
+                None => vec![1],
+                Some(gc) => blocks_from_orders(m_inf, gc.at_infinity),
+            };
+            real_roots.push(PencilRoot {
+                point: PencilPoint::Infinity,
+                multiplicity: m_inf as u8,
+                blocks,
+                inertia: data.a.inertia(),
+            });
+        }
+        PencilAnalysis {
+            characteristic: f.clone(),
+            real_roots,
+            complex_roots,
+            arcs,
+        }
+    }
+
+    /// The signature sequence along the projective line, cut inside the arc left of the
+    /// first finite root: `(I₀, R₁, I₁, …)`, ending with the swap of `I₀`.
+    pub(crate) fn signature_sequence(&self) -> Vec<SigItem> {
+        let mut seq = Vec::new();
+        let interval = |i: &Inertia| SigItem::Interval(i.positive);
+        if self.real_roots.is_empty() {
+            seq.push(interval(&self.arcs[0].1));
+            return seq;
+        }
+        seq.push(interval(&self.arcs[0].1));
+        let mut arc = 1;
+        for r in &self.real_roots {
+            seq.push(SigItem::Root {
+                p: r.inertia.positive,
+                n: r.inertia.negative,
+                mult: r.multiplicity,
+            });
+            match r.point {
+                PencilPoint::Finite(_) => {
+                    seq.push(interval(&self.arcs[arc].1));
+                    arc += 1;
+                }
+                PencilPoint::Infinity => seq.push(SigItem::Interval(4 - self.arcs[0].1.positive)),
+            }
+        }
+        seq
+    }
+}
+
+/// One entry of a signature sequence.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub(crate) enum SigItem {
+    /// An arc where the members are nonsingular, with `p` positive eigenvalues.
+    Interval(u8),
+    /// A root with the inertia `(p, n)` of its member and its multiplicity.
+    Root { p: u8, n: u8, mult: u8 },
+}
+
+impl SigItem {
+    pub fn swapped(self) -> SigItem {
+        match self {
+            SigItem::Interval(p) => SigItem::Interval(4 - p),
+            SigItem::Root { p, n, mult } => SigItem::Root { p: n, n: p, mult },
+        }
+    }
+}

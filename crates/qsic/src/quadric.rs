@@ -1,0 +1,127 @@
+//! A real projective quadric `XᵀAX = 0`, `X = (x, y, z, w)`, with rational coefficients.
+
+use crate::error::Error;
+use dashu_ratio::RBig;
+use qsic_algebra::matrix::SymMatrix4;
+
+/// A quadric surface in real projective space, stored as its symmetric 4×4 matrix
+/// with exact rational entries, in the variable order `(x, y, z, w)`.
+///
+/// Invariant: symmetric and not zero (checked by every constructor).
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Quadric {
+    m: [[RBig; 4]; 4],
+}
+
+impl Quadric {
+    /// Builds a quadric from a symmetric rational matrix.
+    ///
+    /// # Errors
+    /// [`Error::NotSymmetric`] naming the first asymmetric pair, [`Error::ZeroQuadric`] if all entries are zero.
+    pub fn from_matrix(m: [[RBig; 4]; 4]) -> Result<Self, Error> {
+        for (i, row) in m.iter().enumerate() {
+            for (j, v) in row.iter().enumerate().skip(i + 1) {
+                if *v != m[j][i] {
+                    return Err(Error::NotSymmetric {
+                        row: i,
+                        col: j,
+                        a: v.to_string(),
+                        b: m[j][i].to_string(),
+                    });
+                }
+            }
+        }
+        if m.iter().flatten().all(|v| v.is_zero()) {
+            return Err(Error::ZeroQuadric);
+        }
+        Ok(Quadric { m })
+    }
+
+    /// Builds a quadric from integer entries.
+    ///
+    /// # Errors
+    /// As [`Quadric::from_matrix`].
+    pub fn from_integers(m: [[i64; 4]; 4]) -> Result<Self, Error> {
+        Self::from_matrix(m.map(|row| row.map(RBig::from)))
+    }
+
+    /// Builds a quadric from `f64` entries, each converted *exactly* (0.1 becomes
+    /// 3602879701896397/36028797018963968, the value the float really holds).
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] for NaN or ±∞, then as [`Quadric::from_matrix`].
+    pub fn from_f64(m: [[f64; 4]; 4]) -> Result<Self, Error> {
+        let mut out: [[RBig; 4]; 4] = Default::default();
+        for (i, row) in m.iter().enumerate() {
+            for (j, &v) in row.iter().enumerate() {
+                out[i][j] = RBig::try_from(v).map_err(|_| Error::NotFinite { row: i, col: j })?;
+            }
+        }
+        Self::from_matrix(out)
+    }
+
+    /// The symmetric matrix.
+    pub fn matrix(&self) -> &[[RBig; 4]; 4] {
+        &self.m
+    }
+
+    /// The entry at (i, j), 0-based.
+    ///
+    /// # Panics
+    /// If `i` or `j` is not below 4.
+    pub fn entry(&self, i: usize, j: usize) -> &RBig {
+        &self.m[i][j]
+    }
+
+    /// The matrix scaled by a positive rational to a primitive integer matrix
+    /// (gcd of entries 1). A positive scale keeps the quadric and its inertia.
+    pub fn integer_matrix(&self) -> SymMatrix4 {
+        SymMatrix4::from_rationals_primitive(&self.m)
+    }
+
+    /// The quadratic form as a polynomial string in x, y, z, w, e.g. `x^2 + 2*x*y - w^2`.
+    pub fn to_polynomial_string(&self) -> String {
+        const V: [&str; 4] = ["x", "y", "z", "w"];
+        let mut s = String::new();
+        for i in 0..4 {
+            for j in i..4 {
+                let c = if i == j {
+                    self.m[i][j].clone()
+                } else {
+                    &self.m[i][j] * RBig::from(2)
+                };
+                if c.is_zero() {
+                    continue;
+                }
+                let mono = if i == j {
+                    format!("{}^2", V[i])
+                } else {
+                    format!("{}*{}", V[i], V[j])
+                };
+                let neg = c < RBig::ZERO;
+                let abs = if neg { -c } else { c };
+                if s.is_empty() {
+                    if neg {
+                        s.push('-');
+                    }
+                } else {
+                    s.push_str(if neg { " - " } else { " + " });
+                }
+                if !abs.is_one() {
+                    s.push_str(&abs.to_string());
+                    s.push('*');
+                }
+                s.push_str(&mono);
+            }
+        }
+        s
+    }
+}
+
+/// `Quadric` from an integer matrix, for tests and examples.
+impl TryFrom<[[i64; 4]; 4]> for Quadric {
+    type Error = Error;
+    fn try_from(m: [[i64; 4]; 4]) -> Result<Self, Error> {
+        Self::from_integers(m)
+    }
+}
