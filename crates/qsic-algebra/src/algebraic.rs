@@ -23,7 +23,7 @@ impl AlgebraicReal {
     /// The rational `v` as an algebraic number.
     pub fn from_rational(v: RBig) -> AlgebraicReal {
         let poly = Poly::new(vec![
-            -dashu_int::IBig::from(v.numerator().clone()),
+            -v.numerator().clone(),
             dashu_int::IBig::from(v.denominator().clone()),
         ]);
         AlgebraicReal {
@@ -201,8 +201,7 @@ fn simplest_between(lo: &RBig, hi: &RBig, lo_ok: bool, hi_ok: bool) -> RBig {
         return lo.clone();
     }
     // try integers first
-    let f = lo.floor() + RBig::ONE;
-    let f = RBig::from(f);
+    let f = RBig::from(lo.floor()) + RBig::ONE;
     if &f < hi || (&f == hi && hi_ok) {
         return f;
     }
@@ -213,13 +212,11 @@ fn simplest_between(lo: &RBig, hi: &RBig, lo_ok: bool, hi_ok: bool) -> RBig {
     let mut den = dashu_int::IBig::from(2);
     loop {
         let cand = RBig::from_parts_signed(
-            dashu_int::IBig::from((lo * RBig::from(den.clone())).floor()) + dashu_int::IBig::ONE,
+            (lo * RBig::from(den.clone())).floor() + dashu_int::IBig::ONE,
             den.clone(),
         );
-        if &cand < hi || (&cand == hi && hi_ok) {
-            if &cand > lo || (&cand == lo && lo_ok) {
-                return cand;
-            }
+        if (&cand < hi || (&cand == hi && hi_ok)) && (&cand > lo || (&cand == lo && lo_ok)) {
+            return cand;
         }
         den <<= 1;
     }
@@ -243,7 +240,7 @@ impl Ord for AlgebraicReal {
         if let Some(v) = other.as_rational() {
             // sign of α − v = sign of (x − v) at α
             let lin = Poly::new(vec![
-                -dashu_int::IBig::from(v.numerator().clone()),
+                -v.numerator().clone(),
                 dashu_int::IBig::from(v.denominator().clone()),
             ]);
             return match self.sign_of(&lin) {

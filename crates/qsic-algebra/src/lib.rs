@@ -2,6 +2,7 @@
 //!
 //! | module | owns |
 //! |---|---|
+//! | [`filter`] | certified floating-point sign filters (error bounds; exact fallback is the caller's) |
 //! | [`sign`] | [`Sign`], the result of every exact sign decision |
 //! | [`poly`] | dense univariate integer polynomials: arithmetic, gcd, square-free decomposition, Sturm and Descartes counts |
 //! | [`roots`] | real root isolation with rational (dyadic) isolating intervals |
@@ -11,7 +12,11 @@
 //! Integers are [`dashu_int::IBig`], rationals [`dashu_ratio::RBig`]: pure Rust,
 //! small values inline on the stack.
 
+// Index loops read as the matrix formulas they implement.
+#![allow(clippy::needless_range_loop)]
+
 pub mod algebraic;
+pub mod filter;
 pub mod matrix;
 pub mod poly;
 pub mod roots;

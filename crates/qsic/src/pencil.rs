@@ -60,8 +60,8 @@ pub(crate) struct PencilData {
 
 impl PencilData {
     pub fn new(qa: &Quadric, qb: &Quadric) -> PencilData {
-        let a = qa.integer_matrix();
-        let b = qb.integer_matrix();
+        let a = qa.integer_matrix().clone();
+        let b = qb.integer_matrix().clone();
         let pencil = MatrixPencil::new(a.clone(), b.clone());
         let f = pencil.det_poly();
         PencilData { a, b, pencil, f }

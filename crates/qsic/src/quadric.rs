@@ -11,6 +11,11 @@ use qsic_algebra::matrix::SymMatrix4;
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Quadric {
     m: [[RBig; 4]; 4],
+    /// The primitive integer multiple of `m`, computed once.
+    int: SymMatrix4,
+    /// The same in machine integers when every entry is below 2²⁴ in absolute value
+    /// (the fast path's range).
+    small: Option<[[i64; 4]; 4]>,
 }
 
 impl Quadric {
@@ -34,7 +39,9 @@ impl Quadric {
         if m.iter().flatten().all(|v| v.is_zero()) {
             return Err(Error::ZeroQuadric);
         }
-        Ok(Quadric { m })
+        let int = SymMatrix4::from_rationals_primitive(&m);
+        let small = small_entries(&int);
+        Ok(Quadric { m, int, small })
     }
 
     /// Builds a quadric from integer entries.
@@ -75,8 +82,14 @@ impl Quadric {
 
     /// The matrix scaled by a positive rational to a primitive integer matrix
     /// (gcd of entries 1). A positive scale keeps the quadric and its inertia.
-    pub fn integer_matrix(&self) -> SymMatrix4 {
-        SymMatrix4::from_rationals_primitive(&self.m)
+    pub fn integer_matrix(&self) -> &SymMatrix4 {
+        &self.int
+    }
+
+    /// [`Quadric::integer_matrix`] in machine integers, when all its entries are below 2²⁴
+    /// in absolute value.
+    pub fn small_integer_matrix(&self) -> Option<&[[i64; 4]; 4]> {
+        self.small.as_ref()
     }
 
     /// The quadratic form as a polynomial string in x, y, z, w, e.g. `x^2 + 2*x*y - w^2`.
@@ -124,4 +137,20 @@ impl TryFrom<[[i64; 4]; 4]> for Quadric {
     fn try_from(m: [[i64; 4]; 4]) -> Result<Self, Error> {
         Self::from_integers(m)
     }
+}
+
+/// The entries of `m` as `i64` if all are below 2²⁴ in absolute value.
+fn small_entries(m: &SymMatrix4) -> Option<[[i64; 4]; 4]> {
+    const LIMIT: i64 = 1 << 24;
+    let mut out = [[0i64; 4]; 4];
+    for (i, row) in m.entries().iter().enumerate() {
+        for (j, v) in row.iter().enumerate() {
+            let x = i64::try_from(v).ok()?;
+            if x.abs() >= LIMIT {
+                return None;
+            }
+            out[i][j] = x;
+        }
+    }
+    Some(out)
 }

@@ -15,6 +15,7 @@
 //! to separate cases 4/10/31 (`[1111]₀`, `[22]₀`, `[(11)(11)]₀`) and 26/35 (`[(31)]`,
 //! `[(22)]`), so no extra test is needed. Everything is exact rational arithmetic.
 
+mod fast;
 mod morphology;
 mod signature;
 mod single;
@@ -77,6 +78,17 @@ impl Classification {
 /// assert_eq!(c.real_type(), Some("one_conic"));
 /// ```
 pub fn classify(a: &Quadric, b: &Quadric) -> Classification {
+    if let (Some(sa), Some(sb)) = (a.small_integer_matrix(), b.small_integer_matrix()) {
+        if let Some(case) = fast::classify_simple_roots(sa, sb) {
+            return from_row(&CASES[case as usize - 1], 0);
+        }
+    }
+    classify_exact(a, b)
+}
+
+/// [`classify()`] without the machine-arithmetic fast path: every decision by exact
+/// rational arithmetic. The two must agree (property tests).
+pub fn classify_exact(a: &Quadric, b: &Quadric) -> Classification {
     let data = PencilData::new(a, b);
     if data.a.is_proportional(&data.b) {
         return classify_single(a);
@@ -183,18 +195,7 @@ fn classify_regular(analysis: &PencilAnalysis) -> Classification {
         signature::canonical(&analysis.signature_sequence()),
     );
     match class_index().get(&key) {
-        Some((row, i)) => Classification {
-            pencil: PencilKind::Regular,
-            case: Some(row.case),
-            segre: Some(row.segre),
-            signature: Some(row.sequences[*i].0),
-            index_sequence: Some(row.sequences[*i].1),
-            morphology: Some(Morphology {
-                complex: row.complex,
-                real: row.real,
-            }),
-            description: Some(row.description()),
-        },
+        Some((row, i)) => from_row(row, *i),
         // Theorem 23 of the paper: every regular pencil falls in one of the 35 cases; a
         // miss is a bug, reported as an undetermined class rather than a wrong one.
         None => Classification {
@@ -206,6 +207,22 @@ fn classify_regular(analysis: &PencilAnalysis) -> Classification {
             morphology: None,
             description: None,
         },
+    }
+}
+
+/// The classification of a regular pencil in the case of `row`, class `i` of the row.
+fn from_row(row: &CaseRow, i: usize) -> Classification {
+    Classification {
+        pencil: PencilKind::Regular,
+        case: Some(row.case),
+        segre: Some(row.segre),
+        signature: Some(row.sequences[i].0),
+        index_sequence: Some(row.sequences[i].1),
+        morphology: Some(Morphology {
+            complex: row.complex,
+            real: row.real,
+        }),
+        description: Some(row.description()),
     }
 }
 

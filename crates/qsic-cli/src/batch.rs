@@ -1,0 +1,518 @@
+//! `qsic classify --batch`: JSON Lines in, JSON Lines out, in order, on all cores.
+//!
+//! | item | does |
+//! |---|---|
+//! | [`run`] | the whole batch: read a chunk, classify it in parallel, write it in order, repeat |
+//! | [`LineReader`] | bounded line reading: a line never holds more than its limit in memory |
+//! | [`answer_line`] | one input line to one output line |
+//!
+//! Every non-blank input line yields exactly one output line, in input order: the result
+//! object with the line's `id`, or `{"id": …, "error": {"line": n, "message": …}}`.
+//! Blank (ASCII-whitespace-only) lines yield nothing but are counted in line numbers.
+//! Memory is bounded by the chunk limits, whatever the input: a line longer than
+//! [`MAX_LINE_BYTES`] is skipped without being stored and answered with an error.
+
+use crate::input::quadric_from_json;
+use crate::output::ClassificationJson;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use qsic::classify_allowing_zero;
+use rayon::prelude::*;
+use serde::Serialize;
+use serde_json::Value;
+use std::io::{self, BufRead, BufReader, Read, Write};
+use std::panic::{self, AssertUnwindSafe};
+use std::time::Duration;
+
+/// Longest input line, in bytes, not counting its line terminator (1 MiB). A 4×4
+/// matrix of numbers at the library's digit limit, or two polynomial strings at its
+/// length limit, fit well within it.
+pub const MAX_LINE_BYTES: usize = 1 << 20;
+
+/// Most lines classified in one parallel chunk.
+pub const CHUNK_LINES: usize = 4096;
+
+/// Most bytes of input held in one chunk (64 MiB).
+pub const CHUNK_BYTES: usize = 64 << 20;
+
+/// Size of the input buffer.
+const READ_BUFFER_BYTES: usize = 256 << 10;
+
+/// The content of one input line.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Content {
+    /// The bytes of the line without its terminator (`\n` or `\r\n`).
+    Text(Vec<u8>),
+    /// A line longer than the limit; only its length (terminator included) is kept.
+    TooLong {
+        /// Bytes read for this line.
+        bytes: u64,
+    },
+}
+
+/// One input line with its 1-based number.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RawLine {
+    /// 1-based line number, blank lines included.
+    pub number: u64,
+    /// What the line holds.
+    pub content: Content,
+}
+
+impl RawLine {
+    /// Whether the line holds only ASCII whitespace (an empty line included).
+    fn is_blank(&self) -> bool {
+        matches!(&self.content, Content::Text(t) if t.iter().all(u8::is_ascii_whitespace))
+    }
+
+    /// Bytes held in memory.
+    fn held_bytes(&self) -> usize {
+        match &self.content {
+            Content::Text(t) => t.len(),
+            Content::TooLong { .. } => 0,
+        }
+    }
+}
+
+/// Reads lines of at most `max_line_bytes` bytes; longer lines are consumed up to their
+/// end without being stored. Memory use is the buffer plus one line.
+pub struct LineReader<R> {
+    inner: BufReader<R>,
+    max_line_bytes: usize,
+    lines_read: u64,
+}
+
+impl<R: Read> LineReader<R> {
+    /// A reader of lines of at most `max_line_bytes` bytes.
+    pub fn new(inner: R, max_line_bytes: usize) -> Self {
+        LineReader {
+            inner: BufReader::with_capacity(READ_BUFFER_BYTES, inner),
+            max_line_bytes,
+            lines_read: 0,
+        }
+    }
+
+    /// Lines read so far, blank ones included.
+    pub fn lines_read(&self) -> u64 {
+        self.lines_read
+    }
+
+    /// Whether everything read from the source so far has been consumed, so that the
+    /// next line may have to wait for the source (an interactive producer).
+    pub fn drained(&self) -> bool {
+        self.inner.buffer().is_empty()
+    }
+
+    /// The next line, `None` at the end of the input. A last line without a newline is
+    /// a line.
+    ///
+    /// # Errors
+    /// Any read error of the source other than [`io::ErrorKind::Interrupted`].
+    pub fn next_line(&mut self) -> io::Result<Option<RawLine>> {
+        let mut text = Vec::new();
+        let mut total: u64 = 0;
+        let mut too_long = false;
+        loop {
+            let available = match self.inner.fill_buf() {
+                Ok(bytes) => bytes,
+                Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+                Err(e) => return Err(e),
+            };
+            if available.is_empty() {
+                if total == 0 {
+                    return Ok(None);
+                }
+                break;
+            }
+            let (take, ends) = match available.iter().position(|&b| b == b'\n') {
+                Some(i) => (i + 1, true),
+                None => (available.len(), false),
+            };
+            let piece = &available[..take - usize::from(ends)];
+            if !too_long {
+                if text.len() + piece.len() > self.max_line_bytes + 1 {
+                    // (+1 leaves room for the '\r' of a "\r\n" terminator)
+                    too_long = true;
+                    text = Vec::new();
+                } else {
+                    text.extend_from_slice(piece);
+                }
+            }
+            total += take as u64;
+            self.inner.consume(take);
+            if ends {
+                break;
+            }
+        }
+        self.lines_read += 1;
+        if text.last() == Some(&b'\r') {
+            text.pop();
+        }
+        let content = if too_long || text.len() > self.max_line_bytes {
+            Content::TooLong { bytes: total }
+        } else {
+            Content::Text(text)
+        };
+        Ok(Some(RawLine {
+            number: self.lines_read,
+            content,
+        }))
+    }
+}
+
+/// A batch output line: the `id`, then the fields of `body`.
+#[derive(Serialize)]
+struct Tagged<'a, T: Serialize> {
+    id: &'a Value,
+    #[serde(flatten)]
+    body: T,
+}
+
+/// The `error` member of a failed line.
+#[derive(Serialize)]
+struct ErrorBody<'a> {
+    line: u64,
+    message: &'a str,
+}
+
+#[derive(Serialize)]
+struct ErrorLine<'a> {
+    error: ErrorBody<'a>,
+}
+
+/// Why a line failed, before its `id` is known or after.
+struct LineFailure {
+    id: Value,
+    message: String,
+}
+
+impl LineFailure {
+    fn without_id(message: impl Into<String>) -> Self {
+        LineFailure {
+            id: Value::Null,
+            message: message.into(),
+        }
+    }
+}
+
+/// The output line for one input line (without newline) and whether it succeeded.
+/// Never panics: a panic inside the classifier becomes an error line.
+pub fn answer_line(line: &RawLine) -> (String, bool) {
+    match classify_line(line) {
+        Ok(text) => (text, true),
+        Err(failure) => {
+            let record = Tagged {
+                id: &failure.id,
+                body: ErrorLine {
+                    error: ErrorBody {
+                        line: line.number,
+                        message: &failure.message,
+                    },
+                },
+            };
+            (to_json_line(&record), false)
+        }
+    }
+}
+
+/// Serializes an output record. The records hold strings, numbers and JSON values
+/// only, which always serialize; the fallback is there to never panic.
+fn to_json_line<T: Serialize>(record: &T) -> String {
+    serde_json::to_string(record).unwrap_or_else(|e| {
+        let message = serde_json::to_string(&e.to_string()).unwrap_or_default();
+        format!(r#"{{"id":null,"error":{{"line":0,"message":{message}}}}}"#)
+    })
+}
+
+fn classify_line(line: &RawLine) -> Result<String, LineFailure> {
+    let bytes = match &line.content {
+        Content::Text(bytes) => bytes,
+        Content::TooLong { bytes } => {
+            return Err(LineFailure::without_id(format!(
+                "line of {bytes} bytes exceeds the limit of {MAX_LINE_BYTES} bytes"
+            )))
+        }
+    };
+    let text = std::str::from_utf8(bytes).map_err(|e| {
+        LineFailure::without_id(format!(
+            "line is not valid UTF-8 (invalid byte at offset {})",
+            e.valid_up_to()
+        ))
+    })?;
+    let value: Value = serde_json::from_str(text)
+        .map_err(|e| LineFailure::without_id(format!("invalid JSON: {e}")))?;
+    let Value::Object(mut object) = value else {
+        return Err(LineFailure::without_id(format!(
+            "expected a JSON object with fields \"A\" and \"B\", found {}",
+            crate::input::json_kind(&value)
+        )));
+    };
+    let id = object.remove("id").unwrap_or(Value::Null);
+    let fail = |message: String| LineFailure {
+        id: id.clone(),
+        message,
+    };
+    let quadric = |name: &str| match object.get(name) {
+        None => Err(fail(format!("missing field \"{name}\""))),
+        Some(v) => quadric_from_json(v).map_err(|e| fail(format!("{name}: {e}"))),
+    };
+    let a = quadric("A")?;
+    let b = quadric("B")?;
+    let outcome = panic::catch_unwind(AssertUnwindSafe(|| {
+        classify_allowing_zero(a.as_ref(), b.as_ref())
+    }));
+    let classification = match outcome {
+        Ok(Ok(c)) => c,
+        Ok(Err(e)) => return Err(fail(format!("A and B: both are zero: {e}"))),
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_default();
+            return Err(fail(format!(
+                "internal error in the classifier (a bug): {what}"
+            )));
+        }
+    };
+    Ok(to_json_line(&Tagged {
+        id: &id,
+        body: ClassificationJson::from(&classification),
+    }))
+}
+
+/// How a batch ended.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Summary {
+    /// Input lines read, blank ones included.
+    pub lines: u64,
+    /// Output lines written.
+    pub answered: u64,
+    /// Output lines that are errors.
+    pub failed: u64,
+}
+
+/// A batch stopped by an I/O error; the lines before it were answered.
+#[derive(Debug)]
+pub enum BatchError {
+    /// Reading the input failed.
+    Read(io::Error),
+    /// Writing the output failed.
+    Write(io::Error),
+}
+
+/// Classifies JSON Lines from `input` and writes one JSON line per non-blank input line
+/// to `output`, in order. Lines are taken in chunks of at most [`CHUNK_LINES`] lines and
+/// [`CHUNK_BYTES`] bytes, or fewer when the input has nothing more ready; each chunk is
+/// classified on all cores, written, and flushed before the next is read. With
+/// `progress`, a spinner on stderr counts the lines done.
+///
+/// # Errors
+/// [`BatchError`] if reading or writing fails; every chunk read before is answered.
+pub fn run<R: Read, W: Write>(
+    input: R,
+    mut output: W,
+    progress: bool,
+) -> Result<Summary, BatchError> {
+    let mut reader = LineReader::new(input, MAX_LINE_BYTES);
+    let bar = progress_bar(progress);
+    let mut summary = Summary::default();
+    let mut read_error = None;
+    loop {
+        let mut chunk = Vec::new();
+        let mut bytes = 0;
+        let mut at_end = false;
+        while chunk.len() < CHUNK_LINES && bytes < CHUNK_BYTES {
+            match reader.next_line() {
+                Ok(Some(line)) if line.is_blank() => {}
+                Ok(Some(line)) => {
+                    bytes += line.held_bytes();
+                    chunk.push(line);
+                }
+                Ok(None) => {
+                    at_end = true;
+                    break;
+                }
+                Err(e) => {
+                    read_error = Some(e);
+                    break;
+                }
+            }
+            // Answer what we have rather than wait for a slow producer.
+            if !chunk.is_empty() && reader.drained() {
+                break;
+            }
+        }
+        let answers: Vec<(String, bool)> = chunk.par_iter().map(answer_line).collect();
+        for (text, ok) in &answers {
+            writeln!(output, "{text}").map_err(BatchError::Write)?;
+            summary.answered += 1;
+            summary.failed += u64::from(!ok);
+        }
+        output.flush().map_err(BatchError::Write)?;
+        summary.lines = reader.lines_read();
+        bar.set_position(summary.lines);
+        if let Some(e) = read_error {
+            bar.finish_and_clear();
+            return Err(BatchError::Read(e));
+        }
+        if at_end {
+            break;
+        }
+    }
+    bar.finish_and_clear();
+    Ok(summary)
+}
+
+fn progress_bar(visible: bool) -> ProgressBar {
+    if !visible {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
+    let style =
+        ProgressStyle::with_template("{spinner} {human_pos} lines done ({per_sec}, {elapsed})")
+            .unwrap_or_else(|_| ProgressStyle::default_spinner());
+    bar.set_style(style);
+    bar.enable_steady_tick(Duration::from_millis(120));
+    bar
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn lines_of(input: &[u8], limit: usize) -> Vec<RawLine> {
+        let mut reader = LineReader::new(input, limit);
+        let mut lines = Vec::new();
+        while let Some(line) = reader.next_line().expect("in-memory reads succeed") {
+            lines.push(line);
+        }
+        lines
+    }
+
+    fn text(number: u64, s: &str) -> RawLine {
+        RawLine {
+            number,
+            content: Content::Text(s.as_bytes().to_vec()),
+        }
+    }
+
+    #[test]
+    fn line_reader_bounds_lines_and_strips_terminators() {
+        let input = b"ab\r\n\n0123456789\nabcde\nlast";
+        assert_eq!(
+            lines_of(input, 5),
+            vec![
+                text(1, "ab"),
+                text(2, ""),
+                RawLine {
+                    number: 3,
+                    content: Content::TooLong { bytes: 11 }
+                },
+                text(4, "abcde"),
+                text(5, "last"),
+            ]
+        );
+        assert!(lines_of(b"", 5).is_empty());
+        assert_eq!(lines_of(b"\n", 5), vec![text(1, "")]);
+    }
+
+    #[test]
+    fn over_long_line_longer_than_the_buffer_is_skipped() {
+        let mut input = vec![b'x'; 3 * READ_BUFFER_BYTES];
+        input.extend_from_slice(b"\n{}\n");
+        let lines = lines_of(&input, 1000);
+        assert_eq!(lines.len(), 2);
+        assert!(matches!(lines[0].content, Content::TooLong { .. }));
+        assert_eq!(lines[1], text(2, "{}"));
+    }
+
+    fn run_on(input: &str) -> (Vec<Value>, Summary) {
+        let mut out = Vec::new();
+        let summary = run(input.as_bytes(), &mut out, false).expect("in-memory batch");
+        let values = String::from_utf8(out)
+            .expect("UTF-8 output")
+            .lines()
+            .map(|l| serde_json::from_str(l).expect("each output line is JSON"))
+            .collect();
+        (values, summary)
+    }
+
+    #[test]
+    fn results_and_errors_keep_order_ids_and_line_numbers() {
+        let input = concat!(
+            r#"{"id": 123456789012345678901234567890, "A": "x^2+y^2+z^2-w^2", "B": "2*x^2+4*y^2-w^2"}"#,
+            "\n   \n",
+            "not json\n",
+            r#"{"id": {"k": [1]}, "A": "x^2", "B": [[1,2,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]}"#,
+            "\n",
+            r#"{"A": "0", "B": "0"}"#,
+            "\n",
+            r#"{"id": "s", "A": "0", "B": "x^2+y^2-z^2"}"#,
+            "\n",
+            r#"[1, 2]"#,
+            "\n",
+            r#"{"id": 7, "B": "x^2"}"#,
+        );
+        let (out, summary) = run_on(input);
+        assert_eq!(
+            summary,
+            Summary {
+                lines: 8,
+                answered: 7,
+                failed: 5
+            }
+        );
+        assert_eq!(out.len(), 7);
+        assert_eq!(out[0]["id"].to_string(), "123456789012345678901234567890");
+        assert_eq!(out[0]["case"], 1);
+        let errors = [
+            (1, Value::Null, 3, "invalid JSON"),
+            (
+                2,
+                serde_json::json!({"k": [1]}),
+                4,
+                "B: matrix is not symmetric",
+            ),
+            (3, Value::Null, 5, "both are zero"),
+            (5, Value::Null, 7, "found an array"),
+            (6, 7.into(), 8, "missing field \"A\""),
+        ];
+        for (i, id, line, needle) in errors {
+            assert_eq!(out[i]["id"], id, "output {i}");
+            assert_eq!(out[i]["error"]["line"], line, "output {i}");
+            let message = out[i]["error"]["message"].as_str().expect("a message");
+            assert!(message.contains(needle), "output {i}: {message}");
+        }
+        assert_eq!(out[4]["id"], "s");
+        assert_eq!(out[4]["pencil"], "single");
+    }
+
+    #[test]
+    fn output_lines_start_with_id_and_follow_schema_order() {
+        let (_, _) = run_on("");
+        let mut out = Vec::new();
+        run(
+            &br#"{"id":1,"A":"x^2+y^2-w^2","B":"x^2-y^2"}"#[..],
+            &mut out,
+            false,
+        )
+        .expect("batch");
+        let line = String::from_utf8(out).expect("UTF-8");
+        assert!(line.starts_with(r#"{"id":1,"pencil":"#), "{line}");
+    }
+
+    #[test]
+    fn invalid_utf8_is_an_error_line() {
+        let line = RawLine {
+            number: 9,
+            content: Content::Text(b"{\"A\": \"x\xff\"}".to_vec()),
+        };
+        let (text, ok) = answer_line(&line);
+        assert!(!ok);
+        let v: Value = serde_json::from_str(&text).expect("JSON");
+        assert_eq!(v["error"]["line"], 9);
+        assert!(v["error"]["message"]
+            .as_str()
+            .is_some_and(|m| m.contains("UTF-8")));
+    }
+}

@@ -1,0 +1,12 @@
+//! The library behind the `qsic` binary: reading quadrics from arguments and JSON, the
+//! JSON result schema (`SCHEMA.md`) and the batch driver.
+//!
+//! | module | owns |
+//! |---|---|
+//! | [`input`] | reading a quadric from an argument or a JSON value, exactly |
+//! | [`output`] | the JSON result object ([`output::classification_to_json`]) and the text report |
+//! | [`batch`] | `--batch`: bounded, ordered, parallel JSON Lines processing |
+
+pub mod batch;
+pub mod input;
+pub mod output;

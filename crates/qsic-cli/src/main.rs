@@ -1,0 +1,203 @@
+//! `qsic`: exact classification of the intersection curve of two quadric surfaces.
+//! The command line is defined here; the work is done by the `qsic_cli` library.
+//!
+//! Exit codes: 0 success; 1 bad input (single query) or at least one failed line (batch);
+//! 2 usage error, unreadable input file or an I/O error.
+
+use clap::{Args, CommandFactory, Parser, Subcommand};
+use qsic_cli::{batch, input, output};
+use std::fs::File;
+use std::io::{self, IsTerminal, Write};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+const CLASSIFY_HELP: &str = "\
+QUADRICS:
+  A polynomial of degree 2 in x, y, z, w: homogeneous (\"x^2+y^2+z^2-w^2\") or affine in
+  x, y, z (\"x^2+y^2+z^2-1\", homogenized with w). Operators + - * / ^ (or **), parentheses,
+  exact numbers: 3, 3/4, 0.1, 2.5e-3 (0.1 is one tenth, never a float).
+  Or a symmetric 4x4 matrix as a JSON array of rows, e.g.
+  \"[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1]]\"; entries are numbers or strings (\"3/4\").
+  One of A and B may be the zero form \"0\": the pencil is then the other quadric alone.
+  A polynomial starting with '-' is accepted as is, or after '--'.
+
+BATCH (--batch FILE, or --batch - for standard input):
+  JSON Lines in: {\"id\": ..., \"A\": ..., \"B\": ...}, each quadric a polynomial string or a
+  4x4 array of numbers or number strings; other fields are ignored. JSON Lines out on
+  standard output: one line per non-blank input line, in input order, with the same id
+  (null if missing): the result object, or
+  {\"id\": ..., \"error\": {\"line\": n, \"message\": \"...\"}} with n the 1-based input line.
+  Blank lines are skipped but counted in line numbers. Lines longer than 1 MiB are
+  answered with an error without being stored. All cores are used; output is written
+  and flushed chunk by chunk. A progress spinner appears on stderr if it is a terminal.
+
+EXIT STATUS:
+  0  success (batch: every line classified)
+  1  bad input (single query: message on stderr) or, in a batch, at least one error line
+  2  usage error, unreadable input file, or an I/O error
+
+EXAMPLES:
+  qsic classify \"x^2+y^2+z^2-w^2\" \"2*x^2+4*y^2-w^2\"
+  qsic classify --json \"x^2+y^2+z^2-4\" \"(x-1)^2+y^2+z^2-4\"
+  qsic classify --batch cases.jsonl > results.jsonl
+  cat cases.jsonl | qsic classify --batch -";
+
+/// Exact classification of the intersection curve of two quadric surfaces.
+///
+/// Reads two quadrics exactly (rational arithmetic, no floating point), and reports the
+/// kind of their pencil, the case among the 35 of Tu, Wang, Mourrain and Wang (2009),
+/// the Segre characteristic, signature and index sequences, and the complex and real
+/// type of the intersection curve with its real components.
+#[derive(Parser, Debug)]
+#[command(
+    name = "qsic",
+    version,
+    arg_required_else_help = true,
+    after_help = "Run 'qsic classify --help' for the input forms, the batch format and the exit codes."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Classify the intersection of two quadrics A and B, or of many pairs (--batch).
+    ///
+    /// Prints the pencil kind (regular, singular or single), the case number, the Segre
+    /// characteristic, the signature and index sequences, the complex and real type, a
+    /// one-line summary, and the real components and singular points of the curve.
+    Classify(ClassifyArgs),
+}
+
+/// Arguments of `qsic classify`.
+#[derive(Args, Debug)]
+#[command(after_long_help = CLASSIFY_HELP, after_help = "See 'qsic classify --help' for input forms, batch format and exit codes.")]
+struct ClassifyArgs {
+    /// First quadric: a polynomial in x, y, z, w, or a 4x4 JSON matrix.
+    #[arg(
+        value_name = "A",
+        allow_hyphen_values = true,
+        required_unless_present = "batch"
+    )]
+    a: Option<String>,
+
+    /// Second quadric: a polynomial in x, y, z, w, or a 4x4 JSON matrix.
+    #[arg(
+        value_name = "B",
+        allow_hyphen_values = true,
+        required_unless_present = "batch"
+    )]
+    b: Option<String>,
+
+    /// Classify the JSON Lines of FILE ('-' for standard input) and write JSON Lines.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["a", "b"])]
+    batch: Option<PathBuf>,
+
+    /// Print one JSON object instead of the text report (batch output is always JSON).
+    #[arg(long)]
+    json: bool,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.command {
+        Command::Classify(args) => match (&args.batch, &args.a, &args.b) {
+            (Some(path), _, _) => run_batch(path),
+            (None, Some(a), Some(b)) => run_single(a, b, args.json),
+            _ => {
+                // clap's `required_unless_present` makes this unreachable; answer as a usage error.
+                let mut cmd = Cli::command();
+                cmd.error(
+                    clap::error::ErrorKind::MissingRequiredArgument,
+                    "two quadrics A and B, or --batch FILE, are required",
+                )
+                .exit()
+            }
+        },
+    }
+}
+
+/// `qsic classify A B`: exit 0 with the report, or 1 with `error: A: …` on stderr.
+fn run_single(a: &str, b: &str, json: bool) -> ExitCode {
+    let read =
+        |name: &str, text: &str| input::quadric_from_arg(text).map_err(|e| format!("{name}: {e}"));
+    let result = read("A", a).and_then(|qa| {
+        let qb = read("B", b)?;
+        qsic::classify_allowing_zero(qa.as_ref(), qb.as_ref())
+            .map_err(|e| format!("A and B: both are zero: {e}"))
+    });
+    let classification = match result {
+        Ok(c) => c,
+        Err(message) => {
+            eprintln!("error: {message}");
+            return ExitCode::from(1);
+        }
+    };
+    let text = if json {
+        output::classification_to_json_line(&classification) + "\n"
+    } else {
+        output::human_report(&classification)
+    };
+    let mut stdout = io::stdout().lock();
+    match stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => io_failure("writing the output", &e),
+    }
+}
+
+/// `qsic classify --batch FILE`: exit 0 if every line succeeded, 1 if any failed, 2 on I/O errors.
+fn run_batch(path: &std::path::Path) -> ExitCode {
+    let progress = io::stderr().is_terminal();
+    let stdout = io::BufWriter::with_capacity(1 << 20, io::stdout().lock());
+    let result = if path.as_os_str() == "-" {
+        batch::run(io::stdin().lock(), stdout, progress)
+    } else {
+        match File::open(path) {
+            Ok(file) => batch::run(file, stdout, progress),
+            Err(e) => {
+                eprintln!("error: cannot open {}: {e}", path.display());
+                return ExitCode::from(2);
+            }
+        }
+    };
+    match result {
+        Ok(summary) if summary.failed == 0 => ExitCode::SUCCESS,
+        Ok(_) => ExitCode::from(1),
+        Err(batch::BatchError::Read(e)) => io_failure(&format!("reading {}", path.display()), &e),
+        Err(batch::BatchError::Write(e)) => io_failure("writing the output", &e),
+    }
+}
+
+/// Exit 2 after an I/O error; a closed output pipe (`| head`) ends quietly.
+fn io_failure(what: &str, e: &io::Error) -> ExitCode {
+    if e.kind() != io::ErrorKind::BrokenPipe {
+        eprintln!("error: {what}: {e}");
+    }
+    ExitCode::from(2)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn command_line_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+
+    #[test]
+    fn hyphen_polynomials_and_batch_conflicts() {
+        let cli = Cli::try_parse_from(["qsic", "classify", "-x^2+y^2-w^2", "x^2", "--json"])
+            .expect("a leading '-' is a polynomial");
+        let Command::Classify(args) = cli.command;
+        assert_eq!(args.a.as_deref(), Some("-x^2+y^2-w^2"));
+        assert!(args.json);
+        assert!(Cli::try_parse_from(["qsic", "classify", "--batch", "f", "x^2", "y^2"]).is_err());
+        assert!(Cli::try_parse_from(["qsic", "classify", "x^2"]).is_err());
+        assert!(Cli::try_parse_from(["qsic", "classify", "--batch", "-"]).is_ok());
+    }
+}

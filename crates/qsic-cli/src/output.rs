@@ -1,0 +1,311 @@
+//! Presenting a [`Classification`]: the JSON object of `SCHEMA.md` and the text report.
+//!
+//! | entry point | gives |
+//! |---|---|
+//! | [`ClassificationJson`] | the JSON result object, fields in schema order |
+//! | [`classification_to_json`] | the same as a [`serde_json::Value`] |
+//! | [`human_report`] | the multi-line report of `qsic classify A B` |
+
+use qsic::classify::{Component, SingularPointKind, SingularPoints};
+use qsic::Classification;
+use serde::Serialize;
+use serde_json::Value;
+use std::fmt::Write as _;
+
+/// The JSON result object (schema in `SCHEMA.md`). Serializing it writes the fields in
+/// declaration order; every field is always present, `null` where not determined.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct ClassificationJson {
+    /// `regular`, `singular` or `single`.
+    pub pencil: &'static str,
+    /// Case 1–35 of Tu et al. (regular pencils).
+    pub case: Option<u8>,
+    /// Segre characteristic with the number of real roots, e.g. `[(11)11]_3`.
+    pub segre: Option<&'static str>,
+    /// Canonical signature sequence.
+    pub signature: Option<&'static str>,
+    /// Canonical index sequence.
+    pub index_sequence: Option<&'static str>,
+    /// Complex type key.
+    pub complex_type: Option<&'static str>,
+    /// Real type key.
+    pub real_type: Option<&'static str>,
+    /// Real components (empty when nothing is real or the class is undetermined).
+    pub components: Vec<ComponentJson>,
+    /// Real singular points.
+    pub singular_points: Vec<SingularPointsJson>,
+    /// One-line summary, `null` when undetermined.
+    pub description: Option<&'static str>,
+}
+
+/// One entry of `components`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct ComponentJson {
+    /// `point`, `line`, `conic`, `cubic`, `quartic`, `plane` or `quadric`.
+    pub kind: &'static str,
+    /// 1 for a simple component, 2 for a double one, ….
+    pub multiplicity: u8,
+    /// How many such components.
+    pub count: u8,
+    /// Affinely finite (`true`), never (`false`), or not fixed by the class (`null`).
+    pub closed: Option<bool>,
+}
+
+/// One entry of `singular_points`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct SingularPointsJson {
+    /// `acnode`, `crunode`, `cusp`, `tangency` or `multiple`.
+    pub kind: &'static str,
+    /// How many.
+    pub count: u8,
+}
+
+impl From<&Component> for ComponentJson {
+    fn from(c: &Component) -> Self {
+        ComponentJson {
+            kind: c.kind.key(),
+            multiplicity: c.multiplicity,
+            count: c.count,
+            closed: c.closed,
+        }
+    }
+}
+
+impl From<&SingularPoints> for SingularPointsJson {
+    fn from(p: &SingularPoints) -> Self {
+        SingularPointsJson {
+            kind: p.kind.key(),
+            count: p.count,
+        }
+    }
+}
+
+impl From<&Classification> for ClassificationJson {
+    fn from(c: &Classification) -> Self {
+        let description = c.description.as_ref();
+        ClassificationJson {
+            pencil: c.pencil.key(),
+            case: c.case,
+            segre: c.segre,
+            signature: c.signature,
+            index_sequence: c.index_sequence,
+            complex_type: c.complex_type(),
+            real_type: c.real_type(),
+            components: description
+                .map(|d| d.components.iter().map(ComponentJson::from).collect())
+                .unwrap_or_default(),
+            singular_points: description
+                .map(|d| {
+                    d.singular_points
+                        .iter()
+                        .map(SingularPointsJson::from)
+                        .collect()
+                })
+                .unwrap_or_default(),
+            description: description.map(|d| d.summary),
+        }
+    }
+}
+
+/// The JSON result object of a classification (schema in `SCHEMA.md`), without `id`.
+///
+/// A [`Value`] keeps its keys sorted; to write them in schema order, serialize
+/// [`ClassificationJson`] instead, as [`classification_to_json_line`] does.
+pub fn classification_to_json(c: &Classification) -> Value {
+    // Strings, small integers, booleans and null: serialization to a `Value` cannot fail.
+    serde_json::to_value(ClassificationJson::from(c))
+        .expect("a ClassificationJson holds only plain data")
+}
+
+/// The JSON result object as one line of text, keys in schema order.
+pub fn classification_to_json_line(c: &Classification) -> String {
+    serde_json::to_string(&ClassificationJson::from(c))
+        .expect("a ClassificationJson holds only plain data")
+}
+
+/// English name of a component family: `conic`, `double line`, `4-fold line`.
+fn component_name(c: &Component) -> String {
+    let prefix = match c.multiplicity {
+        1 => String::new(),
+        2 => "double ".into(),
+        3 => "triple ".into(),
+        4 => "quadruple ".into(),
+        m => format!("{m}-fold "),
+    };
+    let kind = match c.kind.key() {
+        "quartic" => "quartic branch",
+        other => other,
+    };
+    let closed = match c.closed {
+        Some(true) => " (closed)",
+        Some(false) => " (affinely infinite)",
+        None => "",
+    };
+    format!("{} × {prefix}{kind}{closed}", c.count)
+}
+
+/// `2 crunodes`, `1 cusp`, `2 tangencies`, `1 multiple point`.
+fn singular_points_name(p: &SingularPoints) -> String {
+    let (one, many) = match p.kind {
+        SingularPointKind::Acnode => ("acnode", "acnodes"),
+        SingularPointKind::Crunode => ("crunode", "crunodes"),
+        SingularPointKind::Cusp => ("cusp", "cusps"),
+        SingularPointKind::Tangency => ("tangency", "tangencies"),
+        SingularPointKind::Multiple => ("multiple point", "multiple points"),
+    };
+    format!("{} {}", p.count, if p.count == 1 { one } else { many })
+}
+
+/// Width of the label column of [`human_report`].
+const LABEL_WIDTH: usize = 18;
+
+/// The text report of `qsic classify A B`: one `label: value` line per field
+/// (`-` where not defined), then the real components and singular points.
+pub fn human_report(c: &Classification) -> String {
+    let dash = |v: Option<&str>| v.unwrap_or("-").to_string();
+    let rows = [
+        ("pencil", c.pencil.key().to_string()),
+        ("case", c.case.map_or("-".into(), |n| n.to_string())),
+        ("Segre", dash(c.segre)),
+        ("signature", dash(c.signature)),
+        ("index sequence", dash(c.index_sequence)),
+        ("complex type", dash(c.complex_type())),
+        ("real type", dash(c.real_type())),
+        (
+            "summary",
+            c.description
+                .as_ref()
+                .map_or("not determined".into(), |d| d.summary.to_string()),
+        ),
+    ];
+    let mut out = String::new();
+    for (label, value) in rows {
+        // Writing to a String cannot fail.
+        let _ = writeln!(out, "{:<LABEL_WIDTH$}{value}", format!("{label}:"));
+    }
+    let Some(d) = c.description.as_ref() else {
+        return out;
+    };
+    if d.components.is_empty() {
+        let _ = writeln!(out, "{:<LABEL_WIDTH$}none real", "components:");
+    } else {
+        out.push_str("components:\n");
+        for comp in &d.components {
+            let _ = writeln!(out, "  {}", component_name(comp));
+        }
+    }
+    let points: Vec<String> = d.singular_points.iter().map(singular_points_name).collect();
+    let points = if points.is_empty() {
+        "none".to_string()
+    } else {
+        points.join(", ")
+    };
+    let _ = writeln!(out, "{:<LABEL_WIDTH$}{points}", "singular points:");
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use qsic::io::parse_quadric;
+
+    fn classify(a: &str, b: &str) -> Classification {
+        let a = parse_quadric(a).expect("test quadric");
+        let b = parse_quadric(b).expect("test quadric");
+        qsic::classify(&a, &b)
+    }
+
+    const KEYS: [&str; 10] = [
+        "pencil",
+        "case",
+        "segre",
+        "signature",
+        "index_sequence",
+        "complex_type",
+        "real_type",
+        "components",
+        "singular_points",
+        "description",
+    ];
+
+    #[test]
+    fn case_1_representative_to_json() {
+        let c = classify("x^2+y^2+z^2-w^2", "2*x^2+4*y^2-w^2");
+        let v = classification_to_json(&c);
+        assert_eq!(v["pencil"], "regular");
+        assert_eq!(v["case"], 1);
+        assert_eq!(v["segre"], "[1111]_4");
+        assert_eq!(v["index_sequence"], "<1|2|1|2|3>");
+        assert_eq!(v["complex_type"], "smooth_quartic");
+        assert_eq!(v["real_type"], "two_finite_components");
+        let components = v["components"].as_array().expect("an array");
+        assert!(!components.is_empty());
+        for comp in components {
+            let keys: Vec<&str> = comp
+                .as_object()
+                .expect("object")
+                .keys()
+                .map(String::as_str)
+                .collect();
+            assert_eq!(keys, ["closed", "count", "kind", "multiplicity"]);
+        }
+        assert!(v["description"].is_string());
+    }
+
+    #[test]
+    fn every_key_is_present_and_in_schema_order() {
+        let c = classify("x^2+y^2+z^2-w^2", "x^2+y^2+z^2-w^2");
+        let text = serde_json::to_string(&ClassificationJson::from(&c)).expect("serializes");
+        let positions: Vec<usize> = KEYS
+            .iter()
+            .map(|k| text.find(&format!("\"{k}\":")).unwrap_or(usize::MAX))
+            .collect();
+        assert!(positions.windows(2).all(|w| w[0] < w[1]), "{text}");
+        let v = classification_to_json(&c);
+        assert_eq!(v.as_object().expect("object").len(), KEYS.len());
+        assert_eq!(v["pencil"], "single");
+        assert_eq!(v["case"], Value::Null);
+        assert_eq!(v["complex_type"], "smooth_quadric");
+    }
+
+    #[test]
+    fn singular_pencil_has_nulls_where_undetermined() {
+        // Two forms without w: every member is singular at (0:0:0:1), so det ≡ 0.
+        let c = classify("x*y", "x*z");
+        let v = classification_to_json(&c);
+        assert_eq!(v["pencil"], "singular");
+        assert_eq!(v["case"], Value::Null);
+        assert_eq!(v["segre"], Value::Null);
+        assert_eq!(v.as_object().expect("object").len(), KEYS.len());
+    }
+
+    #[test]
+    fn human_names() {
+        use qsic::classify::ComponentKind;
+        let conics = Component {
+            kind: ComponentKind::Conic,
+            multiplicity: 1,
+            count: 2,
+            closed: Some(true),
+        };
+        assert_eq!(component_name(&conics), "2 × conic (closed)");
+        let double = Component {
+            kind: ComponentKind::Line,
+            multiplicity: 2,
+            count: 1,
+            closed: None,
+        };
+        assert_eq!(component_name(&double), "1 × double line");
+        let crunodes = SingularPoints {
+            kind: SingularPointKind::Crunode,
+            count: 2,
+        };
+        assert_eq!(singular_points_name(&crunodes), "2 crunodes");
+        let report = human_report(&classify("x^2+y^2+z^2-w^2", "2*x^2+4*y^2-w^2"));
+        assert!(report.contains("case:             1\n"), "{report}");
+        assert!(
+            report.contains("real type:        two_finite_components\n"),
+            "{report}"
+        );
+    }
+}

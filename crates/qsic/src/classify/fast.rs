@@ -1,0 +1,210 @@
+//! The fast path for the commonest input: a pencil with four simple roots (cases 1–4),
+//! small integer matrices, `det A ≠ 0`. Machine arithmetic only: exact `i128`
+//! polynomials, then certified float signs ([`qsic_algebra::filter`]). Any sign the
+//! filter cannot certify returns `None`, and the exact path decides.
+//!
+//! Method, for `f(λ) = det(λA − B) = aλ⁴ + bλ³ + cλ² + dλ + e` with `a ≠ 0`:
+//! - `disc(f) ≠ 0`: four simple roots, Segre `[1111]`. `disc < 0`: two real roots, case 3
+//!   (Theorem 5: one class). `disc > 0`: four real roots iff `P = 8ac − 3b² < 0` and
+//!   `D = 64a³e − 16a²c² + 16ab²c − 16a²bd − 3b⁴ < 0`, else none: case 4 (Theorem 6).
+//! - Four real roots (Theorem 4): case 2 iff some member is definite. The arcs between the
+//!   roots hold the three critical points of `f` (Rolle) and `λ = ∞` (the member `A`);
+//!   float approximations of the critical points are certified to lie in the right arcs
+//!   by the signs of `f` there, and the inertia at each sample comes from the certified
+//!   signs of the principal minor sums `E₁…E₄`.
+
+use qsic_algebra::filter::{certified_sign, certified_sign_poly, sum_of_products_bound};
+use qsic_algebra::Sign;
+
+type Lin = [i128; 2];
+
+fn mul<const N: usize, const M: usize, const K: usize>(x: &[i128; N], y: &[i128; M]) -> [i128; K] {
+    let mut out = [0i128; K];
+    for (i, a) in x.iter().enumerate() {
+        for (j, b) in y.iter().enumerate() {
+            out[i + j] += a * b;
+        }
+    }
+    out
+}
+
+fn add<const N: usize>(x: &mut [i128; N], y: &[i128; N], sign: i128) {
+    for (a, b) in x.iter_mut().zip(y) {
+        *a += sign * b;
+    }
+}
+
+/// `E₁…E₄` of `λA − B` as exact polynomials (low degree first).
+struct MinorSums {
+    e1: [i128; 2],
+    e2: [i128; 3],
+    e3: [i128; 4],
+    e4: [i128; 5],
+}
+
+fn minor_sums(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> MinorSums {
+    let e = |i: usize, j: usize| -> Lin { [-(b[i][j] as i128), a[i][j] as i128] };
+    let m2 = |r: [usize; 2], c: [usize; 2]| -> [i128; 3] {
+        let mut x: [i128; 3] = mul(&e(r[0], c[0]), &e(r[1], c[1]));
+        add(&mut x, &mul(&e(r[0], c[1]), &e(r[1], c[0])), -1);
+        x
+    };
+    let mut e1 = [0i128; 2];
+    for i in 0..4 {
+        add(&mut e1, &e(i, i), 1);
+    }
+    let mut e2 = [0i128; 3];
+    for i in 0..4 {
+        for j in (i + 1)..4 {
+            add(&mut e2, &m2([i, j], [i, j]), 1);
+        }
+    }
+    let mut e3 = [0i128; 4];
+    for skip in 0..4 {
+        let idx: Vec<usize> = (0..4).filter(|&k| k != skip).collect();
+        let (r0, r1, r2) = (idx[0], idx[1], idx[2]);
+        // expand along the first row
+        add(&mut e3, &mul(&e(r0, r0), &m2([r1, r2], [r1, r2])), 1);
+        add(&mut e3, &mul(&e(r0, r1), &m2([r1, r2], [r0, r2])), -1);
+        add(&mut e3, &mul(&e(r0, r2), &m2([r1, r2], [r0, r1])), 1);
+    }
+    // Laplace expansion along rows 0, 1.
+    let mut e4 = [0i128; 5];
+    let pairs = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+    for &(c1, c2) in &pairs {
+        let rest: Vec<usize> = (0..4).filter(|&k| k != c1 && k != c2).collect();
+        let s = if (1 + c1 + c2) % 2 == 0 { 1 } else { -1 };
+        add(&mut e4, &mul(&m2([0, 1], [c1, c2]), &m2([2, 3], [rest[0], rest[1]])), s);
+    }
+    MinorSums { e1, e2, e3, e4 }
+}
+
+fn to_f64<const N: usize>(c: &[i128; N]) -> [f64; N] {
+    c.map(|v| v as f64)
+}
+
+/// Certified sign of `Σ terms` where each term is a product of `factors` rounded inputs.
+fn sign_of_sum(terms: &[f64], factors: usize) -> Option<Sign> {
+    let value: f64 = terms.iter().sum();
+    let mag: f64 = terms.iter().map(|t| t.abs()).sum();
+    certified_sign(value, sum_of_products_bound(factors, terms.len(), mag))
+}
+
+/// The case (1–4) of a pencil with four simple roots, or `None` when the fast path does
+/// not apply or cannot certify a sign.
+pub(crate) fn classify_simple_roots(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> Option<u8> {
+    let s = minor_sums(a, b);
+    if s.e4[4] == 0 {
+        return None;
+    }
+    let [e, d, c, b1, a4] = to_f64(&s.e4);
+    let (a, b) = (a4, b1);
+    let disc = sign_of_sum(
+        &[
+            256.0 * a * a * a * e * e * e,
+            -192.0 * a * a * b * d * e * e,
+            -128.0 * a * a * c * c * e * e,
+            144.0 * a * a * c * d * d * e,
+            -27.0 * a * a * d * d * d * d,
+            144.0 * a * b * b * c * e * e,
+            -6.0 * a * b * b * d * d * e,
+            -80.0 * a * b * c * c * d * e,
+            18.0 * a * b * c * d * d * d,
+            16.0 * a * c * c * c * c * e,
+            -4.0 * a * c * c * c * d * d,
+            -27.0 * b * b * b * b * e * e,
+            18.0 * b * b * b * c * d * e,
+            -4.0 * b * b * b * d * d * d,
+            -4.0 * b * b * c * c * c * e,
+            b * b * c * c * d * d,
+        ],
+        7,
+    )?;
+    match disc {
+        Sign::Zero => return None,
+        Sign::Negative => return Some(3),
+        Sign::Positive => {}
+    }
+    let p = sign_of_sum(&[8.0 * a * c, -3.0 * b * b], 3)?;
+    let dd = sign_of_sum(
+        &[
+            64.0 * a * a * a * e,
+            -16.0 * a * a * c * c,
+            16.0 * a * b * b * c,
+            -16.0 * a * a * b * d,
+            -3.0 * b * b * b * b,
+        ],
+        5,
+    )?;
+    if p == Sign::Positive || dd == Sign::Positive {
+        return Some(4);
+    }
+    if p != Sign::Negative || dd != Sign::Negative {
+        return None;
+    }
+    // Four real roots: is some member definite?
+    let lead = |v: i128| Sign::of_i128(v);
+    let at_infinity = [lead(s.e1[1]), lead(s.e2[2]), lead(s.e3[3]), lead(s.e4[4])];
+    if is_definite(at_infinity) {
+        return Some(2);
+    }
+    let crit = critical_points(a, b, c, d)?;
+    let fc = to_f64(&s.e4);
+    let sa = lead(s.e4[4]);
+    let expected = [-sa, sa, -sa];
+    let (e1, e2, e3) = (to_f64(&s.e1), to_f64(&s.e2), to_f64(&s.e3));
+    for (x, want) in crit.iter().zip(expected) {
+        if certified_sign_poly(&fc, *x)? != want {
+            return None;
+        }
+        let signs = [
+            certified_sign_poly(&e1, *x)?,
+            certified_sign_poly(&e2, *x)?,
+            certified_sign_poly(&e3, *x)?,
+            want,
+        ];
+        if is_definite(signs) {
+            return Some(2);
+        }
+    }
+    Some(1)
+}
+
+/// Positive definite: all principal minor sums positive; negative definite: signs alternate
+/// starting with `E₁ < 0`.
+fn is_definite(s: [Sign; 4]) -> bool {
+    use Sign::{Negative as N, Positive as P};
+    s == [P, P, P, P] || s == [N, P, N, P]
+}
+
+/// Approximations of the three real roots of `f' = 4aλ³ + 3bλ² + 2cλ + d`, increasing,
+/// by the trigonometric formula; `None` if it does not apply numerically.
+fn critical_points(a: f64, b: f64, c: f64, d: f64) -> Option<[f64; 3]> {
+    let (bb, cc, dd) = (3.0 * b / (4.0 * a), 2.0 * c / (4.0 * a), d / (4.0 * a));
+    let p = cc - bb * bb / 3.0;
+    let q = 2.0 * bb * bb * bb / 27.0 - bb * cc / 3.0 + dd;
+    if !(p < 0.0) {
+        return None;
+    }
+    let m = 2.0 * (-p / 3.0).sqrt();
+    let arg = (3.0 * q / (p * m)).clamp(-1.0, 1.0);
+    let theta = arg.acos() / 3.0;
+    let mut r = [0.0; 3];
+    for (k, slot) in r.iter_mut().enumerate() {
+        *slot = m * (theta - 2.0 * std::f64::consts::PI * k as f64 / 3.0).cos() - bb / 3.0;
+    }
+    // one Newton step on f' each, for accuracy near clustered roots
+    let fp = |x: f64| ((4.0 * a * x + 3.0 * b) * x + 2.0 * c) * x + d;
+    let fpp = |x: f64| (12.0 * a * x + 6.0 * b) * x + 2.0 * c;
+    for x in r.iter_mut() {
+        let den = fpp(*x);
+        if den != 0.0 {
+            let nx = *x - fp(*x) / den;
+            if nx.is_finite() {
+                *x = nx;
+            }
+        }
+    }
+    r.sort_by(f64::total_cmp);
+    r.iter().all(|x| x.is_finite()).then_some(r)
+}

@@ -1,0 +1,126 @@
+//! Known answers by construction: a projective map `X → PX`, a reparameterization of the
+//! pencil `(A, B) → (aA + bB, cA + dB)`, scaling and swapping never change the class; the
+//! fast path and the exact path agree.
+
+use proptest::prelude::*;
+use qsic::classify::classify_exact;
+use qsic::io::quadric_from_rows;
+use qsic::{classify, Quadric};
+use dashu_ratio::RBig;
+use serde_json::Value;
+
+type M = [[RBig; 4]; 4];
+
+fn representatives() -> Vec<(String, Quadric, Quadric, u8)> {
+    let path = format!("{}/tests/data/cases.jsonl", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).expect("cases.jsonl is in the repository");
+    let read = |v: &Value| -> Quadric {
+        let rows: Vec<Vec<String>> = v
+            .as_array()
+            .expect("matrix")
+            .iter()
+            .map(|r| r.as_array().expect("row").iter().map(|x| x.as_str().expect("string").to_owned()).collect())
+            .collect();
+        quadric_from_rows(&rows).expect("valid corpus matrix")
+    };
+    text.lines()
+        .map(|l| serde_json::from_str::<Value>(l).expect("json"))
+        .filter(|v| v["id"].as_str().is_some_and(|id| id.ends_with("-rep") || id.ends_with("-rep-alt")))
+        .map(|v| (v["id"].as_str().unwrap_or("").to_owned(), read(&v["A"]), read(&v["B"]), v["case"].as_u64().unwrap_or(0) as u8))
+        .collect()
+}
+
+fn transform(m: &M, p: &[[i64; 4]; 4]) -> M {
+    // Pᵀ M P
+    let mut out: M = Default::default();
+    for i in 0..4 {
+        for j in 0..4 {
+            let mut s = RBig::ZERO;
+            for k in 0..4 {
+                for l in 0..4 {
+                    if p[k][i] != 0 && p[l][j] != 0 {
+                        s += RBig::from(p[k][i] * p[l][j]) * &m[k][l];
+                    }
+                }
+            }
+            out[i][j] = s;
+        }
+    }
+    out
+}
+
+fn combine(x: &M, s: i64, y: &M, t: i64) -> M {
+    let mut out: M = Default::default();
+    for i in 0..4 {
+        for j in 0..4 {
+            out[i][j] = RBig::from(s) * &x[i][j] + RBig::from(t) * &y[i][j];
+        }
+    }
+    out
+}
+
+fn det4(p: &[[i64; 4]; 4]) -> i128 {
+    let m: Vec<Vec<i128>> = p.iter().map(|r| r.iter().map(|&v| v as i128).collect()).collect();
+    fn det(m: &[Vec<i128>]) -> i128 {
+        if m.len() == 1 {
+            return m[0][0];
+        }
+        (0..m.len())
+            .map(|c| {
+                let sub: Vec<Vec<i128>> = m[1..].iter().map(|r| r.iter().enumerate().filter(|&(j, _)| j != c).map(|(_, &v)| v).collect()).collect();
+                let s = if c % 2 == 0 { 1 } else { -1 };
+                s * m[0][c] * det(&sub)
+            })
+            .sum()
+    }
+    det(&m)
+}
+
+fn invertible_map() -> impl Strategy<Value = [[i64; 4]; 4]> {
+    prop::array::uniform4(prop::array::uniform4(-3i64..=3)).prop_filter("invertible", |p| det4(p) != 0)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    #[test]
+    fn disguises_keep_the_case(p in invertible_map(), r in prop::array::uniform4(-4i64..=4), swap: bool, k in 1i64..5) {
+        prop_assume!(r[0] * r[3] - r[1] * r[2] != 0);
+        let reps = representatives();
+        prop_assert_eq!(reps.len(), 36);
+        for (id, a, b, case) in reps {
+            let (ta, tb) = (transform(a.matrix(), &p), transform(b.matrix(), &p));
+            let na = combine(&ta, r[0] * k, &tb, r[1] * k);
+            let nb = combine(&ta, r[2], &tb, r[3]);
+            let (qa, qb) = (Quadric::from_matrix(na).expect("nonzero"), Quadric::from_matrix(nb).expect("nonzero"));
+            let (qa, qb) = if swap { (qb, qa) } else { (qa, qb) };
+            let c = classify(&qa, &qb);
+            prop_assert_eq!(c.case, Some(case), "{} disguised by P={:?}, r={:?}", id, p, r);
+            prop_assert_eq!(classify_exact(&qa, &qb), c);
+        }
+    }
+
+    /// The fast path and the exact path agree on random pairs with coefficients in [−10, 10],
+    /// and on pairs pushed towards tangency (a shared factor added to both).
+    #[test]
+    fn fast_and_exact_paths_agree(v in prop::array::uniform10(-10i64..=10), w in prop::array::uniform10(-10i64..=10), t in -3i64..=3) {
+        let build = |c: &[i64; 10]| {
+            let mut m = [[0i64; 4]; 4];
+            let mut k = 0;
+            for i in 0..4 {
+                for j in i..4 {
+                    m[i][j] = if i == j { 2 * c[k] } else { c[k] };
+                    m[j][i] = m[i][j];
+                    k += 1;
+                }
+            }
+            m
+        };
+        let (ma, mut mb) = (build(&v), build(&w));
+        // B − tA makes some pairs share more structure
+        for i in 0..4 { for j in 0..4 { mb[i][j] -= t * ma[i][j]; } }
+        if let (Ok(a), Ok(b)) = (Quadric::from_integers(ma), Quadric::from_integers(mb)) {
+            prop_assert_eq!(classify(&a, &b), classify_exact(&a, &b));
+        }
+    }
+}
