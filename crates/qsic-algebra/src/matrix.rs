@@ -278,16 +278,68 @@ fn det3(m: &[[IBig; 4]; 4], r: &[usize; 3], c: &[usize; 3]) -> IBig {
 /// The pencil `λA − μB` of two symmetric 4×4 integer matrices, studied through
 /// polynomials in `λ` on the chart `μ = 1`; each is a binary form of a known degree `k`
 /// in `(λ, μ)`, so a degree drop below `k` is a root at `λ = ∞` of that multiplicity.
+///
+/// All minors of `λA − B` are computed once, at construction: the 2×2 minors from the
+/// entries, the 3×3 minors by expansion along a row into 2×2 minors, the determinant from
+/// the 3×3 minors.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct MatrixPencil {
     a: SymMatrix4,
     b: SymMatrix4,
+    /// 2×2 minors, `[row pair][column pair]`, pairs indexed as in `PAIRS`.
+    m2: Vec<Poly>,
+    /// 3×3 minors, `[row triple][column triple]`, triples indexed as in `TRIPLES`.
+    m3: Vec<Poly>,
+    det: Poly,
+}
+
+fn pair_index(i: usize, j: usize) -> usize {
+    PAIRS.iter().position(|&p| p == (i.min(j), i.max(j))).expect("a valid pair")
 }
 
 impl MatrixPencil {
     /// The pencil `λA − μB`.
     pub fn new(a: SymMatrix4, b: SymMatrix4) -> MatrixPencil {
-        MatrixPencil { a, b }
+        let e = |i: usize, j: usize| Poly::new(vec![-b.m[i][j].clone(), a.m[i][j].clone()]);
+        let entries: Vec<Poly> = (0..16).map(|k| e(k / 4, k % 4)).collect();
+        let ent = |i: usize, j: usize| &entries[4 * i + j];
+        let mut m2 = vec![Poly::zero(); 36];
+        for (ri, &(r0, r1)) in PAIRS.iter().enumerate() {
+            for (ci, &(c0, c1)) in PAIRS.iter().enumerate().skip(ri) {
+                let v = &(ent(r0, c0) * ent(r1, c1)) - &(ent(r0, c1) * ent(r1, c0));
+                m2[6 * ci + ri] = v.clone();
+                m2[6 * ri + ci] = v;
+            }
+        }
+        let mut m3 = vec![Poly::zero(); 16];
+        for (ri, r) in TRIPLES.iter().enumerate() {
+            for (ci, c) in TRIPLES.iter().enumerate().skip(ri) {
+                let mut acc = Poly::zero();
+                for j in 0..3 {
+                    let x = ent(r[0], c[j]);
+                    if x.is_zero() {
+                        continue;
+                    }
+                    let rest: Vec<usize> = (0..3).filter(|&k| k != j).map(|k| c[k]).collect();
+                    let sub = &m2[6 * pair_index(r[1], r[2]) + pair_index(rest[0], rest[1])];
+                    let t = x * sub;
+                    acc = if j % 2 == 0 { &acc + &t } else { &acc - &t };
+                }
+                m3[4 * ci + ri] = acc.clone();
+                m3[4 * ri + ci] = acc;
+            }
+        }
+        // expand along row 0: columns j, minor of rows {1,2,3} (triple 3) and the other columns
+        let mut det = Poly::zero();
+        for j in 0..4 {
+            let x = ent(0, j);
+            if x.is_zero() {
+                continue;
+            }
+            let t = x * &m3[4 * 3 + (3 - j)];
+            det = if j % 2 == 0 { &det + &t } else { &det - &t };
+        }
+        MatrixPencil { a, b, m2, m3, det }
     }
 
     /// `A`.
@@ -305,69 +357,44 @@ impl MatrixPencil {
         self.a.combine(lambda, &self.b, mu)
     }
 
-    fn entry(&self, i: usize, j: usize) -> Poly {
-        Poly::new(vec![-self.b.m[i][j].clone(), self.a.m[i][j].clone()])
-    }
-
-    fn minor(&self, rows: &[usize], cols: &[usize]) -> Poly {
-        match rows.len() {
-            1 => self.entry(rows[0], cols[0]),
-            k => {
-                let mut acc = Poly::zero();
-                for c in 0..k {
-                    let e = self.entry(rows[0], cols[c]);
-                    if e.is_zero() {
-                        continue;
-                    }
-                    let sub_cols: Vec<usize> = cols
-                        .iter()
-                        .enumerate()
-                        .filter(|&(i, _)| i != c)
-                        .map(|(_, &v)| v)
-                        .collect();
-                    let t = &e * &self.minor(&rows[1..], &sub_cols);
-                    acc = if c % 2 == 0 { &acc + &t } else { &acc - &t };
-                }
-                acc
-            }
-        }
-    }
-
     /// `f(λ) = det(λA − B)`, the characteristic polynomial (a binary quartic form).
     pub fn det_poly(&self) -> Poly {
-        self.minor(&[0, 1, 2, 3], &[0, 1, 2, 3])
+        self.det.clone()
     }
 
-    /// Every `k×k` minor of `λA − B` (`1 ≤ k ≤ 4`), each once up to the symmetry
-    /// `minor(R, C) = minor(C, R)`; zero minors are left out.
+    /// Every nonzero `k×k` minor of `λA − B` (`1 ≤ k ≤ 4`), each once up to the symmetry
+    /// `minor(R, C) = minor(C, R)`.
     pub fn minors(&self, k: usize) -> Vec<Poly> {
-        let subsets: Vec<Vec<usize>> = (0u8..16)
-            .filter(|s| s.count_ones() as usize == k)
-            .map(|s| (0..4).filter(|i| s >> i & 1 == 1).collect())
-            .collect();
-        let mut out = Vec::new();
-        for (i, r) in subsets.iter().enumerate() {
-            for c in &subsets[i..] {
-                let m = self.minor(r, c);
-                if !m.is_zero() {
-                    out.push(m);
-                }
-            }
+        let upper = |v: &[Poly], n: usize| -> Vec<Poly> {
+            (0..n)
+                .flat_map(|r| (r..n).map(move |c| (r, c)))
+                .map(|(r, c)| v[n * r + c].clone())
+                .filter(|p| !p.is_zero())
+                .collect()
+        };
+        match k {
+            1 => (0..4)
+                .flat_map(|i| (i..4).map(move |j| (i, j)))
+                .map(|(i, j)| Poly::new(vec![-self.b.m[i][j].clone(), self.a.m[i][j].clone()]))
+                .filter(|p| !p.is_zero())
+                .collect(),
+            2 => upper(&self.m2, 6),
+            3 => upper(&self.m3, 4),
+            4 if !self.det.is_zero() => vec![self.det.clone()],
+            _ => Vec::new(),
         }
-        out
     }
 
     /// `[E₁(λ), …, E₄(λ)]`: the sums of principal minors of `λA − B` of each order.
     /// The inertia of the member at `λ` follows from their signs
     /// ([`Inertia::from_minor_sum_signs`]).
     pub fn principal_minor_sums(&self) -> [Poly; 4] {
-        let mut e: [Poly; 4] = Default::default();
-        for s in 1u8..16 {
-            let idx: Vec<usize> = (0..4).filter(|i| s >> i & 1 == 1).collect();
-            let k = idx.len();
-            e[k - 1] = &e[k - 1] + &self.minor(&idx, &idx);
-        }
-        e
+        let e1 = (0..4).fold(Poly::zero(), |acc, i| {
+            &acc + &Poly::new(vec![-self.b.m[i][i].clone(), self.a.m[i][i].clone()])
+        });
+        let e2 = (0..6).fold(Poly::zero(), |acc, p| &acc + &self.m2[7 * p]);
+        let e3 = (0..4).fold(Poly::zero(), |acc, t| &acc + &self.m3[5 * t]);
+        [e1, e2, e3, self.det.clone()]
     }
 }
 

@@ -1,1 +1,56 @@
-fn main() {}
+//! Classification throughput on named input families:
+//! - `random_small`: pairs whose polynomial coefficients are integers in [−10, 10];
+//! - `case_NN`: the five disguised copies of each of the 35 cases (cases.jsonl);
+//! - `degenerate_exact`: all disguised copies through the exact path only.
+
+use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use qsic::classify::classify_exact;
+use qsic::{classify, Quadric};
+use std::hint::black_box;
+
+mod inputs;
+use inputs::{corpus_pairs, random_quadric, SplitMix};
+
+fn bench(c: &mut Criterion) {
+    let mut rng = SplitMix(7);
+    let random: Vec<(Quadric, Quadric)> = (0..1000).map(|_| (random_quadric(&mut rng), random_quadric(&mut rng))).collect();
+    let mut g = c.benchmark_group("classify");
+    g.throughput(Throughput::Elements(random.len() as u64));
+    g.bench_function("random_small", |b| {
+        b.iter(|| {
+            for (x, y) in &random {
+                black_box(classify(x, y));
+            }
+        })
+    });
+    let disguised = corpus_pairs(|id| !id.contains("rep"));
+    g.throughput(Throughput::Elements(disguised.len() as u64));
+    g.bench_function("all_35_cases_disguised", |b| {
+        b.iter(|| {
+            for (_, x, y) in &disguised {
+                black_box(classify(x, y));
+            }
+        })
+    });
+    g.finish();
+    let mut g = c.benchmark_group("classify_case");
+    for case in 1..=35 {
+        let pairs = corpus_pairs(|id| id.starts_with(&format!("pub-c{case:02}-")) && !id.contains("rep"));
+        g.throughput(Throughput::Elements(pairs.len() as u64));
+        g.bench_function(format!("case_{case:02}"), |b| {
+            b.iter(|| {
+                for (_, x, y) in &pairs {
+                    black_box(classify_exact(x, y));
+                }
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default().sample_size(20).warm_up_time(std::time::Duration::from_millis(300)).measurement_time(std::time::Duration::from_secs(1));
+    targets = bench
+}
+criterion_main!(benches);

@@ -6,44 +6,10 @@
 
 use qsic::{classify, Quadric};
 
-/// splitmix64: a deterministic generator, enough for benchmark inputs.
-pub struct SplitMix(pub u64);
+#[path = "../benches/inputs.rs"]
+mod inputs;
 
-impl SplitMix {
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform in [lo, hi].
-    pub fn range(&mut self, lo: i64, hi: i64) -> i64 {
-        lo + (self.next_u64() % (hi - lo + 1) as u64) as i64
-    }
-}
-
-/// A random quadric whose 10 polynomial coefficients are integers in [−10, 10]
-/// (matrix: 2× the coefficient on the diagonal, the coefficient off it).
-pub fn random_quadric(rng: &mut SplitMix) -> Quadric {
-    loop {
-        let mut m = [[0i64; 4]; 4];
-        for i in 0..4 {
-            for j in i..4 {
-                let c = rng.range(-10, 10);
-                if i == j {
-                    m[i][i] = 2 * c;
-                } else {
-                    m[i][j] = c;
-                    m[j][i] = c;
-                }
-            }
-        }
-        if let Ok(q) = Quadric::from_integers(m) {
-            return q;
-        }
-    }
-}
+use inputs::{random_quadric, SplitMix};
 
 fn main() {
     let n: usize = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(1000);

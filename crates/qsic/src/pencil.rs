@@ -78,18 +78,25 @@ struct MinorGcds {
 
 impl MinorGcds {
     fn new(pencil: &MatrixPencil) -> MinorGcds {
-        let mut finite: [Poly; 3] = Default::default();
+        let mut finite: [Poly; 3] = std::array::from_fn(|_| Poly::constant(IBig::ONE));
         let mut at_infinity = [0usize; 3];
-        for k in 1..=3 {
-            let minors = pencil.minors(k);
+        // D_{k−1} divides D_k: once D_k is 1 (no root of rank ≤ k − 1), the rest are 1 too.
+        for k in (1..=3).rev() {
             let mut g = Poly::zero();
             let mut inf = k;
-            for m in &minors {
+            for m in &pencil.minors(k) {
                 g = g.gcd(m);
                 inf = inf.min(k - m.degree().unwrap_or(0));
+                if g.is_constant() && inf == 0 {
+                    break;
+                }
             }
+            let trivial = g.is_constant() && inf == 0;
             finite[k - 1] = g;
             at_infinity[k - 1] = inf;
+            if trivial {
+                break;
+            }
         }
         MinorGcds {
             finite,
@@ -200,7 +207,12 @@ impl PencilAnalysis {
                 complex_roots.push(blocks.clone());
             }
             for r in roots {
-                let inertia = inertia_at(&e, &r);
+                // A simple root's inertia follows from its arcs (filled in below).
+                let inertia = if *m == 1 {
+                    Inertia { positive: 0, negative: 0, zero: 1 }
+                } else {
+                    inertia_at(&e, &r)
+                };
                 real_roots.push(PencilRoot {
                     point: PencilPoint::Finite(r),
                     multiplicity: *m as u8,
@@ -237,6 +249,18 @@ impl PencilAnalysis {
             arcs.push((last.clone(), inertia_at_rational(&e, &last)));
         }
 
+        // At a simple root exactly one eigenvalue crosses zero: the member's inertia is the
+        // smaller of its two arcs' counts.
+        for (i, r) in real_roots.iter_mut().enumerate() {
+            if r.multiplicity == 1 {
+                let (l, h) = (&arcs[i].1, &arcs[i + 1].1);
+                r.inertia = Inertia {
+                    positive: l.positive.min(h.positive),
+                    negative: l.negative.min(h.negative),
+                    zero: 1,
+                };
+            }
+        }
         if m_inf > 0 {
             let blocks = match &gcds {
                 None => vec![1],
