@@ -1,5 +1,5 @@
 //! The library behind the `qsic` binary: reading quadrics from arguments and JSON, the
-//! JSON result schema (`SCHEMA.md`) and the batch driver.
+//! JSON result schema (see the README) and the batch driver.
 //!
 //! | module | owns |
 //! |---|---|

@@ -1,4 +1,4 @@
-//! Presenting a [`Classification`]: the JSON object of `SCHEMA.md` and the text report.
+//! Presenting a [`Classification`]: the JSON object of the README (section "Command line and JSON schema") and the text report.
 //!
 //! | entry point | gives |
 //! |---|---|
@@ -12,7 +12,7 @@ use serde::Serialize;
 use serde_json::Value;
 use std::fmt::Write as _;
 
-/// The JSON result object (schema in `SCHEMA.md`). Serializing it writes the fields in
+/// The JSON result object (schema in the README). Serializing it writes the fields in
 /// declaration order; every field is always present, `null` where not determined.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct ClassificationJson {
@@ -107,7 +107,7 @@ impl From<&Classification> for ClassificationJson {
     }
 }
 
-/// The JSON result object of a classification (schema in `SCHEMA.md`), without `id`.
+/// The JSON result object of a classification (schema in the README), without `id`.
 ///
 /// A [`Value`] keeps its keys sorted; to write them in schema order, serialize
 /// [`ClassificationJson`] instead, as [`classification_to_json_line`] does.
