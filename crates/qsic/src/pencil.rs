@@ -327,3 +327,67 @@ impl SigItem {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use qsic_algebra::matrix::Inertia;
+
+    fn diag(v: [i64; 4]) -> Quadric {
+        let mut m = [[0i64; 4]; 4];
+        for i in 0..4 {
+            m[i][i] = v[i];
+        }
+        Quadric::from_integers(m).expect("nonzero")
+    }
+
+    fn inertia(p: u8, n: u8) -> Inertia {
+        Inertia { positive: p, negative: n, zero: 4 - p - n }
+    }
+
+    /// λA − B = diag(λ − 1, 2 − λ, λ, −λ): roots 0 (double, two 1×1 blocks), 1, 2.
+    #[test]
+    fn diagonal_pencil_known_roots_blocks_and_inertia() {
+        let data = PencilData::new(&diag([1, -1, 1, -1]), &diag([1, -2, 0, 0]));
+        let an = PencilAnalysis::compute(&data);
+        let roots: Vec<(Option<RBig>, u8, Vec<u8>, Inertia)> = an
+            .real_roots
+            .iter()
+            .map(|r| match &r.point {
+                PencilPoint::Finite(a) => (a.as_rational().cloned(), r.multiplicity, r.blocks.clone(), r.inertia),
+                PencilPoint::Infinity => (None, r.multiplicity, r.blocks.clone(), r.inertia),
+            })
+            .collect();
+        assert_eq!(
+            roots,
+            vec![
+                (Some(RBig::ZERO), 2, vec![1, 1], inertia(1, 1)),
+                (Some(RBig::ONE), 1, vec![1], inertia(2, 1)),
+                (Some(RBig::from(2)), 1, vec![1], inertia(2, 1)),
+            ]
+        );
+        let arcs: Vec<u8> = an.arcs.iter().map(|(_, i)| i.positive).collect();
+        assert_eq!(arcs, vec![2, 2, 3, 2]);
+        assert!(an.complex_roots.is_empty());
+    }
+
+    /// A = diag(1, 1, 0, 0) is singular: λA − B = diag(λ − 3, λ − 3, −1, −1) has a double
+    /// root at 3 and one at ∞, each with two 1×1 blocks; case 9's pencil has two 2×2 blocks.
+    #[test]
+    fn root_at_infinity_and_jordan_blocks() {
+        let data = PencilData::new(&diag([1, 1, 0, 0]), &diag([3, 3, 1, 1]));
+        let an = PencilAnalysis::compute(&data);
+        assert_eq!(an.real_roots.len(), 2);
+        assert_eq!(an.real_roots[0].multiplicity, 2);
+        assert_eq!(an.real_roots[0].blocks, vec![1, 1]);
+        assert_eq!(an.real_roots[1].point, PencilPoint::Infinity);
+        assert_eq!(an.real_roots[1].blocks, vec![1, 1]);
+        assert_eq!(an.real_roots[1].inertia, inertia(2, 0));
+        // case 9: A = xy + zw, B = y² + 2zw + w² (matrices doubled)
+        let a = Quadric::from_integers([[0, 1, 0, 0], [1, 0, 0, 0], [0, 0, 0, 1], [0, 0, 1, 0]]).expect("valid");
+        let b = Quadric::from_integers([[0, 0, 0, 0], [0, 2, 0, 0], [0, 0, 0, 2], [0, 0, 2, 2]]).expect("valid");
+        let an = PencilAnalysis::compute(&PencilData::new(&a, &b));
+        let blocks: Vec<Vec<u8>> = an.real_roots.iter().map(|r| r.blocks.clone()).collect();
+        assert_eq!(blocks, vec![vec![2], vec![2]]);
+    }
+}
