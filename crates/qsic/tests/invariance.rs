@@ -124,3 +124,32 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, ..ProptestConfig::default() })]
+
+    /// Tiny entries make tangent and degenerate pencils common: every regular one must land in
+    /// one of the 35 cases (Theorem 23), and single/singular ones must be reported as such.
+    #[test]
+    fn every_regular_pencil_gets_a_case(v in prop::array::uniform10(-2i64..=2), w in prop::array::uniform10(-2i64..=2)) {
+        let build = |c: &[i64; 10]| {
+            let mut m = [[0i64; 4]; 4];
+            let mut k = 0;
+            for i in 0..4 {
+                for j in i..4 {
+                    m[i][j] = c[k];
+                    m[j][i] = c[k];
+                    k += 1;
+                }
+            }
+            m
+        };
+        if let (Ok(a), Ok(b)) = (Quadric::from_integers(build(&v)), Quadric::from_integers(build(&w))) {
+            let c = classify(&a, &b);
+            if c.pencil == qsic::classify::PencilKind::Regular {
+                prop_assert!(c.case.is_some(), "no case for A={:?} B={:?}", a.matrix(), b.matrix());
+            }
+            prop_assert!(c.morphology.is_some() || c.pencil == qsic::classify::PencilKind::Singular);
+        }
+    }
+}
