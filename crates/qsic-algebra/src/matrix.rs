@@ -294,7 +294,10 @@ pub struct MatrixPencil {
 }
 
 fn pair_index(i: usize, j: usize) -> usize {
-    PAIRS.iter().position(|&p| p == (i.min(j), i.max(j))).expect("a valid pair")
+    PAIRS
+        .iter()
+        .position(|&p| p == (i.min(j), i.max(j)))
+        .expect("a valid pair")
 }
 
 impl MatrixPencil {

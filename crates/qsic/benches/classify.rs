@@ -13,7 +13,9 @@ use inputs::{corpus_pairs, random_quadric, SplitMix};
 
 fn bench(c: &mut Criterion) {
     let mut rng = SplitMix(7);
-    let random: Vec<(Quadric, Quadric)> = (0..1000).map(|_| (random_quadric(&mut rng), random_quadric(&mut rng))).collect();
+    let random: Vec<(Quadric, Quadric)> = (0..1000)
+        .map(|_| (random_quadric(&mut rng), random_quadric(&mut rng)))
+        .collect();
     let mut g = c.benchmark_group("classify");
     g.throughput(Throughput::Elements(random.len() as u64));
     g.bench_function("random_small", |b| {
@@ -35,7 +37,8 @@ fn bench(c: &mut Criterion) {
     g.finish();
     let mut g = c.benchmark_group("classify_case");
     for case in 1..=35 {
-        let pairs = corpus_pairs(|id| id.starts_with(&format!("pub-c{case:02}-")) && !id.contains("rep"));
+        let pairs =
+            corpus_pairs(|id| id.starts_with(&format!("pub-c{case:02}-")) && !id.contains("rep"));
         g.throughput(Throughput::Elements(pairs.len() as u64));
         g.bench_function(format!("case_{case:02}"), |b| {
             b.iter(|| {

@@ -6,15 +6,20 @@
 
 use qsic::{classify, Quadric};
 
-#[path = "../benches/inputs.rs"]
+#[path = "../benches/inputs/mod.rs"]
 mod inputs;
 
 use inputs::{random_quadric, SplitMix};
 
 fn main() {
-    let n: usize = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(1000);
+    let n: usize = std::env::args()
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1000);
     let mut rng = SplitMix(42);
-    let pairs: Vec<(Quadric, Quadric)> = (0..n).map(|_| (random_quadric(&mut rng), random_quadric(&mut rng))).collect();
+    let pairs: Vec<(Quadric, Quadric)> = (0..n)
+        .map(|_| (random_quadric(&mut rng), random_quadric(&mut rng)))
+        .collect();
     let mut hist = [0usize; 36];
     let start = std::time::Instant::now();
     for (a, b) in &pairs {
@@ -23,7 +28,10 @@ fn main() {
     }
     let el = start.elapsed();
     if n > 0 {
-        eprintln!("{n} pairs in {el:?}: {:.2} µs/pair", el.as_secs_f64() * 1e6 / n as f64);
+        eprintln!(
+            "{n} pairs in {el:?}: {:.2} µs/pair",
+            el.as_secs_f64() * 1e6 / n as f64
+        );
     }
     for (case, count) in hist.iter().enumerate().filter(|(_, c)| **c > 0) {
         println!("case {case}: {count}");

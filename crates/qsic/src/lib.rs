@@ -17,6 +17,9 @@
 //! assert_eq!(c.pencil.key(), "regular");
 //! ```
 
+// Index loops read as the matrix formulas they implement.
+#![allow(clippy::needless_range_loop)]
+
 pub mod classify;
 pub mod error;
 pub mod io;

@@ -209,7 +209,11 @@ impl PencilAnalysis {
             for r in roots {
                 // A simple root's inertia follows from its arcs (filled in below).
                 let inertia = if *m == 1 {
-                    Inertia { positive: 0, negative: 0, zero: 1 }
+                    Inertia {
+                        positive: 0,
+                        negative: 0,
+                        zero: 1,
+                    }
                 } else {
                     inertia_at(&e, &r)
                 };
@@ -342,7 +346,11 @@ mod tests {
     }
 
     fn inertia(p: u8, n: u8) -> Inertia {
-        Inertia { positive: p, negative: n, zero: 4 - p - n }
+        Inertia {
+            positive: p,
+            negative: n,
+            zero: 4 - p - n,
+        }
     }
 
     /// λA − B = diag(λ − 1, 2 − λ, λ, −λ): roots 0 (double, two 1×1 blocks), 1, 2.
@@ -354,7 +362,12 @@ mod tests {
             .real_roots
             .iter()
             .map(|r| match &r.point {
-                PencilPoint::Finite(a) => (a.as_rational().cloned(), r.multiplicity, r.blocks.clone(), r.inertia),
+                PencilPoint::Finite(a) => (
+                    a.as_rational().cloned(),
+                    r.multiplicity,
+                    r.blocks.clone(),
+                    r.inertia,
+                ),
                 PencilPoint::Infinity => (None, r.multiplicity, r.blocks.clone(), r.inertia),
             })
             .collect();
@@ -384,8 +397,10 @@ mod tests {
         assert_eq!(an.real_roots[1].blocks, vec![1, 1]);
         assert_eq!(an.real_roots[1].inertia, inertia(2, 0));
         // case 9: A = xy + zw, B = y² + 2zw + w² (matrices doubled)
-        let a = Quadric::from_integers([[0, 1, 0, 0], [1, 0, 0, 0], [0, 0, 0, 1], [0, 0, 1, 0]]).expect("valid");
-        let b = Quadric::from_integers([[0, 0, 0, 0], [0, 2, 0, 0], [0, 0, 0, 2], [0, 0, 2, 2]]).expect("valid");
+        let a = Quadric::from_integers([[0, 1, 0, 0], [1, 0, 0, 0], [0, 0, 0, 1], [0, 0, 1, 0]])
+            .expect("valid");
+        let b = Quadric::from_integers([[0, 0, 0, 0], [0, 2, 0, 0], [0, 0, 0, 2], [0, 0, 2, 2]])
+            .expect("valid");
         let an = PencilAnalysis::compute(&PencilData::new(&a, &b));
         let blocks: Vec<Vec<u8>> = an.real_roots.iter().map(|r| r.blocks.clone()).collect();
         assert_eq!(blocks, vec![vec![2], vec![2]]);

@@ -2,11 +2,13 @@
 //! pencil `(A, B) → (aA + bB, cA + dB)`, scaling and swapping never change the class; the
 //! fast path and the exact path agree.
 
+#![allow(clippy::needless_range_loop)]
+
+use dashu_ratio::RBig;
 use proptest::prelude::*;
 use qsic::classify::classify_exact;
 use qsic::io::quadric_from_rows;
 use qsic::{classify, Quadric};
-use dashu_ratio::RBig;
 use serde_json::Value;
 
 type M = [[RBig; 4]; 4];
@@ -19,14 +21,31 @@ fn representatives() -> Vec<(String, Quadric, Quadric, u8)> {
             .as_array()
             .expect("matrix")
             .iter()
-            .map(|r| r.as_array().expect("row").iter().map(|x| x.as_str().expect("string").to_owned()).collect())
+            .map(|r| {
+                r.as_array()
+                    .expect("row")
+                    .iter()
+                    .map(|x| x.as_str().expect("string").to_owned())
+                    .collect()
+            })
             .collect();
         quadric_from_rows(&rows).expect("valid corpus matrix")
     };
     text.lines()
         .map(|l| serde_json::from_str::<Value>(l).expect("json"))
-        .filter(|v| v["id"].as_str().is_some_and(|id| id.ends_with("-rep") || id.ends_with("-rep-alt")))
-        .map(|v| (v["id"].as_str().unwrap_or("").to_owned(), read(&v["A"]), read(&v["B"]), v["case"].as_u64().unwrap_or(0) as u8))
+        .filter(|v| {
+            v["id"]
+                .as_str()
+                .is_some_and(|id| id.ends_with("-rep") || id.ends_with("-rep-alt"))
+        })
+        .map(|v| {
+            (
+                v["id"].as_str().unwrap_or("").to_owned(),
+                read(&v["A"]),
+                read(&v["B"]),
+                v["case"].as_u64().unwrap_or(0) as u8,
+            )
+        })
         .collect()
 }
 
@@ -60,14 +79,26 @@ fn combine(x: &M, s: i64, y: &M, t: i64) -> M {
 }
 
 fn det4(p: &[[i64; 4]; 4]) -> i128 {
-    let m: Vec<Vec<i128>> = p.iter().map(|r| r.iter().map(|&v| v as i128).collect()).collect();
+    let m: Vec<Vec<i128>> = p
+        .iter()
+        .map(|r| r.iter().map(|&v| v as i128).collect())
+        .collect();
     fn det(m: &[Vec<i128>]) -> i128 {
         if m.len() == 1 {
             return m[0][0];
         }
         (0..m.len())
             .map(|c| {
-                let sub: Vec<Vec<i128>> = m[1..].iter().map(|r| r.iter().enumerate().filter(|&(j, _)| j != c).map(|(_, &v)| v).collect()).collect();
+                let sub: Vec<Vec<i128>> = m[1..]
+                    .iter()
+                    .map(|r| {
+                        r.iter()
+                            .enumerate()
+                            .filter(|&(j, _)| j != c)
+                            .map(|(_, &v)| v)
+                            .collect()
+                    })
+                    .collect();
                 let s = if c % 2 == 0 { 1 } else { -1 };
                 s * m[0][c] * det(&sub)
             })
@@ -76,8 +107,23 @@ fn det4(p: &[[i64; 4]; 4]) -> i128 {
     det(&m)
 }
 
+/// The matrix (doubled) of the form with coefficients `c` of x², xy, xz, xw, y², yz, yw, z², zw, w².
+fn from_polynomial_coefficients(c: &[i64; 10]) -> [[i64; 4]; 4] {
+    let mut m = [[0i64; 4]; 4];
+    let mut k = 0;
+    for i in 0..4 {
+        for j in i..4 {
+            m[i][j] = if i == j { 2 * c[k] } else { c[k] };
+            m[j][i] = m[i][j];
+            k += 1;
+        }
+    }
+    m
+}
+
 fn invertible_map() -> impl Strategy<Value = [[i64; 4]; 4]> {
-    prop::array::uniform4(prop::array::uniform4(-3i64..=3)).prop_filter("invertible", |p| det4(p) != 0)
+    prop::array::uniform4(prop::array::uniform4(-3i64..=3))
+        .prop_filter("invertible", |p| det4(p) != 0)
 }
 
 proptest! {
@@ -104,19 +150,7 @@ proptest! {
     /// and on pairs pushed towards tangency (a shared factor added to both).
     #[test]
     fn fast_and_exact_paths_agree(v in prop::array::uniform10(-10i64..=10), w in prop::array::uniform10(-10i64..=10), t in -3i64..=3) {
-        let build = |c: &[i64; 10]| {
-            let mut m = [[0i64; 4]; 4];
-            let mut k = 0;
-            for i in 0..4 {
-                for j in i..4 {
-                    m[i][j] = if i == j { 2 * c[k] } else { c[k] };
-                    m[j][i] = m[i][j];
-                    k += 1;
-                }
-            }
-            m
-        };
-        let (ma, mut mb) = (build(&v), build(&w));
+        let (ma, mut mb) = (from_polynomial_coefficients(&v), from_polynomial_coefficients(&w));
         // B − tA makes some pairs share more structure
         for i in 0..4 { for j in 0..4 { mb[i][j] -= t * ma[i][j]; } }
         if let (Ok(a), Ok(b)) = (Quadric::from_integers(ma), Quadric::from_integers(mb)) {
@@ -132,19 +166,8 @@ proptest! {
     /// one of the 35 cases (Theorem 23), and single/singular ones must be reported as such.
     #[test]
     fn every_regular_pencil_gets_a_case(v in prop::array::uniform10(-2i64..=2), w in prop::array::uniform10(-2i64..=2)) {
-        let build = |c: &[i64; 10]| {
-            let mut m = [[0i64; 4]; 4];
-            let mut k = 0;
-            for i in 0..4 {
-                for j in i..4 {
-                    m[i][j] = c[k];
-                    m[j][i] = c[k];
-                    k += 1;
-                }
-            }
-            m
-        };
-        if let (Ok(a), Ok(b)) = (Quadric::from_integers(build(&v)), Quadric::from_integers(build(&w))) {
+        let (ma, mb) = (from_polynomial_coefficients(&v), from_polynomial_coefficients(&w));
+        if let (Ok(a), Ok(b)) = (Quadric::from_integers(ma), Quadric::from_integers(mb)) {
             let c = classify(&a, &b);
             if c.pencil == qsic::classify::PencilKind::Regular {
                 prop_assert!(c.case.is_some(), "no case for A={:?} B={:?}", a.matrix(), b.matrix());

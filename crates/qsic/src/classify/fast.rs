@@ -74,7 +74,11 @@ fn minor_sums(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> MinorSums {
     for &(c1, c2) in &pairs {
         let rest: Vec<usize> = (0..4).filter(|&k| k != c1 && k != c2).collect();
         let s = if (1 + c1 + c2) % 2 == 0 { 1 } else { -1 };
-        add(&mut e4, &mul(&m2([0, 1], [c1, c2]), &m2([2, 3], [rest[0], rest[1]])), s);
+        add(
+            &mut e4,
+            &mul(&m2([0, 1], [c1, c2]), &m2([2, 3], [rest[0], rest[1]])),
+            s,
+        );
     }
     MinorSums { e1, e2, e3, e4 }
 }
@@ -183,7 +187,7 @@ fn critical_points(a: f64, b: f64, c: f64, d: f64) -> Option<[f64; 3]> {
     let (bb, cc, dd) = (3.0 * b / (4.0 * a), 2.0 * c / (4.0 * a), d / (4.0 * a));
     let p = cc - bb * bb / 3.0;
     let q = 2.0 * bb * bb * bb / 27.0 - bb * cc / 3.0 + dd;
-    if !(p < 0.0) {
+    if p.is_nan() || p >= 0.0 {
         return None;
     }
     let m = 2.0 * (-p / 3.0).sqrt();

@@ -680,7 +680,7 @@ fn quadric_from_poly(poly: Poly) -> Result<Quadric, Error> {
         let mut vars = e
             .iter()
             .enumerate()
-            .flat_map(|(v, &p)| std::iter::repeat(v).take(usize::from(p)));
+            .flat_map(|(v, &p)| std::iter::repeat_n(v, usize::from(p)));
         if let (Some(i), Some(j)) = (vars.next(), vars.next()) {
             if i == j {
                 m[i][i] = c.clone();

@@ -1,7 +1,7 @@
 //! Benchmark inputs shared by the criterion benches and the `random_pairs` example:
 //! a deterministic generator and the input families named in the README.
 
-#![allow(dead_code)]
+#![allow(dead_code, clippy::needless_range_loop)]
 
 use qsic::io::quadric_from_rows;
 use qsic::Quadric;
@@ -61,7 +61,13 @@ pub fn corpus_pairs(filter: impl Fn(&str) -> bool) -> Vec<(String, Quadric, Quad
                 .as_array()
                 .expect("matrix")
                 .iter()
-                .map(|r| r.as_array().expect("row").iter().map(|x| x.as_str().unwrap_or("0").to_owned()).collect())
+                .map(|r| {
+                    r.as_array()
+                        .expect("row")
+                        .iter()
+                        .map(|x| x.as_str().unwrap_or("0").to_owned())
+                        .collect()
+                })
                 .collect();
             quadric_from_rows(&rows).expect("valid corpus matrix")
         };
