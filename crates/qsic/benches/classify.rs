@@ -1,7 +1,8 @@
 //! Classification throughput on named input families:
 //! - `random_small`: pairs whose polynomial coefficients are integers in [−10, 10];
 //! - `case_NN`: the five disguised copies of each of the 35 cases (cases.jsonl);
-//! - `degenerate_exact`: all disguised copies through the exact path only.
+//! - `qi_singular`: the singular pencils of QI's test file;
+//! - `classify_case/case_NN`: each case's disguised copies through the exact path only.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use qsic::classify::classify_exact;
@@ -30,6 +31,15 @@ fn bench(c: &mut Criterion) {
     g.bench_function("all_35_cases_disguised", |b| {
         b.iter(|| {
             for (_, x, y) in &disguised {
+                black_box(classify(x, y));
+            }
+        })
+    });
+    let singular = inputs::qi_singular_pairs();
+    g.throughput(Throughput::Elements(singular.len() as u64));
+    g.bench_function("qi_singular", |b| {
+        b.iter(|| {
+            for (x, y) in &singular {
                 black_box(classify(x, y));
             }
         })

@@ -120,6 +120,6 @@ fn seed_examples_of_the_papers() {
 }
 
 #[test]
-fn qi_test_file_regular_and_single() {
-    assert_eq!(check_file("qi-quadrics.jsonl", false), 121);
+fn qi_test_file_regular_singular_and_single() {
+    assert_eq!(check_file("qi-quadrics.jsonl", true), 121);
 }

@@ -75,3 +75,18 @@ pub fn corpus_pairs(filter: impl Fn(&str) -> bool) -> Vec<(String, Quadric, Quad
     }
     out
 }
+
+/// The singular pairs of `qi-quadrics.jsonl` (polynomial strings).
+pub fn qi_singular_pairs() -> Vec<(Quadric, Quadric)> {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/qi-quadrics.jsonl");
+    let text = std::fs::read_to_string(path).expect("qi-quadrics.jsonl is in the repository");
+    text.lines()
+        .map(|l| serde_json::from_str::<serde_json::Value>(l).expect("valid json"))
+        .filter(|v| v["pencil"] == "singular")
+        .filter_map(|v| {
+            let a = qsic::io::parse_quadric(v["A"].as_str()?).ok()?;
+            let b = qsic::io::parse_quadric(v["B"].as_str()?).ok()?;
+            Some((a, b))
+        })
+        .collect()
+}

@@ -14,11 +14,16 @@
 //! `λA − μB` (gcds of minors); it carries the minimal-polynomial degree that Section 6 uses
 //! to separate cases 4/10/31 (`[1111]₀`, `[22]₀`, `[(11)(11)]₀`) and 26/35 (`[(31)]`,
 //! `[(22)]`), so no extra test is needed. Everything is exact rational arithmetic.
+//!
+//! **Singular pencils** (`det ≡ 0`): [`singular`] derives the type from the Kronecker
+//! structure (common singular points, projection to a pencil of conics).
+//! **Single** (`A ∝ B`): [`single`], by inertia.
 
 mod fast;
 mod morphology;
 mod signature;
 mod single;
+mod singular;
 mod table;
 
 pub use morphology::{
@@ -47,8 +52,9 @@ pub struct Classification {
     pub signature: Option<&'static str>,
     /// The canonical index sequence of the class (regular pencils only).
     pub index_sequence: Option<&'static str>,
-    /// Complex and real type (taxonomy.md). `None` only for a singular pencil whose type
-    /// is not determined.
+    /// Complex and real type (taxonomy.md). Always present for valid quadrics; `None` would
+    /// mean an internal inconsistency (no case of the table matches), reported rather than
+    /// guessed.
     pub morphology: Option<Morphology>,
     /// Real components and singular points.
     pub description: Option<Description>,
@@ -94,14 +100,16 @@ pub fn classify_exact(a: &Quadric, b: &Quadric) -> Classification {
         return classify_single(a);
     }
     if data.f.is_zero() {
+        let (morphology, description) = singular::classify_singular(&data.a, &data.b)
+            .map_or((None, None), |(m, d)| (Some(m), Some(d)));
         return Classification {
             pencil: PencilKind::Singular,
             case: None,
             segre: None,
             signature: None,
             index_sequence: None,
-            morphology: None,
-            description: None,
+            morphology,
+            description,
         };
     }
     let analysis = PencilAnalysis::compute(&data);
