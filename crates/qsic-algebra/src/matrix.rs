@@ -142,14 +142,12 @@ impl SymMatrix4 {
     pub fn is_proportional(&self, other: &SymMatrix4) -> bool {
         let a: Vec<&IBig> = self.m.iter().flatten().collect();
         let b: Vec<&IBig> = other.m.iter().flatten().collect();
-        for i in 0..16 {
-            for j in (i + 1)..16 {
-                if a[i] * b[j] != a[j] * b[i] {
-                    return false;
-                }
-            }
+        // With a pivot k where self is nonzero, other = (b_k / a_k)·self iff
+        // a_k·b_i = b_k·a_i for every i.
+        match (0..16).find(|&k| !a[k].is_zero()) {
+            None => true,
+            Some(k) => (0..16).all(|i| a[k] * b[i] == b[k] * a[i]),
         }
-        true
     }
 
     /// Sums `[E₁, E₂, E₃, E₄]` of the principal minors of each order (`E₄` is the determinant).
@@ -440,6 +438,20 @@ mod tests {
                 prop_assert_eq!(e[k].eval(&x), RBig::from(em[k].clone()));
             }
         }
+    }
+
+    #[test]
+    fn proportionality() {
+        let a = SymMatrix4::from_i64([[0, 2, 0, 0], [2, 0, 0, 0], [0, 0, -4, 0], [0, 0, 0, 0]])
+            .unwrap();
+        let b = SymMatrix4::from_i64([[0, -3, 0, 0], [-3, 0, 0, 0], [0, 0, 6, 0], [0, 0, 0, 0]])
+            .unwrap();
+        let c = SymMatrix4::from_i64([[0, -3, 0, 0], [-3, 0, 0, 0], [0, 0, 6, 0], [0, 0, 0, 1]])
+            .unwrap();
+        let zero = SymMatrix4::from_i64([[0; 4]; 4]).unwrap();
+        assert!(a.is_proportional(&b) && b.is_proportional(&a));
+        assert!(!a.is_proportional(&c) && !c.is_proportional(&a));
+        assert!(a.is_proportional(&zero) && zero.is_proportional(&a));
     }
 
     #[test]
