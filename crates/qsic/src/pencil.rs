@@ -10,16 +10,11 @@
 
 use crate::quadric::Quadric;
 use qsic_algebra::matrix::{Inertia, MatrixPencil, SymMatrix4};
+use qsic_algebra::poly::binary::BinaryForm;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
 
-/// A point `(λ : μ)` of the pencil where `det(λA − μB) = 0`.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum PencilPoint {
-    /// `(α : 1)`, the member `αA − B`.
-    Finite(AlgebraicReal),
-    /// `(1 : 0)`, the member `A`.
-    Infinity,
-}
+/// A point `(λ : μ)` of the pencil: `(α : 1)` is the member `αA − B`, `(1 : 0)` the member `A`.
+pub use qsic_algebra::poly::binary::ProjectivePoint as PencilPoint;
 
 /// A distinct real root of `f(λ, μ)`.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -68,40 +63,36 @@ impl PencilData {
     }
 }
 
-/// `(ord at the finite roots via D_k, ord at infinity)` data for `k = 1, 2, 3`.
+/// `D_k`, the gcd of the `k×k` minors of `λA − μB` as binary forms of degree `k`, for
+/// `k = 1, 2, 3` (index `k − 1`).
 struct MinorGcds {
-    /// `D_k` on the chart μ = 1, index `k − 1`.
-    finite: [Poly; 3],
-    /// `ord_∞(D_k) = min over k×k minors of (k − deg)`.
-    at_infinity: [usize; 3],
+    d: [BinaryForm; 3],
 }
 
 impl MinorGcds {
     fn new(pencil: &MatrixPencil) -> MinorGcds {
-        let mut finite: [Poly; 3] = std::array::from_fn(|_| Poly::constant(IBig::ONE));
-        let mut at_infinity = [0usize; 3];
+        let mut d: [BinaryForm; 3] =
+            std::array::from_fn(|_| BinaryForm::new(Poly::constant(IBig::ONE), 0));
         // D_{k−1} divides D_k: once D_k is 1 (no root of rank ≤ k − 1), the rest are 1 too.
         for k in (1..=3).rev() {
-            let mut g = Poly::zero();
-            let mut inf = k;
+            let mut g = BinaryForm::new(Poly::zero(), k);
             for m in &pencil.minors(k) {
-                g = g.gcd(m);
-                inf = inf.min(k - m.degree().unwrap_or(0));
-                if g.is_constant() && inf == 0 {
+                g = g.gcd(&BinaryForm::new(m.clone(), k));
+                if g.degree() == 0 {
                     break;
                 }
             }
-            let trivial = g.is_constant() && inf == 0;
-            finite[k - 1] = g;
-            at_infinity[k - 1] = inf;
+            let trivial = g.degree() == 0;
+            d[k - 1] = g;
             if trivial {
                 break;
             }
         }
-        MinorGcds {
-            finite,
-            at_infinity,
-        }
+        MinorGcds { d }
+    }
+
+    fn at_infinity(&self) -> [usize; 3] {
+        self.d.each_ref().map(BinaryForm::multiplicity_at_infinity)
     }
 }
 
@@ -164,8 +155,7 @@ impl PencilAnalysis {
     /// Analyses the pencil of a regular pair (`f ≢ 0`).
     pub(crate) fn compute(data: &PencilData) -> PencilAnalysis {
         let f = &data.f;
-        let deg = f.degree().unwrap_or(0);
-        let m_inf = 4 - deg;
+        let m_inf = BinaryForm::new(f.clone(), 4).multiplicity_at_infinity();
         let decomposition = f.squarefree_decomposition();
         let simple = m_inf <= 1 && decomposition.iter().all(|(_, m)| *m == 1);
         let gcds = if simple {
@@ -184,7 +174,7 @@ impl PencilAnalysis {
                     for k in (0..3).rev() {
                         let mut next = Vec::new();
                         for (p, ords) in cur {
-                            for (h, j) in split_by_order(&p, &gc.finite[k]) {
+                            for (h, j) in split_by_order(&p, gc.d[k].chart()) {
                                 let mut o = ords;
                                 o[k] = j;
                                 next.push((h, o));
@@ -268,7 +258,7 @@ impl PencilAnalysis {
         if m_inf > 0 {
             let blocks = match &gcds {
                 None => vec![1],
-                Some(gc) => blocks_from_orders(m_inf, gc.at_infinity),
+                Some(gc) => blocks_from_orders(m_inf, gc.at_infinity()),
             };
             real_roots.push(PencilRoot {
                 point: PencilPoint::Infinity,

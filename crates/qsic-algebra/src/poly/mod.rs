@@ -7,11 +7,13 @@
 //! | [`Poly::squarefree_decomposition`] | Yun's algorithm ([`squarefree`]) |
 //! | [`Poly::count_real_roots_sturm`], [`Poly::count_roots_in_descartes`] | root counts ([`sturm`], [`descartes`]) |
 //! | [`Poly::sign_at`] | exact sign at a rational |
+//! | [`binary::BinaryForm`] | binary forms: roots at `λ = ∞` are ordinary roots |
 //!
 //! Rational polynomials are handled as a primitive integer polynomial times a
 //! positive content: every question this crate answers (roots, signs up to a
 //! positive factor, gcds) is invariant under that scaling.
 
+pub mod binary;
 pub mod descartes;
 pub mod gcd;
 pub mod squarefree;
