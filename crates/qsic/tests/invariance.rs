@@ -4,47 +4,23 @@
 
 #![allow(clippy::needless_range_loop)]
 
+#[path = "../benches/inputs/mod.rs"]
+mod inputs;
+
 use dashu_ratio::RBig;
 use proptest::prelude::*;
 use qsic::classify::classify_exact;
-use qsic::io::quadric_from_rows;
 use qsic::{classify, Quadric};
-use serde_json::Value;
 
 type M = [[RBig; 4]; 4];
 
+/// The representatives of the 36 classes, with the case their id names (`pub-cNN-rep…`).
 fn representatives() -> Vec<(String, Quadric, Quadric, u8)> {
-    let path = format!("{}/tests/data/cases.jsonl", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).expect("cases.jsonl is in the repository");
-    let read = |v: &Value| -> Quadric {
-        let rows: Vec<Vec<String>> = v
-            .as_array()
-            .expect("matrix")
-            .iter()
-            .map(|r| {
-                r.as_array()
-                    .expect("row")
-                    .iter()
-                    .map(|x| x.as_str().expect("string").to_owned())
-                    .collect()
-            })
-            .collect();
-        quadric_from_rows(&rows).expect("valid corpus matrix")
-    };
-    text.lines()
-        .map(|l| serde_json::from_str::<Value>(l).expect("json"))
-        .filter(|v| {
-            v["id"]
-                .as_str()
-                .is_some_and(|id| id.ends_with("-rep") || id.ends_with("-rep-alt"))
-        })
-        .map(|v| {
-            (
-                v["id"].as_str().unwrap_or("").to_owned(),
-                read(&v["A"]),
-                read(&v["B"]),
-                v["case"].as_u64().unwrap_or(0) as u8,
-            )
+    inputs::corpus_pairs(|id| id.ends_with("-rep") || id.ends_with("-rep-alt"))
+        .into_iter()
+        .map(|(id, a, b)| {
+            let case = id[5..7].parse().expect("ids are pub-cNN-…");
+            (id, a, b, case)
         })
         .collect()
 }
