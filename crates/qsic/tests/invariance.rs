@@ -34,7 +34,7 @@ fn transform(m: &M, p: &[[i64; 4]; 4]) -> M {
             for k in 0..4 {
                 for l in 0..4 {
                     if p[k][i] != 0 && p[l][j] != 0 {
-                        s += RBig::from(p[k][i] * p[l][j]) * &m[k][l];
+                        s += RBig::from(i128::from(p[k][i]) * i128::from(p[l][j])) * &m[k][l];
                     }
                 }
             }
@@ -150,5 +150,28 @@ proptest! {
             }
             prop_assert!(c.morphology.is_some() || c.pencil == qsic::classify::PencilKind::Singular);
         }
+    }
+}
+
+/// Entries around 10²⁶ (13-digit maps): the exact path still finds every case.
+#[test]
+fn huge_disguises_keep_the_case() {
+    let p: [[i64; 4]; 4] = [
+        [3_141_592_653_589, -2_718_281_828_459, 1_414_213_562_373, 7],
+        [-1_732_050_807_568, 2_236_067_977_499, 5, -2_645_751_311_064],
+        [11, 3_316_624_790_355, -3_605_551_275_463, 1_000_000_000_039],
+        [2_449_489_742_783, -13, 2_828_427_124_746, 3_162_277_660_168],
+    ];
+    for (id, a, b, case) in representatives() {
+        let (ta, tb) = (transform(a.matrix(), &p), transform(b.matrix(), &p));
+        let na = combine(&ta, 123_456_789, &tb, -987_654_321);
+        let nb = combine(&ta, 314_159, &tb, 271_828);
+        let qa = Quadric::from_matrix(na).expect("nonzero");
+        let qb = Quadric::from_matrix(nb).expect("nonzero");
+        assert_eq!(
+            classify(&qa, &qb).case,
+            Some(case),
+            "{id} with huge entries"
+        );
     }
 }
