@@ -6,7 +6,7 @@
 //! | [`io`] | reading quadrics from polynomial strings and matrices, exactly |
 //! | [`shapes`] | constructors for spheres, cylinders, cones, … from rational parameters |
 //! | [`pencil`] | the pencil `λA − μB`: characteristic form, real roots, Segre structure, inertia |
-//! | [`classify`] | [`classify()`]: regular (35 cases), singular and single pencils |
+//! | [`mod@classify`] | [`classify()`]: regular (35 cases), singular and single pencils |
 //! | [`limits`] | documented bounds on untrusted input |
 //!
 //! ```

@@ -10,14 +10,14 @@
 //! the signature sequence — the inertia of `λA − μB` on every arc of the projective
 //! λ-line and at every real root — taken up to rotation (with the swap at ∞ of ERRATA
 //! item 4), reversal and complement, together with the Segre characteristic, picks one of
-//! the 35 cases of [`table`]. The Segre characteristic comes from the invariant factors of
+//! the 35 cases of the module `table`. The Segre characteristic comes from the invariant factors of
 //! `λA − μB` (gcds of minors); it carries the minimal-polynomial degree that Section 6 uses
 //! to separate cases 4/10/31 (`[1111]₀`, `[22]₀`, `[(11)(11)]₀`) and 26/35 (`[(31)]`,
 //! `[(22)]`), so no extra test is needed. Everything is exact rational arithmetic.
 //!
-//! **Singular pencils** (`det ≡ 0`): [`singular`] derives the type from the Kronecker
+//! **Singular pencils** (`det ≡ 0`): the module `singular` derives the type from the Kronecker
 //! structure (common singular points, projection to a pencil of conics).
-//! **Single** (`A ∝ B`): [`single`], by inertia.
+//! **Single** (`A ∝ B`): the module `single`, by inertia.
 
 mod fast;
 mod morphology;
