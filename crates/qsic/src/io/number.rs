@@ -142,16 +142,26 @@ impl Numeral<'_> {
     /// Costs about `digit_count + |exponent|` digits of big-integer work; callers
     /// check [`MAX_NUMBER_DIGITS`] first.
     pub(crate) fn value(&self) -> RBig {
-        let mut mantissa = UBig::ZERO;
-        for chunk in [self.int, self.frac] {
-            if !chunk.is_empty() {
-                // Both pieces are non-empty runs of ASCII digits, so parsing cannot fail.
-                let part = UBig::from_str_radix(chunk, 10).unwrap_or(UBig::ZERO);
-                mantissa = mantissa * UBig::from(10u8).pow(chunk.len()) + part;
+        let mantissa = if self.digit_count() <= 19 {
+            // At most 19 digits: below 10^19 < 2^64, read without big numbers.
+            let digits = self.int.bytes().chain(self.frac.bytes());
+            UBig::from(digits.fold(0u64, |m, d| m * 10 + u64::from(d - b'0')))
+        } else {
+            let mut mantissa = UBig::ZERO;
+            for chunk in [self.int, self.frac] {
+                if !chunk.is_empty() {
+                    // Both pieces are non-empty runs of ASCII digits, so parsing cannot fail.
+                    let part = UBig::from_str_radix(chunk, 10).unwrap_or(UBig::ZERO);
+                    mantissa = mantissa * UBig::from(10u8).pow(chunk.len()) + part;
+                }
             }
-        }
+            mantissa
+        };
         // |exponent| ≤ MAX_DECIMAL_EXPONENT and frac.len() ≤ MAX_NUMBER_DIGITS: no overflow.
         let shift = self.exponent - self.frac.len() as i64;
+        if shift == 0 {
+            return RBig::from(mantissa);
+        }
         let power = UBig::from(10u8).pow(shift.unsigned_abs() as usize);
         if shift >= 0 {
             RBig::from(mantissa * power)

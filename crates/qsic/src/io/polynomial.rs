@@ -9,6 +9,7 @@ use crate::limits::{
 };
 use crate::quadric::Quadric;
 use dashu_int::ops::BitTest;
+use dashu_int::UBig;
 use dashu_ratio::RBig;
 
 /// Reads a quadric from a polynomial in `x, y, z, w` of degree at most 2.
@@ -91,6 +92,7 @@ pub fn parse_quadric(text: &str) -> Result<Quadric, Error> {
         pos: 0,
         depth: 0,
         budget,
+        spare: Spare::default(),
     };
     let poly = parser.parse()?;
     quadric_from_poly(poly)
@@ -127,9 +129,44 @@ fn degree_of(k: usize) -> usize {
     MONOMIALS[k].iter().map(|&e| usize::from(e)).sum()
 }
 
-/// Index of the monomial with exponents `e`, if its degree is at most 2.
-fn index_of(e: [u8; 4]) -> Option<usize> {
-    MONOMIALS.iter().position(|&m| m == e)
+/// `PRODUCTS[i][j]` is the index of the product of monomials `i` and `j`, or
+/// [`NO_MONOMIAL`] if its degree exceeds 2.
+const PRODUCTS: [[u8; N]; N] = product_table();
+
+/// Marks a product of degree above 2 in [`PRODUCTS`].
+const NO_MONOMIAL: u8 = u8::MAX;
+
+const fn product_table() -> [[u8; N]; N] {
+    let mut table = [[NO_MONOMIAL; N]; N];
+    let mut i = 0;
+    while i < N {
+        let mut j = 0;
+        while j < N {
+            let mut k = 0;
+            while k < N {
+                let mut v = 0;
+                while v < 4 && MONOMIALS[i][v] + MONOMIALS[j][v] == MONOMIALS[k][v] {
+                    v += 1;
+                }
+                if v == 4 {
+                    // k < N = 15 fits in a u8.
+                    table[i][j] = k as u8;
+                }
+                k += 1;
+            }
+            j += 1;
+        }
+        i += 1;
+    }
+    table
+}
+
+/// Index of the product of monomials `i` and `j`, if its degree is at most 2.
+fn product_index(i: usize, j: usize) -> Option<usize> {
+    match PRODUCTS[i][j] {
+        NO_MONOMIAL => None,
+        k => Some(usize::from(k)),
+    }
 }
 
 /// Monomial `k` written as in [`Quadric::to_polynomial_string`] (`x^2`, `x*y`, `1`).
@@ -175,95 +212,185 @@ struct Budget {
 impl Budget {
     /// Accounts for a newly computed number: refuses it if it is larger than
     /// [`MAX_COEFFICIENT_BITS`] or the total exceeds [`MAX_EXPANSION_BITS`].
+    #[inline]
     fn charge(&mut self, c: &RBig) -> Result<(), Error> {
         let bits = c.numerator().bit_len() + c.denominator().bit_len();
+        match self.left.checked_sub(bits) {
+            Some(left) if bits <= MAX_COEFFICIENT_BITS => {
+                self.left = left;
+                Ok(())
+            }
+            _ => Err(Self::refusal(bits)),
+        }
+    }
+
+    /// Why [`Budget::charge`] refuses a number of `bits` bits.
+    #[cold]
+    fn refusal(bits: usize) -> Error {
         if bits > MAX_COEFFICIENT_BITS {
-            return Err(Error::Limit {
+            Error::Limit {
                 what: format!("a coefficient of {bits} bits while expanding the polynomial"),
                 limit: MAX_COEFFICIENT_BITS,
-            });
+            }
+        } else {
+            Error::Limit {
+                what: "total size of the numbers computed while expanding the polynomial, in bits"
+                    .into(),
+                limit: MAX_EXPANSION_BITS,
+            }
         }
-        self.left = self.left.checked_sub(bits).ok_or_else(|| Error::Limit {
-            what: "total size of the numbers computed while expanding the polynomial, in bits"
-                .into(),
-            limit: MAX_EXPANSION_BITS,
-        })?;
-        Ok(())
     }
 }
 
-/// A polynomial of degree ≤ 2 in x, y, z, w: one coefficient per entry of [`MONOMIALS`].
+/// A polynomial of degree ≤ 2 in x, y, z, w: its terms with a nonzero
+/// coefficient, as (index into [`MONOMIALS`], coefficient), in increasing
+/// order of index.
 ///
-/// Boxed, so that the frames of the recursive reader stay small.
-#[derive(Clone, Debug, Default, PartialEq)]
+/// Since [`MONOMIALS`] is ordered by degree, the degree is that of the last
+/// term. Most polynomials met while reading have one or a few terms, so this
+/// is much cheaper to build, combine and drop than 15 dense coefficients, and
+/// it keeps the frames of the recursive reader small.
+#[derive(Debug, Default)]
 struct Poly {
-    c: Box<[RBig; N]>,
+    terms: Vec<(usize, RBig)>,
+}
+
+/// `a · b`, with shortcuts for a factor 1 and for integers (no gcd needed).
+fn product(a: &RBig, b: &RBig) -> RBig {
+    if b.is_one() {
+        a.clone()
+    } else if a.is_one() {
+        b.clone()
+    } else if a.is_int() && b.is_int() {
+        RBig::from(a.numerator() * b.numerator())
+    } else {
+        a * b
+    }
+}
+
+/// `a += b`, or `a -= b` if `negative`, with a shortcut for integers.
+fn accumulate(a: &mut RBig, b: &RBig, negative: bool) {
+    if a.is_int() && b.is_int() {
+        let n = if negative {
+            a.numerator() - b.numerator()
+        } else {
+            a.numerator() + b.numerator()
+        };
+        *a = RBig::from(n);
+    } else if negative {
+        *a -= b;
+    } else {
+        *a += b;
+    }
+}
+
+/// Storage of the polynomials dropped while reading, reused to build new ones
+/// without allocating.
+#[derive(Debug, Default)]
+struct Spare(Vec<Vec<(usize, RBig)>>);
+
+impl Spare {
+    /// At most this many buffers are kept.
+    const KEEP: usize = 16;
+
+    /// An empty buffer, with room for any polynomial.
+    fn take(&mut self) -> Vec<(usize, RBig)> {
+        self.0.pop().unwrap_or_else(|| Vec::with_capacity(N))
+    }
+
+    /// Takes back the storage of a polynomial that is no longer needed.
+    fn keep(&mut self, p: Poly) {
+        let mut terms = p.terms;
+        if terms.capacity() > 0 && self.0.len() < Self::KEEP {
+            terms.clear();
+            self.0.push(terms);
+        }
+    }
+
+    fn constant(&mut self, value: RBig) -> Poly {
+        let mut terms = Vec::new();
+        if !value.is_zero() {
+            terms = self.take();
+            terms.push((0, value));
+        }
+        Poly { terms }
+    }
+
+    fn variable(&mut self, i: usize) -> Poly {
+        let mut terms = self.take();
+        terms.push((1 + i, RBig::ONE));
+        Poly { terms }
+    }
+
+    fn copy(&mut self, p: &Poly) -> Poly {
+        let mut terms = self.take();
+        terms.extend_from_slice(&p.terms);
+        Poly { terms }
+    }
 }
 
 impl Poly {
-    fn constant(value: RBig) -> Self {
-        let mut p = Poly::default();
-        p.c[0] = value;
-        p
-    }
-
-    fn variable(i: usize) -> Self {
-        let mut p = Poly::default();
-        p.c[1 + i] = RBig::ONE;
-        p
-    }
-
     fn is_zero(&self) -> bool {
-        self.c.iter().all(RBig::is_zero)
+        self.terms.is_empty()
     }
 
     /// Degree of the highest nonzero monomial; 0 for the zero polynomial.
     fn degree(&self) -> usize {
-        (0..N)
-            .filter(|&k| !self.c[k].is_zero())
-            .map(degree_of)
-            .max()
-            .unwrap_or(0)
-    }
-
-    /// The constant value, if no variable has a nonzero coefficient.
-    fn as_constant(&self) -> Option<&RBig> {
-        self.c[1..].iter().all(RBig::is_zero).then_some(&self.c[0])
+        self.terms.last().map_or(0, |&(k, _)| degree_of(k))
     }
 
     fn negate(&mut self) {
-        for c in self.c.iter_mut() {
+        for (_, c) in &mut self.terms {
             *c = -std::mem::take(c);
         }
     }
 
     /// `self += sign · other`.
+    ///
+    /// Every coefficient of `self` that `other` changes is charged, in
+    /// increasing order of monomial, even if it cancels to zero.
     fn add_assign(
         &mut self,
-        other: &Poly,
+        mut other: Poly,
         negative: bool,
         budget: &mut Budget,
+        spare: &mut Spare,
     ) -> Result<(), Error> {
-        for (a, b) in self.c.iter_mut().zip(other.c.iter()) {
-            if !b.is_zero() {
-                if negative {
-                    *a -= b;
-                } else {
-                    *a += b;
+        let wanted = self.terms.len() + other.terms.len();
+        if wanted > self.terms.capacity() {
+            // At most N terms: grow once rather than term by term.
+            self.terms.reserve(wanted.min(N) - self.terms.len());
+        }
+        let mut cancelled = false;
+        for (k, b) in other.terms.drain(..) {
+            match self.terms.binary_search_by_key(&k, |&(i, _)| i) {
+                Ok(p) => {
+                    let a = &mut self.terms[p].1;
+                    accumulate(a, &b, negative);
+                    budget.charge(a)?;
+                    cancelled |= a.is_zero();
                 }
-                budget.charge(a)?;
+                Err(p) => {
+                    let b = if negative { -b } else { b };
+                    budget.charge(&b)?;
+                    self.terms.insert(p, (k, b));
+                }
             }
+        }
+        spare.keep(other);
+        if cancelled {
+            self.terms.retain(|(_, c)| !c.is_zero());
         }
         Ok(())
     }
 
-    /// `self · factor` for a rational `factor`.
+    /// `self · factor` for a nonzero rational `factor`.
     fn scale(&mut self, factor: &RBig, budget: &mut Budget) -> Result<(), Error> {
-        for c in self.c.iter_mut() {
-            if !c.is_zero() {
-                *c *= factor;
-                budget.charge(c)?;
+        for (_, c) in &mut self.terms {
+            if !factor.is_one() {
+                *c = product(c, factor);
             }
+            budget.charge(c)?;
         }
         Ok(())
     }
@@ -271,31 +398,93 @@ impl Poly {
     /// The product, or `Ok(Err(degree))` if its degree would exceed 2.
     ///
     /// The degree of a product is the sum of the degrees (no zero divisors), so
-    /// the refusal is exact and decided before any multiplication.
-    fn mul(&self, other: &Poly, budget: &mut Budget) -> Result<Result<Poly, usize>, Error> {
-        let degree = if self.is_zero() || other.is_zero() {
-            0
-        } else {
-            self.degree() + other.degree()
-        };
+    /// the refusal is exact and decided before any multiplication. Each new
+    /// coefficient is charged as it is accumulated, for the terms of `self`
+    /// in increasing order and within each for those of `other`; products by
+    /// a single term, the usual case, are computed in the storage of an operand.
+    fn mul(
+        mut self,
+        mut other: Poly,
+        budget: &mut Budget,
+        spare: &mut Spare,
+    ) -> Result<Result<Poly, usize>, Error> {
+        if self.is_zero() || other.is_zero() {
+            spare.keep(self);
+            spare.keep(other);
+            return Ok(Ok(Poly::default()));
+        }
+        let degree = self.degree() + other.degree();
         if degree > 2 {
             return Ok(Err(degree));
         }
-        let mut out = Poly::default();
-        for (i, a) in self.c.iter().enumerate().filter(|(_, a)| !a.is_zero()) {
-            for (j, b) in other.c.iter().enumerate().filter(|(_, b)| !b.is_zero()) {
-                let mut e = MONOMIALS[i];
-                for (ek, fk) in e.iter_mut().zip(MONOMIALS[j]) {
-                    *ek += fk;
-                }
+        let out = match (self.terms.as_mut_slice(), other.terms.as_slice()) {
+            ([(i, a)], [(j, b)]) => {
                 // degree(i) + degree(j) ≤ 2, so the monomial is in the table.
-                if let Some(k) = index_of(e) {
-                    out.c[k] += a * b;
-                    budget.charge(&out.c[k])?;
+                if let Some(k) = product_index(*i, *j) {
+                    // A product of nonzero rationals is nonzero.
+                    *a = product(a, b);
+                    *i = k;
+                    budget.charge(a)?;
+                } else {
+                    self.terms.clear();
+                }
+                spare.keep(other);
+                self
+            }
+            ([(0, c)], _) => {
+                let c = std::mem::take(c);
+                spare.keep(self);
+                other.scale(&c, budget)?;
+                other
+            }
+            (_, [(0, c)]) => {
+                self.scale(c, budget)?;
+                spare.keep(other);
+                self
+            }
+            _ => {
+                let out = self.mul_general(&other, budget, spare.take())?;
+                spare.keep(self);
+                spare.keep(other);
+                out
+            }
+        };
+        Ok(Ok(out))
+    }
+
+    /// The product into the empty buffer `terms`, when its degree is known to
+    /// be at most 2.
+    fn mul_general(
+        &self,
+        other: &Poly,
+        budget: &mut Budget,
+        mut terms: Vec<(usize, RBig)>,
+    ) -> Result<Poly, Error> {
+        let mut cancelled = false;
+        for (i, a) in &self.terms {
+            for (j, b) in &other.terms {
+                let Some(k) = product_index(*i, *j) else {
+                    continue;
+                };
+                let p = product(a, b);
+                match terms.binary_search_by_key(&k, |&(m, _)| m) {
+                    Ok(q) => {
+                        let c = &mut terms[q].1;
+                        accumulate(c, &p, false);
+                        budget.charge(c)?;
+                        cancelled |= c.is_zero();
+                    }
+                    Err(q) => {
+                        budget.charge(&p)?;
+                        terms.insert(q, (k, p));
+                    }
                 }
             }
         }
-        Ok(Ok(out))
+        if cancelled {
+            terms.retain(|(_, c)| !c.is_zero());
+        }
+        Ok(Poly { terms })
     }
 }
 
@@ -326,7 +515,8 @@ struct Token {
 
 /// Splits `text` into tokens, ending with [`Tok::End`].
 fn tokenize(text: &str, budget: &mut Budget) -> Result<Vec<Token>, Error> {
-    let mut tokens = Vec::new();
+    // A token takes at least one byte: no growth for short texts.
+    let mut tokens = Vec::with_capacity((text.len() + 1).min(1024));
     let mut column = 1;
     let mut rest = text.char_indices().peekable();
     while let Some((start, ch)) = rest.next() {
@@ -361,7 +551,10 @@ fn tokenize(text: &str, budget: &mut Budget) -> Result<Vec<Token>, Error> {
                 // A numeral is ASCII: its byte length is its width in characters.
                 len = n;
                 width = n;
-                while rest.next_if(|&(i, _)| i < start + n).is_some() {}
+                if n > 1 {
+                    // Skip the other n - 1 characters of the numeral.
+                    rest.nth(n - 2);
+                }
                 let value = numeral.value();
                 budget.charge(&value)?;
                 Tok::Number(value)
@@ -420,6 +613,7 @@ struct Parser<'a> {
     pos: usize,
     depth: usize,
     budget: Budget,
+    spare: Spare,
 }
 
 impl Parser<'_> {
@@ -484,7 +678,7 @@ impl Parser<'_> {
             };
             self.advance();
             let t = self.term()?;
-            acc.add_assign(&t, negative, &mut self.budget)?;
+            acc.add_assign(t, negative, &mut self.budget, &mut self.spare)?;
         }
     }
 
@@ -522,19 +716,21 @@ impl Parser<'_> {
             }
             if divide {
                 let column = op_column.unwrap_or(1);
-                let divisor = factor.as_constant().ok_or_else(|| {
-                    Self::syntax(
-                        column,
-                        "can only divide by a number, not by an expression in x, y, z, w",
-                    )
-                })?;
-                if divisor.is_zero() {
-                    return Err(Self::syntax(column, "division by zero"));
-                }
+                let divisor = match factor.terms.as_slice() {
+                    [] => return Err(Self::syntax(column, "division by zero")),
+                    [(0, divisor)] => divisor,
+                    _ => {
+                        return Err(Self::syntax(
+                            column,
+                            "can only divide by a number, not by an expression in x, y, z, w",
+                        ))
+                    }
+                };
                 let inverse = RBig::ONE / divisor;
                 acc.scale(&inverse, &mut self.budget)?;
+                self.spare.keep(factor);
             } else {
-                acc = self.checked_product(&acc, &factor, first)?;
+                acc = self.checked_product(acc, factor, first)?;
             }
         }
         if negative {
@@ -544,8 +740,8 @@ impl Parser<'_> {
     }
 
     /// `a · b`, or [`Error::Degree`] naming the source text from token `first` to here.
-    fn checked_product(&mut self, a: &Poly, b: &Poly, first: usize) -> Result<Poly, Error> {
-        a.mul(b, &mut self.budget)?
+    fn checked_product(&mut self, a: Poly, b: Poly, first: usize) -> Result<Poly, Error> {
+        a.mul(b, &mut self.budget, &mut self.spare)?
             .map_err(|degree| self.degree_error(first, degree))
     }
 
@@ -568,7 +764,7 @@ impl Parser<'_> {
 
     fn power(&mut self) -> Result<Poly, Error> {
         let first = self.pos;
-        let base = self.atom()?;
+        let mut base = self.atom()?;
         if !matches!(self.peek().tok, Tok::Power) {
             return Ok(base);
         }
@@ -607,9 +803,26 @@ impl Parser<'_> {
         if base_degree * n > 2 {
             return Err(self.degree_error(first, base_degree * n));
         }
-        let mut acc = Poly::constant(RBig::ONE);
-        for _ in 0..n {
-            acc = self.checked_product(&acc, &base, first)?;
+        if n == 0 {
+            self.spare.keep(base);
+            return Ok(self.spare.constant(RBig::ONE));
+        }
+        // The first factor, 1 · base, is base itself: only its coefficients
+        // are charged, as a product would.
+        for (_, c) in &base.terms {
+            self.budget.charge(c)?;
+        }
+        if n == 1 {
+            return Ok(base);
+        }
+        let mut acc = self.spare.copy(&base);
+        for step in 1..n {
+            let factor = if step + 1 == n {
+                std::mem::take(&mut base)
+            } else {
+                self.spare.copy(&base)
+            };
+            acc = self.checked_product(acc, factor, first)?;
         }
         Ok(acc)
     }
@@ -617,8 +830,11 @@ impl Parser<'_> {
     fn atom(&mut self) -> Result<Poly, Error> {
         let column = self.peek().column;
         let poly = match &self.peek().tok {
-            Tok::Number(value) => Poly::constant(value.clone()),
-            Tok::Variable(i) => Poly::variable(*i),
+            Tok::Number(value) => {
+                let value = value.clone();
+                self.spare.constant(value)
+            }
+            &Tok::Variable(i) => self.spare.variable(i),
             Tok::Open => {
                 if self.depth >= MAX_NESTING_DEPTH {
                     return Err(Error::Limit {
@@ -656,14 +872,25 @@ impl Parser<'_> {
     }
 }
 
+/// `c / 2`, with shortcuts for integers.
+fn half(c: RBig) -> RBig {
+    if !c.is_int() {
+        c / RBig::from(2)
+    } else if c.numerator().bit(0) {
+        RBig::from_parts(c.into_parts().0, UBig::from(2u8))
+    } else {
+        RBig::from(c.into_parts().0 >> 1)
+    }
+}
+
 /// The quadric of an expanded polynomial: homogeneity check or homogenization, then the matrix.
 fn quadric_from_poly(poly: Poly) -> Result<Quadric, Error> {
     if poly.is_zero() {
         return Err(Error::ZeroQuadric);
     }
-    let uses_w = (0..N).any(|k| MONOMIALS[k][3] > 0 && !poly.c[k].is_zero());
+    let uses_w = poly.terms.iter().any(|&(k, _)| MONOMIALS[k][3] > 0);
     let mut m: [[RBig; 4]; 4] = Default::default();
-    for (k, c) in poly.c.iter().enumerate().filter(|(_, c)| !c.is_zero()) {
+    for (k, c) in poly.terms {
         let mut e = MONOMIALS[k];
         let degree = degree_of(k);
         if uses_w && degree != 2 {
@@ -671,7 +898,7 @@ fn quadric_from_poly(poly: Poly) -> Result<Quadric, Error> {
                 message: format!(
                     "term '{}' has degree {degree}; a form in x,y,z,w must be homogeneous \
                      of degree 2 (leave out w to write an affine equation in x, y, z)",
-                    term_text(c, k)
+                    term_text(&c, k)
                 ),
             });
         }
@@ -683,9 +910,9 @@ fn quadric_from_poly(poly: Poly) -> Result<Quadric, Error> {
             .flat_map(|(v, &p)| std::iter::repeat_n(v, usize::from(p)));
         if let (Some(i), Some(j)) = (vars.next(), vars.next()) {
             if i == j {
-                m[i][i] = c.clone();
+                m[i][i] = c;
             } else {
-                let half = c / RBig::from(2);
+                let half = half(c);
                 m[i][j] = half.clone();
                 m[j][i] = half;
             }
