@@ -22,12 +22,8 @@ pub struct AlgebraicReal {
 impl AlgebraicReal {
     /// The rational `v` as an algebraic number.
     pub fn from_rational(v: RBig) -> AlgebraicReal {
-        let poly = Poly::new(vec![
-            -v.numerator().clone(),
-            dashu_int::IBig::from(v.denominator().clone()),
-        ]);
         AlgebraicReal {
-            poly,
+            poly: Poly::vanishing_at(&v),
             interval: RootInterval::Exact(v),
         }
     }
@@ -239,11 +235,7 @@ impl Ord for AlgebraicReal {
     fn cmp(&self, other: &Self) -> Ordering {
         if let Some(v) = other.as_rational() {
             // sign of α − v = sign of (x − v) at α
-            let lin = Poly::new(vec![
-                -v.numerator().clone(),
-                dashu_int::IBig::from(v.denominator().clone()),
-            ]);
-            return match self.sign_of(&lin) {
+            return match self.sign_of(&Poly::vanishing_at(v)) {
                 Sign::Negative => Ordering::Less,
                 Sign::Zero => Ordering::Equal,
                 Sign::Positive => Ordering::Greater,

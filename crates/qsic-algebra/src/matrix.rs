@@ -36,21 +36,9 @@ impl Inertia {
     /// `x⁴ − E₁x³ + E₂x² − E₃x + E₄`; it is real-rooted, so Descartes' rule counts its
     /// positive and negative roots exactly).
     pub fn from_minor_sum_signs(e: [Sign; 4]) -> Inertia {
-        let var = |s: &[Sign]| {
-            let mut last = Sign::Zero;
-            let mut v = 0u8;
-            for &x in s {
-                if x != Sign::Zero {
-                    if last != Sign::Zero && x != last {
-                        v += 1;
-                    }
-                    last = x;
-                }
-            }
-            v
-        };
-        let pos = var(&[Sign::Positive, -e[0], e[1], -e[2], e[3]]);
-        let neg = var(&[Sign::Positive, e[0], e[1], e[2], e[3]]);
+        let var = |s: [Sign; 5]| crate::sign::count_variations(s) as u8;
+        let pos = var([Sign::Positive, -e[0], e[1], -e[2], e[3]]);
+        let neg = var([Sign::Positive, e[0], e[1], e[2], e[3]]);
         Inertia {
             positive: pos,
             negative: neg,
@@ -284,6 +272,8 @@ fn det3(m: &[[IBig; 4]; 4], r: &[usize; 3], c: &[usize; 3]) -> IBig {
 pub struct MatrixPencil {
     a: SymMatrix4,
     b: SymMatrix4,
+    /// Entries `a_ij·λ − b_ij`, row by row.
+    entries: Vec<Poly>,
     /// 2×2 minors, `[row pair][column pair]`, pairs indexed as in `PAIRS`.
     m2: Vec<Poly>,
     /// 3×3 minors, `[row triple][column triple]`, triples indexed as in `TRIPLES`.
@@ -340,7 +330,14 @@ impl MatrixPencil {
             let t = x * &m3[4 * 3 + (3 - j)];
             det = if j % 2 == 0 { &det + &t } else { &det - &t };
         }
-        MatrixPencil { a, b, m2, m3, det }
+        MatrixPencil {
+            a,
+            b,
+            entries,
+            m2,
+            m3,
+            det,
+        }
     }
 
     /// `A`.
@@ -376,7 +373,7 @@ impl MatrixPencil {
         match k {
             1 => (0..4)
                 .flat_map(|i| (i..4).map(move |j| (i, j)))
-                .map(|(i, j)| Poly::new(vec![-self.b.m[i][j].clone(), self.a.m[i][j].clone()]))
+                .map(|(i, j)| self.entries[4 * i + j].clone())
                 .filter(|p| !p.is_zero())
                 .collect(),
             2 => upper(&self.m2, 6),
@@ -390,9 +387,7 @@ impl MatrixPencil {
     /// The inertia of the member at `λ` follows from their signs
     /// ([`Inertia::from_minor_sum_signs`]).
     pub fn principal_minor_sums(&self) -> [Poly; 4] {
-        let e1 = (0..4).fold(Poly::zero(), |acc, i| {
-            &acc + &Poly::new(vec![-self.b.m[i][i].clone(), self.a.m[i][i].clone()])
-        });
+        let e1 = (0..4).fold(Poly::zero(), |acc, i| &acc + &self.entries[5 * i]);
         let e2 = (0..6).fold(Poly::zero(), |acc, p| &acc + &self.m2[7 * p]);
         let e3 = (0..4).fold(Poly::zero(), |acc, t| &acc + &self.m3[5 * t]);
         [e1, e2, e3, self.det.clone()]

@@ -121,12 +121,8 @@ fn fix_ends(p: &Poly, lo: RBig, hi: RBig) -> RootInterval {
     let mut q = p.clone();
     for end in [&lo, &hi] {
         if q.sign_at(end).is_zero() {
-            let lin = Poly::new(vec![
-                -end.numerator().clone(),
-                IBig::from(end.denominator().clone()),
-            ]);
             q = q
-                .div_exact(&lin)
+                .div_exact(&Poly::vanishing_at(end))
                 .expect("a rational root gives a primitive linear factor");
         }
     }

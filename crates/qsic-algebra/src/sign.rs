@@ -47,6 +47,19 @@ impl Sign {
     }
 }
 
+/// The number of sign changes in a sequence, zeros skipped (Descartes, Sturm, Tarski).
+pub fn count_variations(signs: impl IntoIterator<Item = Sign>) -> usize {
+    let mut last = Sign::Zero;
+    let mut v = 0;
+    for s in signs.into_iter().filter(|s| !s.is_zero()) {
+        if !last.is_zero() && s != last {
+            v += 1;
+        }
+        last = s;
+    }
+    v
+}
+
 impl Neg for Sign {
     type Output = Sign;
     fn neg(self) -> Sign {

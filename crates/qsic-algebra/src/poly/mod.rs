@@ -63,6 +63,14 @@ impl Poly {
         Poly::new(vec![v])
     }
 
+    /// `q·x − p`, the primitive linear polynomial vanishing at the rational `p/q`.
+    pub fn vanishing_at(v: &RBig) -> Poly {
+        Poly::new(vec![
+            -v.numerator().clone(),
+            IBig::from(v.denominator().clone()),
+        ])
+    }
+
     /// `∏ (x − rᵢ)` for integer roots `rᵢ`.
     pub fn from_roots(roots: &[i64]) -> Poly {
         roots.iter().fold(Poly::constant(IBig::ONE), |acc, &r| {
@@ -310,19 +318,7 @@ impl Poly {
 
     /// Number of sign changes in the coefficient sequence (zeros skipped).
     pub fn sign_variations(&self) -> usize {
-        let mut last = Sign::Zero;
-        let mut v = 0;
-        for c in &self.c {
-            let s = Sign::of(c);
-            if s == Sign::Zero {
-                continue;
-            }
-            if last != Sign::Zero && s != last {
-                v += 1;
-            }
-            last = s;
-        }
-        v
+        crate::sign::count_variations(self.c.iter().map(Sign::of))
     }
 
     /// The multiplicity of `x` as a factor (number of low zero coefficients).

@@ -1,7 +1,7 @@
 //! Sturm sequences: exact counts of distinct real roots.
 
 use super::Poly;
-use crate::sign::Sign;
+use crate::sign::count_variations;
 use dashu_int::IBig;
 use dashu_ratio::RBig;
 
@@ -11,63 +11,92 @@ pub struct SturmSequence {
     seq: Vec<Poly>,
 }
 
-impl SturmSequence {
-    /// `p, p', −rem(p, p'), …` down to a constant (or to the gcd of `p` and `p'`, which
-    /// does not change the counts of distinct roots at points where `p ≠ 0`).
-    pub fn new(p: &Poly) -> SturmSequence {
-        let mut seq = vec![p.clone()];
-        if p.degree().unwrap_or(0) == 0 {
-            return SturmSequence { seq };
+/// A positive multiple of `−rem(a, b)` (`b ≠ 0`), made primitive: the next member of a
+/// signed remainder sequence.
+fn neg_rem(a: &Poly, b: &Poly) -> Poly {
+    let (Some(da), Some(db)) = (a.degree(), b.degree()) else {
+        return Poly::zero();
+    };
+    let r = if da < db {
+        -a
+    } else {
+        // prem = lc(b)^(δ+1)·rem: undo a negative factor.
+        let prem = a.pseudo_rem(b);
+        if b.leading() < IBig::ZERO && (da - db) % 2 == 0 {
+            prem
+        } else {
+            -&prem
         }
-        seq.push(p.derivative());
-        loop {
-            let n = seq.len();
-            let (a, b) = (&seq[n - 2], &seq[n - 1]);
-            let delta = a.degree().unwrap_or(0) - b.degree().unwrap_or(0);
-            let mut r = a.pseudo_rem(b);
-            if r.is_zero() {
-                break;
-            }
-            // prem = lc(b)^(δ+1)·rem: undo a negative factor.
-            if b.leading() < IBig::ZERO && delta % 2 == 0 {
-                r = -&r;
-            }
-            let c = r.content();
-            let r = Poly::new(r.coeffs().iter().map(|v| -(v / &c)).collect());
-            let stop = r.is_constant();
-            seq.push(r);
-            if stop {
-                break;
-            }
-        }
-        SturmSequence { seq }
+    };
+    let c = r.content();
+    if c.is_zero() || c.is_one() {
+        r
+    } else {
+        Poly::new(r.coeffs().iter().map(|v| v / &c).collect())
     }
+}
 
-    fn variations(signs: impl Iterator<Item = Sign>) -> usize {
-        let mut last = Sign::Zero;
-        let mut v = 0;
-        for s in signs {
-            if s == Sign::Zero {
-                continue;
-            }
-            if last != Sign::Zero && s != last {
-                v += 1;
-            }
-            last = s;
+/// The signed remainder sequence `a, b, −rem(a, b), …` until a remainder vanishes, each
+/// member scaled by a positive factor.
+fn signed_remainder_sequence(a: Poly, b: Poly) -> Vec<Poly> {
+    let mut seq = vec![a];
+    if b.is_zero() {
+        return seq;
+    }
+    seq.push(b);
+    loop {
+        let n = seq.len();
+        let r = neg_rem(&seq[n - 2], &seq[n - 1]);
+        if r.is_zero() {
+            return seq;
         }
-        v
+        seq.push(r);
+    }
+}
+
+/// Sign variations at −∞ minus at +∞.
+fn variations_across_the_line(seq: &[Poly]) -> i64 {
+    let lo = count_variations(seq.iter().map(Poly::sign_at_neg_infinity));
+    let hi = count_variations(seq.iter().map(Poly::sign_at_pos_infinity));
+    lo as i64 - hi as i64
+}
+
+/// The Tarski query `Σ sign q(α)` over the distinct real roots `α` of `p` (`p` of positive
+/// degree), by the Sturm–Tarski theorem: the variations of the signed remainder sequence
+/// of `(p, p'·q)` at −∞ minus at +∞. With `q = 1` it counts the real roots.
+///
+/// ```
+/// # use qsic_algebra::{Poly, poly::sturm::tarski_query};
+/// // roots −1, 0, 2 of p; q = x − 1 is negative at two of them, positive at one
+/// assert_eq!(tarski_query(&Poly::from_roots(&[-1, 0, 2]), &Poly::from_roots(&[1])), -1);
+/// ```
+pub fn tarski_query(p: &Poly, q: &Poly) -> i64 {
+    // p'q may be replaced by a positive multiple of its remainder mod p: the Cauchy index
+    // of p'q/p does not change when a multiple of p is added.
+    let mut pq = &p.derivative() * q;
+    if pq.degree() >= p.degree() {
+        pq = -&neg_rem(&pq, p);
+    }
+    variations_across_the_line(&signed_remainder_sequence(p.clone(), pq))
+}
+
+impl SturmSequence {
+    /// `p, p', −rem(p, p'), …` down to the gcd of `p` and `p'` (which does not change the
+    /// counts of distinct roots at points where `p ≠ 0`).
+    pub fn new(p: &Poly) -> SturmSequence {
+        SturmSequence {
+            seq: signed_remainder_sequence(p.clone(), p.derivative()),
+        }
     }
 
     /// Sign variations at a rational.
     pub fn variations_at(&self, x: &RBig) -> usize {
-        Self::variations(self.seq.iter().map(|p| p.sign_at(x)))
+        count_variations(self.seq.iter().map(|p| p.sign_at(x)))
     }
 
     /// Number of distinct real roots.
     pub fn count_real_roots(&self) -> usize {
-        let lo = Self::variations(self.seq.iter().map(|p| p.sign_at_neg_infinity()));
-        let hi = Self::variations(self.seq.iter().map(|p| p.sign_at_pos_infinity()));
-        lo.saturating_sub(hi)
+        variations_across_the_line(&self.seq).max(0) as usize
     }
 
     /// Number of distinct real roots in the half-open interval `(a, b]`, `a < b`.
@@ -102,6 +131,25 @@ mod tests {
         assert_eq!(s.count_roots_in(&RBig::from(5), &RBig::from(10)), 5);
         let half = RBig::from_parts_signed(IBig::from(21), IBig::from(2));
         assert_eq!(s.count_roots_in(&half, &RBig::from(100)), 10);
+    }
+
+    #[test]
+    fn tarski_query_counts_signs_at_roots() {
+        // roots −1, 0, 2 of x³ − x² − 2x; q = x − 1: signs −, −, +
+        let p = Poly::from_roots(&[-1, 0, 2]);
+        assert_eq!(tarski_query(&p, &Poly::from_roots(&[1])), -1);
+        assert_eq!(tarski_query(&p, &Poly::constant(IBig::ONE)), 3);
+        // q = x² + 1 > 0 everywhere; q = −(x − 3)(x + 3): positive at all three roots
+        assert_eq!(tarski_query(&p, &Poly::from_i64s(&[1, 0, 1])), 3);
+        assert_eq!(tarski_query(&p, &Poly::from_i64s(&[9, 0, -1])), 3);
+        assert_eq!(tarski_query(&p, &Poly::from_i64s(&[-9, 0, 1])), -3);
+        // a root of q: sign zero there
+        assert_eq!(tarski_query(&p, &Poly::from_roots(&[0])), 0);
+        // one real root (x³ − 2), q = x: positive
+        assert_eq!(
+            tarski_query(&Poly::from_i64s(&[-2, 0, 0, 1]), &Poly::from_i64s(&[0, 1])),
+            1
+        );
     }
 
     #[test]

@@ -121,6 +121,7 @@ use super::morphology::{
     SingularPoints,
 };
 use qsic_algebra::matrix::SymMatrix4;
+use qsic_algebra::poly::sturm::tarski_query;
 use qsic_algebra::{IBig, Poly, Sign};
 
 /// Classifies a singular pencil (`det(λA − μB) ≡ 0`, `A` and `B` not proportional), exactly.
@@ -385,68 +386,6 @@ fn binary_pencil(a: &M2, b: &M2) -> Option<Morphology> {
     })
 }
 
-/// A positive multiple of `−rem(a, b)` (`b ≠ 0`), made primitive.
-fn neg_rem(a: &Poly, b: &Poly) -> Poly {
-    let (Some(da), Some(db)) = (a.degree(), b.degree()) else {
-        return Poly::zero();
-    };
-    let r = if da < db {
-        -a
-    } else {
-        // prem = lc(b)^(δ+1)·rem
-        let prem = a.pseudo_rem(b);
-        if b.leading() < IBig::ZERO && (da - db) % 2 == 0 {
-            prem
-        } else {
-            -&prem
-        }
-    };
-    let c = r.content();
-    if c.is_zero() || c.is_one() {
-        r
-    } else {
-        Poly::new(r.coeffs().iter().map(|v| v / &c).collect())
-    }
-}
-
-/// The Tarski query `Σ_{p(α)=0, α real} sign q(α)` (`p` of positive degree), by the
-/// Sturm–Tarski theorem: the sign variations of the signed remainder sequence of
-/// `(p, p'·q)` at −∞ minus at +∞ (every member scaled by a positive factor).
-fn tarski_query(p: &Poly, q: &Poly) -> i64 {
-    // p'q may be replaced by a positive multiple of its remainder mod p: the Cauchy index
-    // of p'q/p does not change when a polynomial is added
-    let mut pq = &p.derivative() * q;
-    if pq.degree() >= p.degree() {
-        pq = -&neg_rem(&pq, p);
-    }
-    let mut seq = vec![p.clone(), pq];
-    loop {
-        let n = seq.len();
-        if seq[n - 1].is_zero() {
-            seq.pop();
-            break;
-        }
-        let r = neg_rem(&seq[n - 2], &seq[n - 1]);
-        if r.is_zero() {
-            break;
-        }
-        seq.push(r);
-    }
-    let variations = |signs: &mut dyn Iterator<Item = Sign>| {
-        let mut last = Sign::Zero;
-        let mut v = 0i64;
-        for s in signs.filter(|s| *s != Sign::Zero) {
-            if last != Sign::Zero && s != last {
-                v += 1;
-            }
-            last = s;
-        }
-        v
-    };
-    variations(&mut seq.iter().map(Poly::sign_at_neg_infinity))
-        - variations(&mut seq.iter().map(Poly::sign_at_pos_infinity))
-}
-
 /// The description of each singular type: real components, how they meet, a summary.
 fn describe(m: Morphology) -> Description {
     use ComplexType as C;
@@ -561,25 +500,6 @@ mod tests {
         let a = sym([[1, 1, 0, 0], [1, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]]);
         let b = sym([[0, 0, 1, 0], [0, 0, 1, 0], [1, 1, 0, 0], [0, 0, 0, 0]]);
         assert_eq!(pivot_columns(&a, &b), vec![0, 2]);
-    }
-
-    #[test]
-    fn tarski_query_counts_signs_at_roots() {
-        // roots −1, 0, 2 of x³ − x² − 2x; q = x − 1: signs −, −, +
-        let p = Poly::from_roots(&[-1, 0, 2]);
-        assert_eq!(tarski_query(&p, &Poly::from_roots(&[1])), -1);
-        assert_eq!(tarski_query(&p, &Poly::constant(IBig::ONE)), 3);
-        // q = x² + 1 > 0 everywhere; q = −(x − 3)(x + 3): positive at all three roots
-        assert_eq!(tarski_query(&p, &Poly::from_i64s(&[1, 0, 1])), 3);
-        assert_eq!(tarski_query(&p, &Poly::from_i64s(&[9, 0, -1])), 3);
-        assert_eq!(tarski_query(&p, &Poly::from_i64s(&[-9, 0, 1])), -3);
-        // a root of q: sign zero there
-        assert_eq!(tarski_query(&p, &Poly::from_roots(&[0])), 0);
-        // one real root (x³ − 2), q = x: positive
-        assert_eq!(
-            tarski_query(&Poly::from_i64s(&[-2, 0, 0, 1]), &Poly::from_i64s(&[0, 1])),
-            1
-        );
     }
 
     #[test]
