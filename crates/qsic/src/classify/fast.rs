@@ -60,9 +60,7 @@ fn minor_sums(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> MinorSums {
         }
     }
     let mut e3 = [0i128; 4];
-    for skip in 0..4 {
-        let idx: Vec<usize> = (0..4).filter(|&k| k != skip).collect();
-        let (r0, r1, r2) = (idx[0], idx[1], idx[2]);
+    for [r0, r1, r2] in [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]] {
         // expand along the first row
         add(&mut e3, &mul(&e(r0, r0), &m2([r1, r2], [r1, r2])), 1);
         add(&mut e3, &mul(&e(r0, r1), &m2([r1, r2], [r0, r2])), -1);
@@ -70,15 +68,18 @@ fn minor_sums(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> MinorSums {
     }
     // Laplace expansion along rows 0, 1.
     let mut e4 = [0i128; 5];
-    let pairs = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
-    for &(c1, c2) in &pairs {
-        let rest: Vec<usize> = (0..4).filter(|&k| k != c1 && k != c2).collect();
-        let s = if (1 + c1 + c2) % 2 == 0 { 1 } else { -1 };
-        add(
-            &mut e4,
-            &mul(&m2([0, 1], [c1, c2]), &m2([2, 3], [rest[0], rest[1]])),
-            s,
-        );
+    // (columns of rows 0, 1; the complementary columns of rows 2, 3)
+    let splits = [
+        ([0, 1], [2, 3]),
+        ([0, 2], [1, 3]),
+        ([0, 3], [1, 2]),
+        ([1, 2], [0, 3]),
+        ([1, 3], [0, 2]),
+        ([2, 3], [0, 1]),
+    ];
+    for (c, rest) in splits {
+        let s = if (1 + c[0] + c[1]) % 2 == 0 { 1 } else { -1 };
+        add(&mut e4, &mul(&m2([0, 1], c), &m2([2, 3], rest)), s);
     }
     MinorSums { e1, e2, e3, e4 }
 }
