@@ -2,7 +2,7 @@
 //! with rational ends, refined on demand. Signs and comparisons are exact.
 
 use crate::poly::Poly;
-use crate::roots::{bisect_once, isolate_real_roots, RootInterval};
+use crate::roots::{isolate_real_roots, refine_step, simplest_between, RootInterval};
 use crate::sign::Sign;
 use dashu_ratio::RBig;
 use std::cmp::Ordering;
@@ -17,6 +17,8 @@ use std::fmt;
 pub struct AlgebraicReal {
     poly: Poly,
     interval: RootInterval,
+    /// State of the quadratic interval refinement (see [`refine_step`]).
+    speed: usize,
 }
 
 impl AlgebraicReal {
@@ -25,6 +27,7 @@ impl AlgebraicReal {
         AlgebraicReal {
             poly: Poly::vanishing_at(&v),
             interval: RootInterval::Exact(v),
+            speed: 2,
         }
     }
 
@@ -42,9 +45,29 @@ impl AlgebraicReal {
                 iv => AlgebraicReal {
                     poly: sf.clone(),
                     interval: iv,
+                    speed: 2,
                 },
             })
             .collect()
+    }
+
+    /// The root of the square-free `poly` in `interval`, if the interval isolates one: an
+    /// exact rational that is a root, or an open interval at whose ends `poly` has opposite
+    /// nonzero signs (so exactly one root when `interval` comes from isolating a multiple
+    /// of `poly`, as in [`isolate_real_roots`]).
+    pub fn from_isolating_interval(poly: &Poly, interval: &RootInterval) -> Option<AlgebraicReal> {
+        match interval {
+            RootInterval::Exact(v) => poly
+                .sign_at(v)
+                .is_zero()
+                .then(|| AlgebraicReal::from_rational(v.clone())),
+            RootInterval::Open(lo, hi) => (poly.sign_at(lo) * poly.sign_at(hi) == Sign::Negative)
+                .then(|| AlgebraicReal {
+                    poly: poly.clone(),
+                    interval: interval.clone(),
+                    speed: 2,
+                }),
+        }
     }
 
     /// Checks the invariant (used in `debug_assert!`).
@@ -77,9 +100,10 @@ impl AlgebraicReal {
         }
     }
 
-    /// Halves the isolating interval (exact numbers are left as they are).
+    /// Narrows the isolating interval: at least halves it, and squares the rate of
+    /// shrinking on success (quadratic interval refinement; exact numbers are left as they are).
     pub fn refine(&mut self) {
-        self.interval = bisect_once(&self.poly, &self.interval);
+        self.interval = refine_step(&self.poly, &self.interval, &mut self.speed);
     }
 
     /// Refines until the interval is shorter than `width`.
@@ -121,6 +145,7 @@ impl AlgebraicReal {
             return Sign::Zero;
         }
         let mut iv = RootInterval::Open(lo, hi);
+        let mut speed = self.speed;
         loop {
             match &iv {
                 RootInterval::Exact(v) => return q.sign_at(v),
@@ -131,7 +156,7 @@ impl AlgebraicReal {
                     }
                 }
             }
-            iv = bisect_once(&self.poly, &iv);
+            iv = refine_step(&self.poly, &iv, &mut speed);
         }
     }
 
@@ -187,34 +212,6 @@ impl AlgebraicReal {
             a.refine();
             b.refine();
         }
-    }
-}
-
-/// A simple rational in `[lo, hi]` (open at an end when the flag says so); prefers integers
-/// and small denominators so that later evaluations stay cheap.
-fn simplest_between(lo: &RBig, hi: &RBig, lo_ok: bool, hi_ok: bool) -> RBig {
-    if lo == hi {
-        return lo.clone();
-    }
-    // try integers first
-    let f = RBig::from(lo.floor()) + RBig::ONE;
-    if &f < hi || (&f == hi && hi_ok) {
-        return f;
-    }
-    if lo_ok && lo.denominator().is_one() {
-        return lo.clone();
-    }
-    // binary search for a dyadic in (lo, hi)
-    let mut den = dashu_int::IBig::from(2);
-    loop {
-        let cand = RBig::from_parts_signed(
-            (lo * RBig::from(den.clone())).floor() + dashu_int::IBig::ONE,
-            den.clone(),
-        );
-        if (&cand < hi || (&cand == hi && hi_ok)) && (&cand > lo || (&cand == lo && lo_ok)) {
-            return cand;
-        }
-        den <<= 1;
     }
 }
 

@@ -1,9 +1,32 @@
-//! Real root isolation with rational isolating intervals (Descartes' method with bisection).
+//! Real root isolation with rational isolating intervals: Descartes' rule of signs on
+//! dyadic intervals, with Newton steps for clusters and exponent splits for scale, and
+//! quadratic interval refinement for single roots.
 //!
 //! Postconditions of [`isolate_real_roots`]: the result lists every distinct real root
 //! once, in increasing order; each is either an exact rational or an open interval
 //! `(lo, hi)` with rational (dyadic) ends that are not roots, containing exactly one root;
 //! the intervals are pairwise disjoint.
+//!
+//! # Method and cost
+//! Positive and negative roots are isolated apart (root 0 is pulled out first), each
+//! inside `(2^−k₁, 2^k₂)` from Cauchy's bounds on the roots of `p` and of its reverse. A
+//! work list (no recursion) holds open dyadic intervals; for each, the Descartes bound `v`
+//! of `p` on it is computed from `p` afresh, so nothing is kept alive between steps:
+//! - `v = 0`: no root; `v = 1`: one root, isolated.
+//! - an interval whose ends differ by more than a factor four is split at a power of two
+//!   between them (the exponent is halved), so roots of tiny or huge size cost a number of
+//!   steps logarithmic in the number of bits of their size, not linear;
+//! - an interval whose bound did not drop at its last split holds a cluster: a Newton step
+//!   for a `v`-fold root from its ends proposes a subinterval of width `w/N`; it is taken
+//!   when its own bound is still `v` (Descartes' bound is subadditive on disjoint
+//!   subintervals, so the rest holds no root), and `N` is squared; otherwise the interval is
+//!   bisected and `N` goes down to `√N` (Sagraloff's Newton–Descartes scheme, real roots only);
+//! - rational roots met at split points are recorded exactly and divided out.
+//!
+//! Two roots `2^−L` apart thus cost `O(log L)` steps instead of `L`, each a Taylor shift of
+//! a degree-`n` polynomial with coefficients of `O(n(L + τ))` bits. Single roots are
+//! refined by Abbott's quadratic interval refinement ([`refine`]): a secant step picks one
+//! of `N` pieces, checked by two signs.
 
 use crate::poly::Poly;
 use crate::sign::Sign;
@@ -35,6 +58,22 @@ impl RootInterval {
             RootInterval::Open(_, h) => h,
         }
     }
+
+    /// `Some(v)` for a root known exactly.
+    pub fn as_exact(&self) -> Option<&RBig> {
+        match self {
+            RootInterval::Exact(v) => Some(v),
+            RootInterval::Open(..) => None,
+        }
+    }
+
+    /// The same root of `p(−x)`: `−hi < x < −lo`.
+    fn negated(self) -> RootInterval {
+        match self {
+            RootInterval::Exact(v) => RootInterval::Exact(-v),
+            RootInterval::Open(l, h) => RootInterval::Open(-h, -l),
+        }
+    }
 }
 
 /// A power of two strictly larger than the absolute value of every root (Cauchy's bound).
@@ -51,6 +90,9 @@ pub fn root_bound_log2(p: &Poly) -> usize {
 
 /// Isolates the real roots of a polynomial (multiple roots are reported once).
 ///
+/// Roots closer than `2^−L` cost `O(log L)` Newton steps (see the module docs); memory
+/// stays linear in the bits of the polynomial and of the intervals.
+///
 /// ```
 /// # use qsic_algebra::{Poly, roots::{isolate_real_roots, RootInterval}};
 /// # use qsic_algebra::RBig;
@@ -64,115 +106,468 @@ pub fn isolate_real_roots(p: &Poly) -> Vec<RootInterval> {
     if p.degree().unwrap_or(0) == 0 {
         return Vec::new();
     }
-    let sf = p.squarefree_part();
+    let mut sf = p.squarefree_part();
     let mut out = Vec::new();
-    let q = &sf;
-    let k = root_bound_log2(q);
-    // x = 2^k (2t − 1), t ∈ (0, 1) covers (−2^k, 2^k).
-    let two_k = IBig::ONE << k;
-    let unit = q.shift(&-&two_k).scale_var(&(&two_k * IBig::from(2)));
-    let mut found: Vec<(IBig, usize, bool)> = Vec::new(); // (c, level, exact): t ∈ (c/2^level, (c+1)/2^level) or t = c/2^level
-    bisect(unit, IBig::ZERO, 0, &mut found);
-    for (c, level, exact) in found {
-        let to_x = |num: &IBig| -> RBig {
-            // t = num / 2^level, x = 2^k (2t − 1) = (2^(k+1) num − 2^(k+level)) / 2^level
-            let n = (num << (k + 1)) - (IBig::ONE << (k + level));
-            RBig::from_parts_signed(n, IBig::ONE << level)
-        };
-        if exact {
-            out.push(RootInterval::Exact(to_x(&c)));
-        } else {
-            out.push(fix_ends(&sf, to_x(&c), to_x(&(&c + IBig::ONE))));
-        }
+    if sf.coeff(0).is_zero() {
+        out.push(RootInterval::Exact(RBig::ZERO));
+        sf = sf.shift_down(1);
+    }
+    if sf.degree().unwrap_or(0) > 0 {
+        out.extend(
+            isolate_positive(&sf.scale_var(&IBig::NEG_ONE))
+                .into_iter()
+                .map(RootInterval::negated),
+        );
+        out.extend(isolate_positive(&sf));
     }
     out.sort_by(|a, b| a.lo().cmp(b.lo()));
     out
 }
 
-/// Descartes bisection of `p` on `(0, 1)`, which stands for the interval `(c/2^l, (c+1)/2^l)`.
-/// `p` has no root at 0 or 1.
-fn bisect(p: Poly, c: IBig, level: usize, out: &mut Vec<(IBig, usize, bool)>) {
-    match p.reverse().shift(&IBig::ONE).sign_variations() {
-        0 => {}
-        1 => out.push((c, level, false)),
-        _ => {
-            // left half: 2ⁿ p(x/2); right half: that shifted by 1; the midpoint is right(0).
-            let mut left = p.scale_var_inverse(&IBig::from(2));
-            let mut right = left.shift(&IBig::ONE);
-            let c2 = &c << 1;
-            if right.coeff(0).is_zero() {
-                out.push((&c2 + IBig::ONE, level + 1, true));
-                right = right.shift_down(1);
-                left = left
-                    .div_exact(&Poly::from_i64s(&[-1, 1]))
-                    .expect("left(1) = right(0) = 0, so x − 1 divides left");
-            }
-            bisect(left, c2.clone(), level + 1, out);
-            bisect(right, c2 + IBig::ONE, level + 1, out);
+/// An open interval `(lo·2^s, hi·2^s)` of the work list (`0 < lo < hi` integers), with the
+/// Newton speed `N = 2^n_exp` and the Descartes bound of the interval it was split from.
+struct Cell {
+    lo: IBig,
+    hi: IBig,
+    s: isize,
+    n_exp: usize,
+    parent_var: usize,
+}
+
+impl Cell {
+    /// The same interval with the common factors of two moved into `s`, so that the
+    /// numbers a cell works with are as small as its position allows.
+    fn normalized(mut self) -> Cell {
+        let k = trailing_zeros(&self.lo).min(trailing_zeros(&self.hi));
+        if k > 0 {
+            self.lo >>= k;
+            self.hi >>= k;
+            self.s += k as isize;
         }
+        self
     }
 }
 
-/// Moves the ends of an interval holding exactly one root of the square-free `p` in its
-/// interior off the roots of `p` (ends of bisection intervals can fall on exact rational
-/// roots found beside them). The search uses `p` with its roots at the ends divided out,
-/// which changes sign across the interior root.
-fn fix_ends(p: &Poly, lo: RBig, hi: RBig) -> RootInterval {
-    let mut q = p.clone();
-    for end in [&lo, &hi] {
-        if q.sign_at(end).is_zero() {
-            q = q
-                .div_exact(&Poly::vanishing_at(end))
+/// A root found by [`isolate_positive`]: `x·2^s`, or one root in `(lo·2^s, hi·2^s)`.
+enum Found {
+    Exact(IBig, isize),
+    Open(IBig, IBig, isize),
+}
+
+/// What a Newton step gave.
+enum Newton {
+    /// A subinterval holding every root of the cell.
+    Narrowed(Cell),
+    /// A rational root `x·2^s` met inside the cell.
+    Root(IBig, isize),
+}
+
+/// Isolates the positive roots of the square-free `p0` with `p0(0) ≠ 0`.
+fn isolate_positive(p0: &Poly) -> Vec<RootInterval> {
+    let mut p = p0.clone();
+    let k_hi = root_bound_log2(&p);
+    let k_lo = root_bound_log2(&p.reverse());
+    // Every positive root lies in (2^−k_lo, 2^k_hi), strictly.
+    let mut work = vec![Cell {
+        lo: IBig::ONE,
+        hi: IBig::ONE << (k_hi + k_lo),
+        s: -(k_lo as isize),
+        n_exp: 2,
+        parent_var: 0,
+    }];
+    let mut found = Vec::new();
+    while let Some(cell) = work.pop() {
+        // q(x) ∝ p(x·2^s): the cell is (lo, hi) for q, with integer ends.
+        let q = scaled(&p, cell.s);
+        let v = variations(&q, &cell.lo, &cell.hi);
+        if v == 0 {
+            continue;
+        }
+        if v == 1 {
+            found.push(Found::Open(cell.lo, cell.hi, cell.s));
+            continue;
+        }
+        let (la, lb) = (bit_len(&cell.lo), bit_len(&cell.hi));
+        let (point, s, n_exp) = if lb >= la + 2 {
+            // 2^((la + lb − 2)/2) lies strictly between lo < 2^la and hi ≥ 2^(lb − 1)
+            (IBig::ONE << ((la + lb - 2) / 2), cell.s, cell.n_exp)
+        } else {
+            match (cell.parent_var == v)
+                .then(|| newton_step(&q, &cell, v))
+                .flatten()
+            {
+                Some(Newton::Narrowed(c)) => {
+                    work.push(c.normalized());
+                    continue;
+                }
+                Some(Newton::Root(x, s)) => (x, s, cell.n_exp),
+                None => (&cell.lo + &cell.hi, cell.s - 1, (cell.n_exp / 2).max(2)),
+            }
+        };
+        let up = (cell.s - s) as usize;
+        let (lo, hi) = (&cell.lo << up, &cell.hi << up);
+        if Sign::of(&scaled(&p, s).eval_integer(&point)).is_zero() {
+            p = p
+                .div_exact(&Poly::vanishing_at(&to_rational(&point, s)))
                 .expect("a rational root gives a primitive linear factor");
+            found.push(Found::Exact(point.clone(), s));
+        }
+        for (lo, hi) in [(point.clone(), hi), (lo, point)] {
+            work.push(
+                Cell {
+                    lo,
+                    hi,
+                    s,
+                    n_exp,
+                    parent_var: v,
+                }
+                .normalized(),
+            );
         }
     }
-    let two = RBig::from(2);
-    let (mut lo, mut hi) = (lo, hi);
-    let s_lo = q.sign_at(&lo);
-    while p.sign_at(&lo).is_zero() || p.sign_at(&hi).is_zero() {
-        let mid = (&lo + &hi) / &two;
-        match q.sign_at(&mid) {
-            Sign::Zero => return RootInterval::Exact(mid),
-            s if s == s_lo => lo = mid,
-            _ => hi = mid,
-        }
-    }
-    RootInterval::Open(lo, hi)
+    found
+        .into_iter()
+        .map(|f| match f {
+            Found::Exact(x, s) => RootInterval::Exact(to_rational(&x, s)),
+            Found::Open(lo, hi, s) => {
+                let (lo, hi) = (to_rational(&lo, s), to_rational(&hi, s));
+                // An end may be a rational root divided out after the cell was made.
+                let on_root = p0.sign_at(&lo).is_zero() || p0.sign_at(&hi).is_zero();
+                let iv = RootInterval::Open(lo, hi);
+                let iv = if on_root {
+                    move_ends_off_roots(p0, &p, iv)
+                } else {
+                    iv
+                };
+                exact_if_rational(&p, iv)
+            }
+        })
+        .collect()
 }
 
-/// Narrows an isolating interval of a root of the square-free `p` by bisection until it is
-/// shorter than `width` (or the root is found exactly).
-pub fn refine(p: &Poly, root: &RootInterval, width: &RBig) -> RootInterval {
-    let (mut lo, mut hi) = match root {
-        RootInterval::Exact(_) => return root.clone(),
-        RootInterval::Open(l, h) => (l.clone(), h.clone()),
+/// The root of the primitive `p` in the open interval `iv`, exactly if it is a rational
+/// whose denominator is below 2⁶⁴ in size, else `iv` (possibly narrowed).
+///
+/// A rational root `a/b` of a primitive integer polynomial has `b | lc(p)`, so `lc(p)·root`
+/// is an integer: once the interval is shorter than `1/lc(p)`, one candidate is left.
+/// Quadratic refinement makes this a handful of steps; leading coefficients above 64 bits
+/// are skipped to keep the cost of huge inputs down.
+fn exact_if_rational(p: &Poly, iv: RootInterval) -> RootInterval {
+    let lc = p.leading();
+    if bit_len(&lc) > 64 {
+        return iv;
+    }
+    let lc = RBig::from(lc.unsigned_abs());
+    let iv = refine(p, &iv, &(RBig::ONE / &lc));
+    let RootInterval::Open(lo, hi) = &iv else {
+        return iv;
     };
-    let s_lo = p.sign_at(&lo);
-    let two = RBig::from(2);
-    while &(&hi - &lo) >= width {
-        let mid = (&lo + &hi) / &two;
-        match p.sign_at(&mid) {
-            Sign::Zero => return RootInterval::Exact(mid),
-            s if s == s_lo => lo = mid,
-            _ => hi = mid,
-        }
+    let candidate = RBig::from((lo * &lc).floor() + IBig::ONE) / &lc;
+    if &candidate < hi && p.sign_at(&candidate).is_zero() {
+        RootInterval::Exact(candidate)
+    } else {
+        iv
     }
-    RootInterval::Open(lo, hi)
 }
 
-/// Halves an isolating interval once (see [`refine`]).
-pub fn bisect_once(p: &Poly, root: &RootInterval) -> RootInterval {
-    match root {
-        RootInterval::Exact(_) => root.clone(),
-        RootInterval::Open(lo, hi) => {
-            let mid = (lo + hi) / RBig::from(2);
-            match p.sign_at(&mid) {
-                Sign::Zero => RootInterval::Exact(mid),
-                s if s == p.sign_at(lo) => RootInterval::Open(mid, hi.clone()),
-                _ => RootInterval::Open(lo.clone(), mid),
+/// A Newton step for a cluster of `v` roots of `q` in `cell` (see the module docs).
+fn newton_step(q: &Poly, cell: &Cell, v: usize) -> Option<Newton> {
+    let dq = q.derivative();
+    let width = &cell.hi - &cell.lo;
+    let m = cell.n_exp + 2; // 4N = 2^m pieces of width w/4N
+    let pieces = IBig::ONE << m;
+    let base = &cell.lo << m;
+    let q2 = scaled(q, -(m as isize)); // q at the finer grid
+    for x0 in [&cell.lo, &cell.hi] {
+        let dv = dq.eval_integer(x0);
+        if dv.is_zero() {
+            continue;
+        }
+        let qv = q.eval_integer(x0);
+        // λ = x0 − v·q(x0)/q'(x0) lies in piece ℓ = ⌊(λ − lo)·2^m/w⌋
+        let mut num = ((x0 - &cell.lo) * &dv - IBig::from(v) * qv) << m;
+        let mut den = dv * &width;
+        if den < IBig::ZERO {
+            num = -num;
+            den = -den;
+        }
+        let l = floor_div(&num, &den);
+        if l < IBig::ZERO || l >= pieces {
+            continue;
+        }
+        let i0 = (&l - IBig::ONE).max(IBig::ZERO);
+        let i1 = (&l + IBig::from(2)).min(pieces.clone());
+        let lo = &base + &i0 * &width;
+        let hi = &base + &i1 * &width;
+        let s2 = cell.s - m as isize;
+        for (end, inside) in [(&lo, i0 > IBig::ZERO), (&hi, i1 < pieces)] {
+            if inside && q2.eval_integer(end).is_zero() {
+                return Some(Newton::Root(end.clone(), s2));
             }
         }
+        if variations(&q2, &lo, &hi) == v {
+            return Some(Newton::Narrowed(Cell {
+                lo,
+                hi,
+                s: s2,
+                n_exp: cell.n_exp * 2,
+                parent_var: v,
+            }));
+        }
     }
+    None
+}
+
+/// Narrows the interval of the one root of `q` in it until its ends are not roots of
+/// `p0` (a multiple of `q` whose rational roots at the ends were divided out of `q`).
+fn move_ends_off_roots(p0: &Poly, q: &Poly, iv: RootInterval) -> RootInterval {
+    let mut iv = iv;
+    let mut speed = 2;
+    while let RootInterval::Open(lo, hi) = &iv {
+        if !p0.sign_at(lo).is_zero() && !p0.sign_at(hi).is_zero() {
+            break;
+        }
+        iv = refine_step(q, &iv, &mut speed);
+    }
+    iv
+}
+
+/// Bits of `|x|`.
+fn bit_len(x: &IBig) -> usize {
+    x.clone().unsigned_abs().bit_len()
+}
+
+/// The number of factors two of `x > 0`.
+fn trailing_zeros(x: &IBig) -> usize {
+    x.clone().unsigned_abs().trailing_zeros().unwrap_or(0)
+}
+
+/// `x·2^s` as a rational.
+fn to_rational(x: &IBig, s: isize) -> RBig {
+    if s >= 0 {
+        RBig::from(x << s as usize)
+    } else {
+        RBig::from_parts_signed(x.clone(), IBig::ONE << s.unsigned_abs())
+    }
+}
+
+/// `⌊num / den⌋` for `den > 0`.
+fn floor_div(num: &IBig, den: &IBig) -> IBig {
+    let q = num / den;
+    if num < &IBig::ZERO && !(num % den).is_zero() {
+        q - IBig::ONE
+    } else {
+        q
+    }
+}
+
+/// A positive multiple of `p(x·2^s)` with integer coefficients: `cᵢ·2^(s·i)` for `s ≥ 0`,
+/// `cᵢ·2^(−s·(n−i))` for `s < 0` (shifts only).
+fn scaled(p: &Poly, s: isize) -> Poly {
+    let c = p.coeffs();
+    let n = c.len().saturating_sub(1);
+    let d = s.unsigned_abs();
+    Poly::new(
+        c.iter()
+            .enumerate()
+            .map(|(i, v)| {
+                if s >= 0 {
+                    v << (d * i)
+                } else {
+                    v << (d * (n - i))
+                }
+            })
+            .collect(),
+    )
+}
+
+/// Descartes' bound for the roots of `q` in the open interval `(lo, hi)` with integer
+/// ends: exact when it is 0 or 1, otherwise an upper bound of the same parity.
+fn variations(q: &Poly, lo: &IBig, hi: &IBig) -> usize {
+    // x = lo + (hi − lo)·t maps t ∈ (0, 1) onto the interval, t = 1/(1 + u) maps u ∈ (0, ∞)
+    // onto (0, 1).
+    q.shift(lo)
+        .scale_var(&(hi - lo))
+        .reverse()
+        .shift(&IBig::ONE)
+        .sign_variations()
+}
+
+/// A simple rational in `[lo, hi]`, `lo ≤ hi` (an end is allowed when its flag says so;
+/// `lo < hi` or both allowed): an integer if there is one, else a dyadic with the smallest
+/// denominator, so that later evaluations stay cheap.
+pub fn simplest_between(lo: &RBig, hi: &RBig, lo_ok: bool, hi_ok: bool) -> RBig {
+    if lo == hi {
+        return lo.clone();
+    }
+    // try integers first
+    let f = RBig::from(lo.floor()) + RBig::ONE;
+    if &f < hi || (&f == hi && hi_ok) {
+        return f;
+    }
+    if lo_ok && lo.denominator().is_one() {
+        return lo.clone();
+    }
+    // The dyadics with denominator 2^k in the gap: there are some for every k past the
+    // smallest one, so that k is found by a binary search; 2^−k < hi − lo is enough.
+    let fits = |k: usize| -> Option<RBig> {
+        let den = IBig::ONE << k;
+        let cand = RBig::from_parts_signed((lo * RBig::from(den.clone())).floor() + IBig::ONE, den);
+        ((&cand < hi || (&cand == hi && hi_ok)) && (&cand > lo || (&cand == lo && lo_ok)))
+            .then_some(cand)
+    };
+    let w = hi - lo;
+    let mut k_max =
+        (bit_len(&IBig::from(w.denominator().clone())).saturating_sub(bit_len(w.numerator()))) + 2;
+    let mut best = loop {
+        match fits(k_max) {
+            Some(c) => break c,
+            None => k_max *= 2,
+        }
+    };
+    let mut k_min = 0; // no dyadic of denominator 2^0 (an integer) fits: tried above
+    while k_max - k_min > 1 {
+        let k = (k_min + k_max) / 2;
+        match fits(k) {
+            Some(c) => {
+                best = c;
+                k_max = k;
+            }
+            None => k_min = k,
+        }
+    }
+    best
+}
+
+/// A simple rational strictly between two consecutive roots isolated by
+/// [`isolate_real_roots`] (`a` before `b`): it lies in the gap between their intervals.
+///
+/// ```
+/// # use qsic_algebra::{Poly, RBig, roots::{isolate_real_roots, rational_between}};
+/// let r = isolate_real_roots(&Poly::from_i64s(&[-2, 0, 1])); // ±√2
+/// assert_eq!(rational_between(&r[0], &r[1]), RBig::ZERO);
+/// ```
+pub fn rational_between(a: &RootInterval, b: &RootInterval) -> RBig {
+    simplest_between(
+        a.hi(),
+        b.lo(),
+        matches!(a, RootInterval::Open(..)),
+        matches!(b, RootInterval::Open(..)),
+    )
+}
+
+/// One root of `p` in `(lo/den, hi/den)`, `den > 0`, where `p` has opposite nonzero signs
+/// at the ends; `2^n_exp` is the number of pieces the next secant step chooses from.
+struct Bracket {
+    lo: IBig,
+    hi: IBig,
+    den: IBig,
+    n_exp: usize,
+}
+
+/// One step of quadratic interval refinement (Abbott): the secant through the ends picks
+/// one of `N` pieces; if `p` changes sign on it, it is the new interval and `N` is squared,
+/// otherwise the interval is halved and `N` goes to `√N`. Returns `Err(x)` when it meets
+/// the root exactly.
+fn qir_step(p: &Poly, b: Bracket) -> Result<Bracket, RBig> {
+    let pl = p.eval_homogeneous(&b.lo, &b.den);
+    let ph = p.eval_homogeneous(&b.hi, &b.den);
+    let s_lo = Sign::of(&pl);
+    let m = b.n_exp;
+    let width = &b.hi - &b.lo;
+    let den = &b.den << m;
+    let base = &b.lo << m;
+    // λ = lo + w·pl/(pl − ph) lies in piece ⌊2^m·pl/(pl − ph)⌋ ∈ [0, 2^m)
+    let (mut num, mut d) = (pl.clone() << m, &pl - &ph);
+    if d < IBig::ZERO {
+        num = -num;
+        d = -d;
+    }
+    let pieces = IBig::ONE << m;
+    let l = floor_div(&num, &d).clamp(IBig::ZERO, &pieces - IBig::ONE);
+    let a = &base + &l * &width;
+    let c = &a + &width;
+    let (sa, sc) = (
+        Sign::of(&p.eval_homogeneous(&a, &den)),
+        Sign::of(&p.eval_homogeneous(&c, &den)),
+    );
+    if sa.is_zero() {
+        return Err(RBig::from_parts_signed(a, den));
+    }
+    if sc.is_zero() {
+        return Err(RBig::from_parts_signed(c, den));
+    }
+    if sa == s_lo && sc != s_lo {
+        return Ok(Bracket {
+            lo: a,
+            hi: c,
+            den,
+            n_exp: 2 * m,
+        });
+    }
+    let (lo, hi, den) = (&b.lo << 1, &b.hi << 1, &b.den << 1);
+    let mid = (&b.lo + &b.hi).clone();
+    let n_exp = (m / 2).max(2);
+    match Sign::of(&p.eval_homogeneous(&mid, &den)) {
+        Sign::Zero => Err(RBig::from_parts_signed(mid, den)),
+        s if s == s_lo => Ok(Bracket {
+            lo: mid,
+            hi,
+            den,
+            n_exp,
+        }),
+        _ => Ok(Bracket {
+            lo,
+            hi: mid,
+            den,
+            n_exp,
+        }),
+    }
+}
+
+/// One refinement step of an isolating interval of a root of `p` (at least a halving;
+/// `speed` carries the state of the quadratic refinement between calls, start it at 2).
+/// `p` must have opposite nonzero signs at the ends of an open interval.
+pub fn refine_step(p: &Poly, root: &RootInterval, speed: &mut usize) -> RootInterval {
+    let RootInterval::Open(lo, hi) = root else {
+        return root.clone();
+    };
+    let (dl, dh) = (
+        IBig::from(lo.denominator().clone()),
+        IBig::from(hi.denominator().clone()),
+    );
+    let g = crate::int_gcd(&dl, &dh);
+    let bracket = Bracket {
+        lo: lo.numerator() * &(&dh / &g),
+        hi: hi.numerator() * &(&dl / &g),
+        den: &dl / &g * &dh,
+        n_exp: (*speed).max(2),
+    };
+    match qir_step(p, bracket) {
+        Ok(b) => {
+            *speed = b.n_exp;
+            RootInterval::Open(
+                RBig::from_parts_signed(b.lo, b.den.clone()),
+                RBig::from_parts_signed(b.hi, b.den),
+            )
+        }
+        Err(x) => RootInterval::Exact(x),
+    }
+}
+
+/// Narrows an isolating interval of a root of the square-free `p` until it is shorter
+/// than `width` (or the root is found exactly). Quadratic refinement: about
+/// `log₂ log₂ (1/width)` steps once the root is isolated from the other roots of `p`.
+pub fn refine(p: &Poly, root: &RootInterval, width: &RBig) -> RootInterval {
+    let mut iv = root.clone();
+    let mut speed = 2;
+    while let RootInterval::Open(lo, hi) = &iv {
+        if &(hi - lo) < width {
+            break;
+        }
+        iv = refine_step(p, &iv, &mut speed);
+    }
+    iv
 }
 
 #[cfg(test)]
@@ -255,7 +650,8 @@ mod tests {
             let r = isolate_real_roots(&p);
             prop_assert_eq!(r.len(), distinct.len());
             for (iv, v) in r.iter().zip(&distinct) {
-                prop_assert!(iv.lo() <= v && v <= iv.hi());
+                // small leading coefficient: every rational root is found exactly
+                prop_assert_eq!(iv, &RootInterval::Exact(v.clone()));
             }
         }
     }
@@ -292,5 +688,118 @@ mod regression_zero_root {
         assert_eq!(r[0], RootInterval::Exact(RBig::ZERO));
         assert!(r[1].lo() >= &RBig::ZERO && r[1].hi() <= &RBig::from(8));
         assert!(!(r[1].lo() < &RBig::ZERO && r[1].hi() > &RBig::ZERO));
+    }
+}
+
+#[cfg(test)]
+mod cluster_tests {
+    use super::*;
+
+    fn ten_pow(k: usize) -> IBig {
+        IBig::from(10).pow(k)
+    }
+
+    /// Checks the postconditions and returns the roots as `(lo, hi)`.
+    fn isolated(p: &Poly) -> Vec<RootInterval> {
+        let r = isolate_real_roots(p);
+        let sf = p.squarefree_part();
+        assert_eq!(r.len(), sf.count_real_roots_sturm());
+        for w in r.windows(2) {
+            assert!(w[0].hi() <= w[1].lo() && w[0].lo() < w[1].lo());
+        }
+        for iv in &r {
+            match iv {
+                RootInterval::Exact(v) => assert_eq!(sf.sign_at(v), Sign::Zero),
+                RootInterval::Open(l, h) => {
+                    assert!(l < h);
+                    assert_eq!(sf.sign_at(l) * sf.sign_at(h), Sign::Negative);
+                }
+            }
+        }
+        r
+    }
+
+    /// Rational roots 1 and 1 + 10^−L, beside x² + 1: both found exactly or isolated.
+    #[test]
+    fn rational_roots_10_to_minus_6000_apart() {
+        for l in [10, 100, 1600, 6000] {
+            let t = ten_pow(l);
+            let p = &(&Poly::from_i64s(&[-1, 1]) * &Poly::new(vec![-(&t + IBig::ONE), t.clone()]))
+                * &Poly::from_i64s(&[1, 0, 1]);
+            let r = isolated(&p);
+            assert_eq!(r.len(), 2, "L = {l}");
+            assert!(r[0].hi() <= &RBig::ONE && &RBig::ONE <= r[1].lo());
+            let second = RBig::from_parts_signed(&t + IBig::ONE, t);
+            assert!(r[1].lo() <= &second && &second <= r[1].hi());
+        }
+    }
+
+    /// 10^2L (x² − 2)² − 1 has four irrational roots, two by two 10^−L/√2 apart.
+    #[test]
+    fn irrational_roots_10_to_minus_3000_apart() {
+        for l in [5, 300, 3000] {
+            let s = &Poly::from_i64s(&[-2, 0, 1]) * &Poly::from_i64s(&[-2, 0, 1]);
+            let p = &s.scale(&ten_pow(2 * l)) - &Poly::from_i64s(&[1]);
+            let r = isolated(&p);
+            assert_eq!(r.len(), 4, "L = {l}");
+            assert!(r.iter().all(|iv| iv.as_exact().is_none()));
+        }
+    }
+
+    /// Roots 1, 2, 3 times 10^−6000 and −10^6000: tiny and huge scales in one polynomial.
+    #[test]
+    fn roots_at_tiny_and_huge_scales() {
+        let t = ten_pow(6000);
+        let mut p = Poly::new(vec![t.clone(), IBig::ONE]); // x + 10^6000
+        for k in 1..=3 {
+            p = &p * &Poly::new(vec![IBig::from(-k), t.clone()]);
+        }
+        p = &p * &Poly::from_i64s(&[-3, 0, 1]);
+        let r = isolated(&p);
+        assert_eq!(r.len(), 6);
+        let big = RBig::from(-t.clone());
+        assert!(r[0].lo() <= &big && &big <= r[0].hi());
+        for (k, iv) in r[2..5].iter().enumerate() {
+            let v = RBig::from_parts_signed(IBig::from(k + 1), t.clone());
+            assert!(iv.lo() <= &v && &v <= iv.hi());
+        }
+    }
+
+    /// Mignotte's x⁴ − 2(ax − 1)² with a = 10^400: two roots about a^−3 apart near 1/a.
+    #[test]
+    fn mignotte_cluster() {
+        let a = ten_pow(400);
+        let lin = Poly::new(vec![IBig::from(-1), a]);
+        let p = &Poly::from_i64s(&[0, 0, 0, 0, 1]) - &(&lin * &lin).scale(&IBig::from(2));
+        assert_eq!(isolated(&p).len(), 4);
+    }
+
+    /// Refinement to 2^−20000 takes few quadratic steps, and the result is an interval of
+    /// the root of the right width.
+    #[test]
+    fn quadratic_refinement_reaches_high_precision() {
+        let p = Poly::from_i64s(&[-2, 0, 1]);
+        let r = isolate_real_roots(&p).pop().expect("√2");
+        let width = RBig::from_parts_signed(IBig::ONE, IBig::ONE << 20000);
+        let mut steps = 0;
+        let mut iv = r;
+        let mut speed = 2;
+        while let RootInterval::Open(lo, hi) = &iv {
+            if &(hi - lo) < &width {
+                break;
+            }
+            iv = refine_step(&p, &iv, &mut speed);
+            steps += 1;
+        }
+        // bisection would need 20 000 steps; quadratic refinement about 2·log₂ 20000
+        assert!(steps < 60, "{steps} steps");
+        let RootInterval::Open(lo, hi) = iv else {
+            panic!("√2 is irrational")
+        };
+        assert_eq!(p.sign_at(&lo) * p.sign_at(&hi), Sign::Negative);
+        assert_eq!(
+            refine(&p, &RootInterval::Open(lo, hi), &width).lo() > &RBig::ONE,
+            true
+        );
     }
 }

@@ -11,6 +11,7 @@
 use crate::quadric::Quadric;
 use qsic_algebra::matrix::{Inertia, MatrixPencil, SymMatrix4};
 use qsic_algebra::poly::binary::BinaryForm;
+use qsic_algebra::roots::{isolate_real_roots, rational_between};
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
 
 /// A point `(λ : μ)` of the pencil: `(α : 1)` is the member `αA − B`, `(1 : 0)` the member `A`.
@@ -188,59 +189,65 @@ impl PencilAnalysis {
         }
 
         let e = data.pencil.principal_minor_sums();
-        let mut real_roots: Vec<PencilRoot> = Vec::new();
+        // All finite real roots at once, isolated from each other: the product of the
+        // pieces is the square-free part of f (pieces are primitive and pairwise coprime).
+        let squarefree = pieces
+            .iter()
+            .fold(Poly::constant(IBig::ONE), |acc, (p, _, _)| &acc * p);
+        let isolated = isolate_real_roots(&squarefree);
+        let mut real_count = vec![0usize; pieces.len()];
+        let mut real_roots: Vec<PencilRoot> = Vec::with_capacity(isolated.len() + 1);
+        for iv in &isolated {
+            let (j, r) = pieces
+                .iter()
+                .enumerate()
+                .find_map(|(j, (p, _, _))| {
+                    AlgebraicReal::from_isolating_interval(p, iv).map(|r| (j, r))
+                })
+                .expect("each root of the square-free part is a root of exactly one piece");
+            let (_, m, ords) = &pieces[j];
+            real_count[j] += 1;
+            // A simple root's inertia follows from its arcs (filled in below).
+            let inertia = if *m == 1 {
+                Inertia {
+                    positive: 0,
+                    negative: 0,
+                    zero: 1,
+                }
+            } else {
+                inertia_at(&e, &r)
+            };
+            real_roots.push(PencilRoot {
+                point: PencilPoint::Finite(r),
+                multiplicity: *m as u8,
+                blocks: blocks_from_orders(*m, *ords),
+                inertia,
+            });
+        }
         let mut complex_roots = Vec::new();
-        for (p, m, ords) in &pieces {
-            let blocks = blocks_from_orders(*m, *ords);
-            let roots = AlgebraicReal::real_roots_of(p);
-            for _ in roots.len()..p.degree().unwrap_or(0) {
-                complex_roots.push(blocks.clone());
-            }
-            for r in roots {
-                // A simple root's inertia follows from its arcs (filled in below).
-                let inertia = if *m == 1 {
-                    Inertia {
-                        positive: 0,
-                        negative: 0,
-                        zero: 1,
-                    }
-                } else {
-                    inertia_at(&e, &r)
-                };
-                real_roots.push(PencilRoot {
-                    point: PencilPoint::Finite(r),
-                    multiplicity: *m as u8,
-                    blocks: blocks.clone(),
-                    inertia,
-                });
+        for ((p, m, ords), real) in pieces.iter().zip(&real_count) {
+            for _ in *real..p.degree().unwrap_or(0) {
+                complex_roots.push(blocks_from_orders(*m, *ords));
             }
         }
-        real_roots.sort_by(|x, y| match (&x.point, &y.point) {
-            (PencilPoint::Finite(a), PencilPoint::Finite(b)) => a.cmp(b),
-            _ => std::cmp::Ordering::Equal,
-        });
 
-        // Sample points of the arcs.
-        let mut arcs = Vec::new();
-        let finite: Vec<&AlgebraicReal> = real_roots
-            .iter()
-            .filter_map(|r| match &r.point {
-                PencilPoint::Finite(a) => Some(a),
-                PencilPoint::Infinity => None,
-            })
-            .collect();
-        if finite.is_empty() {
-            let x = RBig::ZERO;
-            arcs.push((x.clone(), inertia_at_rational(&e, &x)));
-        } else {
-            let first = RBig::from(finite[0].interval().lo().floor() - IBig::ONE);
-            arcs.push((first.clone(), inertia_at_rational(&e, &first)));
-            for w in finite.windows(2) {
-                let x = w[0].rational_between(w[1]);
+        // Sample points of the arcs, in the gaps between the isolating intervals.
+        let mut arcs = Vec::with_capacity(isolated.len() + 1);
+        match (isolated.first(), isolated.last()) {
+            (Some(first), Some(last)) => {
+                let x = RBig::from(first.lo().floor() - IBig::ONE);
+                arcs.push((x.clone(), inertia_at_rational(&e, &x)));
+                for w in isolated.windows(2) {
+                    let x = rational_between(&w[0], &w[1]);
+                    arcs.push((x.clone(), inertia_at_rational(&e, &x)));
+                }
+                let x = RBig::from(last.hi().ceil() + IBig::ONE);
                 arcs.push((x.clone(), inertia_at_rational(&e, &x)));
             }
-            let last = RBig::from(finite[finite.len() - 1].interval().hi().ceil() + IBig::ONE);
-            arcs.push((last.clone(), inertia_at_rational(&e, &last)));
+            _ => {
+                let x = RBig::ZERO;
+                arcs.push((x.clone(), inertia_at_rational(&e, &x)));
+            }
         }
 
         // At a simple root exactly one eigenvalue crosses zero: the member's inertia is the

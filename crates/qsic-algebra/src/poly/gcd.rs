@@ -17,8 +17,84 @@ impl Poly {
     /// assert_eq!(a.gcd(&b), Poly::from_roots(&[2, 3]));
     /// ```
     pub fn gcd(&self, other: &Poly) -> Poly {
+        // Coprime inputs with big coefficients (a square-free characteristic polynomial and
+        // its derivative) are recognised modulo a prime instead of through a PRS whose
+        // coefficients grow to millions of bits.
+        if self.max_bits().max(other.max_bits()) > 128 && coprime_modular(self, other) {
+            return Poly::constant(IBig::ONE);
+        }
         gcd_subresultant(self, other)
     }
+}
+
+/// The Mersenne prime 2⁶¹ − 1.
+const PRIME: u64 = (1 << 61) - 1;
+
+fn mul_mod(a: u64, b: u64) -> u64 {
+    ((a as u128 * b as u128) % PRIME as u128) as u64
+}
+
+fn inv_mod(a: u64) -> u64 {
+    // a^(p−2) by square and multiply
+    let (mut base, mut e, mut r) = (a, PRIME - 2, 1u64);
+    while e > 0 {
+        if e & 1 == 1 {
+            r = mul_mod(r, base);
+        }
+        base = mul_mod(base, base);
+        e >>= 1;
+    }
+    r
+}
+
+/// Coefficients modulo [`PRIME`], trailing zeros removed.
+fn reduce(p: &Poly) -> Vec<u64> {
+    let m = IBig::from(PRIME);
+    let mut c: Vec<u64> = p
+        .coeffs()
+        .iter()
+        .map(|v| {
+            let r = v % &m;
+            let r = if r < IBig::ZERO { r + &m } else { r };
+            u64::try_from(r).expect("a residue modulo a 61-bit prime fits in u64")
+        })
+        .collect();
+    while c.last() == Some(&0) {
+        c.pop();
+    }
+    c
+}
+
+/// `true` only if `a` and `b` are certainly coprime over ℚ: the prime divides neither
+/// leading coefficient and the gcd of the reductions is a constant. (Reduction can only
+/// raise the degree of the gcd when the leading coefficients survive it.) `false` means
+/// "not known"; both must be nonzero and non-constant for a `true`.
+pub fn coprime_modular(a: &Poly, b: &Poly) -> bool {
+    let (mut f, mut g) = (reduce(a), reduce(b));
+    if a.degree().unwrap_or(0) == 0
+        || b.degree().unwrap_or(0) == 0
+        || f.len() != a.coeffs().len()
+        || g.len() != b.coeffs().len()
+    {
+        return false;
+    }
+    // Euclid over 𝔽_p
+    while g.len() > 1 {
+        let inv = inv_mod(*g.last().expect("g is nonzero"));
+        while f.len() >= g.len() {
+            let shift = f.len() - g.len();
+            let k = mul_mod(*f.last().expect("f is nonzero"), inv);
+            for (j, gj) in g.iter().enumerate() {
+                let t = mul_mod(k, *gj);
+                f[shift + j] = (f[shift + j] + PRIME - t) % PRIME;
+            }
+            while f.last() == Some(&0) {
+                f.pop();
+            }
+        }
+        std::mem::swap(&mut f, &mut g);
+    }
+    g.len() == 1
 }
 
 /// Gcd by the subresultant PRS.
@@ -73,6 +149,34 @@ pub fn gcd_primitive_prs(a: &Poly, b: &Poly) -> Poly {
         let r = f.pseudo_rem(&g).primitive_part();
         f = g;
         g = r;
+    }
+}
+
+#[cfg(test)]
+mod modular_tests {
+    use super::*;
+
+    /// Coprime and non-coprime pairs with big coefficients: the shortcut never claims a
+    /// common factor away, and the gcd is the same as the PRS's.
+    #[test]
+    fn modular_coprimality_agrees_with_the_prs() {
+        let big = IBig::from(10).pow(60) + IBig::from(7);
+        let a = Poly::new(vec![big.clone(), IBig::from(3), IBig::ONE]);
+        let b = Poly::new(vec![-big.clone(), IBig::ONE]);
+        let c = Poly::new(vec![IBig::from(5), big.clone(), IBig::from(2)]);
+        assert!(coprime_modular(&a, &b));
+        assert!(!coprime_modular(&(&a * &c), &(&b * &c)));
+        assert_eq!((&a * &c).gcd(&(&b * &c)), c.primitive_part());
+        assert_eq!(a.gcd(&b), Poly::constant(IBig::ONE));
+        // the prime divides the leading coefficient: not decided
+        let lead = Poly::new(vec![IBig::ONE, IBig::ZERO, IBig::from(PRIME)]);
+        assert!(!coprime_modular(&lead, &b));
+        // a common factor x − 1 that only the exact route sees: a = (x − 1)(x + p)
+        let p = IBig::from(PRIME);
+        let a = Poly::new(vec![-p.clone(), &p - IBig::ONE, IBig::ONE]);
+        let b = &Poly::from_i64s(&[-1, 1]) * &Poly::new(vec![big, IBig::ONE]);
+        assert!(!coprime_modular(&a, &b));
+        assert_eq!(a.gcd(&b), Poly::from_i64s(&[-1, 1]));
     }
 }
 

@@ -241,6 +241,14 @@ impl Poly {
         acc
     }
 
+    /// The value at an integer (Horner).
+    pub fn eval_integer(&self, x: &IBig) -> IBig {
+        let Some((top, rest)) = self.c.split_last() else {
+            return IBig::ZERO;
+        };
+        rest.iter().rev().fold(top.clone(), |acc, v| acc * x + v)
+    }
+
     /// The exact value at a rational.
     pub fn eval(&self, x: &RBig) -> RBig {
         let den = IBig::from(x.denominator().clone());

@@ -21,6 +21,9 @@ impl Poly {
         let f = self.primitive_part();
         let df = f.derivative();
         let a0 = f.gcd(&df);
+        if a0.is_constant() {
+            return vec![(f, 1)];
+        }
         let mut b = exact(&f, &a0);
         let c = exact(&df, &a0);
         let mut d = &c - &b.derivative();
@@ -45,7 +48,11 @@ impl Poly {
             return Poly::constant(dashu_int::IBig::ONE);
         }
         let f = self.primitive_part();
-        exact(&f, &f.gcd(&f.derivative())).primitive_part()
+        let g = f.gcd(&f.derivative());
+        if g.is_constant() {
+            return f;
+        }
+        exact(&f, &g).primitive_part()
     }
 
     /// `true` if the polynomial has no repeated factor (constants are square-free).
