@@ -785,7 +785,7 @@ mod cluster_tests {
         let mut iv = r;
         let mut speed = 2;
         while let RootInterval::Open(lo, hi) = &iv {
-            if &(hi - lo) < &width {
+            if (hi - lo) < width {
                 break;
             }
             iv = refine_step(&p, &iv, &mut speed);
@@ -797,9 +797,6 @@ mod cluster_tests {
             panic!("√2 is irrational")
         };
         assert_eq!(p.sign_at(&lo) * p.sign_at(&hi), Sign::Negative);
-        assert_eq!(
-            refine(&p, &RootInterval::Open(lo, hi), &width).lo() > &RBig::ONE,
-            true
-        );
+        assert!(refine(&p, &RootInterval::Open(lo, hi), &width).lo() > &RBig::ONE);
     }
 }

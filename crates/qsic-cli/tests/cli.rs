@@ -348,3 +348,78 @@ fn case_corpus_through_batch_gives_every_labelled_case() {
     assert!(mismatches.is_empty(), "{}", mismatches.join("\n"));
     assert_eq!(run.code, Some(0), "stderr: {}", run.stderr);
 }
+
+/// The pairs that once aborted a whole batch (roots 10⁻¹⁶⁰⁰ and 10⁻⁶⁰⁰⁰ apart, all roots
+/// squeezed below 4·10⁻⁶⁰⁰⁰, 2 000-digit coefficients), between ordinary lines and a line
+/// over a limit: every line is answered, in order, with the right case.
+#[test]
+fn batch_answers_clustered_and_huge_lines() {
+    let digits = |seed: u64| -> String {
+        // 2 000 pseudo-random digits, leading digit nonzero
+        let mut x = seed;
+        (0..2000)
+            .map(|i| {
+                x = x
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                let d = (x >> 60) % 10;
+                char::from(b'0' + if i == 0 { d.max(1) as u8 } else { d as u8 })
+            })
+            .collect()
+    };
+    let sphere = "x^2+y^2+z^2-w^2";
+    let lines = [
+        (
+            sphere.to_string(),
+            "x^2+(1+1e-1600)*y^2+2*z^2+3*w^2".to_string(),
+            Some(2),
+        ),
+        (CASE_1_A.to_string(), CASE_1_B.to_string(), Some(1)),
+        (
+            format!("{sphere}+1e-6000*x^2"),
+            "2*x^2+4*y^2-w^2".to_string(),
+            Some(1),
+        ),
+        ("1e99999*x^2".to_string(), sphere.to_string(), None),
+        (
+            sphere.to_string(),
+            "x^2+(1+1e-6000)*y^2+2*z^2+3*w^2".to_string(),
+            Some(2),
+        ),
+        (
+            format!(
+                "{}*x^2+{}*y^2-z^2+{}*w^2+x*y",
+                digits(1),
+                digits(2),
+                digits(3)
+            ),
+            format!("x^2+2*y^2+{}*z^2-3*w^2+y*z", digits(4)),
+            Some(2),
+        ),
+        (CASE_1_A.to_string(), CASE_1_B.to_string(), Some(1)),
+    ];
+    let input: String = lines
+        .iter()
+        .enumerate()
+        .map(|(i, (a, b, _))| format!("{{\"id\": {i}, \"A\": \"{a}\", \"B\": \"{b}\"}}\n"))
+        .collect();
+    let run = qsic_with(
+        &["classify", "--batch", "-"],
+        input.into_bytes(),
+        Duration::from_secs(300),
+    );
+    let out = json_lines(&run.stdout);
+    assert_eq!(out.len(), lines.len(), "stderr: {}", run.stderr);
+    for (i, ((_, _, case), o)) in lines.iter().zip(&out).enumerate() {
+        assert_eq!(o["id"], i, "{o}");
+        match case {
+            Some(c) => assert_eq!(o["case"], *c, "line {i}: {o}"),
+            None => assert!(
+                o["error"]["message"]
+                    .as_str()
+                    .is_some_and(|e| e.contains("exceeds a limit")),
+                "line {i}: {o}"
+            ),
+        }
+    }
+}

@@ -8,22 +8,12 @@
 mod inputs;
 
 use dashu_ratio::RBig;
+use inputs::representatives;
 use proptest::prelude::*;
 use qsic::classify::classify_exact;
 use qsic::{classify, Quadric};
 
 type M = [[RBig; 4]; 4];
-
-/// The representatives of the 36 classes, with the case their id names (`pub-cNN-rep…`).
-fn representatives() -> Vec<(String, Quadric, Quadric, u8)> {
-    inputs::corpus_pairs(|id| id.ends_with("-rep") || id.ends_with("-rep-alt"))
-        .into_iter()
-        .map(|(id, a, b)| {
-            let case = id[5..7].parse().expect("ids are pub-cNN-…");
-            (id, a, b, case)
-        })
-        .collect()
-}
 
 fn transform(m: &M, p: &[[i64; 4]; 4]) -> M {
     // Pᵀ M P

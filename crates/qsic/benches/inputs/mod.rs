@@ -76,6 +76,17 @@ pub fn corpus_pairs(filter: impl Fn(&str) -> bool) -> Vec<(String, Quadric, Quad
     out
 }
 
+/// The representatives of the 36 classes, with the case their id names (`pub-cNN-rep…`).
+pub fn representatives() -> Vec<(String, Quadric, Quadric, u8)> {
+    corpus_pairs(|id| id.ends_with("-rep") || id.ends_with("-rep-alt"))
+        .into_iter()
+        .map(|(id, a, b)| {
+            let case = id[5..7].parse().expect("ids are pub-cNN-…");
+            (id, a, b, case)
+        })
+        .collect()
+}
+
 /// The singular pairs of `qi-quadrics.jsonl` (polynomial strings).
 pub fn qi_singular_pairs() -> Vec<(Quadric, Quadric)> {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/qi-quadrics.jsonl");
