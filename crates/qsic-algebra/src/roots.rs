@@ -76,16 +76,29 @@ impl RootInterval {
     }
 }
 
-/// A power of two strictly larger than the absolute value of every root (Cauchy's bound).
+/// A power of two strictly larger than the absolute value of every root (Fujiwara's bound
+/// `|x| ≤ 2·maxᵢ |a_{n−i}/a_n|^{1/i}`, read off bit lengths; within a factor of about 4 of
+/// the largest root, where Cauchy's bound can be its `n`-th power).
 pub fn root_bound_log2(p: &Poly) -> usize {
-    let lead_bits = p.leading().unsigned_abs().bit_len();
-    let max_bits = p.coeffs()[..p.coeffs().len().saturating_sub(1)]
+    let c = p.coeffs();
+    let Some((lead, rest)) = c.split_last() else {
+        return 1;
+    };
+    let lead_bits = bit_len(lead);
+    let n = rest.len();
+    // |a_{n−i}/a_n| < 2^(bits − lead_bits + 1), so its i-th root is below 2^⌈(…)/i⌉
+    let k = rest
         .iter()
-        .map(|v| v.unsigned_abs().bit_len())
+        .enumerate()
+        .filter(|(_, v)| !v.is_zero())
+        .map(|(j, v)| {
+            let i = n - j;
+            (bit_len(v) + 1).saturating_sub(lead_bits).div_ceil(i)
+        })
         .max()
         .unwrap_or(0);
-    // |root| < 1 + max|aᵢ|/|aₙ| ≤ 1 + 2^(max_bits − lead_bits + 1)
-    (max_bits + 2).saturating_sub(lead_bits).max(1)
+    // 2·2^k bounds the roots; one more doubling makes the bound strict
+    k + 2
 }
 
 /// Isolates the real roots of a polynomial (multiple roots are reported once).
@@ -532,6 +545,9 @@ pub fn refine_step(p: &Poly, root: &RootInterval, speed: &mut usize) -> RootInte
     let RootInterval::Open(lo, hi) = root else {
         return root.clone();
     };
+    if let Some(iv) = split_orders_of_magnitude(p, lo, hi) {
+        return iv;
+    }
     let (dl, dh) = (
         IBig::from(lo.denominator().clone()),
         IBig::from(hi.denominator().clone()),
@@ -553,6 +569,38 @@ pub fn refine_step(p: &Poly, root: &RootInterval, speed: &mut usize) -> RootInte
         }
         Err(x) => RootInterval::Exact(x),
     }
+}
+
+/// For an interval of one sign whose ends differ by more than a factor 4, the half of it cut
+/// at a power of two near the geometric mean that holds the root (secants are useless there).
+fn split_orders_of_magnitude(p: &Poly, lo: &RBig, hi: &RBig) -> Option<RootInterval> {
+    let negative = hi < &RBig::ZERO;
+    let (a, b) = if negative {
+        (-hi, -lo)
+    } else {
+        (lo.clone(), hi.clone())
+    };
+    if a <= RBig::ZERO {
+        return None;
+    }
+    // ⌊log₂⌋ of a positive rational, to within one
+    let log2 = |x: &RBig| {
+        bit_len(x.numerator()) as isize - bit_len(&IBig::from(x.denominator().clone())) as isize
+    };
+    let (la, lb) = (log2(&a), log2(&b));
+    if lb < la + 4 {
+        return None;
+    }
+    let m = to_rational(&IBig::ONE, (la + lb) / 2);
+    if m <= a || m >= b {
+        return None;
+    }
+    let m = if negative { -m } else { m };
+    Some(match p.sign_at(&m) {
+        Sign::Zero => RootInterval::Exact(m),
+        s if s == p.sign_at(lo) => RootInterval::Open(m, hi.clone()),
+        _ => RootInterval::Open(lo.clone(), m),
+    })
 }
 
 /// Narrows an isolating interval of a root of the square-free `p` until it is shorter
