@@ -848,3 +848,64 @@ mod cluster_tests {
         assert!(refine(&p, &RootInterval::Open(lo, hi), &width).lo() > &RBig::ONE);
     }
 }
+
+#[cfg(test)]
+mod bound_tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// Roots T, T + 1, 2T, −3T (T = 10^300): coefficients up to T⁴, where Cauchy's bound is
+    /// about T⁴; Fujiwara's stays within a few bits of 3T.
+    #[test]
+    fn fujiwara_bound_is_tight_where_cauchy_is_not() {
+        let t = IBig::from(10).pow(300);
+        let lin = |c: IBig| Poly::new(vec![-c, IBig::ONE]);
+        let p = &(&lin(t.clone()) * &lin(&t + IBig::ONE))
+            * &(&lin(&t * IBig::from(2)) * &lin(&t * IBig::from(-3)));
+        let k = root_bound_log2(&p);
+        let three_t = bit_len(&(&t * IBig::from(3)));
+        assert!(
+            k > three_t && k <= three_t + 4,
+            "2^{k} for roots below 2^{three_t}"
+        );
+        let r = isolate_real_roots(&p);
+        assert_eq!(r.len(), 4);
+        // small leading coefficient: the integer roots are found exactly
+        assert!(r.iter().all(|iv| iv.as_exact().is_some()), "{r:?}");
+    }
+
+    proptest! {
+        #[test]
+        fn bound_exceeds_every_root(roots in prop::collection::vec(-1000i64..1000, 1..6), lead in 1i64..50) {
+            let p = Poly::from_roots(&roots).scale(&IBig::from(lead));
+            let bound = RBig::from(IBig::ONE << root_bound_log2(&p));
+            for r in &roots {
+                prop_assert!(RBig::from(r.abs()) < bound);
+            }
+        }
+
+        /// Refinement of wide intervals (orders of magnitude first) keeps the root inside.
+        #[test]
+        fn refinement_keeps_the_root(root in 1i64..1_000_000, den_bits in 0usize..40) {
+            // q·x − root·... : the root root/2^den_bits with x² + 1 beside it
+            let d = IBig::ONE << den_bits;
+            let p = &Poly::new(vec![-IBig::from(root), d.clone()]) * &Poly::from_i64s(&[1, 0, 1]);
+            let v = RBig::from_parts_signed(IBig::from(root), d);
+            let wide = RootInterval::Open(RBig::from_parts_signed(IBig::ONE, IBig::ONE << 60), RBig::from(IBig::ONE << 60));
+            let mut iv = wide;
+            let mut speed = 2;
+            let mut steps = 0;
+            let goal = RBig::from_parts_signed(IBig::ONE, IBig::ONE << 200);
+            while let RootInterval::Open(lo, hi) = &iv {
+                if (hi - lo) < goal {
+                    break;
+                }
+                iv = refine_step(&p, &iv, &mut speed);
+                prop_assert!(iv.lo() <= &v && &v <= iv.hi());
+                steps += 1;
+            }
+            // 120 orders of magnitude and 200 bits: bisection alone would take 260 steps
+            prop_assert!(steps < 80, "{} steps", steps);
+        }
+    }
+}
