@@ -547,7 +547,7 @@ fn small_from_f64(v: f64) -> Option<SmallRational> {
 
 /// The gcd of two unsigned integers, `gcd(0, v) = v` (binary algorithm, in `u64` when
 /// both fit).
-fn gcd_u128(a: u128, b: u128) -> u128 {
+pub(crate) fn gcd_u128(a: u128, b: u128) -> u128 {
     if a == 0 {
         return b;
     }

@@ -18,7 +18,7 @@ mod polynomial;
 
 pub use number::parse_number;
 use number::parse_number_small;
-pub use polynomial::parse_quadric;
+pub use polynomial::{parse_quadric, parse_quadric_big_route};
 
 use crate::error::Error;
 use crate::quadric::{Quadric, SmallRational};
