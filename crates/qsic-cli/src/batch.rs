@@ -13,14 +13,12 @@
 //! [`MAX_LINE_BYTES`] is skipped without being stored and answered with an error.
 
 use crate::input::{quadric_from_form, JsonForm};
+use crate::line::read_line;
 use crate::output::{write_classification_fields, write_json_string};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use qsic::classify_allowing_zero;
 use rayon::prelude::*;
-use serde::de::{self, Deserialize, Deserializer, IgnoredAny, MapAccess, Visitor};
-use serde_json::value::RawValue;
 use serde_json::Value;
-use std::fmt;
 use std::io::{self, BufRead, BufReader, Read, Write};
 use std::panic::{self, AssertUnwindSafe};
 use std::time::Duration;
@@ -161,78 +159,9 @@ impl<R: Read> LineReader<R> {
     }
 }
 
-/// The fields of a batch line that the batch reads, borrowed from the line's text: `id`
-/// as written, `A` and `B` as [`JsonForm`]s. Other fields are skipped; of repeated
-/// fields the last counts (as in a JSON object read into a map).
-struct Line<'a> {
-    id: Option<&'a RawValue>,
-    a: Option<JsonForm<'a>>,
-    b: Option<JsonForm<'a>>,
-}
-
-/// A key of a batch line.
-enum Field {
-    Id,
-    A,
-    B,
-    Other,
-}
-
-impl<'de> Deserialize<'de> for Field {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        struct FieldVisitor;
-        impl Visitor<'_> for FieldVisitor {
-            type Value = Field;
-            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("a field name")
-            }
-            fn visit_str<E: de::Error>(self, v: &str) -> Result<Field, E> {
-                Ok(match v {
-                    "id" => Field::Id,
-                    "A" => Field::A,
-                    "B" => Field::B,
-                    _ => Field::Other,
-                })
-            }
-        }
-        deserializer.deserialize_identifier(FieldVisitor)
-    }
-}
-
-impl<'de> Deserialize<'de> for Line<'de> {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        struct LineVisitor;
-        impl<'de> Visitor<'de> for LineVisitor {
-            type Value = Line<'de>;
-            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("a JSON object")
-            }
-            fn visit_map<M: MapAccess<'de>>(self, mut map: M) -> Result<Line<'de>, M::Error> {
-                let mut line = Line {
-                    id: None,
-                    a: None,
-                    b: None,
-                };
-                while let Some(field) = map.next_key::<Field>()? {
-                    match field {
-                        Field::Id => line.id = Some(map.next_value()?),
-                        Field::A => line.a = Some(map.next_value()?),
-                        Field::B => line.b = Some(map.next_value()?),
-                        Field::Other => {
-                            map.next_value::<IgnoredAny>()?;
-                        }
-                    }
-                }
-                Ok(line)
-            }
-        }
-        deserializer.deserialize_map(LineVisitor)
-    }
-}
-
 /// Why a line failed, with its `id` as written once it is known.
 struct LineFailure<'a> {
-    id: Option<&'a RawValue>,
+    id: Option<&'a str>,
     message: String,
 }
 
@@ -246,10 +175,10 @@ impl LineFailure<'_> {
 }
 
 /// `{"id":` and the id as written (`null` if none), then `,`.
-fn open_record(id: Option<&RawValue>) -> String {
+fn open_record(id: Option<&str>) -> String {
     let mut out = String::with_capacity(512);
     out.push_str("{\"id\":");
-    out.push_str(id.map_or("null", RawValue::get));
+    out.push_str(id.unwrap_or("null"));
     out.push(',');
     out
 }
@@ -303,8 +232,8 @@ fn classify_line(line: &RawLine) -> Result<String, LineFailure<'_>> {
     {
         return Err(not_an_object(text));
     }
-    let record: Line<'_> = serde_json::from_str(text)
-        .map_err(|e| LineFailure::without_id(format!("invalid JSON: {e}")))?;
+    let record =
+        read_line(text).map_err(|e| LineFailure::without_id(format!("invalid JSON: {e}")))?;
     let id = record.id;
     let fail = |message: String| LineFailure { id, message };
     let quadric = |name: &str, form: &Option<JsonForm<'_>>| match form {
@@ -400,7 +329,10 @@ pub fn run<R: Read, W: Write>(
         }
         let answers: Vec<(String, bool)> = chunk.par_iter().map(answer_line).collect();
         for (text, ok) in &answers {
-            writeln!(output, "{text}").map_err(BatchError::Write)?;
+            output
+                .write_all(text.as_bytes())
+                .map_err(BatchError::Write)?;
+            output.write_all(b"\n").map_err(BatchError::Write)?;
             summary.answered += 1;
             summary.failed += u64::from(!ok);
         }

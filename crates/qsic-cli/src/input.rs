@@ -155,6 +155,9 @@ pub enum JsonForm<'a> {
     Text(Cow<'a, str>),
     /// An array, read as a matrix.
     Matrix(JsonMatrix<'a>),
+    /// A 4×4 array whose entries are numbers (their text as written) or strings without
+    /// escapes (their content), as [`crate::line::scan_plain`] reads it.
+    Array4([[&'a str; 4]; 4]),
     /// Any other value, by its JSON type (`"a number"`, `"null"`, …).
     Other(&'static str),
 }
@@ -324,6 +327,7 @@ pub fn quadric_from_form(form: &JsonForm<'_>) -> Result<Option<Quadric>, InputEr
     let m = match form {
         JsonForm::Text(text) => return allow_zero(parse_quadric(text)),
         JsonForm::Matrix(m) => m,
+        JsonForm::Array4(texts) => return allow_zero(quadric_from_array(texts)),
         JsonForm::Other(kind) => {
             return Err(InputError::Type(format!(
                 "expected a polynomial string or a 4x4 array, found {kind}"

@@ -130,79 +130,76 @@ pub fn classification_to_json_line(c: &Classification) -> String {
 /// Appends the fields of the JSON result object, in schema order and without the braces,
 /// to `out`: the text `serde_json` writes for [`ClassificationJson`], without building it.
 pub fn write_classification_fields(out: &mut String, c: &Classification) {
-    let key = |out: &mut String, name: &str| {
-        out.push('"');
-        out.push_str(name);
-        out.push_str("\":");
-    };
-    key(out, "pencil");
+    out.push_str("\"pencil\":");
     write_json_string(out, c.pencil.key());
-    out.push(',');
-    key(out, "case");
+    out.push_str(",\"case\":");
     write_u8_or_null(out, c.case);
-    for (name, value) in [
-        ("segre", c.segre),
-        ("signature", c.signature),
-        ("index_sequence", c.index_sequence),
-        ("complex_type", c.complex_type()),
-        ("real_type", c.real_type()),
-    ] {
-        out.push(',');
-        key(out, name);
-        write_str_or_null(out, value);
-    }
+    out.push_str(",\"segre\":");
+    write_str_or_null(out, c.segre);
+    out.push_str(",\"signature\":");
+    write_str_or_null(out, c.signature);
+    out.push_str(",\"index_sequence\":");
+    write_str_or_null(out, c.index_sequence);
+    out.push_str(",\"complex_type\":");
+    write_str_or_null(out, c.complex_type());
+    out.push_str(",\"real_type\":");
+    write_str_or_null(out, c.real_type());
     let description = c.description.as_ref();
-    out.push(',');
-    key(out, "components");
-    out.push('[');
+    out.push_str(",\"components\":[");
     for (k, comp) in description
         .map_or(&[][..], |d| &d.components[..])
         .iter()
         .enumerate()
     {
-        if k > 0 {
-            out.push(',');
-        }
-        out.push('{');
-        key(out, "kind");
+        out.push_str(if k == 0 { "{\"kind\":" } else { ",{\"kind\":" });
         write_json_string(out, comp.kind.key());
-        out.push(',');
-        key(out, "multiplicity");
+        out.push_str(",\"multiplicity\":");
         write_u8_or_null(out, Some(comp.multiplicity));
-        out.push(',');
-        key(out, "count");
+        out.push_str(",\"count\":");
         write_u8_or_null(out, Some(comp.count));
-        out.push(',');
-        key(out, "closed");
         out.push_str(match comp.closed {
-            Some(true) => "true",
-            Some(false) => "false",
-            None => "null",
+            Some(true) => ",\"closed\":true}",
+            Some(false) => ",\"closed\":false}",
+            None => ",\"closed\":null}",
         });
-        out.push('}');
     }
-    out.push_str("],");
-    key(out, "singular_points");
-    out.push('[');
+    out.push_str("],\"singular_points\":[");
     for (k, p) in description
         .map_or(&[][..], |d| &d.singular_points[..])
         .iter()
         .enumerate()
     {
-        if k > 0 {
-            out.push(',');
-        }
-        out.push('{');
-        key(out, "kind");
+        out.push_str(if k == 0 { "{\"kind\":" } else { ",{\"kind\":" });
         write_json_string(out, p.kind.key());
-        out.push(',');
-        key(out, "count");
+        out.push_str(",\"count\":");
         write_u8_or_null(out, Some(p.count));
         out.push('}');
     }
-    out.push_str("],");
-    key(out, "description");
+    out.push_str("],\"description\":");
     write_str_or_null(out, description.map(|d| d.summary));
+}
+
+/// Whether `b` holds a byte that JSON escapes: `"`, `\\` or a control character below
+/// 0x20. Eight bytes at a time: a word has a zero byte iff `(x − 0x01…01) & !x & 0x80…80`
+/// is nonzero, and a byte below 0x20 iff that holds for `x − 0x20…20` in place of `x − 1`.
+fn needs_escape(b: &[u8]) -> bool {
+    const ONES: u64 = 0x0101_0101_0101_0101;
+    const HIGH: u64 = 0x8080_8080_8080_8080;
+    let mut chunks = b.chunks_exact(8);
+    for chunk in &mut chunks {
+        let mut word = [0u8; 8];
+        word.copy_from_slice(chunk);
+        let x = u64::from_le_bytes(word);
+        let zero = |y: u64| y.wrapping_sub(ONES) & !y & HIGH;
+        let control = x.wrapping_sub(ONES * 0x20) & !x & HIGH;
+        if control | zero(x ^ (ONES * u64::from(b'"'))) | zero(x ^ (ONES * u64::from(b'\\'))) != 0 {
+            return true;
+        }
+    }
+    chunks
+        .remainder()
+        .iter()
+        .any(|&c| c < 0x20 || c == b'"' || c == b'\\')
 }
 
 fn write_str_or_null(out: &mut String, value: Option<&str>) {
@@ -229,6 +226,13 @@ fn write_u8_or_null(out: &mut String, value: Option<u8>) {
 /// Appends `s` as a JSON string, escaped as `serde_json` escapes it: `\"`, `\\`, the short
 /// escapes `\b \f \n \r \t`, `\u00XX` for other control characters; the rest as is.
 pub fn write_json_string(out: &mut String, s: &str) {
+    if !needs_escape(s.as_bytes()) {
+        out.reserve(s.len() + 2);
+        out.push('"');
+        out.push_str(s);
+        out.push('"');
+        return;
+    }
     out.push('"');
     let mut plain = 0;
     for (i, b) in s.bytes().enumerate() {
@@ -445,7 +449,17 @@ mod tests {
         .map(|s| s.to_string())
         .collect();
         samples.push((0u8..128).map(char::from).collect());
+        // Each special byte at every place of a word, among plain and non-ASCII bytes.
+        for special in ['"', '\\', '\u{0}', '\u{1f}', '\n'] {
+            for at in 0..17 {
+                let mut s: Vec<char> = "abcdefgh é∞xyz~ ".chars().collect();
+                s.insert(at, special);
+                samples.push(s.into_iter().collect());
+            }
+        }
         for s in &samples {
+            let plain = !s.bytes().any(|c| c < 0x20 || c == b'"' || c == b'\\');
+            assert_eq!(needs_escape(s.as_bytes()), !plain, "{s:?}");
             let mut out = String::new();
             write_json_string(&mut out, s);
             assert_eq!(out, serde_json::to_string(s).expect("serializes"), "{s:?}");

@@ -48,6 +48,13 @@ enum Scale {
 impl Scale {
     /// `num/den` for nonzero `num`, `den`, reduced.
     fn machine(num: u128, den: u128) -> Scale {
+        if let (Ok(n), Ok(d)) = (u64::try_from(num), u64::try_from(den)) {
+            let g = gcd_u64(n, d);
+            return Scale::Machine {
+                num: u128::from(n / g),
+                den: u128::from(d / g),
+            };
+        }
         let g = gcd_u128(num, den);
         Scale::Machine {
             num: num / g,
@@ -412,12 +419,11 @@ fn check_rational(m: &[[RBig; 4]; 4]) -> Result<(), Error> {
 /// `L` is the lcm of the denominators of the nonzero entries, `L·m` an integer matrix, `g`
 /// the gcd of its entries: `P = L·m / g`, `s = g / L`.
 fn primitive_small(m: &[[SmallRational; 4]; 4]) -> Option<Quadric> {
-    let mut lcm: u128 = 1;
+    let mut lcm: u64 = 1;
     for i in 0..4 {
         for v in &m[i][i..] {
-            let den = u128::from(v.den);
-            if v.num != 0 && den != 1 && lcm % den != 0 {
-                lcm = (lcm / gcd_u128(lcm, den)).checked_mul(den)?;
+            if v.num != 0 && v.den != 1 && v.den != lcm && lcm % v.den != 0 {
+                lcm = (lcm / gcd_u64(lcm, v.den)).checked_mul(v.den)?;
             }
         }
     }
@@ -425,19 +431,82 @@ fn primitive_small(m: &[[SmallRational; 4]; 4]) -> Option<Quadric> {
     for i in 0..4 {
         for j in i..4 {
             let v = m[i][j];
-            if v.num != 0 {
-                // den divides lcm, so the quotient is exact.
-                let k = i128::try_from(lcm / u128::from(v.den)).ok()?;
-                scaled[i][j] = i128::from(v.num).checked_mul(k)?;
-            }
+            // den divides lcm, so the quotient is exact; |num| ≤ 2⁶³ and the quotient
+            // is below 2⁶⁴, so the product fits an i128.
+            let k = match v.den {
+                1 => lcm,
+                d if d == lcm => 1,
+                d => lcm / d,
+            };
+            scaled[i][j] = i128::from(v.num) * i128::from(k);
         }
     }
-    Some(finish_machine(&scaled, lcm))
+    Some(finish_machine(&scaled, u128::from(lcm)))
 }
 
 /// The quadric `(1/lcm)·scaled` from the upper triangle of a nonzero integer matrix
-/// `scaled` (entries in `i128`, at most 2¹²⁷ in absolute value).
+/// `scaled` (entries in `i128`).
 fn finish_machine(scaled: &[[i128; 4]; 4], lcm: u128) -> Quadric {
+    let mut narrow = [[0i64; 4]; 4];
+    let mut fits = u64::try_from(lcm).is_ok();
+    for i in 0..4 {
+        for j in i..4 {
+            match i64::try_from(scaled[i][j]) {
+                Ok(v) => narrow[i][j] = v,
+                Err(_) => fits = false,
+            }
+        }
+    }
+    match u64::try_from(lcm) {
+        Ok(lcm) if fits => finish_machine_i64(&narrow, lcm),
+        _ => finish_machine_i128(scaled, lcm),
+    }
+}
+
+/// [`finish_machine`] when the entries fit an `i64` and `lcm` a `u64`.
+fn finish_machine_i64(scaled: &[[i64; 4]; 4], lcm: u64) -> Quadric {
+    let mut g: u64 = 0;
+    for i in 0..4 {
+        for v in &scaled[i][i..] {
+            if g != 1 && *v != 0 {
+                g = if g == 0 {
+                    v.unsigned_abs()
+                } else {
+                    gcd_u64(g, v.unsigned_abs())
+                };
+            }
+        }
+    }
+    // g ≥ 1 since the matrix is nonzero.
+    let g = g.max(1);
+    let mut machine = [[0i64; 4]; 4];
+    let mut small = true;
+    for i in 0..4 {
+        for j in i..4 {
+            let v = scaled[i][j];
+            // g divides v, so |v / g| ≤ |v|; g = 2⁶³ (not an i64) only when every nonzero
+            // entry is −2⁶³, whose quotient is −1.
+            let q = match i64::try_from(g) {
+                Ok(1) => v,
+                Ok(g) => v / g,
+                Err(_) => -i64::from(v != 0),
+            };
+            machine[i][j] = q;
+            machine[j][i] = q;
+            small &= q.unsigned_abs() < SMALL_LIMIT;
+        }
+    }
+    Quadric {
+        machine: Some(machine),
+        small,
+        int: OnceLock::new(),
+        scale: Scale::machine(u128::from(g), u128::from(lcm)),
+        rational: OnceLock::new(),
+    }
+}
+
+/// [`finish_machine`] in `i128`.
+fn finish_machine_i128(scaled: &[[i128; 4]; 4], lcm: u128) -> Quadric {
     let mut g: u128 = 0;
     for i in 0..4 {
         for v in &scaled[i][i..] {

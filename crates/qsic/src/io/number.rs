@@ -117,6 +117,9 @@ pub fn parse_number(text: &str) -> Result<RBig, Error> {
 /// each numeral with at most 18 digits (the caller then uses [`parse_number`], which also
 /// names any error). Costs a few instructions per character.
 pub(crate) fn parse_number_small(text: &str) -> Option<SmallRational> {
+    if let Some(v) = parse_plain_fraction(text.as_bytes()) {
+        return Some(v);
+    }
     let body = text.trim();
     let (negative, start) = match body.as_bytes().first()? {
         b'-' => (true, 1),
@@ -151,6 +154,48 @@ pub(crate) fn parse_number_small(text: &str) -> Option<SmallRational> {
     } else {
         value
     })
+}
+
+/// The common case of [`parse_number_small`], in one pass: `-?d+(/d+)?`, each run of digits
+/// at most 18 long, the denominator nonzero; `None` for anything else.
+#[inline]
+fn parse_plain_fraction(b: &[u8]) -> Option<SmallRational> {
+    let negative = b.first() == Some(&b'-');
+    let mut i = usize::from(negative);
+    let num = plain_digits(b, &mut i)?;
+    let den = match b.get(i) {
+        None => 1,
+        Some(b'/') => {
+            i += 1;
+            let den = plain_digits(b, &mut i)?;
+            if i != b.len() || den == 0 {
+                return None;
+            }
+            den
+        }
+        Some(_) => return None,
+    };
+    // num < 10^18 < 2^63
+    let num = num as i64;
+    Some(SmallRational {
+        num: if negative { -num } else { num },
+        den,
+    })
+}
+
+/// The value of the run of 1 to 18 ASCII digits at `b[*i..]`, advancing `i` past it.
+#[inline(always)]
+fn plain_digits(b: &[u8], i: &mut usize) -> Option<u64> {
+    let start = *i;
+    let mut value = 0u64;
+    while let Some(&d) = b.get(*i).filter(|d| d.is_ascii_digit()) {
+        value = value * 10 + u64::from(d - b'0');
+        *i += 1;
+        if *i - start > 18 {
+            return None;
+        }
+    }
+    (*i > start).then_some(value)
 }
 
 /// An unsigned numeral `int.frac e exponent`, its pieces borrowed from the text.
