@@ -123,7 +123,7 @@ impl<R: Read> LineReader<R> {
                 }
                 break;
             }
-            let (take, ends) = match available.iter().position(|&b| b == b'\n') {
+            let (take, ends) = match find_newline(available) {
                 Some(i) => (i + 1, true),
                 None => (available.len(), false),
             };
@@ -133,6 +133,9 @@ impl<R: Read> LineReader<R> {
                     // (+1 leaves room for the '\r' of a "\r\n" terminator)
                     too_long = true;
                     text = Vec::new();
+                } else if text.is_empty() {
+                    // The usual case, a whole line in the buffer: one exact allocation.
+                    text = piece.to_vec();
                 } else {
                     text.extend_from_slice(piece);
                 }
@@ -157,6 +160,30 @@ impl<R: Read> LineReader<R> {
             content,
         }))
     }
+}
+
+/// The index of the first `\n` in `b`, eight bytes at a time (a word has a zero byte iff
+/// `(x − 0x01…01) & !x & 0x80…80` is nonzero; the lowest such bit marks the first one).
+fn find_newline(b: &[u8]) -> Option<usize> {
+    const ONES: u64 = 0x0101_0101_0101_0101;
+    const HIGH: u64 = 0x8080_8080_8080_8080;
+    let mut chunks = b.chunks_exact(8);
+    let mut offset = 0;
+    for chunk in &mut chunks {
+        let mut word = [0u8; 8];
+        word.copy_from_slice(chunk);
+        let x = u64::from_le_bytes(word) ^ (ONES * u64::from(b'\n'));
+        let found = x.wrapping_sub(ONES) & !x & HIGH;
+        if found != 0 {
+            return Some(offset + (found.trailing_zeros() / 8) as usize);
+        }
+        offset += 8;
+    }
+    chunks
+        .remainder()
+        .iter()
+        .position(|&c| c == b'\n')
+        .map(|i| offset + i)
 }
 
 /// Why a line failed, with its `id` as written once it is known.
@@ -402,6 +429,22 @@ mod tests {
         );
         assert!(lines_of(b"", 5).is_empty());
         assert_eq!(lines_of(b"\n", 5), vec![text(1, "")]);
+    }
+
+    #[test]
+    fn find_newline_finds_the_first() {
+        for len in 0..20 {
+            for at in 0..=len {
+                let mut b = vec![b'a'; len];
+                b.extend_from_slice(&[0x8a, 0x0b, 0x09, 0x00, 0xff]);
+                if at < len {
+                    b[at] = b'\n';
+                    b.push(b'\n');
+                }
+                let want = b.iter().position(|&c| c == b'\n');
+                assert_eq!(find_newline(&b), want, "{b:?}");
+            }
+        }
     }
 
     #[test]
