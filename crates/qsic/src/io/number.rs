@@ -156,46 +156,61 @@ pub(crate) fn parse_number_small(text: &str) -> Option<SmallRational> {
     })
 }
 
-/// The common case of [`parse_number_small`], in one pass: `-?d+(/d+)?`, each run of digits
-/// at most 18 long, the denominator nonzero; `None` for anything else.
+/// The common case of [`parse_number_small`], in one pass: `-?d+(.d+)?(/d+(.d+)?)?`, each
+/// side at most 18 digits, the denominator nonzero; `None` for anything else.
 #[inline]
 fn parse_plain_fraction(b: &[u8]) -> Option<SmallRational> {
     let negative = b.first() == Some(&b'-');
     let mut i = usize::from(negative);
-    let num = plain_digits(b, &mut i)?;
-    let den = match b.get(i) {
-        None => 1,
+    let (num, num_scale) = plain_decimal(b, &mut i)?;
+    let (num, den) = match b.get(i) {
+        None => (num, num_scale),
         Some(b'/') => {
             i += 1;
-            let den = plain_digits(b, &mut i)?;
+            let (den, den_scale) = plain_decimal(b, &mut i)?;
             if i != b.len() || den == 0 {
                 return None;
             }
-            den
+            // (num / num_scale) / (den / den_scale)
+            (num.checked_mul(den_scale)?, num_scale.checked_mul(den)?)
         }
         Some(_) => return None,
     };
-    // num < 10^18 < 2^63
-    let num = num as i64;
+    let num = i64::try_from(num).ok()?;
     Some(SmallRational {
         num: if negative { -num } else { num },
         den,
     })
 }
 
-/// The value of the run of 1 to 18 ASCII digits at `b[*i..]`, advancing `i` past it.
+/// The decimal `d+(.d+)?` at `b[*i..]`, at most 18 digits, as `(digits, 10^fraction_len)`,
+/// advancing `i` past it.
 #[inline(always)]
-fn plain_digits(b: &[u8], i: &mut usize) -> Option<u64> {
+fn plain_decimal(b: &[u8], i: &mut usize) -> Option<(u64, u64)> {
     let start = *i;
     let mut value = 0u64;
-    while let Some(&d) = b.get(*i).filter(|d| d.is_ascii_digit()) {
-        value = value * 10 + u64::from(d - b'0');
+    let mut scale = 1u64;
+    let mut point = false;
+    while let Some(&d) = b.get(*i) {
+        if d.is_ascii_digit() {
+            value = value * 10 + u64::from(d - b'0');
+            if point {
+                scale *= 10;
+            }
+        } else if d == b'.' && !point && *i > start {
+            point = true;
+        } else {
+            break;
+        }
         *i += 1;
-        if *i - start > 18 {
+        // At most 18 digits and a point: value < 10^18, scale ≤ 10^18.
+        if *i - start > 18 + usize::from(point) {
             return None;
         }
     }
-    (*i > start).then_some(value)
+    // Digits before the point, and after it if there is one.
+    let ok = *i > start && b[*i - 1] != b'.';
+    ok.then_some((value, scale))
 }
 
 /// An unsigned numeral `int.frac e exponent`, its pieces borrowed from the text.
@@ -499,6 +514,45 @@ mod tests {
     }
 
     #[test]
+    fn one_pass_reader_takes_plain_fractions_only() {
+        let taken = [
+            "7",
+            "-3/2",
+            "0.5",
+            "-1.25/0.5",
+            "007/010",
+            "999999999.999999999",
+        ];
+        for text in taken {
+            let v = parse_plain_fraction(text.as_bytes())
+                .unwrap_or_else(|| panic!("{text:?} should be read"));
+            assert_eq!(parse_number(text), Ok(v.to_rbig()), "{text:?}");
+        }
+        let declined = [
+            "",
+            "-",
+            "1./2",
+            "1/2.",
+            "-.5",
+            ".5",
+            "+1",
+            " 1",
+            "1 ",
+            "1e3",
+            "1/0",
+            "1/0.0",
+            "1.2.3",
+            "1/2/3",
+            "1//2",
+            "1234567890123456789",
+            "0.000000000000000001",
+        ];
+        for text in declined {
+            assert_eq!(parse_plain_fraction(text.as_bytes()), None, "{text:?}");
+        }
+    }
+
+    #[test]
     fn machine_reader_agrees_or_declines() {
         let read = [
             "0",
@@ -525,6 +579,12 @@ mod tests {
             "0.00000000000000001",
             "1/.5",
             "922337203685477580e1",
+            "-1.25",
+            "0.5/1.5",
+            "3/2.50",
+            "-0.00000000000000001/7",
+            "12345678.9/0.001",
+            "999999999.999999999/7",
         ];
         for text in read {
             assert!(
@@ -546,6 +606,8 @@ mod tests {
             "- 3",
             "--1",
             "1234567890123456789",
+            "-0.000000000000000001/7",
+            "1.2.3",
             "0.000000000000000001",
             "9223372036854775807",
             "1e19",
