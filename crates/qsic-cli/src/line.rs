@@ -215,26 +215,56 @@ impl<'a> Scanner<'a> {
         if self.peek()? == b'"' {
             return Some(JsonForm::Text(self.plain_string()?.into()));
         }
-        self.expect(b'[')?;
-        let mut m = [[""; 4]; 4];
-        for (i, row) in m.iter_mut().enumerate() {
-            if i > 0 {
-                self.expect(b',')?;
+        let b = self.text.as_bytes();
+        let skip = |i: &mut usize| {
+            while matches!(b.get(*i), Some(b' ' | b'\t' | b'\n' | b'\r')) {
+                *i += 1;
             }
-            self.expect(b'[')?;
-            for (j, entry) in row.iter_mut().enumerate() {
-                if j > 0 {
-                    self.expect(b',')?;
-                }
-                self.skip();
-                *entry = match self.peek()? {
-                    b'"' => self.plain_string()?,
-                    _ => self.number()?,
-                };
-            }
-            self.expect(b']')?;
+        };
+        let mut i = self.pos;
+        if b.get(i) != Some(&b'[') {
+            return None;
         }
-        self.expect(b']')?;
+        i += 1;
+        let mut m = [[""; 4]; 4];
+        for (r, row) in m.iter_mut().enumerate() {
+            skip(&mut i);
+            if b.get(i) != Some(&b'[') {
+                return None;
+            }
+            i += 1;
+            for (c, entry) in row.iter_mut().enumerate() {
+                skip(&mut i);
+                if b.get(i) == Some(&b'"') {
+                    let start = i + 1;
+                    i = start;
+                    loop {
+                        match *b.get(i)? {
+                            b'"' => break,
+                            b'\\' | 0..=0x1f => return None,
+                            _ => i += 1,
+                        }
+                    }
+                    *entry = self.text.get(start..i)?;
+                    i += 1;
+                } else {
+                    self.pos = i;
+                    *entry = self.number()?;
+                    i = self.pos;
+                }
+                skip(&mut i);
+                if b.get(i) != Some(if c == 3 { &b']' } else { &b',' }) {
+                    return None;
+                }
+                i += 1;
+            }
+            skip(&mut i);
+            if b.get(i) != Some(if r == 3 { &b']' } else { &b',' }) {
+                return None;
+            }
+            i += 1;
+        }
+        self.pos = i;
         Some(JsonForm::Array4(m))
     }
 }

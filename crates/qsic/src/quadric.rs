@@ -166,7 +166,10 @@ impl Quadric {
         for i in 0..4 {
             for j in (i + 1)..4 {
                 let (a, b) = (m[i][j], m[j][i]);
-                if i128::from(a.num) * i128::from(b.den) != i128::from(b.num) * i128::from(a.den) {
+                if a != b
+                    && i128::from(a.num) * i128::from(b.den)
+                        != i128::from(b.num) * i128::from(a.den)
+                {
                     return Err(Error::NotSymmetric {
                         row: i,
                         col: j,
@@ -425,6 +428,26 @@ fn primitive_small(m: &[[SmallRational; 4]; 4]) -> Option<Quadric> {
             if v.num != 0 && v.den != 1 && v.den != lcm && lcm % v.den != 0 {
                 lcm = (lcm / gcd_u64(lcm, v.den)).checked_mul(v.den)?;
             }
+        }
+    }
+    if lcm <= 1 << 31 {
+        // The usual small inputs: every num · (lcm / den) in i64 (checked products).
+        let mut scaled = [[0i64; 4]; 4];
+        let mut fits = true;
+        for i in 0..4 {
+            for j in i..4 {
+                let v = m[i][j];
+                // k ≤ lcm ≤ 2³¹ fits an i64; it is exact where num ≠ 0 (den divides
+                // lcm), and any value where num = 0.
+                let k = if v.den == 1 { lcm } else { lcm / v.den };
+                match v.num.checked_mul(k as i64) {
+                    Some(x) => scaled[i][j] = x,
+                    None => fits = false,
+                }
+            }
+        }
+        if fits {
+            return Some(finish_machine_i64(&scaled, lcm));
         }
     }
     let mut scaled = [[0i128; 4]; 4];

@@ -94,7 +94,14 @@ fn quadric_from_entries<'a>(entry: impl Fn(usize, usize) -> &'a str) -> Result<Q
     let mut small = [[SmallRational::ZERO; 4]; 4];
     for i in 0..4 {
         for j in 0..4 {
-            match parse_number_small(entry(i, j)) {
+            let text = entry(i, j);
+            // Below the diagonal, the text of the mirror entry, already read, is usually
+            // repeated: the same text has the same value.
+            if j < i && text == entry(j, i) {
+                small[i][j] = small[j][i];
+                continue;
+            }
+            match parse_number_small(text) {
                 Some(v) => small[i][j] = v,
                 None => return quadric_from_entries_big_route(entry),
             }

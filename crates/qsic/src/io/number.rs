@@ -189,28 +189,33 @@ fn parse_plain_fraction(b: &[u8]) -> Option<SmallRational> {
 fn plain_decimal(b: &[u8], i: &mut usize) -> Option<(u64, u64)> {
     let start = *i;
     let mut value = 0u64;
-    let mut scale = 1u64;
-    let mut point = false;
-    while let Some(&d) = b.get(*i) {
-        if d.is_ascii_digit() {
-            value = value * 10 + u64::from(d - b'0');
-            if point {
-                scale *= 10;
-            }
-        } else if d == b'.' && !point && *i > start {
-            point = true;
-        } else {
-            break;
-        }
+    while let Some(&d) = b.get(*i).filter(|d| d.is_ascii_digit()) {
+        value = value * 10 + u64::from(d - b'0');
         *i += 1;
-        // At most 18 digits and a point: value < 10^18, scale ≤ 10^18.
-        if *i - start > 18 + usize::from(point) {
+        if *i - start > 18 {
             return None;
         }
     }
-    // Digits before the point, and after it if there is one.
-    let ok = *i > start && b[*i - 1] != b'.';
-    ok.then_some((value, scale))
+    let int_len = *i - start;
+    if int_len == 0 {
+        return None;
+    }
+    if b.get(*i) != Some(&b'.') {
+        return Some((value, 1));
+    }
+    *i += 1;
+    let frac_start = *i;
+    let mut scale = 1u64;
+    while let Some(&d) = b.get(*i).filter(|d| d.is_ascii_digit()) {
+        if *i - frac_start + int_len >= 18 {
+            return None;
+        }
+        value = value * 10 + u64::from(d - b'0');
+        scale *= 10;
+        *i += 1;
+    }
+    // At most 18 digits in all: value < 10^18, scale ≤ 10^17.
+    (*i > frac_start).then_some((value, scale))
 }
 
 /// An unsigned numeral `int.frac e exponent`, its pieces borrowed from the text.
