@@ -11,6 +11,10 @@
 //! Blank (ASCII-whitespace-only) lines yield nothing but are counted in line numbers.
 //! Memory is bounded by the chunk limits, whatever the input: a line longer than
 //! [`MAX_LINE_BYTES`] is skipped without being stored and answered with an error.
+//!
+//! A line is read by [`crate::line::read_line`] into fields borrowed from its text (no
+//! `serde_json::Value` tree; the `id` is copied byte for byte), and its answer is written
+//! straight into one string ([`crate::output::write_classification_fields`]).
 
 use crate::input::{quadric_from_form, JsonForm};
 use crate::line::read_line;
