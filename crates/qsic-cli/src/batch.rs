@@ -636,6 +636,29 @@ mod tests {
     }
 
     #[test]
+    fn ids_are_copied_byte_for_byte() {
+        let ids = [
+            r#"{"z": 1,  "a": [1.50, "\u0041"]}"#,
+            "123456789012345678901234567890.000e-7",
+            r#""caf\u00e9 ☕""#,
+            "null",
+        ];
+        for id in ids {
+            for body in [
+                r#""A": "x^2+y^2-w^2", "B": "x^2-y^2""#,
+                r#""A": "x^2", "B": 7"#,
+            ] {
+                let line = RawLine {
+                    number: 1,
+                    content: Content::Text(format!("{{\"id\":  {id} , {body}}}").into_bytes()),
+                };
+                let (answer, _) = answer_line(&line);
+                assert!(answer.starts_with(&format!("{{\"id\":{id},")), "{answer}");
+            }
+        }
+    }
+
+    #[test]
     fn invalid_utf8_is_an_error_line() {
         let line = RawLine {
             number: 9,
