@@ -2,6 +2,7 @@
 //! (README, "Speed"), on the input families of `inputs`:
 //! - `from_integers`: random integer matrices (`random_integer_matrix`) through
 //!   `Quadric::from_integers`, then `classify`;
+//! - `from_f64`: the same matrices halved, as `f64`, through `Quadric::from_f64`;
 //! - `matrix_texts`: random 4×4 arrays of number strings `p/q` (`random_rational_rows_json`)
 //!   through `quadric_from_array`, then `classify`;
 //! - `polynomial_strings`: random polynomial strings (`random_polynomial_text`) through
@@ -52,6 +53,19 @@ fn bench(c: &mut Criterion) {
             for [x, y] in &integers {
                 let x = Quadric::from_integers(*black_box(x)).expect("valid");
                 let y = Quadric::from_integers(*black_box(y)).expect("valid");
+                black_box(classify(&x, &y));
+            }
+        })
+    });
+    let floats: Vec<[[[f64; 4]; 4]; 2]> = integers
+        .iter()
+        .map(|pair| pair.map(|m| m.map(|row| row.map(|v| v as f64 / 2.0))))
+        .collect();
+    g.bench_function("from_f64", |b| {
+        b.iter(|| {
+            for [x, y] in &floats {
+                let x = Quadric::from_f64(*black_box(x)).expect("valid");
+                let y = Quadric::from_f64(*black_box(y)).expect("valid");
                 black_box(classify(&x, &y));
             }
         })

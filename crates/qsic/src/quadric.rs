@@ -241,29 +241,52 @@ impl Quadric {
     /// # Errors
     /// [`Error::NotFinite`] for NaN or ±∞, then as [`Quadric::from_matrix`].
     pub fn from_f64(m: [[f64; 4]; 4]) -> Result<Self, Error> {
-        let mut small = [[SmallRational::ZERO; 4]; 4];
-        let mut fits = true;
+        let exact = |i: usize, j: usize| {
+            RBig::try_from(m[i][j]).map_err(|_| Error::NotFinite { row: i, col: j })
+        };
         for (i, row) in m.iter().enumerate() {
-            for (j, &v) in row.iter().enumerate() {
+            for (j, v) in row.iter().enumerate() {
                 if !v.is_finite() {
                     return Err(Error::NotFinite { row: i, col: j });
                 }
-                match small_from_f64(v) {
+            }
+        }
+        // Finite floats are equal exactly when their values are (0.0 and −0.0 both zero).
+        for i in 0..4 {
+            for j in (i + 1)..4 {
+                if m[i][j] != m[j][i] {
+                    return Err(Error::NotSymmetric {
+                        row: i,
+                        col: j,
+                        a: exact(i, j)?.to_string(),
+                        b: exact(j, i)?.to_string(),
+                    });
+                }
+            }
+        }
+        if m.iter().flatten().all(|&v| v == 0.0) {
+            return Err(Error::ZeroQuadric);
+        }
+        let mut small = [[SmallRational::ZERO; 4]; 4];
+        let mut fits = true;
+        for i in 0..4 {
+            for j in i..4 {
+                match small_from_f64(m[i][j]) {
                     Some(r) => small[i][j] = r,
                     None => fits = false,
                 }
             }
         }
-        if fits {
-            return Self::from_small_rationals(&small);
+        if let Some(q) = fits.then(|| primitive_small(&small)).flatten() {
+            return Ok(q);
         }
         let mut out: [[RBig; 4]; 4] = Default::default();
-        for (i, row) in m.iter().enumerate() {
-            for (j, &v) in row.iter().enumerate() {
-                out[i][j] = RBig::try_from(v).map_err(|_| Error::NotFinite { row: i, col: j })?;
+        for (i, row) in out.iter_mut().enumerate() {
+            for (j, v) in row.iter_mut().enumerate() {
+                *v = exact(i, j)?;
             }
         }
-        Self::from_matrix(out)
+        Ok(Self::primitive_big(out))
     }
 
     /// The symmetric matrix (derived from the primitive matrix on first use, unless the
