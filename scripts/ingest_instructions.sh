@@ -6,7 +6,7 @@
 # Batch: `qsic classify --batch -` (JSON out) on 201 and on 1 line of each random corpus of
 # the `random_corpus` example; (Ir(201) − Ir(1)) / 200 is the cost of one pair end to end.
 # Library: inclusive Ir of `construct_and_classify` in the `ingest_cost` example (two
-# `Quadric::from_integers` and `classify` per pair) divided by the number of pairs.
+# `Quadric::from_integers`, or `from_f64`, and `classify` per pair) divided by the number of pairs.
 set -eu
 cd "$(dirname "$0")/.."
 export RAYON_NUM_THREADS=1
@@ -25,6 +25,8 @@ for family in matrix poly; do
 done
 
 n=2000
-valgrind --tool=callgrind --callgrind-out-file="$tmp/lib.cg" "$target/examples/ingest_cost" "$n" >/dev/null 2>&1
-inclusive=$(callgrind_annotate --inclusive=yes "$tmp/lib.cg" | grep 'ingest_cost::construct_and_classify' | head -n 1 | awk '{print $1}' | tr -d ,)
-echo "library, from_integers + classify: $(( inclusive / n )) instructions per pair"
+for kind in int f64; do
+    valgrind --tool=callgrind --callgrind-out-file="$tmp/lib.cg" "$target/examples/ingest_cost" "$n" "$kind" >/dev/null 2>&1
+    inclusive=$(callgrind_annotate --inclusive=yes "$tmp/lib.cg" | grep 'ingest_cost::construct_and_classify' | head -n 1 | awk '{print $1}' | tr -d ,)
+    echo "library, $kind matrices: construction + classify: $(( inclusive / n )) instructions per pair"
+done
