@@ -159,8 +159,8 @@ fn read_small(text: &str) -> Option<Quadric> {
             skip(&mut pos);
             match b.get(pos)? {
                 b'0'..=b'9' | b'.' => {
-                    let (numeral, len) = scan_numeral(&text[pos..]).ok()?;
-                    coefficient = small_product(coefficient, numeral.small_value()?, false)?;
+                    let (value, len) = small_numeral(text, pos)?;
+                    coefficient = small_product(coefficient, value, false)?;
                     pos += len;
                 }
                 &c @ (b'x' | b'y' | b'z' | b'w') => {
@@ -214,8 +214,7 @@ fn read_small(text: &str) -> Option<Quadric> {
                     if !matches!(b.get(pos), Some(b'0'..=b'9' | b'.')) {
                         return None;
                     }
-                    let (numeral, len) = scan_numeral(&text[pos..]).ok()?;
-                    let divisor = numeral.small_value()?;
+                    let (divisor, len) = small_numeral(text, pos)?;
                     pos += len;
                     skip(&mut pos);
                     if divisor.num == 0
@@ -248,6 +247,29 @@ fn read_small(text: &str) -> Option<Quadric> {
     small_quadric(&acc)
 }
 
+/// The unsigned numeral at byte `pos` of `text` as a small rational, and its length: a run
+/// of at most 18 digits read at once, anything else through [`scan_numeral`].
+#[inline]
+fn small_numeral(text: &str, pos: usize) -> Option<(SmallRational, usize)> {
+    let b = text.as_bytes();
+    let mut i = pos;
+    let mut value = 0u64;
+    while let Some(&d) = b.get(i).filter(|d| d.is_ascii_digit()) {
+        if i - pos == 18 {
+            break;
+        }
+        value = value * 10 + u64::from(d - b'0');
+        i += 1;
+    }
+    if i > pos && !matches!(b.get(i), Some(b'0'..=b'9' | b'.' | b'e' | b'E')) {
+        // At most 18 digits: below 10^18 < 2^63.
+        let num = value as i64;
+        return Some((SmallRational { num, den: 1 }, i - pos));
+    }
+    let (numeral, len) = scan_numeral(text.get(pos..)?).ok()?;
+    Some((numeral.small_value()?, len))
+}
+
 /// `a·b`, or `a/b` if `divide` (`b` then positive), in machine integers; `None` on overflow.
 fn small_product(a: SmallRational, b: SmallRational, divide: bool) -> Option<SmallRational> {
     let (num, den) = if divide {
@@ -263,6 +285,9 @@ fn small_product(a: SmallRational, b: SmallRational, divide: bool) -> Option<Sma
 
 /// `a + b` in lowest terms when a denominator is not 1; `None` on overflow.
 fn small_sum(a: SmallRational, b: SmallRational) -> Option<SmallRational> {
+    if a.num == 0 {
+        return Some(b);
+    }
     if a.den == b.den {
         return Some(SmallRational {
             num: a.num.checked_add(b.num)?,
@@ -281,20 +306,26 @@ fn small_sum(a: SmallRational, b: SmallRational) -> Option<SmallRational> {
 /// The quadric of the expanded polynomial `acc` (homogenized as in [`quadric_from_poly`]),
 /// or `None` where that gives an error or a number overflows.
 fn small_quadric(acc: &[SmallRational; N]) -> Option<Quadric> {
-    let terms = || (0..N).filter(|&k| acc[k].num != 0);
-    let uses_w = terms().any(|k| MONOMIALS[k][3] > 0);
-    if terms().next().is_none() || (uses_w && terms().any(|k| degree_of(k) != 2)) {
+    let mut uses_w = false;
+    let mut not_quadratic = false;
+    let mut any = false;
+    for (k, c) in acc.iter().enumerate() {
+        if c.num != 0 {
+            any = true;
+            uses_w |= MONOMIALS[k][3] > 0;
+            not_quadratic |= k < FIRST_QUADRATIC;
+        }
+    }
+    if !any || (uses_w && not_quadratic) {
         return None;
     }
     let mut m = [[SmallRational::ZERO; 4]; 4];
-    for k in terms() {
-        let mut e = MONOMIALS[k];
-        e[3] += 2 - degree_of(k) as u8;
-        let mut vars = (0..4).flat_map(|v| std::iter::repeat_n(v, usize::from(e[v])));
-        let (i, j) = (vars.next()?, vars.next()?);
-        let c = acc[k];
+    for (c, &(i, j)) in acc.iter().zip(&HOMOGENIZED) {
+        if c.num == 0 {
+            continue;
+        }
         if i == j {
-            m[i][i] = c;
+            m[i][i] = *c;
         } else {
             let half = SmallRational {
                 num: c.num,
@@ -305,6 +336,43 @@ fn small_quadric(acc: &[SmallRational; N]) -> Option<Quadric> {
         }
     }
     Quadric::from_small_rationals(&m).ok()
+}
+
+/// Index in [`MONOMIALS`] of the first monomial of degree 2 (they are ordered by degree).
+const FIRST_QUADRATIC: usize = 5;
+
+/// `HOMOGENIZED[k]` is the matrix position `(i, j)`, `i ≤ j`, of monomial `k` after
+/// homogenization with `w` (as in [`quadric_from_poly`]): `1 → w²`, `x → x·w`, `x² → x²`, ….
+const HOMOGENIZED: [(usize, usize); N] = homogenized_positions();
+
+const fn homogenized_positions() -> [(usize, usize); N] {
+    let mut out = [(0, 0); N];
+    let mut k = 0;
+    while k < N {
+        let mut e = MONOMIALS[k];
+        let degree = (e[0] + e[1] + e[2] + e[3]) as usize;
+        e[3] += (2 - degree) as u8;
+        // The two variables of the degree-2 monomial e, in order.
+        let mut first = 4;
+        let mut second = 4;
+        let mut v = 0;
+        while v < 4 {
+            if e[v] == 2 {
+                first = v;
+                second = v;
+            } else if e[v] == 1 {
+                if first == 4 {
+                    first = v;
+                } else {
+                    second = v;
+                }
+            }
+            v += 1;
+        }
+        out[k] = (first, second);
+        k += 1;
+    }
+    out
 }
 
 /// The variables, in matrix order.
@@ -1147,6 +1215,16 @@ mod tests {
 
     fn parse(text: &str) -> Quadric {
         parse_quadric(text).unwrap_or_else(|e| panic!("{text:?} should parse: {e}"))
+    }
+
+    #[test]
+    fn homogenized_positions_follow_the_monomials() {
+        assert_eq!(HOMOGENIZED[0], (3, 3));
+        assert_eq!(HOMOGENIZED[1], (0, 3));
+        assert_eq!(HOMOGENIZED[5], (0, 0));
+        assert_eq!(HOMOGENIZED[6], (0, 1));
+        assert_eq!(HOMOGENIZED[13], (2, 3));
+        assert!((0..N).all(|k| (degree_of(k) == 2) == (k >= FIRST_QUADRATIC)));
     }
 
     #[test]
