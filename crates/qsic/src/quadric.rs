@@ -684,18 +684,13 @@ pub(crate) fn gcd_u128(a: u128, b: u128) -> u128 {
     a << shift
 }
 
-/// [`gcd_u128`] for nonzero `u64`.
-fn gcd_u64(a: u64, b: u64) -> u64 {
-    let shift = (a | b).trailing_zeros();
-    let (mut a, mut b) = (a >> a.trailing_zeros(), b >> b.trailing_zeros());
-    while a != b {
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        b >>= b.trailing_zeros();
+/// The gcd of two `u64`, `gcd(0, v) = v` (Euclid: for the small values met here, a few
+/// remainders).
+fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
+    while b != 0 {
+        (a, b) = (b, a % b);
     }
-    a << shift
+    a
 }
 
 #[cfg(test)]
