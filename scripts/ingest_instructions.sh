@@ -16,7 +16,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 
-for family in matrix poly; do
+for family in matrix poly matrix-wide poly-fractions; do
     "$target/examples/random_corpus" 201 "$family" > "$tmp/$family.jsonl"
     head -n 1 "$tmp/$family.jsonl" > "$tmp/$family-1.jsonl"
     many=$(valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" "$target/qsic" classify --batch - < "$tmp/$family.jsonl" 2>&1 >/dev/null | sed -n 's/.*refs: *//p' | tr -d ,)

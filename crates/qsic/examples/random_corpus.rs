@@ -11,12 +11,17 @@
 //! - `matrix`: A and B symmetric 4×4 arrays of number strings `p/q` (`p` in [−10, 10], `q` in
 //!   [1, 4], written `p` when `q` is 1), e.g. `"3/2"`, `"-7"`, `"2/4"`;
 //! - `poly`: A and B polynomial strings in x, y, z, w whose ten coefficients are integers
-//!   in [−10, 10] (zero terms left out), e.g. `"3*x^2 - 7*x*y + w^2"`.
+//!   in [−10, 10] (zero terms left out), e.g. `"3*x^2 - 7*x*y + w^2"`;
+//! - `matrix-wide`: as `matrix` with `p` in [−100, 100] and `q` in [1, 12];
+//! - `poly-fractions`: as `poly` with coefficients `c/q`, `q` in [1, 4], e.g. `"-9/4*x^2"`.
 
 #[path = "../benches/inputs/mod.rs"]
 mod inputs;
 
-use inputs::{random_polynomial_text, random_rational_rows_json, SplitMix};
+use inputs::{
+    random_polynomial_text, random_polynomial_text_over, random_rational_rows_json,
+    random_rational_rows_json_in, SplitMix,
+};
 
 fn main() {
     let mut args = std::env::args().skip(1);
@@ -29,6 +34,14 @@ fn main() {
             "poly" => (
                 format!("\"{}\"", random_polynomial_text(&mut rng)),
                 format!("\"{}\"", random_polynomial_text(&mut rng)),
+            ),
+            "poly-fractions" => (
+                format!("\"{}\"", random_polynomial_text_over(&mut rng, 4)),
+                format!("\"{}\"", random_polynomial_text_over(&mut rng, 4)),
+            ),
+            "matrix-wide" => (
+                random_rational_rows_json_in(&mut rng, 100, 12),
+                random_rational_rows_json_in(&mut rng, 100, 12),
             ),
             _ => (
                 random_rational_rows_json(&mut rng),

@@ -94,11 +94,16 @@ pub fn qi_singular_pairs() -> Vec<(Quadric, Quadric)> {
 /// A symmetric 4×4 JSON array of number strings `p/q`, `p` in [−10, 10], `q` in [1, 4]
 /// (written `p` when `q` is 1); never all zero.
 pub fn random_rational_rows_json(rng: &mut SplitMix) -> String {
+    random_rational_rows_json_in(rng, 10, 4)
+}
+
+/// [`random_rational_rows_json`] with `p` in [−p_max, p_max] and `q` in [1, q_max].
+pub fn random_rational_rows_json_in(rng: &mut SplitMix, p_max: i64, q_max: i64) -> String {
     loop {
         let mut m = [[(0i64, 1i64); 4]; 4];
         for i in 0..4 {
             for j in i..4 {
-                let v = (rng.range(-10, 10), rng.range(1, 4));
+                let v = (rng.range(-p_max, p_max), rng.range(1, q_max));
                 m[i][j] = v;
                 m[j][i] = v;
             }
@@ -129,6 +134,12 @@ pub fn random_rational_rows_json(rng: &mut SplitMix) -> String {
 /// A polynomial string in x, y, z, w whose ten coefficients are integers in [−10, 10],
 /// zero terms left out, e.g. `3*x^2 - 7*x*y + w^2`; never the zero polynomial.
 pub fn random_polynomial_text(rng: &mut SplitMix) -> String {
+    random_polynomial_text_over(rng, 1)
+}
+
+/// [`random_polynomial_text`] with coefficients `c/q`, `q` in [1, q_max] (written `c` when
+/// `q` is 1), e.g. `-9/4*x^2 + x*y`.
+pub fn random_polynomial_text_over(rng: &mut SplitMix, q_max: i64) -> String {
     const MONOMIALS: [&str; 10] = [
         "x^2", "x*y", "x*z", "x*w", "y^2", "y*z", "y*w", "z^2", "z*w", "w^2",
     ];
@@ -147,7 +158,10 @@ pub fn random_polynomial_text(rng: &mut SplitMix) -> String {
             } else {
                 text.push_str(&format!(" {sign} "));
             }
-            if c.abs() != 1 {
+            let q = rng.range(1, q_max);
+            if q != 1 {
+                text.push_str(&format!("{}/{q}*", c.abs()));
+            } else if c.abs() != 1 {
                 text.push_str(&format!("{}*", c.abs()));
             }
             text.push_str(mono);
