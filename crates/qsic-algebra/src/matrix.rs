@@ -74,6 +74,19 @@ impl SymMatrix4 {
         SymMatrix4::new(m.map(|r| r.map(IBig::from)))
     }
 
+    /// The symmetric matrix whose upper triangle (diagonal included) is that of `m`; the
+    /// entries of `m` below the diagonal are not read.
+    pub fn from_upper_i128(m: &[[i128; 4]; 4]) -> SymMatrix4 {
+        let mut out: [[IBig; 4]; 4] = Default::default();
+        for i in 0..4 {
+            for j in i..4 {
+                out[i][j] = IBig::from(m[i][j]);
+                out[j][i] = out[i][j].clone();
+            }
+        }
+        SymMatrix4 { m: out }
+    }
+
     /// A symmetric rational matrix times the positive rational that makes it a primitive
     /// integer matrix (entries with gcd 1); the zero matrix stays zero.
     ///

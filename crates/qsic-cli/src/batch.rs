@@ -11,13 +11,17 @@
 //! Blank (ASCII-whitespace-only) lines yield nothing but are counted in line numbers.
 //! Memory is bounded by the chunk limits, whatever the input: a line longer than
 //! [`MAX_LINE_BYTES`] is skipped without being stored and answered with an error.
+//!
+//! A line is read by [`crate::line::read_line`] into fields borrowed from its text (no
+//! `serde_json::Value` tree; the `id` is copied byte for byte), and its answer is written
+//! straight into one string ([`crate::output::write_classification_fields`]).
 
-use crate::input::quadric_from_json;
-use crate::output::ClassificationJson;
+use crate::input::{quadric_from_form, JsonForm};
+use crate::line::read_line;
+use crate::output::{write_classification_fields, write_json_string};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use qsic::classify_allowing_zero;
 use rayon::prelude::*;
-use serde::Serialize;
 use serde_json::Value;
 use std::io::{self, BufRead, BufReader, Read, Write};
 use std::panic::{self, AssertUnwindSafe};
@@ -123,7 +127,7 @@ impl<R: Read> LineReader<R> {
                 }
                 break;
             }
-            let (take, ends) = match available.iter().position(|&b| b == b'\n') {
+            let (take, ends) = match find_newline(available) {
                 Some(i) => (i + 1, true),
                 None => (available.len(), false),
             };
@@ -133,6 +137,9 @@ impl<R: Read> LineReader<R> {
                     // (+1 leaves room for the '\r' of a "\r\n" terminator)
                     too_long = true;
                     text = Vec::new();
+                } else if text.is_empty() {
+                    // The usual case, a whole line in the buffer: one exact allocation.
+                    text = piece.to_vec();
                 } else {
                     text.extend_from_slice(piece);
                 }
@@ -159,39 +166,52 @@ impl<R: Read> LineReader<R> {
     }
 }
 
-/// A batch output line: the `id`, then the fields of `body`.
-#[derive(Serialize)]
-struct Tagged<'a, T: Serialize> {
-    id: &'a Value,
-    #[serde(flatten)]
-    body: T,
+/// The index of the first `\n` in `b`, eight bytes at a time (a word has a zero byte iff
+/// `(x − 0x01…01) & !x & 0x80…80` is nonzero; the lowest such bit marks the first one).
+fn find_newline(b: &[u8]) -> Option<usize> {
+    const ONES: u64 = 0x0101_0101_0101_0101;
+    const HIGH: u64 = 0x8080_8080_8080_8080;
+    let mut chunks = b.chunks_exact(8);
+    let mut offset = 0;
+    for chunk in &mut chunks {
+        let mut word = [0u8; 8];
+        word.copy_from_slice(chunk);
+        let x = u64::from_le_bytes(word) ^ (ONES * u64::from(b'\n'));
+        let found = x.wrapping_sub(ONES) & !x & HIGH;
+        if found != 0 {
+            return Some(offset + (found.trailing_zeros() / 8) as usize);
+        }
+        offset += 8;
+    }
+    chunks
+        .remainder()
+        .iter()
+        .position(|&c| c == b'\n')
+        .map(|i| offset + i)
 }
 
-/// The `error` member of a failed line.
-#[derive(Serialize)]
-struct ErrorBody<'a> {
-    line: u64,
-    message: &'a str,
-}
-
-#[derive(Serialize)]
-struct ErrorLine<'a> {
-    error: ErrorBody<'a>,
-}
-
-/// Why a line failed, before its `id` is known or after.
-struct LineFailure {
-    id: Value,
+/// Why a line failed, with its `id` as written once it is known.
+struct LineFailure<'a> {
+    id: Option<&'a str>,
     message: String,
 }
 
-impl LineFailure {
+impl LineFailure<'_> {
     fn without_id(message: impl Into<String>) -> Self {
         LineFailure {
-            id: Value::Null,
+            id: None,
             message: message.into(),
         }
     }
+}
+
+/// `{"id":` and the id as written (`null` if none), then `,`.
+fn open_record(id: Option<&str>) -> String {
+    let mut out = String::with_capacity(512);
+    out.push_str("{\"id\":");
+    out.push_str(id.unwrap_or("null"));
+    out.push(',');
+    out
 }
 
 /// The output line for one input line (without newline) and whether it succeeded.
@@ -200,30 +220,29 @@ pub fn answer_line(line: &RawLine) -> (String, bool) {
     match classify_line(line) {
         Ok(text) => (text, true),
         Err(failure) => {
-            let record = Tagged {
-                id: &failure.id,
-                body: ErrorLine {
-                    error: ErrorBody {
-                        line: line.number,
-                        message: &failure.message,
-                    },
-                },
-            };
-            (to_json_line(&record), false)
+            let mut out = open_record(failure.id);
+            out.push_str("\"error\":{\"line\":");
+            out.push_str(&line.number.to_string());
+            out.push_str(",\"message\":");
+            write_json_string(&mut out, &failure.message);
+            out.push_str("}}");
+            (out, false)
         }
     }
 }
 
-/// Serializes an output record. The records hold strings, numbers and JSON values
-/// only, which always serialize; the fallback is there to never panic.
-fn to_json_line<T: Serialize>(record: &T) -> String {
-    serde_json::to_string(record).unwrap_or_else(|e| {
-        let message = serde_json::to_string(&e.to_string()).unwrap_or_default();
-        format!(r#"{{"id":null,"error":{{"line":0,"message":{message}}}}}"#)
-    })
+/// Reads a line that does not start with `{` into a [`Value`], for the error message.
+fn not_an_object(text: &str) -> LineFailure<'static> {
+    match serde_json::from_str::<Value>(text) {
+        Err(e) => LineFailure::without_id(format!("invalid JSON: {e}")),
+        Ok(value) => LineFailure::without_id(format!(
+            "expected a JSON object with fields \"A\" and \"B\", found {}",
+            crate::input::json_kind(&value)
+        )),
+    }
 }
 
-fn classify_line(line: &RawLine) -> Result<String, LineFailure> {
+fn classify_line(line: &RawLine) -> Result<String, LineFailure<'_>> {
     let bytes = match &line.content {
         Content::Text(bytes) => bytes,
         Content::TooLong { bytes } => {
@@ -238,25 +257,22 @@ fn classify_line(line: &RawLine) -> Result<String, LineFailure> {
             e.valid_up_to()
         ))
     })?;
-    let value: Value = serde_json::from_str(text)
-        .map_err(|e| LineFailure::without_id(format!("invalid JSON: {e}")))?;
-    let Value::Object(mut object) = value else {
-        return Err(LineFailure::without_id(format!(
-            "expected a JSON object with fields \"A\" and \"B\", found {}",
-            crate::input::json_kind(&value)
-        )));
-    };
-    let id = object.remove("id").unwrap_or(Value::Null);
-    let fail = |message: String| LineFailure {
-        id: id.clone(),
-        message,
-    };
-    let quadric = |name: &str| match object.get(name) {
+    if !text
+        .trim_start_matches([' ', '\t', '\n', '\r'])
+        .starts_with('{')
+    {
+        return Err(not_an_object(text));
+    }
+    let record =
+        read_line(text).map_err(|e| LineFailure::without_id(format!("invalid JSON: {e}")))?;
+    let id = record.id;
+    let fail = |message: String| LineFailure { id, message };
+    let quadric = |name: &str, form: &Option<JsonForm<'_>>| match form {
         None => Err(fail(format!("missing field \"{name}\""))),
-        Some(v) => quadric_from_json(v).map_err(|e| fail(format!("{name}: {e}"))),
+        Some(form) => quadric_from_form(form).map_err(|e| fail(format!("{name}: {e}"))),
     };
-    let a = quadric("A")?;
-    let b = quadric("B")?;
+    let a = quadric("A", &record.a)?;
+    let b = quadric("B", &record.b)?;
     let outcome = panic::catch_unwind(AssertUnwindSafe(|| {
         classify_allowing_zero(a.as_ref(), b.as_ref())
     }));
@@ -274,10 +290,10 @@ fn classify_line(line: &RawLine) -> Result<String, LineFailure> {
             )));
         }
     };
-    Ok(to_json_line(&Tagged {
-        id: &id,
-        body: ClassificationJson::from(&classification),
-    }))
+    let mut out = open_record(id);
+    write_classification_fields(&mut out, &classification);
+    out.push('}');
+    Ok(out)
 }
 
 /// How a batch ended.
@@ -344,7 +360,10 @@ pub fn run<R: Read, W: Write>(
         }
         let answers: Vec<(String, bool)> = chunk.par_iter().map(answer_line).collect();
         for (text, ok) in &answers {
-            writeln!(output, "{text}").map_err(BatchError::Write)?;
+            output
+                .write_all(text.as_bytes())
+                .map_err(BatchError::Write)?;
+            output.write_all(b"\n").map_err(BatchError::Write)?;
             summary.answered += 1;
             summary.failed += u64::from(!ok);
         }
@@ -414,6 +433,22 @@ mod tests {
         );
         assert!(lines_of(b"", 5).is_empty());
         assert_eq!(lines_of(b"\n", 5), vec![text(1, "")]);
+    }
+
+    #[test]
+    fn find_newline_finds_the_first() {
+        for len in 0..20 {
+            for at in 0..=len {
+                let mut b = vec![b'a'; len];
+                b.extend_from_slice(&[0x8a, 0x0b, 0x09, 0x00, 0xff]);
+                if at < len {
+                    b[at] = b'\n';
+                    b.push(b'\n');
+                }
+                let want = b.iter().position(|&c| c == b'\n');
+                assert_eq!(find_newline(&b), want, "{b:?}");
+            }
+        }
     }
 
     #[test]
@@ -499,6 +534,128 @@ mod tests {
         .expect("batch");
         let line = String::from_utf8(out).expect("UTF-8");
         assert!(line.starts_with(r#"{"id":1,"pencil":"#), "{line}");
+    }
+
+    /// The answer the schema gives for a line, computed through a `Value` tree (the
+    /// former implementation): the borrowed reader must give the same JSON.
+    fn reference_answer(text: &str, number: u64) -> Value {
+        use crate::input::{json_kind, quadric_from_json};
+        let error = |id: Value, message: String| serde_json::json!({"id": id, "error": {"line": number, "message": message}});
+        let object = match serde_json::from_str::<Value>(text) {
+            Err(e) => return error(Value::Null, format!("invalid JSON: {e}")),
+            Ok(Value::Object(o)) => o,
+            Ok(other) => {
+                return error(
+                    Value::Null,
+                    format!(
+                        "expected a JSON object with fields \"A\" and \"B\", found {}",
+                        json_kind(&other)
+                    ),
+                )
+            }
+        };
+        let id = object.get("id").cloned().unwrap_or(Value::Null);
+        let read = |name: &str| match object.get(name) {
+            None => Err(format!("missing field \"{name}\"")),
+            Some(v) => quadric_from_json(v).map_err(|e| format!("{name}: {e}")),
+        };
+        let (a, b) = match (read("A"), read("B")) {
+            (Err(e), _) | (_, Err(e)) => return error(id, e),
+            (Ok(a), Ok(b)) => (a, b),
+        };
+        match classify_allowing_zero(a.as_ref(), b.as_ref()) {
+            Err(e) => error(id, format!("A and B: both are zero: {e}")),
+            Ok(c) => {
+                let mut v = crate::output::classification_to_json(&c);
+                if let Value::Object(o) = &mut v {
+                    o.insert("id".into(), id);
+                }
+                v
+            }
+        }
+    }
+
+    #[test]
+    fn borrowed_reader_answers_as_the_value_tree_did() {
+        let identity = "[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1]]";
+        let sphere = "x^2+y^2+z^2-w^2";
+        let mut lines: Vec<String> = [
+            format!(r#"{{"id": {{"k": [1, {{"z": 2, "a": null}}]}}, "A": "{sphere}", "B": "2*x^2+4*y^2-w^2"}}"#),
+            format!(r#"{{"\u0069d": "esc\u0041ped", "\u0041": "x^2\u002by^2+z^2-w^2", "B": {identity}}}"#),
+            format!(r#"{{"id": 1, "A": "x^2", "A": "{sphere}", "B": {identity}, "B": "x^2+2*y^2-w^2"}}"#),
+            format!(r#"  {{"id": 1.50, "B": [[1E5,0,0,0],[0,-0.0,0,0],[0,0,"1/2",0],[0,0,0,"-1e-3"]], "A": "{sphere}", "extra": [1, {{"A": 3}}]}}"#),
+            format!(r#"{{"id": 2, "A": [["1\u002f2",0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1]], "B": "{sphere}"}}"#),
+            format!(r#"{{"id": 3, "A": [[1,0,0,0],[0,null,0,0],[0,0,1,0],[0,0,0,1]], "B": "{sphere}"}}"#),
+            format!(r#"{{"id": 4, "A": [[1,0,0,0],[0,true,0,0],[0,0,[1],0],[0,0,0,{{}}]], "B": "{sphere}"}}"#),
+            format!(r#"{{"id": 5, "A": [[1,0,0,0],3,[0,0,1,0],{{"a": 1}}], "B": "{sphere}"}}"#),
+            format!(r#"{{"id": 6, "A": [[1,0,0,0],[0,1,0],[0,0,1,0,0],[0,0,0,1]], "B": "{sphere}"}}"#),
+            format!(r#"{{"id": 7, "A": [[1,0,0,0],[0,1,0,0],[0,0,1,0]], "B": "{sphere}"}}"#),
+            format!(r#"{{"id": 8, "A": [], "B": "{sphere}"}}"#),
+            format!(r#"{{"id": 9, "A": 12, "B": "{sphere}"}}"#),
+            format!(r#"{{"id": 10, "A": {{"x": 1}}, "B": "{sphere}"}}"#),
+            format!(r#"{{"id": 11, "A": null, "B": "{sphere}"}}"#),
+            format!(r#"{{"id": 12, "A": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1e99999]], "B": "{sphere}"}}"#),
+            format!(r#"{{"id": 13, "A": [[1,2,0,0],[3,1,0,0],[0,0,1,0],[0,0,0,1]], "B": "{sphere}"}}"#),
+            r#"{"id": 14, "A": "0", "B": [[0,0,0,0],[0,0,0,0],[0,0,0,0],[0,0,0,0]]}"#.to_string(),
+            format!(r#"{{"id": 15, "A": "x^2 + q", "B": "{sphere}"}}"#),
+            format!(r#"{{"id": 16, "A": [["123456789012345678901234567890",0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1]], "B": "{sphere}"}}"#),
+            format!(r#"{{"id": 17, "A": "{sphere}"}}"#),
+            format!(r#"{{"id": 18, "A": "{sphere}", "B": "x^2"}} trailing"#),
+            format!(r#"{{"id": 19, "A": "{sphere}", "B": [[1,0,0,0]"#),
+            format!(r#"{{"id": 20 "A": "{sphere}"}}"#),
+            r#"{"id": "\ud83d\ude00", "A": "x^2", "B": "y^2"}"#.to_string(),
+            r#"[1, 2]"#.to_string(),
+            r#""text""#.to_string(),
+            r#"12"#.to_string(),
+            r#"null"#.to_string(),
+            r#"not json"#.to_string(),
+            r#"{}"#.to_string(),
+            r#"{"id": [1, 2, 3]}"#.to_string(),
+        ]
+        .to_vec();
+        let path = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../qsic/tests/data/cases.jsonl"
+        );
+        let corpus = std::fs::read_to_string(path).expect("the case corpus is readable");
+        lines.extend(corpus.lines().step_by(7).map(str::to_string));
+        for (k, text) in lines.iter().enumerate() {
+            let number = k as u64 + 1;
+            let raw = RawLine {
+                number,
+                content: Content::Text(text.as_bytes().to_vec()),
+            };
+            let (answer, ok) = answer_line(&raw);
+            let got: Value = serde_json::from_str(&answer)
+                .unwrap_or_else(|e| panic!("line {number}: output is not JSON ({e}): {answer}"));
+            let want = reference_answer(text, number);
+            assert_eq!(got, want, "line {number}: {text}");
+            assert_eq!(ok, want.get("error").is_none(), "line {number}");
+            assert!(answer.starts_with("{\"id\":"), "line {number}: {answer}");
+        }
+    }
+
+    #[test]
+    fn ids_are_copied_byte_for_byte() {
+        let ids = [
+            r#"{"z": 1,  "a": [1.50, "\u0041"]}"#,
+            "123456789012345678901234567890.000e-7",
+            r#""caf\u00e9 ☕""#,
+            "null",
+        ];
+        for id in ids {
+            for body in [
+                r#""A": "x^2+y^2-w^2", "B": "x^2-y^2""#,
+                r#""A": "x^2", "B": 7"#,
+            ] {
+                let line = RawLine {
+                    number: 1,
+                    content: Content::Text(format!("{{\"id\":  {id} , {body}}}").into_bytes()),
+                };
+                let (answer, _) = answer_line(&line);
+                assert!(answer.starts_with(&format!("{{\"id\":{id},")), "{answer}");
+            }
+        }
     }
 
     #[test]

@@ -4,6 +4,7 @@
 //! |---|---|
 //! | [`quadric_from_arg`] | a command-line argument: a polynomial string, or a JSON 4×4 array if it starts with `[` |
 //! | [`quadric_from_json`] | a JSON value: a polynomial string or a 4×4 array of numbers or number strings |
+//! | [`JsonForm`], [`quadric_from_form`] | the same, borrowed from the JSON text without a [`Value`] tree (batch lines) |
 //!
 //! Both answer `Ok(None)` for the zero form, which is allowed on one side of a pair
 //! (see [`qsic::classify_allowing_zero`]). JSON numbers are never converted through
@@ -11,9 +12,12 @@
 //! [`qsic::io::parse_number`] reads that text exactly, so `0.1` is one tenth and
 //! `123456789012345678901234567890` keeps every digit.
 
-use qsic::io::{parse_quadric, quadric_from_rows};
+use qsic::io::{parse_quadric, quadric_from_array, quadric_from_rows};
 use qsic::{Error, Quadric};
+use serde::de::{self, Deserialize, Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor};
+use serde_json::value::RawValue;
 use serde_json::Value;
+use std::borrow::Cow;
 use std::fmt;
 
 /// Longest JSON matrix accepted as a command-line argument, in bytes: the batch line limit.
@@ -137,6 +141,221 @@ pub fn quadric_from_json(value: &Value) -> Result<Option<Quadric>, InputError> {
         texts.push(text_row);
     }
     allow_zero(quadric_from_rows(&texts))
+}
+
+/// A quadric as a JSON value, borrowed from the text it is read from: what
+/// [`quadric_from_json`] reads, without building a [`Value`] tree. Deserializing it never
+/// fails on a value of the wrong type (only on invalid JSON): the type is checked by
+/// [`quadric_from_form`], with the messages of [`quadric_from_json`].
+#[derive(Debug)]
+// Two per batch line, on the stack: boxing the matrix would cost an allocation.
+#[allow(clippy::large_enum_variant)]
+pub enum JsonForm<'a> {
+    /// A string: a polynomial (borrowed unless it holds escapes).
+    Text(Cow<'a, str>),
+    /// An array, read as a matrix.
+    Matrix(JsonMatrix<'a>),
+    /// A 4×4 array whose entries are numbers (their text as written) or strings without
+    /// escapes (their content), as [`crate::line::scan_plain`] reads it.
+    Array4([[&'a str; 4]; 4]),
+    /// Any other value, by its JSON type (`"a number"`, `"null"`, …).
+    Other(&'static str),
+}
+
+/// An array read as a matrix: its shape and its first 4×4 entries as raw JSON texts.
+#[derive(Debug, Default)]
+pub struct JsonMatrix<'a> {
+    /// Number of rows.
+    rows: usize,
+    /// The first row that is not an array, and its JSON type.
+    not_array: Option<(usize, &'static str)>,
+    /// The length of the first row (of those that are arrays) that does not have 4 entries.
+    bad_len: Option<usize>,
+    /// Entries `(i, j)` for `i, j < 4`, as written in the JSON text.
+    entries: [[Option<&'a RawValue>; 4]; 4],
+}
+
+/// One row of a [`JsonMatrix`] while it is read.
+enum JsonRow<'a> {
+    Entries {
+        len: usize,
+        first: [Option<&'a RawValue>; 4],
+    },
+    Other(&'static str),
+}
+
+/// The JSON type named by a value that arrives as a map: with `arbitrary_precision`,
+/// serde_json hands a number to a visitor as a map with this one key.
+const NUMBER_TOKEN: &str = "$serde_json::private::Number";
+
+/// Reads the rest of a map, and names it: `"a number"` for serde_json's number map.
+fn drain_map<'de, A: MapAccess<'de>>(mut map: A) -> Result<&'static str, A::Error> {
+    let mut kind = "an object";
+    let mut first = true;
+    while let Some(key) = map.next_key::<Cow<'de, str>>()? {
+        if first && key == NUMBER_TOKEN {
+            kind = "a number";
+        }
+        first = false;
+        map.next_value::<IgnoredAny>()?;
+    }
+    Ok(kind)
+}
+
+/// Visits any value of the wrong type as `T::from(kind)`.
+macro_rules! other_kinds {
+    ($make:expr) => {
+        fn visit_bool<E: de::Error>(self, _: bool) -> Result<Self::Value, E> {
+            Ok($make("a boolean"))
+        }
+        fn visit_i64<E: de::Error>(self, _: i64) -> Result<Self::Value, E> {
+            Ok($make("a number"))
+        }
+        fn visit_u64<E: de::Error>(self, _: u64) -> Result<Self::Value, E> {
+            Ok($make("a number"))
+        }
+        fn visit_f64<E: de::Error>(self, _: f64) -> Result<Self::Value, E> {
+            Ok($make("a number"))
+        }
+        fn visit_unit<E: de::Error>(self) -> Result<Self::Value, E> {
+            Ok($make("null"))
+        }
+        fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Self::Value, A::Error> {
+            Ok($make(drain_map(map)?))
+        }
+    };
+}
+
+impl<'de> Deserialize<'de> for JsonForm<'de> {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct FormVisitor;
+        impl<'de> Visitor<'de> for FormVisitor {
+            type Value = JsonForm<'de>;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("any JSON value")
+            }
+            fn visit_borrowed_str<E: de::Error>(self, v: &'de str) -> Result<Self::Value, E> {
+                Ok(JsonForm::Text(Cow::Borrowed(v)))
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> Result<Self::Value, E> {
+                Ok(JsonForm::Text(Cow::Owned(v.to_owned())))
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
+                let mut m = JsonMatrix::default();
+                while let Some(row) = seq.next_element::<JsonRow<'de>>()? {
+                    match row {
+                        JsonRow::Entries { len, first } => {
+                            if len != 4 && m.bad_len.is_none() {
+                                m.bad_len = Some(len);
+                            }
+                            if let Some(dst) = m.entries.get_mut(m.rows) {
+                                *dst = first;
+                            }
+                        }
+                        JsonRow::Other(kind) => {
+                            if m.not_array.is_none() {
+                                m.not_array = Some((m.rows, kind));
+                            }
+                        }
+                    }
+                    m.rows += 1;
+                }
+                Ok(JsonForm::Matrix(m))
+            }
+            other_kinds!(JsonForm::Other);
+        }
+        deserializer.deserialize_any(FormVisitor)
+    }
+}
+
+impl<'de> Deserialize<'de> for JsonRow<'de> {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct RowVisitor;
+        impl<'de> Visitor<'de> for RowVisitor {
+            type Value = JsonRow<'de>;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("any JSON value")
+            }
+            fn visit_str<E: de::Error>(self, _: &str) -> Result<Self::Value, E> {
+                Ok(JsonRow::Other("a string"))
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
+                let mut first = [None; 4];
+                let mut len = 0;
+                while let Some(entry) = seq.next_element::<&'de RawValue>()? {
+                    if let Some(dst) = first.get_mut(len) {
+                        *dst = Some(entry);
+                    }
+                    len += 1;
+                }
+                Ok(JsonRow::Entries { len, first })
+            }
+            other_kinds!(JsonRow::Other);
+        }
+        deserializer.deserialize_any(RowVisitor)
+    }
+}
+
+/// A raw JSON entry as a number text: a number as written, a string's content (unescaped).
+fn entry_text<'a>(raw: &'a RawValue, i: usize, j: usize) -> Result<Cow<'a, str>, InputError> {
+    let text = raw.get();
+    match text.as_bytes().first() {
+        Some(b'-' | b'0'..=b'9') => Ok(Cow::Borrowed(text)),
+        Some(b'"') if !text.contains('\\') => Ok(Cow::Borrowed(&text[1..text.len() - 1])),
+        Some(b'"') => serde_json::from_str::<String>(text)
+            .map(Cow::Owned)
+            .map_err(InputError::Json),
+        first => {
+            let kind = match first {
+                Some(b'n') => "null",
+                Some(b't' | b'f') => "a boolean",
+                Some(b'[') => "an array",
+                _ => "an object",
+            };
+            Err(InputError::Type(format!(
+                "entry ({i},{j}) must be a number or a string, found {kind}"
+            )))
+        }
+    }
+}
+
+/// [`quadric_from_json`] for a borrowed [`JsonForm`]: the same answers and errors.
+///
+/// # Errors
+/// As [`quadric_from_json`].
+pub fn quadric_from_form(form: &JsonForm<'_>) -> Result<Option<Quadric>, InputError> {
+    let m = match form {
+        JsonForm::Text(text) => return allow_zero(parse_quadric(text)),
+        JsonForm::Matrix(m) => m,
+        JsonForm::Array4(texts) => return allow_zero(quadric_from_array(texts)),
+        JsonForm::Other(kind) => {
+            return Err(InputError::Type(format!(
+                "expected a polynomial string or a 4x4 array, found {kind}"
+            )))
+        }
+    };
+    if let Some((i, kind)) = m.not_array {
+        return Err(InputError::Type(format!(
+            "row {i} of the matrix must be an array, found {kind}"
+        )));
+    }
+    if m.rows != 4 || m.bad_len.is_some() {
+        return Err(Error::Shape {
+            rows: m.rows,
+            cols: m.bad_len,
+        }
+        .into());
+    }
+    let mut texts: [[Cow<'_, str>; 4]; 4] = Default::default();
+    for (i, (row, raw_row)) in texts.iter_mut().zip(&m.entries).enumerate() {
+        for (j, (text, raw)) in row.iter_mut().zip(raw_row).enumerate() {
+            // The shape is 4×4, so every entry was read.
+            if let Some(raw) = raw {
+                *text = entry_text(raw, i, j)?;
+            }
+        }
+    }
+    allow_zero(quadric_from_array(&texts))
 }
 
 /// The JSON type of a value, for messages: "null", "a boolean", "a number", ….

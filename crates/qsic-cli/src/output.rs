@@ -4,6 +4,7 @@
 //! |---|---|
 //! | [`ClassificationJson`] | the JSON result object, fields in schema order |
 //! | [`classification_to_json`] | the same as a [`serde_json::Value`] |
+//! | [`write_classification_fields`], [`write_json_string`] | the object's fields written straight into a string (batch lines) |
 //! | [`human_report`] | the multi-line report of `qsic classify A B` |
 
 use qsic::classify::{Component, SingularPointKind, SingularPoints};
@@ -119,8 +120,146 @@ pub fn classification_to_json(c: &Classification) -> Value {
 
 /// The JSON result object as one line of text, keys in schema order.
 pub fn classification_to_json_line(c: &Classification) -> String {
-    serde_json::to_string(&ClassificationJson::from(c))
-        .expect("a ClassificationJson holds only plain data")
+    let mut out = String::with_capacity(512);
+    out.push('{');
+    write_classification_fields(&mut out, c);
+    out.push('}');
+    out
+}
+
+/// Appends the fields of the JSON result object, in schema order and without the braces,
+/// to `out`: the text `serde_json` writes for [`ClassificationJson`], without building it.
+pub fn write_classification_fields(out: &mut String, c: &Classification) {
+    out.push_str("\"pencil\":");
+    write_json_string(out, c.pencil.key());
+    out.push_str(",\"case\":");
+    write_u8_or_null(out, c.case);
+    out.push_str(",\"segre\":");
+    write_str_or_null(out, c.segre);
+    out.push_str(",\"signature\":");
+    write_str_or_null(out, c.signature);
+    out.push_str(",\"index_sequence\":");
+    write_str_or_null(out, c.index_sequence);
+    out.push_str(",\"complex_type\":");
+    write_str_or_null(out, c.complex_type());
+    out.push_str(",\"real_type\":");
+    write_str_or_null(out, c.real_type());
+    let description = c.description.as_ref();
+    out.push_str(",\"components\":[");
+    for (k, comp) in description
+        .map_or(&[][..], |d| &d.components[..])
+        .iter()
+        .enumerate()
+    {
+        out.push_str(if k == 0 { "{\"kind\":" } else { ",{\"kind\":" });
+        write_json_string(out, comp.kind.key());
+        out.push_str(",\"multiplicity\":");
+        write_u8_or_null(out, Some(comp.multiplicity));
+        out.push_str(",\"count\":");
+        write_u8_or_null(out, Some(comp.count));
+        out.push_str(match comp.closed {
+            Some(true) => ",\"closed\":true}",
+            Some(false) => ",\"closed\":false}",
+            None => ",\"closed\":null}",
+        });
+    }
+    out.push_str("],\"singular_points\":[");
+    for (k, p) in description
+        .map_or(&[][..], |d| &d.singular_points[..])
+        .iter()
+        .enumerate()
+    {
+        out.push_str(if k == 0 { "{\"kind\":" } else { ",{\"kind\":" });
+        write_json_string(out, p.kind.key());
+        out.push_str(",\"count\":");
+        write_u8_or_null(out, Some(p.count));
+        out.push('}');
+    }
+    out.push_str("],\"description\":");
+    write_str_or_null(out, description.map(|d| d.summary));
+}
+
+/// Whether `b` holds a byte that JSON escapes: `"`, `\\` or a control character below
+/// 0x20. Eight bytes at a time: a word has a zero byte iff `(x − 0x01…01) & !x & 0x80…80`
+/// is nonzero, and a byte below 0x20 iff that holds for `x − 0x20…20` in place of `x − 1`.
+fn needs_escape(b: &[u8]) -> bool {
+    const ONES: u64 = 0x0101_0101_0101_0101;
+    const HIGH: u64 = 0x8080_8080_8080_8080;
+    let mut chunks = b.chunks_exact(8);
+    for chunk in &mut chunks {
+        let mut word = [0u8; 8];
+        word.copy_from_slice(chunk);
+        let x = u64::from_le_bytes(word);
+        let zero = |y: u64| y.wrapping_sub(ONES) & !y & HIGH;
+        let control = x.wrapping_sub(ONES * 0x20) & !x & HIGH;
+        if control | zero(x ^ (ONES * u64::from(b'"'))) | zero(x ^ (ONES * u64::from(b'\\'))) != 0 {
+            return true;
+        }
+    }
+    chunks
+        .remainder()
+        .iter()
+        .any(|&c| c < 0x20 || c == b'"' || c == b'\\')
+}
+
+fn write_str_or_null(out: &mut String, value: Option<&str>) {
+    match value {
+        Some(s) => write_json_string(out, s),
+        None => out.push_str("null"),
+    }
+}
+
+fn write_u8_or_null(out: &mut String, value: Option<u8>) {
+    let Some(v) = value else {
+        out.push_str("null");
+        return;
+    };
+    if v >= 100 {
+        out.push(char::from(b'0' + v / 100));
+    }
+    if v >= 10 {
+        out.push(char::from(b'0' + v / 10 % 10));
+    }
+    out.push(char::from(b'0' + v % 10));
+}
+
+/// Appends `s` as a JSON string, escaped as `serde_json` escapes it: `\"`, `\\`, the short
+/// escapes `\b \f \n \r \t`, `\u00XX` for other control characters; the rest as is.
+pub fn write_json_string(out: &mut String, s: &str) {
+    if !needs_escape(s.as_bytes()) {
+        out.reserve(s.len() + 2);
+        out.push('"');
+        out.push_str(s);
+        out.push('"');
+        return;
+    }
+    out.push('"');
+    let mut plain = 0;
+    for (i, b) in s.bytes().enumerate() {
+        let escape = match b {
+            b'"' => "\\\"",
+            b'\\' => "\\\\",
+            b'\n' => "\\n",
+            b'\r' => "\\r",
+            b'\t' => "\\t",
+            0x08 => "\\b",
+            0x0c => "\\f",
+            0..=0x1f => "",
+            _ => continue,
+        };
+        out.push_str(&s[plain..i]);
+        plain = i + 1;
+        if escape.is_empty() {
+            const HEX: &[u8; 16] = b"0123456789abcdef";
+            out.push_str("\\u00");
+            out.push(char::from(HEX[usize::from(b >> 4)]));
+            out.push(char::from(HEX[usize::from(b & 15)]));
+        } else {
+            out.push_str(escape);
+        }
+    }
+    out.push_str(&s[plain..]);
+    out.push('"');
 }
 
 /// English name of a component family: `conic`, `double line`, `4-fold line`.
@@ -266,6 +405,65 @@ mod tests {
         assert_eq!(v["pencil"], "single");
         assert_eq!(v["case"], Value::Null);
         assert_eq!(v["complex_type"], "smooth_quadric");
+    }
+
+    /// The hand-written JSON must be byte for byte what serde_json writes, on every class.
+    #[test]
+    fn written_fields_equal_serde_on_every_corpus_class() {
+        let path = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../qsic/tests/data/cases.jsonl"
+        );
+        let text = std::fs::read_to_string(path).expect("the case corpus is readable");
+        let mut classes = vec![
+            classify("x^2+y^2+z^2-w^2", "x^2+y^2+z^2-w^2"),
+            classify("x*y", "x*z"),
+            classify("x^2", "y^2"),
+        ];
+        for line in text.lines() {
+            let v: Value = serde_json::from_str(line).expect("corpus JSON");
+            let read = |k: &str| {
+                crate::input::quadric_from_json(&v[k])
+                    .expect("corpus quadric")
+                    .expect("nonzero")
+            };
+            classes.push(qsic::classify(&read("A"), &read("B")));
+        }
+        for c in &classes {
+            let serde = serde_json::to_string(&ClassificationJson::from(c)).expect("serializes");
+            assert_eq!(classification_to_json_line(c), serde);
+        }
+    }
+
+    #[test]
+    fn json_strings_are_escaped_as_serde_does() {
+        let mut samples: Vec<String> = [
+            "",
+            "plain",
+            "a\"b\\c",
+            "tab\tnew\nline\r",
+            "\u{1}\u{8}\u{c}\u{1f}\u{7f}",
+            "é ∞ 😀",
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+        samples.push((0u8..128).map(char::from).collect());
+        // Each special byte at every place of a word, among plain and non-ASCII bytes.
+        for special in ['"', '\\', '\u{0}', '\u{1f}', '\n'] {
+            for at in 0..17 {
+                let mut s: Vec<char> = "abcdefgh é∞xyz~ ".chars().collect();
+                s.insert(at, special);
+                samples.push(s.into_iter().collect());
+            }
+        }
+        for s in &samples {
+            let plain = !s.bytes().any(|c| c < 0x20 || c == b'"' || c == b'\\');
+            assert_eq!(needs_escape(s.as_bytes()), !plain, "{s:?}");
+            let mut out = String::new();
+            write_json_string(&mut out, s);
+            assert_eq!(out, serde_json::to_string(s).expect("serializes"), "{s:?}");
+        }
     }
 
     #[test]

@@ -101,3 +101,106 @@ pub fn qi_singular_pairs() -> Vec<(Quadric, Quadric)> {
         })
         .collect()
 }
+
+/// A symmetric 4×4 JSON array of number strings `p/q`, `p` in [−10, 10], `q` in [1, 4]
+/// (written `p` when `q` is 1); never all zero.
+pub fn random_rational_rows_json(rng: &mut SplitMix) -> String {
+    random_rational_rows_json_in(rng, 10, 4)
+}
+
+/// [`random_rational_rows_json`] with `p` in [−p_max, p_max] and `q` in [1, q_max].
+pub fn random_rational_rows_json_in(rng: &mut SplitMix, p_max: i64, q_max: i64) -> String {
+    loop {
+        let mut m = [[(0i64, 1i64); 4]; 4];
+        for i in 0..4 {
+            for j in i..4 {
+                let v = (rng.range(-p_max, p_max), rng.range(1, q_max));
+                m[i][j] = v;
+                m[j][i] = v;
+            }
+        }
+        if m.iter().flatten().all(|&(p, _)| p == 0) {
+            continue;
+        }
+        let rows: Vec<String> = m
+            .iter()
+            .map(|row| {
+                let entries: Vec<String> = row
+                    .iter()
+                    .map(|&(p, q)| {
+                        if q == 1 {
+                            format!("\"{p}\"")
+                        } else {
+                            format!("\"{p}/{q}\"")
+                        }
+                    })
+                    .collect();
+                format!("[{}]", entries.join(", "))
+            })
+            .collect();
+        return format!("[{}]", rows.join(", "));
+    }
+}
+
+/// A polynomial string in x, y, z, w whose ten coefficients are integers in [−10, 10],
+/// zero terms left out, e.g. `3*x^2 - 7*x*y + w^2`; never the zero polynomial.
+pub fn random_polynomial_text(rng: &mut SplitMix) -> String {
+    random_polynomial_text_over(rng, 1)
+}
+
+/// [`random_polynomial_text`] with coefficients `c/q`, `q` in [1, q_max] (written `c` when
+/// `q` is 1), e.g. `-9/4*x^2 + x*y`.
+pub fn random_polynomial_text_over(rng: &mut SplitMix, q_max: i64) -> String {
+    const MONOMIALS: [&str; 10] = [
+        "x^2", "x*y", "x*z", "x*w", "y^2", "y*z", "y*w", "z^2", "z*w", "w^2",
+    ];
+    loop {
+        let mut text = String::new();
+        for mono in MONOMIALS {
+            let c = rng.range(-10, 10);
+            if c == 0 {
+                continue;
+            }
+            let sign = if c < 0 { "-" } else { "+" };
+            if text.is_empty() {
+                if c < 0 {
+                    text.push('-');
+                }
+            } else {
+                text.push_str(&format!(" {sign} "));
+            }
+            let q = rng.range(1, q_max);
+            if q != 1 {
+                text.push_str(&format!("{}/{q}*", c.abs()));
+            } else if c.abs() != 1 {
+                text.push_str(&format!("{}*", c.abs()));
+            }
+            text.push_str(mono);
+        }
+        if !text.is_empty() {
+            return text;
+        }
+    }
+}
+
+/// A random symmetric integer matrix of the `random_small` family: 2× the coefficient on
+/// the diagonal, the coefficient off it, coefficients in [−10, 10]; never zero.
+pub fn random_integer_matrix(rng: &mut SplitMix) -> [[i64; 4]; 4] {
+    loop {
+        let mut m = [[0i64; 4]; 4];
+        for i in 0..4 {
+            for j in i..4 {
+                let c = rng.range(-10, 10);
+                if i == j {
+                    m[i][i] = 2 * c;
+                } else {
+                    m[i][j] = c;
+                    m[j][i] = c;
+                }
+            }
+        }
+        if m.iter().flatten().any(|&v| v != 0) {
+            return m;
+        }
+    }
+}

@@ -5,19 +5,23 @@
 //! | [`parse_number`] | one rational number: `-7`, `3/4`, `0.1`, `2.5e-3` |
 //! | [`parse_quadric`] | a polynomial of degree 2 in `x, y, z, w`, affine or homogeneous |
 //! | [`quadric_from_rows`] | a 4×4 matrix of number strings |
+//! | [`quadric_from_array`] | the same as an array `[[S; 4]; 4]` |
 //! | [`quadric_from_f64_rows`] | a 4×4 matrix of `f64`, each converted exactly |
 //!
-//! Every value is exact: `0.1` is one tenth. Input sizes are bounded by
+//! Every value is exact: `0.1` is one tenth. Numbers of up to 18 digits are read in machine
+//! arithmetic and the quadric built from them without big numbers (see [`crate::quadric`]);
+//! longer ones, and every error, go through the big rationals of [`parse_number`]. Input sizes are bounded by
 //! [`crate::limits`], so no string, however built, makes a reader panic or run long.
 
 mod number;
 mod polynomial;
 
 pub use number::parse_number;
-pub use polynomial::parse_quadric;
+use number::parse_number_small;
+pub use polynomial::{parse_quadric, parse_quadric_big_route};
 
 use crate::error::Error;
-use crate::quadric::Quadric;
+use crate::quadric::{Quadric, SmallRational};
 use dashu_ratio::RBig;
 
 /// Checks that `rows` is 4×4, as [`Error::Shape`] describes.
@@ -64,17 +68,74 @@ fn check_shape<T>(rows: &[Vec<T>]) -> Result<(), Error> {
 /// ```
 pub fn quadric_from_rows<S: AsRef<str>>(rows: &[Vec<S>]) -> Result<Quadric, Error> {
     check_shape(rows)?;
+    quadric_from_entries(|i, j| rows[i][j].as_ref())
+}
+
+/// [`quadric_from_rows`] for a 4×4 array of number strings (no shape to check).
+///
+/// # Errors
+/// As [`quadric_from_rows`], but for [`Error::Shape`].
+///
+/// # Examples
+/// ```
+/// use qsic::io::quadric_from_array;
+///
+/// let q = quadric_from_array(&[["1", "0", "0", "0"], ["0", "3/2", "0", "0"], ["0"; 4], ["0"; 4]])?;
+/// assert_eq!(q.small_integer_matrix().map(|m| (m[0][0], m[1][1])), Some((2, 3)));
+/// # Ok::<(), qsic::error::Error>(())
+/// ```
+pub fn quadric_from_array<S: AsRef<str>>(m: &[[S; 4]; 4]) -> Result<Quadric, Error> {
+    quadric_from_entries(|i, j| m[i][j].as_ref())
+}
+
+/// The quadric of the 4×4 number texts `entry(i, j)`: in machine arithmetic when every
+/// text is a small number, else (and for every error) by the big-rational route.
+fn quadric_from_entries<'a>(entry: impl Fn(usize, usize) -> &'a str) -> Result<Quadric, Error> {
+    let mut small = [[SmallRational::ZERO; 4]; 4];
+    for i in 0..4 {
+        for j in 0..4 {
+            let text = entry(i, j);
+            // Below the diagonal, the text of the mirror entry, already read, is usually
+            // repeated: the same text has the same value.
+            if j < i && text == entry(j, i) {
+                small[i][j] = small[j][i];
+                continue;
+            }
+            match parse_number_small(text) {
+                Some(v) => small[i][j] = v,
+                None => return quadric_from_entries_big_route(entry),
+            }
+        }
+    }
+    Quadric::from_small_rationals(&small)
+}
+
+/// [`quadric_from_rows`] through big rationals only ([`parse_number`], then
+/// [`Quadric::from_matrix_big_route`]): the general route, which the machine route must
+/// equal (differential tests).
+///
+/// # Errors
+/// As [`quadric_from_rows`].
+#[doc(hidden)]
+pub fn quadric_from_rows_big_route<S: AsRef<str>>(rows: &[Vec<S>]) -> Result<Quadric, Error> {
+    check_shape(rows)?;
+    quadric_from_entries_big_route(|i, j| rows[i][j].as_ref())
+}
+
+fn quadric_from_entries_big_route<'a>(
+    entry: impl Fn(usize, usize) -> &'a str,
+) -> Result<Quadric, Error> {
     let mut m: [[RBig; 4]; 4] = Default::default();
-    for (i, row) in rows.iter().enumerate() {
-        for (j, text) in row.iter().enumerate() {
-            m[i][j] = parse_number(text.as_ref()).map_err(|e| Error::Entry {
+    for (i, row) in m.iter_mut().enumerate() {
+        for (j, v) in row.iter_mut().enumerate() {
+            *v = parse_number(entry(i, j)).map_err(|e| Error::Entry {
                 row: i,
                 col: j,
                 source: Box::new(e),
             })?;
         }
     }
-    Quadric::from_matrix(m)
+    Quadric::from_matrix_big_route(m)
 }
 
 /// Builds a quadric from a 4×4 matrix of `f64`, each entry converted exactly

@@ -5,6 +5,7 @@
 
 use crate::error::Error;
 use crate::limits::{MAX_DECIMAL_EXPONENT, MAX_NUMBER_DIGITS};
+use crate::quadric::SmallRational;
 use dashu_int::{IBig, UBig};
 use dashu_ratio::RBig;
 
@@ -111,6 +112,112 @@ pub fn parse_number(text: &str) -> Result<RBig, Error> {
     Ok(if negative { -value } else { value })
 }
 
+/// Reads a number as [`parse_number`] does, in machine arithmetic: `None` if the text is
+/// not a number, or its value is not `p/q` with `p` an `i64` and `q` a `u64` after reading
+/// each numeral with at most 18 digits (the caller then uses [`parse_number`], which also
+/// names any error). Costs a few instructions per character.
+pub(crate) fn parse_number_small(text: &str) -> Option<SmallRational> {
+    if let Some(v) = parse_plain_fraction(text.as_bytes()) {
+        return Some(v);
+    }
+    let body = text.trim();
+    let (negative, start) = match body.as_bytes().first()? {
+        b'-' => (true, 1),
+        b'+' => (false, 1),
+        _ => (false, 0),
+    };
+    let (num, len) = scan_numeral(&body[start..]).ok()?;
+    let value = num.small_value()?;
+    let rest = body[start + len..].trim_start();
+    let value = if let Some(den_text) = rest.strip_prefix('/') {
+        let den_text = den_text.trim_start();
+        let (den, len) = scan_numeral(den_text).ok()?;
+        let den = den.small_value()?;
+        if len != den_text.len() || den.num == 0 {
+            return None;
+        }
+        // (a/b) / (c/d) = (a·d) / (b·c), c > 0
+        SmallRational {
+            num: value.num.checked_mul(i64::try_from(den.den).ok()?)?,
+            den: value.den.checked_mul(den.num.unsigned_abs())?,
+        }
+    } else if rest.is_empty() {
+        value
+    } else {
+        return None;
+    };
+    Some(if negative {
+        SmallRational {
+            num: -value.num,
+            ..value
+        }
+    } else {
+        value
+    })
+}
+
+/// The common case of [`parse_number_small`], in one pass: `-?d+(.d+)?(/d+(.d+)?)?`, each
+/// side at most 18 digits, the denominator nonzero; `None` for anything else.
+#[inline]
+fn parse_plain_fraction(b: &[u8]) -> Option<SmallRational> {
+    let negative = b.first() == Some(&b'-');
+    let mut i = usize::from(negative);
+    let (num, num_scale) = plain_decimal(b, &mut i)?;
+    let (num, den) = match b.get(i) {
+        None => (num, num_scale),
+        Some(b'/') => {
+            i += 1;
+            let (den, den_scale) = plain_decimal(b, &mut i)?;
+            if i != b.len() || den == 0 {
+                return None;
+            }
+            // (num / num_scale) / (den / den_scale)
+            (num.checked_mul(den_scale)?, num_scale.checked_mul(den)?)
+        }
+        Some(_) => return None,
+    };
+    let num = i64::try_from(num).ok()?;
+    Some(SmallRational {
+        num: if negative { -num } else { num },
+        den,
+    })
+}
+
+/// The decimal `d+(.d+)?` at `b[*i..]`, at most 18 digits, as `(digits, 10^fraction_len)`,
+/// advancing `i` past it.
+#[inline(always)]
+fn plain_decimal(b: &[u8], i: &mut usize) -> Option<(u64, u64)> {
+    let start = *i;
+    let mut value = 0u64;
+    while let Some(&d) = b.get(*i).filter(|d| d.is_ascii_digit()) {
+        value = value * 10 + u64::from(d - b'0');
+        *i += 1;
+        if *i - start > 18 {
+            return None;
+        }
+    }
+    let int_len = *i - start;
+    if int_len == 0 {
+        return None;
+    }
+    if b.get(*i) != Some(&b'.') {
+        return Some((value, 1));
+    }
+    *i += 1;
+    let frac_start = *i;
+    let mut scale = 1u64;
+    while let Some(&d) = b.get(*i).filter(|d| d.is_ascii_digit()) {
+        if *i - frac_start + int_len >= 18 {
+            return None;
+        }
+        value = value * 10 + u64::from(d - b'0');
+        scale *= 10;
+        *i += 1;
+    }
+    // At most 18 digits in all: value < 10^18, scale ≤ 10^17.
+    (*i > frac_start).then_some((value, scale))
+}
+
 /// An unsigned numeral `int.frac e exponent`, its pieces borrowed from the text.
 #[derive(Debug)]
 pub(crate) struct Numeral<'a> {
@@ -135,6 +242,29 @@ impl Numeral<'_> {
     /// Number of mantissa digits (exponent digits excluded).
     pub(crate) fn digit_count(&self) -> usize {
         self.int.len() + self.frac.len()
+    }
+
+    /// The exact value `int.frac × 10^exponent` as a non-negative [`SmallRational`], if
+    /// the numeral has at most 18 digits and the value fits.
+    pub(crate) fn small_value(&self) -> Option<SmallRational> {
+        if self.digit_count() > 18 {
+            return None;
+        }
+        // At most 18 digits: below 10^18 < 2^63.
+        let digits = self.int.bytes().chain(self.frac.bytes());
+        let mantissa = digits.fold(0u64, |m, d| m * 10 + u64::from(d - b'0'));
+        // |exponent| ≤ MAX_DECIMAL_EXPONENT and frac.len() ≤ 18: no overflow.
+        let shift = self.exponent - self.frac.len() as i64;
+        let power = 10u64.checked_pow(u32::try_from(shift.unsigned_abs()).ok()?)?;
+        let (num, den) = if shift >= 0 {
+            (mantissa.checked_mul(power)?, 1)
+        } else {
+            (mantissa, power)
+        };
+        Some(SmallRational {
+            num: i64::try_from(num).ok()?,
+            den,
+        })
     }
 
     /// The exact value `int.frac × 10^exponent`.
@@ -380,6 +510,126 @@ mod tests {
         assert_eq!(excerpt(&long).chars().count(), 41);
     }
 
+    /// The machine reader must give the value of the exact reader, or decline.
+    fn assert_small_agrees(text: &str) {
+        if let Some(v) = parse_number_small(text) {
+            assert!(v.den > 0, "{text:?}");
+            assert_eq!(parse_number(text), Ok(v.to_rbig()), "{text:?}");
+        }
+    }
+
+    #[test]
+    fn one_pass_reader_takes_plain_fractions_only() {
+        let taken = [
+            "7",
+            "-3/2",
+            "0.5",
+            "-1.25/0.5",
+            "007/010",
+            "999999999.999999999",
+        ];
+        for text in taken {
+            let v = parse_plain_fraction(text.as_bytes())
+                .unwrap_or_else(|| panic!("{text:?} should be read"));
+            assert_eq!(parse_number(text), Ok(v.to_rbig()), "{text:?}");
+        }
+        let declined = [
+            "",
+            "-",
+            "1./2",
+            "1/2.",
+            "-.5",
+            ".5",
+            "+1",
+            " 1",
+            "1 ",
+            "1e3",
+            "1/0",
+            "1/0.0",
+            "1.2.3",
+            "1/2/3",
+            "1//2",
+            "1234567890123456789",
+            "0.000000000000000001",
+        ];
+        for text in declined {
+            assert_eq!(parse_plain_fraction(text.as_bytes()), None, "{text:?}");
+        }
+    }
+
+    #[test]
+    fn machine_reader_agrees_or_declines() {
+        let read = [
+            "0",
+            "-0",
+            "42",
+            "  -17\t",
+            "+5",
+            "0.1",
+            ".5",
+            "5.",
+            "-.25",
+            "1e-3",
+            "2.5E+10",
+            "-1.25e2",
+            "007",
+            "-3/4",
+            "+2/6",
+            "3 / 9",
+            "1.5/2",
+            "1/2e1",
+            "0/5",
+            "1e18",
+            "999999999999999999",
+            "0.00000000000000001",
+            "1/.5",
+            "922337203685477580e1",
+            "-1.25",
+            "0.5/1.5",
+            "3/2.50",
+            "-0.00000000000000001/7",
+            "12345678.9/0.001",
+            "999999999.999999999/7",
+        ];
+        for text in read {
+            assert!(
+                parse_number_small(text).is_some(),
+                "{text:?} should be read"
+            );
+            assert_small_agrees(text);
+        }
+        let declined = [
+            "",
+            "1/0",
+            "1/0.0",
+            "1e",
+            "1e+",
+            "x",
+            "1 2",
+            "1/2/3",
+            "1/-2",
+            "- 3",
+            "--1",
+            "1234567890123456789",
+            "-0.000000000000000001/7",
+            "1.2.3",
+            "0.000000000000000001",
+            "9223372036854775807",
+            "1e19",
+            "1e-20",
+            "9223372036854775808",
+            "1e99999",
+            "100000000000/0.00000001",
+        ];
+        for text in declined {
+            assert_eq!(
+                parse_number_small(text),
+                None,
+                "{text:?} should be declined"
+            );
+        }
+    }
+
     proptest! {
         #[test]
         fn printed_rationals_read_back(n in any::<i64>(), d in 1u64.., e in -30i32..30) {
@@ -390,6 +640,13 @@ mod tests {
             let scaled = if e >= 0 { &r * &power } else { &r / &power };
             let text = format!("{n}e{e}/{d}");
             prop_assert_eq!(parse_number(&text), Ok(scaled), "text {}", text);
+        }
+
+        #[test]
+        fn machine_reader_agrees_on_random_texts(
+            text in "[+-]?[0-9]{0,20}(\\.[0-9]{0,20})?([eE][+-]?[0-9]{1,3})?( ?/ ?[0-9]{1,20}(\\.[0-9]{0,5})?([eE]-?[0-9]{1,2})?)?",
+        ) {
+            assert_small_agrees(&text);
         }
 
         #[test]

@@ -7,7 +7,7 @@ use crate::error::Error;
 use crate::limits::{
     MAX_COEFFICIENT_BITS, MAX_EXPANSION_BITS, MAX_INPUT_LEN, MAX_NESTING_DEPTH, MAX_POWER_EXPONENT,
 };
-use crate::quadric::Quadric;
+use crate::quadric::{Quadric, SmallRational};
 use dashu_int::ops::BitTest;
 use dashu_int::UBig;
 use dashu_ratio::RBig;
@@ -82,6 +82,27 @@ pub fn parse_quadric(text: &str) -> Result<Quadric, Error> {
             limit: MAX_INPUT_LEN,
         });
     }
+    if text.len() <= MACHINE_READER_MAX_LEN {
+        if let Some(q) = read_small(text) {
+            return Ok(q);
+        }
+    }
+    parse_quadric_big_route(text)
+}
+
+/// [`parse_quadric`] without its machine-arithmetic reader: the general reader, which the
+/// machine reader must equal wherever it answers (differential tests).
+///
+/// # Errors
+/// As [`parse_quadric`].
+#[doc(hidden)]
+pub fn parse_quadric_big_route(text: &str) -> Result<Quadric, Error> {
+    if text.len() > MAX_INPUT_LEN {
+        return Err(Error::Limit {
+            what: format!("{} bytes in a polynomial string", text.len()),
+            limit: MAX_INPUT_LEN,
+        });
+    }
     let mut budget = Budget {
         left: MAX_EXPANSION_BITS,
     };
@@ -96,6 +117,262 @@ pub fn parse_quadric(text: &str) -> Result<Quadric, Error> {
     };
     let poly = parser.parse()?;
     quadric_from_poly(poly)
+}
+
+/// Longest text the machine reader takes (bytes). Its numbers have at most 128 bits, so
+/// within this length the general reader's size limits cannot be reached.
+const MACHINE_READER_MAX_LEN: usize = 10_000;
+
+/// The machine-arithmetic reader: the quadric of a polynomial written as a sum of terms,
+/// each a product of numbers of at most 18 digits (`*`, `/` or juxtaposition before a
+/// variable) and variables with exponents 0–2, such as `3*x^2 - 1/2 x*y + 0.5w^2`, when
+/// every coefficient fits an `i64` over a `u64`.
+///
+/// `None` for anything else (parentheses, powers of numbers, unary signs after `*`, errors,
+/// the zero polynomial, overflow): [`parse_quadric_big_route`] then reads the text, and
+/// gives the error if there is one. Where it answers, the answer is that of the general
+/// reader (same grammar, exact arithmetic).
+fn read_small(text: &str) -> Option<Quadric> {
+    let b = text.as_bytes();
+    let mut pos = 0;
+    let skip = |pos: &mut usize| {
+        while b
+            .get(*pos)
+            .is_some_and(|c| matches!(c, b' ' | b'\t' | b'\n' | b'\r'))
+        {
+            *pos += 1;
+        }
+    };
+    let mut acc = [SmallRational::ZERO; N];
+    loop {
+        // Unary and binary signs in front of the term.
+        let mut negative = false;
+        skip(&mut pos);
+        while let Some(&c @ (b'+' | b'-')) = b.get(pos) {
+            negative ^= c == b'-';
+            pos += 1;
+            skip(&mut pos);
+        }
+        let mut coefficient = SmallRational { num: 1, den: 1 };
+        let mut monomial = 0;
+        loop {
+            skip(&mut pos);
+            match b.get(pos)? {
+                b'0'..=b'9' | b'.' => {
+                    let (value, len) = small_numeral(text, pos)?;
+                    coefficient = small_product(coefficient, value, false)?;
+                    pos += len;
+                }
+                &c @ (b'x' | b'y' | b'z' | b'w') => {
+                    pos += 1;
+                    if b.get(pos)
+                        .is_some_and(|&c| c.is_ascii_alphanumeric() || c == b'_' || c >= 0x80)
+                    {
+                        return None;
+                    }
+                    let variable = 1 + VARIABLES.iter().position(|&v| v as u8 == c)?;
+                    skip(&mut pos);
+                    let exponent = match (b.get(pos), b.get(pos + 1)) {
+                        (Some(b'^'), _) => 1,
+                        (Some(b'*'), Some(b'*')) => 2,
+                        _ => 0,
+                    };
+                    let mut power = 1;
+                    if exponent > 0 {
+                        pos += exponent;
+                        skip(&mut pos);
+                        let start = pos;
+                        while b.get(pos).is_some_and(u8::is_ascii_digit) {
+                            pos += 1;
+                        }
+                        let digits = &text[start..pos];
+                        if digits.is_empty()
+                            || digits.len() > 3
+                            || matches!(b.get(pos), Some(b'.' | b'e' | b'E'))
+                        {
+                            return None;
+                        }
+                        power = digits.parse::<usize>().ok()?;
+                        skip(&mut pos);
+                        if matches!(b.get(pos), Some(b'^')) || b[pos..].starts_with(b"**") {
+                            return None;
+                        }
+                    }
+                    for _ in 0..power {
+                        monomial = product_index(monomial, variable)?;
+                    }
+                }
+                _ => return None,
+            }
+            skip(&mut pos);
+            match b.get(pos) {
+                None | Some(b'+' | b'-') => break,
+                Some(b'*') if b.get(pos + 1) != Some(&b'*') => pos += 1,
+                Some(b'/') => {
+                    pos += 1;
+                    skip(&mut pos);
+                    if !matches!(b.get(pos), Some(b'0'..=b'9' | b'.')) {
+                        return None;
+                    }
+                    let (divisor, len) = small_numeral(text, pos)?;
+                    pos += len;
+                    skip(&mut pos);
+                    if divisor.num == 0
+                        || matches!(b.get(pos), Some(b'^'))
+                        || b[pos..].starts_with(b"**")
+                    {
+                        return None;
+                    }
+                    coefficient = small_product(coefficient, divisor, true)?;
+                    match b.get(pos) {
+                        None | Some(b'+' | b'-') => break,
+                        Some(b'*') if b.get(pos + 1) != Some(&b'*') => pos += 1,
+                        Some(b'x' | b'y' | b'z' | b'w') => {}
+                        _ => return None,
+                    }
+                }
+                // Juxtaposition before a variable.
+                Some(b'x' | b'y' | b'z' | b'w') => {}
+                _ => return None,
+            }
+        }
+        if negative {
+            coefficient.num = coefficient.num.checked_neg()?;
+        }
+        acc[monomial] = small_sum(acc[monomial], coefficient)?;
+        if pos >= b.len() {
+            break;
+        }
+    }
+    small_quadric(&acc)
+}
+
+/// The unsigned numeral at byte `pos` of `text` as a small rational, and its length: a run
+/// of at most 18 digits read at once, anything else through [`scan_numeral`].
+#[inline]
+fn small_numeral(text: &str, pos: usize) -> Option<(SmallRational, usize)> {
+    let b = text.as_bytes();
+    let mut i = pos;
+    let mut value = 0u64;
+    while let Some(&d) = b.get(i).filter(|d| d.is_ascii_digit()) {
+        if i - pos == 18 {
+            break;
+        }
+        value = value * 10 + u64::from(d - b'0');
+        i += 1;
+    }
+    if i > pos && !matches!(b.get(i), Some(b'0'..=b'9' | b'.' | b'e' | b'E')) {
+        // At most 18 digits: below 10^18 < 2^63.
+        let num = value as i64;
+        return Some((SmallRational { num, den: 1 }, i - pos));
+    }
+    let (numeral, len) = scan_numeral(text.get(pos..)?).ok()?;
+    Some((numeral.small_value()?, len))
+}
+
+/// `a·b`, or `a/b` if `divide` (`b` then positive), in machine integers; `None` on overflow.
+fn small_product(a: SmallRational, b: SmallRational, divide: bool) -> Option<SmallRational> {
+    let (num, den) = if divide {
+        (i64::try_from(b.den).ok()?, b.num.unsigned_abs())
+    } else {
+        (b.num, b.den)
+    };
+    Some(SmallRational {
+        num: a.num.checked_mul(num)?,
+        den: a.den.checked_mul(den)?,
+    })
+}
+
+/// `a + b` in lowest terms when a denominator is not 1; `None` on overflow.
+fn small_sum(a: SmallRational, b: SmallRational) -> Option<SmallRational> {
+    if a.num == 0 {
+        return Some(b);
+    }
+    if a.den == b.den {
+        return Some(SmallRational {
+            num: a.num.checked_add(b.num)?,
+            den: a.den,
+        });
+    }
+    let num = i128::from(a.num) * i128::from(b.den) + i128::from(b.num) * i128::from(a.den);
+    let den = u128::from(a.den) * u128::from(b.den);
+    let g = crate::quadric::gcd_u128(num.unsigned_abs(), den);
+    Some(SmallRational {
+        num: i64::try_from(num / i128::try_from(g).ok()?).ok()?,
+        den: u64::try_from(den / g).ok()?,
+    })
+}
+
+/// The quadric of the expanded polynomial `acc` (homogenized as in [`quadric_from_poly`]),
+/// or `None` where that gives an error or a number overflows.
+fn small_quadric(acc: &[SmallRational; N]) -> Option<Quadric> {
+    let mut uses_w = false;
+    let mut not_quadratic = false;
+    let mut any = false;
+    for (k, c) in acc.iter().enumerate() {
+        if c.num != 0 {
+            any = true;
+            uses_w |= MONOMIALS[k][3] > 0;
+            not_quadratic |= k < FIRST_QUADRATIC;
+        }
+    }
+    if !any || (uses_w && not_quadratic) {
+        return None;
+    }
+    let mut m = [[SmallRational::ZERO; 4]; 4];
+    for (c, &(i, j)) in acc.iter().zip(&HOMOGENIZED) {
+        if c.num == 0 {
+            continue;
+        }
+        if i == j {
+            m[i][i] = *c;
+        } else {
+            let half = SmallRational {
+                num: c.num,
+                den: c.den.checked_mul(2)?,
+            };
+            m[i][j] = half;
+            m[j][i] = half;
+        }
+    }
+    Quadric::from_small_rationals(&m).ok()
+}
+
+/// Index in [`MONOMIALS`] of the first monomial of degree 2 (they are ordered by degree).
+const FIRST_QUADRATIC: usize = 5;
+
+/// `HOMOGENIZED[k]` is the matrix position `(i, j)`, `i ≤ j`, of monomial `k` after
+/// homogenization with `w` (as in [`quadric_from_poly`]): `1 → w²`, `x → x·w`, `x² → x²`, ….
+const HOMOGENIZED: [(usize, usize); N] = homogenized_positions();
+
+const fn homogenized_positions() -> [(usize, usize); N] {
+    let mut out = [(0, 0); N];
+    let mut k = 0;
+    while k < N {
+        let mut e = MONOMIALS[k];
+        let degree = (e[0] + e[1] + e[2] + e[3]) as usize;
+        e[3] += (2 - degree) as u8;
+        // The two variables of the degree-2 monomial e, in order.
+        let mut first = 4;
+        let mut second = 4;
+        let mut v = 0;
+        while v < 4 {
+            if e[v] == 2 {
+                first = v;
+                second = v;
+            } else if e[v] == 1 {
+                if first == 4 {
+                    first = v;
+                } else {
+                    second = v;
+                }
+            }
+            v += 1;
+        }
+        out[k] = (first, second);
+        k += 1;
+    }
+    out
 }
 
 /// The variables, in matrix order.
@@ -938,6 +1215,58 @@ mod tests {
 
     fn parse(text: &str) -> Quadric {
         parse_quadric(text).unwrap_or_else(|e| panic!("{text:?} should parse: {e}"))
+    }
+
+    #[test]
+    fn homogenized_positions_follow_the_monomials() {
+        assert_eq!(HOMOGENIZED[0], (3, 3));
+        assert_eq!(HOMOGENIZED[1], (0, 3));
+        assert_eq!(HOMOGENIZED[5], (0, 0));
+        assert_eq!(HOMOGENIZED[6], (0, 1));
+        assert_eq!(HOMOGENIZED[13], (2, 3));
+        assert!((0..N).all(|k| (degree_of(k) == 2) == (k >= FIRST_QUADRATIC)));
+    }
+
+    #[test]
+    fn machine_reader_takes_plain_sums_and_agrees() {
+        let taken = [
+            "x^2+y^2+z^2-1",
+            "3*x^2 - 1/2 x*y + 0.5w^2",
+            "-9*x^2 - 8*x*y + x*z - 7*x*w - 7*y^2 - y*z - 10*y*w - 6*z^2 - 5*z*w + 10*w^2",
+            "2x y + 2 z w",
+            "x**2 - - y ^ 2 + 1e-3*z*z",
+            "x^0*y^2 + 2z^1*x",
+            "1/3 x - 2.5e1",
+            "x/2*y + y x/4",
+            "x^2 - x^2 + y^2",
+        ];
+        for text in taken {
+            let fast = read_small(text).unwrap_or_else(|| panic!("{text:?} should be read"));
+            assert_eq!(Ok(fast), parse_quadric_big_route(text), "{text:?}");
+        }
+        let declined = [
+            "",
+            "(x+y)^2",
+            "2^2*x^2",
+            "x*-y",
+            "x^2^2",
+            "x^3",
+            "x*y*z",
+            "x2",
+            "x^2 + q",
+            "x 2",
+            "x/0",
+            "x/y",
+            "x^2.0",
+            "x^2 + w",
+            "x^2 - x^2",
+            "9223372036854775807*x^2 + 9223372036854775807*x^2",
+            "x^2 +",
+            "x² + y^2",
+        ];
+        for text in declined {
+            assert!(read_small(text).is_none(), "{text:?} should be declined");
+        }
     }
 
     #[test]
