@@ -86,18 +86,15 @@ pub fn root_bound_log2(p: &Poly) -> usize {
     };
     let lead_bits = bit_len(lead);
     let n = rest.len();
-    // |a_{n−i}/a_n| < 2^(bits − lead_bits + 1), so its i-th root is below 2^⌈(…)/i⌉
+    // |a_{n−i}/a_n| < 2^(bits − lead_bits + 1), so its i-th root is below 2^(kᵢ + 1/i) with
+    // kᵢ = ⌈(bits − lead_bits)/i⌉, and Fujiwara's bound below 2·2^(k + 1) = 2^(k + 2).
     let k = rest
         .iter()
         .enumerate()
         .filter(|(_, v)| !v.is_zero())
-        .map(|(j, v)| {
-            let i = n - j;
-            (bit_len(v) + 1).saturating_sub(lead_bits).div_ceil(i)
-        })
+        .map(|(j, v)| bit_len(v).saturating_sub(lead_bits).div_ceil(n - j))
         .max()
         .unwrap_or(0);
-    // 2·2^k bounds the roots; one more doubling makes the bound strict
     k + 2
 }
 
@@ -125,14 +122,12 @@ pub fn isolate_real_roots(p: &Poly) -> Vec<RootInterval> {
         out.push(RootInterval::Exact(RBig::ZERO));
         sf = sf.shift_down(1);
     }
-    if sf.degree().unwrap_or(0) > 0 {
-        out.extend(
-            isolate_positive(&sf.scale_var(&IBig::NEG_ONE))
-                .into_iter()
-                .map(RootInterval::negated),
-        );
-        out.extend(isolate_positive(&sf));
-    }
+    out.extend(
+        isolate_positive(&sf.scale_var(&IBig::NEG_ONE))
+            .into_iter()
+            .map(RootInterval::negated),
+    );
+    out.extend(isolate_positive(&sf));
     out.sort_by(|a, b| a.lo().cmp(b.lo()));
     out
 }
@@ -152,11 +147,9 @@ impl Cell {
     /// numbers a cell works with are as small as its position allows.
     fn normalized(mut self) -> Cell {
         let k = trailing_zeros(&self.lo).min(trailing_zeros(&self.hi));
-        if k > 0 {
-            self.lo >>= k;
-            self.hi >>= k;
-            self.s += k as isize;
-        }
+        self.lo >>= k;
+        self.hi >>= k;
+        self.s += k as isize;
         self
     }
 }
@@ -175,7 +168,7 @@ enum Newton {
     Root(IBig, isize),
 }
 
-/// Isolates the positive roots of the square-free `p0` with `p0(0) ≠ 0`.
+/// Isolates the positive roots of the square-free `p0` with `p0(0) ≠ 0` (none for a constant).
 fn isolate_positive(p0: &Poly) -> Vec<RootInterval> {
     let mut p = p0.clone();
     let k_hi = root_bound_log2(&p);
