@@ -170,7 +170,13 @@ enum Newton {
 
 /// Isolates the positive roots of the square-free `p0` with `p0(0) ≠ 0` (none for a constant).
 fn isolate_positive(p0: &Poly) -> Vec<RootInterval> {
+    isolate_positive_counted(p0).0
+}
+
+/// [`isolate_positive`], with the number of cells examined (the cost measure the tests bound).
+fn isolate_positive_counted(p0: &Poly) -> (Vec<RootInterval>, usize) {
     let mut p = p0.clone();
+    let mut cells = 0;
     let k_hi = root_bound_log2(&p);
     let k_lo = root_bound_log2(&p.reverse());
     // Every positive root lies in (2^−k_lo, 2^k_hi), strictly.
@@ -183,6 +189,7 @@ fn isolate_positive(p0: &Poly) -> Vec<RootInterval> {
     }];
     let mut found = Vec::new();
     while let Some(cell) = work.pop() {
+        cells += 1;
         // q(x) ∝ p(x·2^s): the cell is (lo, hi) for q, with integer ends.
         let q = scaled(&p, cell.s);
         let v = variations(&q, &cell.lo, &cell.hi);
@@ -211,6 +218,10 @@ fn isolate_positive(p0: &Poly) -> Vec<RootInterval> {
             }
         };
         let up = (cell.s - s) as usize;
+        debug_assert!(
+            (&cell.lo << up) < point && point < (&cell.hi << up),
+            "split points lie inside the cell"
+        );
         let (lo, hi) = (&cell.lo << up, &cell.hi << up);
         if Sign::of(&scaled(&p, s).eval_integer(&point)).is_zero() {
             p = p
@@ -231,7 +242,7 @@ fn isolate_positive(p0: &Poly) -> Vec<RootInterval> {
             );
         }
     }
-    found
+    let roots = found
         .into_iter()
         .map(|f| match f {
             Found::Exact(x, s) => RootInterval::Exact(to_rational(&x, s)),
@@ -248,7 +259,8 @@ fn isolate_positive(p0: &Poly) -> Vec<RootInterval> {
                 exact_if_rational(&p, iv)
             }
         })
-        .collect()
+        .collect();
+    (roots, cells)
 }
 
 /// The root of the primitive `p` in the open interval `iv`, exactly if it is a rational
@@ -839,6 +851,55 @@ mod cluster_tests {
         };
         assert_eq!(p.sign_at(&lo) * p.sign_at(&hi), Sign::Negative);
         assert!(refine(&p, &RootInterval::Open(lo, hi), &width).lo() > &RBig::ONE);
+    }
+}
+
+#[cfg(test)]
+mod cost_tests {
+    use super::*;
+
+    fn ten_pow(k: usize) -> IBig {
+        IBig::from(10).pow(k)
+    }
+
+    /// Two irrational roots about 10⁻¹⁰⁰⁰ apart near 1/3 (and 3): Newton steps separate them
+    /// in far fewer cells than the ~3 300 halvings bisection needs.
+    #[test]
+    fn clusters_cost_logarithmically_many_cells() {
+        let t = ten_pow(1000);
+        // 10^2000 (3x − 1)² − 2: roots (1 ± √2·10^−1000)/3
+        let sq = Poly::from_i64s(&[1, -6, 9]).scale(&(&t * &t));
+        let p = &(&sq - &Poly::from_i64s(&[2])) * &Poly::from_i64s(&[-3, 1]);
+        let (roots, cells) = isolate_positive_counted(&p);
+        assert_eq!(roots.len(), 3);
+        assert!(cells < 150, "{cells} cells");
+    }
+
+    /// Roots of size 10^±3000: exponent splits find their scale in few cells.
+    #[test]
+    fn scales_cost_logarithmically_many_cells() {
+        let t = ten_pow(3000);
+        let p = &Poly::new(vec![-IBig::ONE, t.clone()]) * &Poly::new(vec![-t, IBig::ONE]);
+        let (roots, cells) = isolate_positive_counted(&p);
+        assert_eq!(roots.len(), 2);
+        assert!(cells < 200, "{cells} cells");
+    }
+
+    /// Rational roots are found exactly while the leading coefficient has at most 64 bits,
+    /// and isolated (not searched for) beyond, to bound the cost of huge inputs.
+    #[test]
+    fn exact_rational_roots_up_to_64_bit_leading_coefficients() {
+        let d64 = (IBig::ONE << 64) - IBig::ONE; // 64 bits
+        let d65 = IBig::ONE << 64; // 65 bits
+        for (d, exact) in [(d64, true), (d65, false)] {
+            // (d·x − 3)(x² + 1)
+            let p = &Poly::new(vec![IBig::from(-3), d.clone()]) * &Poly::from_i64s(&[1, 0, 1]);
+            let r = isolate_real_roots(&p);
+            assert_eq!(r.len(), 1);
+            let v = RBig::from_parts_signed(IBig::from(3), d);
+            assert!(r[0].lo() <= &v && &v <= r[0].hi());
+            assert_eq!(r[0].as_exact().is_some(), exact, "{:?}", r[0]);
+        }
     }
 }
 
