@@ -277,6 +277,26 @@ mod tests {
         assert!(decided * 100 >= total * 95, "{decided} of {total} decided");
     }
 
+    /// A regular pencil is analysed (sphere and elliptic cylinder: roots 0, 1, 2, 4); a
+    /// singular pencil and a single quadric are not.
+    #[test]
+    fn analyze_pencil_only_for_regular_pencils() {
+        let q = |m: [i64; 4]| {
+            let mut d = [[0; 4]; 4];
+            for i in 0..4 {
+                d[i][i] = m[i];
+            }
+            Quadric::from_integers(d).expect("nonzero")
+        };
+        let (sphere, cylinder) = (q([1, 1, 1, -1]), q([2, 4, 0, -1]));
+        let analysis = analyze_pencil(&sphere, &cylinder).expect("a regular pencil");
+        assert_eq!(analysis.real_roots.len(), 4);
+        assert!(analysis.complex_roots.is_empty());
+        // two cones with the common vertex (0, 0, 0, 1): det(λA − B) ≡ 0
+        assert!(analyze_pencil(&q([1, 1, -1, 0]), &q([1, -1, 2, 0])).is_none());
+        assert!(analyze_pencil(&sphere, &q([2, 2, 2, -2])).is_none());
+    }
+
     #[test]
     fn every_table_class_key_is_distinct_and_complete() {
         assert_eq!(class_index().len(), 36);
