@@ -328,6 +328,17 @@ mod tests {
         }
     }
 
+    /// `f = (λ² + 2λ + 2)(λ² + 2λ + 5)`: no real root, `disc > 0`, `D < 0`, so only
+    /// `P = 8ac − 3b² = 40 > 0` says case 4 (from two 2×2 blocks with `det = −((λ+1)² + q²)`).
+    #[test]
+    fn no_real_roots_decided_by_p_alone() {
+        let a = diagonal([1, -1, 1, -1]);
+        let mut b = diagonal([-1, 1, -1, 1]);
+        (b[0][1], b[1][0], b[2][3], b[3][2]) = (-1, -1, -2, -2);
+        assert_eq!(exact_case(a, b), Some(4));
+        assert_eq!(classify_simple_roots(&a, &b), Some(4));
+    }
+
     /// The precondition is checked: an entry of 2²⁴ or more sends the pair to the exact path
     /// (unchecked, 2⁴⁰ overflows `i128`), one just below is decided.
     #[test]
