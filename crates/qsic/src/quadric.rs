@@ -191,12 +191,13 @@ impl TryFrom<[[i64; 4]; 4]> for Quadric {
 
 /// The entries of `m` as `i64` if all are below 2²⁴ in absolute value.
 fn small_entries(m: &SymMatrix4) -> Option<[[i64; 4]; 4]> {
-    const LIMIT: i64 = 1 << 24;
+    const LIMIT: u64 = 1 << 24;
     let mut out = [[0i64; 4]; 4];
     for (i, row) in m.entries().iter().enumerate() {
         for (j, v) in row.iter().enumerate() {
             let x = i64::try_from(v).ok()?;
-            if x.abs() >= LIMIT {
+            // (`abs` overflows on −2⁶³)
+            if x.unsigned_abs() >= LIMIT {
                 return None;
             }
             out[i][j] = x;
@@ -211,6 +212,18 @@ mod tests {
     use crate::io::parse_quadric;
     use dashu_int::ops::UnsignedAbs;
     use dashu_int::IBig;
+
+    /// An entry −2⁶³ (the `i64` whose `abs` overflows; found by fuzzing) is not small.
+    #[test]
+    fn most_negative_i64_entry_is_not_small() {
+        let mut m = [[0i64; 4]; 4];
+        (m[0][0], m[1][1]) = (i64::MIN, 1);
+        let q = Quadric::from_integers(m).expect("nonzero");
+        assert_eq!(q.small_integer_matrix(), None);
+        m[0][0] = -(1 << 24) + 1;
+        let q = Quadric::from_integers(m).expect("nonzero");
+        assert_eq!(q.small_integer_matrix(), Some(&m));
+    }
 
     /// Coefficients longer than one numeral may be (fuzzing found `391e9999`): round numbers,
     /// long fractions, and numbers of ~31 000 significant digits, read back exactly.
