@@ -498,4 +498,32 @@ mod tests {
         assert_eq!(m.entries()[0][1], IBig::from(1));
         assert_eq!(m.entries()[2][2], IBig::from(8));
     }
+
+    #[test]
+    fn rank_counts_nonzero_eigenvalues() {
+        let m = SymMatrix4::from_i64([[1, 0, 0, 0], [0, -2, 0, 0], [0, 0, 0, 0], [0, 0, 0, 3]]);
+        let m = m.expect("symmetric");
+        assert_eq!(m.rank(), 3);
+        assert_eq!(m.inertia().rank(), 3);
+        assert!(!m.is_zero());
+        assert!(SymMatrix4::from_i64([[0; 4]; 4])
+            .expect("symmetric")
+            .is_zero());
+    }
+
+    /// Integer entries with a common factor are divided by it; the zero matrix stays zero.
+    #[test]
+    fn primitive_divides_by_the_common_factor() {
+        let r = |v: i64| RBig::from(v);
+        let mut m: [[RBig; 4]; 4] = Default::default();
+        (m[0][0], m[1][1], m[2][3], m[3][2]) = (r(6), r(-4), r(10), r(10));
+        let p = SymMatrix4::from_rationals_primitive(&m);
+        let e = p.entries();
+        assert_eq!(
+            (&e[0][0], &e[1][1], &e[2][3]),
+            (&IBig::from(3), &IBig::from(-2), &IBig::from(5))
+        );
+        let zero: [[RBig; 4]; 4] = Default::default();
+        assert!(SymMatrix4::from_rationals_primitive(&zero).is_zero());
+    }
 }
