@@ -220,12 +220,30 @@ mod tests {
         }
     }
 
+    /// `u = 2⁻⁵³`, written out so that the tests do not follow a changed constant.
+    const UNIT_ROUNDOFF: f64 = 1.0 / 9007199254740992.0;
+
+    /// The documented bound `2(k + m + 2)·u·magnitude`, for several shapes of sums.
+    #[test]
+    fn sum_of_products_bound_is_the_documented_one() {
+        for (k, m) in [(1, 1), (2, 2), (3, 5), (7, 16), (5, 5)] {
+            for mag in [1.0, 3.5e10, 0.0] {
+                let documented = 2.0 * (k + m + 2) as f64 * UNIT_ROUNDOFF * mag;
+                assert_eq!(
+                    sum_of_products_bound(k, m, mag),
+                    documented,
+                    "({k}, {m}, {mag})"
+                );
+            }
+        }
+    }
+
     /// The bound is tight to a factor 2 either way: `x − k` at an exact float `x` (no rounding
     /// error at all) is decided at twice the documented bound, not at half of it.
     #[test]
     fn decides_just_outside_the_bound_and_not_inside() {
         let x = 1024.0;
-        let documented = 2.0 * (2.0 + 2.0 + 2.0) * U * (2.0 * x);
+        let documented = 2.0 * (2.0 + 2.0 + 2.0) * UNIT_ROUNDOFF * (2.0 * x);
         for (factor, decided) in [(2.0, true), (0.5, false)] {
             for sign in [1.0, -1.0] {
                 let value = sign * factor * documented;
@@ -297,7 +315,7 @@ mod tests {
         let coefficients = -6i64..=6;
         for k in [1074, 1072, 1066] {
             let scale = pow2(-k);
-            for (p, q) in [(3i64, 2i64), (5, 4), (3, 4), (-3, 2)] {
+            for (p, q) in [(3i64, 2i64), (5, 4), (3, 4), (-3, 2), (7, 2)] {
                 let x = p as f64 / q as f64;
                 for c0 in coefficients.clone() {
                     for c1 in coefficients.clone() {
