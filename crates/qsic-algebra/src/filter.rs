@@ -174,6 +174,26 @@ mod tests {
         }
     }
 
+    /// Cancellation inside Horner's rule at a large `x`: `c₂x + c₁` nearly cancels, so the
+    /// error is a fraction of `u·Σ|cᵢ||x|ⁱ` but far above `u·Σ|cᵢ|/|x|ⁱ` (found by search).
+    /// And subnormal coefficients at `x = 7.5`, where each underflow error is multiplied by
+    /// up to `x⁴`. The float sign is wrong in both.
+    #[test]
+    fn amplified_errors_are_not_certified() {
+        let x = 8015438731239349.0 / 17179869184.0;
+        let cancelling = [1547588.0016407827, -225155295083.0, 482586.0];
+        let subnormal = [34, 8, -4, 10, 21, -3].map(|v| v as f64 * TINY);
+        for (c, x) in [(&cancelling[..], x), (&subnormal[..], 7.5)] {
+            let float = c.iter().rev().fold(0.0, |acc, &ci| acc * x + ci);
+            assert_eq!(
+                float_sign(float),
+                -exact_sign_poly(c, x),
+                "{c:?} is not adversarial"
+            );
+            assert_eq!(certified_sign_poly(c, x), None, "{c:?}");
+        }
+    }
+
     /// Sums `a·b − c·d + g` whose float value has the wrong sign, the error about 7 % of the
     /// bound (found by search, like the polynomials above).
     const WRONG_FLOAT_SUMS: [(i64, i64, i64, i64, f64); 3] = [
