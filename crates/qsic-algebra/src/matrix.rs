@@ -511,6 +511,29 @@ mod tests {
             .is_zero());
     }
 
+    /// Zero diagonals force the LDLᵀ route through 2×2 pivots: it must still agree with the
+    /// principal-minor route on every such matrix with off-diagonal entries in {−1, 0, 1, 2}
+    /// (and a diagonal that is zero or `(0, 0, 1, −2)`).
+    #[test]
+    fn ldl_with_two_by_two_pivots_agrees() {
+        let values = [-1i64, 0, 1, 2];
+        let pairs = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+        for diagonal in [[0, 0, 0, 0], [0, 0, 1, -2]] {
+            for code in 0..4usize.pow(6) {
+                let mut m = [[0i64; 4]; 4];
+                for (k, &(i, j)) in pairs.iter().enumerate() {
+                    let v = values[code / 4usize.pow(k as u32) % 4];
+                    (m[i][j], m[j][i]) = (v, v);
+                }
+                for i in 0..4 {
+                    m[i][i] = diagonal[i];
+                }
+                let s = SymMatrix4::from_i64(m).expect("symmetric");
+                assert_eq!(s.inertia_ldl(), s.inertia(), "{m:?}");
+            }
+        }
+    }
+
     /// Integer entries with a common factor are divided by it; the zero matrix stays zero.
     #[test]
     fn primitive_divides_by_the_common_factor() {
