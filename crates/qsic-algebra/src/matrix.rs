@@ -534,6 +534,60 @@ mod tests {
         }
     }
 
+    /// A diagonal pencil `λI − diag(1, 2, 3, 4)`: its nonzero `k×k` minors are the products
+    /// of `k` distinct factors `λ − i` (the principal ones); a singular pencil (a common
+    /// kernel vector) has no nonzero 4×4 minor.
+    #[test]
+    fn minors_of_a_diagonal_pencil() {
+        let diag = |d: [i64; 4]| {
+            let mut m = [[0i64; 4]; 4];
+            for i in 0..4 {
+                m[i][i] = d[i];
+            }
+            SymMatrix4::from_i64(m).expect("symmetric")
+        };
+        let pencil = MatrixPencil::new(diag([1, 1, 1, 1]), diag([1, 2, 3, 4]));
+        let sorted = |mut v: Vec<String>| {
+            v.sort();
+            v
+        };
+        let factors: Vec<Poly> = (1..=4).map(|i| Poly::from_i64s(&[-i, 1])).collect();
+        for (k, subsets) in [
+            (1, vec![vec![0], vec![1], vec![2], vec![3]]),
+            (
+                2,
+                vec![
+                    vec![0, 1],
+                    vec![0, 2],
+                    vec![0, 3],
+                    vec![1, 2],
+                    vec![1, 3],
+                    vec![2, 3],
+                ],
+            ),
+            (
+                3,
+                vec![vec![0, 1, 2], vec![0, 1, 3], vec![0, 2, 3], vec![1, 2, 3]],
+            ),
+            (4, vec![vec![0, 1, 2, 3]]),
+        ] {
+            let want: Vec<String> = subsets
+                .iter()
+                .map(|s| {
+                    s.iter()
+                        .fold(Poly::from_i64s(&[1]), |acc, &i| &acc * &factors[i])
+                })
+                .map(|p| format!("{p:?}"))
+                .collect();
+            let got = pencil.minors(k).iter().map(|p| format!("{p:?}")).collect();
+            assert_eq!(sorted(got), sorted(want), "k = {k}");
+        }
+        assert!(pencil.minors(0).is_empty() && pencil.minors(5).is_empty());
+        let singular = MatrixPencil::new(diag([1, 1, 1, 0]), diag([1, 2, 3, 0]));
+        assert!(singular.minors(4).is_empty());
+        assert_eq!(singular.minors(3).len(), 1);
+    }
+
     /// Integer entries with a common factor are divided by it; the zero matrix stays zero.
     #[test]
     fn primitive_divides_by_the_common_factor() {
