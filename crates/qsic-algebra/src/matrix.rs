@@ -511,4 +511,109 @@ mod tests {
         assert_eq!(m.entries()[0][1], IBig::from(1));
         assert_eq!(m.entries()[2][2], IBig::from(8));
     }
+
+    #[test]
+    fn rank_counts_nonzero_eigenvalues() {
+        let m = SymMatrix4::from_i64([[1, 0, 0, 0], [0, -2, 0, 0], [0, 0, 0, 0], [0, 0, 0, 3]]);
+        let m = m.expect("symmetric");
+        assert_eq!(m.rank(), 3);
+        assert_eq!(m.inertia().rank(), 3);
+        assert!(!m.is_zero());
+        assert!(SymMatrix4::from_i64([[0; 4]; 4])
+            .expect("symmetric")
+            .is_zero());
+    }
+
+    /// Zero diagonals force the LDLᵀ route through 2×2 pivots: it must still agree with the
+    /// principal-minor route on every such matrix with off-diagonal entries in {−1, 0, 1, 2}
+    /// (and a diagonal that is zero or `(0, 0, 1, −2)`).
+    #[test]
+    fn ldl_with_two_by_two_pivots_agrees() {
+        let values = [-1i64, 0, 1, 2];
+        let pairs = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+        for diagonal in [[0, 0, 0, 0], [0, 0, 1, -2]] {
+            for code in 0..4usize.pow(6) {
+                let mut m = [[0i64; 4]; 4];
+                for (k, &(i, j)) in pairs.iter().enumerate() {
+                    let v = values[code / 4usize.pow(k as u32) % 4];
+                    (m[i][j], m[j][i]) = (v, v);
+                }
+                for i in 0..4 {
+                    m[i][i] = diagonal[i];
+                }
+                let s = SymMatrix4::from_i64(m).expect("symmetric");
+                assert_eq!(s.inertia_ldl(), s.inertia(), "{m:?}");
+            }
+        }
+    }
+
+    /// A diagonal pencil `λI − diag(1, 2, 3, 4)`: its nonzero `k×k` minors are the products
+    /// of `k` distinct factors `λ − i` (the principal ones); a singular pencil (a common
+    /// kernel vector) has no nonzero 4×4 minor.
+    #[test]
+    fn minors_of_a_diagonal_pencil() {
+        let diag = |d: [i64; 4]| {
+            let mut m = [[0i64; 4]; 4];
+            for i in 0..4 {
+                m[i][i] = d[i];
+            }
+            SymMatrix4::from_i64(m).expect("symmetric")
+        };
+        let pencil = MatrixPencil::new(diag([1, 1, 1, 1]), diag([1, 2, 3, 4]));
+        let sorted = |mut v: Vec<String>| {
+            v.sort();
+            v
+        };
+        let factors: Vec<Poly> = (1..=4).map(|i| Poly::from_i64s(&[-i, 1])).collect();
+        for (k, subsets) in [
+            (1, vec![vec![0], vec![1], vec![2], vec![3]]),
+            (
+                2,
+                vec![
+                    vec![0, 1],
+                    vec![0, 2],
+                    vec![0, 3],
+                    vec![1, 2],
+                    vec![1, 3],
+                    vec![2, 3],
+                ],
+            ),
+            (
+                3,
+                vec![vec![0, 1, 2], vec![0, 1, 3], vec![0, 2, 3], vec![1, 2, 3]],
+            ),
+            (4, vec![vec![0, 1, 2, 3]]),
+        ] {
+            let want: Vec<String> = subsets
+                .iter()
+                .map(|s| {
+                    s.iter()
+                        .fold(Poly::from_i64s(&[1]), |acc, &i| &acc * &factors[i])
+                })
+                .map(|p| format!("{p:?}"))
+                .collect();
+            let got = pencil.minors(k).iter().map(|p| format!("{p:?}")).collect();
+            assert_eq!(sorted(got), sorted(want), "k = {k}");
+        }
+        assert!(pencil.minors(0).is_empty() && pencil.minors(5).is_empty());
+        let singular = MatrixPencil::new(diag([1, 1, 1, 0]), diag([1, 2, 3, 0]));
+        assert!(singular.minors(4).is_empty());
+        assert_eq!(singular.minors(3).len(), 1);
+    }
+
+    /// Integer entries with a common factor are divided by it; the zero matrix stays zero.
+    #[test]
+    fn primitive_divides_by_the_common_factor() {
+        let r = |v: i64| RBig::from(v);
+        let mut m: [[RBig; 4]; 4] = Default::default();
+        (m[0][0], m[1][1], m[2][3], m[3][2]) = (r(6), r(-4), r(10), r(10));
+        let p = SymMatrix4::from_rationals_primitive(&m);
+        let e = p.entries();
+        assert_eq!(
+            (&e[0][0], &e[1][1], &e[2][3]),
+            (&IBig::from(3), &IBig::from(-2), &IBig::from(5))
+        );
+        let zero: [[RBig; 4]; 4] = Default::default();
+        assert!(SymMatrix4::from_rationals_primitive(&zero).is_zero());
+    }
 }

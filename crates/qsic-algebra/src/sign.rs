@@ -81,3 +81,35 @@ impl Mul for Sign {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use Sign::{Negative as N, Positive as P, Zero as Z};
+
+    /// The product of signs is the sign of the product, on all nine pairs.
+    #[test]
+    fn sign_of_a_product() {
+        for (a, b) in [
+            (-2i128, -3i128),
+            (-2, 0),
+            (-2, 3),
+            (0, -3),
+            (0, 0),
+            (0, 3),
+            (2, -3),
+            (2, 0),
+            (2, 3),
+        ] {
+            assert_eq!(
+                Sign::of_i128(a) * Sign::of_i128(b),
+                Sign::of_i128(a * b),
+                "{a} · {b}"
+            );
+            assert_eq!(-Sign::of_i128(a), Sign::of_i128(-a));
+        }
+        assert_eq!(count_variations([P, Z, N, N, Z, P]), 2);
+        assert_eq!(Sign::of(&IBig::from(-5)), N);
+        assert_eq!(Sign::of(&IBig::ZERO), Z);
+    }
+}

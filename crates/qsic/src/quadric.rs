@@ -8,6 +8,7 @@
 //! use, or kept when the caller gave it.
 
 use crate::error::Error;
+use crate::limits::{MAX_DECIMAL_EXPONENT, MAX_NUMBER_DIGITS};
 use dashu_int::{IBig, UBig};
 use dashu_ratio::RBig;
 use qsic_algebra::matrix::SymMatrix4;
@@ -337,7 +338,10 @@ impl Quadric {
         self.machine.as_ref().filter(|_| self.small)
     }
 
-    /// The quadratic form as a polynomial string in x, y, z, w, e.g. `x^2 + 2*x*y - w^2`.
+    /// The quadratic form as a polynomial string in x, y, z, w, e.g. `x^2 + 2*x*y - w^2`,
+    /// which [`crate::io::parse_quadric`] reads back as the same quadric. A coefficient too
+    /// long for one numeral ([`crate::limits::MAX_NUMBER_DIGITS`]) is written as a
+    /// product or quotient of numerals, such as `391e9999*w^2`.
     pub fn to_polynomial_string(&self) -> String {
         const V: [&str; 4] = ["x", "y", "z", "w"];
         let m = self.matrix();
@@ -367,7 +371,7 @@ impl Quadric {
                     s.push_str(if neg { " - " } else { " + " });
                 }
                 if !abs.is_one() {
-                    s.push_str(&abs.to_string());
+                    push_number(&mut s, &abs);
                     s.push('*');
                 }
                 s.push_str(&mono);
@@ -693,6 +697,52 @@ fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
     a
 }
 
+/// Writes the positive rational `v` as the polynomial reader reads it: `p/q`, or, when that
+/// is longer than one numeral may be, its integers with their trailing zeros as exponents
+/// (`391e9999`), split into numerals that respect the digit and exponent limits.
+fn push_number(s: &mut String, v: &RBig) {
+    let (p, q) = (v.numerator().to_string(), v.denominator().to_string());
+    if p.len() + q.len() <= MAX_NUMBER_DIGITS {
+        s.push_str(&v.to_string());
+        return;
+    }
+    s.push('(');
+    push_integer(s, &p);
+    s.push(')');
+    if q != "1" {
+        s.push_str("/(");
+        push_integer(s, &q);
+        s.push(')');
+    }
+}
+
+/// Writes the decimal integer `digits` (no sign, no leading zeros) as a constant expression:
+/// its trailing zeros as powers `1e…`, the rest in Horner form over chunks of at most
+/// [`MAX_NUMBER_DIGITS`] − 1 digits, `(c₁*1e9999+c₀)`.
+fn push_integer(s: &mut String, digits: &str) {
+    let significant = digits.trim_end_matches('0');
+    let mut zeros = digits.len() - significant.len();
+    let chunk = MAX_NUMBER_DIGITS - 1;
+    // the leading chunk is the short one, so that the others all have `chunk` digits
+    let first = match significant.len() % chunk {
+        0 => chunk.min(significant.len()),
+        r => r,
+    };
+    s.push_str(&"(".repeat((significant.len() - first) / chunk));
+    s.push_str(&significant[..first]);
+    for start in (first..significant.len()).step_by(chunk) {
+        s.push_str(&format!(
+            "*1e{chunk}+{})",
+            &significant[start..start + chunk]
+        ));
+    }
+    while zeros > 0 {
+        let e = zeros.min(MAX_DECIMAL_EXPONENT);
+        s.push_str(&format!("*1e{e}"));
+        zeros -= e;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -875,6 +925,55 @@ mod tests {
             let s = symmetric(pick).map(|r| r.map(|(num, den)| SmallRational { num, den }));
             let q = Quadric::from_small_rationals(&s).expect("valid");
             assert_same_as_big_route(&q, m);
+        }
+    }
+}
+
+#[cfg(test)]
+mod round_trip_tests {
+    use super::*;
+    use crate::io::parse_quadric;
+    use dashu_int::ops::UnsignedAbs;
+    use dashu_int::IBig;
+
+    /// An entry −2⁶³ (the `i64` whose `abs` overflows; found by fuzzing) is not small.
+    #[test]
+    fn most_negative_i64_entry_is_not_small() {
+        let mut m = [[0i64; 4]; 4];
+        (m[0][0], m[1][1]) = (i64::MIN, 1);
+        let q = Quadric::from_integers(m).expect("nonzero");
+        assert_eq!(q.small_integer_matrix(), None);
+        m[0][0] = -(1 << 24) + 1;
+        let q = Quadric::from_integers(m).expect("nonzero");
+        assert_eq!(q.small_integer_matrix(), Some(&m));
+    }
+
+    /// Coefficients longer than one numeral may be (fuzzing found `391e9999`): round numbers,
+    /// long fractions, and numbers of ~31 000 significant digits, read back exactly.
+    #[test]
+    fn long_coefficients_round_trip() {
+        let three = IBig::from(3).pow(65536);
+        let ten = |e: usize| IBig::from(10).pow(e);
+        let long = [
+            RBig::from(IBig::from(391) * ten(9999)),
+            RBig::from_parts(IBig::from(3), (ten(9999) * IBig::from(7)).unsigned_abs()),
+            RBig::from(three.clone()),
+            RBig::from_parts(IBig::from(-7), three.clone().unsigned_abs()),
+            RBig::from(ten(30001)),
+            RBig::from_parts(
+                three.clone() * ten(12345),
+                (three + IBig::ONE).unsigned_abs(),
+            ),
+        ];
+        for v in long {
+            let mut m: [[RBig; 4]; 4] = Default::default();
+            m[0][0] = v.clone();
+            m[1][2] = RBig::ONE;
+            m[2][1] = RBig::ONE;
+            let q = Quadric::from_matrix(m).expect("nonzero");
+            let text = q.to_polynomial_string();
+            let again = parse_quadric(&text).map_err(|e| e.to_string());
+            assert_eq!(again.as_ref(), Ok(&q), "{}…", &text[..80.min(text.len())]);
         }
     }
 }

@@ -84,12 +84,15 @@ impl Classification {
 /// assert_eq!(c.real_type(), Some("one_conic"));
 /// ```
 pub fn classify(a: &Quadric, b: &Quadric) -> Classification {
-    if let (Some(sa), Some(sb)) = (a.small_integer_matrix(), b.small_integer_matrix()) {
-        if let Some(case) = fast::classify_simple_roots(sa, sb) {
-            return from_row(&CASES[case as usize - 1], 0);
-        }
-    }
-    classify_exact(a, b)
+    classify_fast(a, b).unwrap_or_else(|| classify_exact(a, b))
+}
+
+/// The fast path's classification (module `fast`: four simple roots, small entries), or
+/// `None` when it does not decide.
+fn classify_fast(a: &Quadric, b: &Quadric) -> Option<Classification> {
+    let (sa, sb) = (a.small_integer_matrix()?, b.small_integer_matrix()?);
+    let case = fast::classify_simple_roots(sa, sb)?;
+    Some(from_row(&CASES[usize::from(case) - 1], 0))
 }
 
 /// [`classify()`] without the machine-arithmetic fast path: every decision by exact
@@ -237,6 +240,62 @@ fn from_row(row: &CaseRow, i: usize) -> Classification {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `classify` takes the fast path for almost every random pair, and its answer is the
+    /// exact path's in full.
+    #[test]
+    fn the_fast_path_decides_most_random_pairs() {
+        let mut state = 7u64;
+        let mut coefficient = || {
+            // a linear congruential generator is plenty for coefficients in [−10, 10]
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((state >> 33) % 21) as i64 - 10
+        };
+        let mut random_quadric = || loop {
+            let mut m = [[0i64; 4]; 4];
+            for i in 0..4 {
+                for j in i..4 {
+                    let c = coefficient();
+                    m[i][j] = if i == j { 2 * c } else { c };
+                    m[j][i] = m[i][j];
+                }
+            }
+            if let Ok(q) = Quadric::from_integers(m) {
+                return q;
+            }
+        };
+        let (total, mut decided) = (300, 0);
+        for _ in 0..total {
+            let (a, b) = (random_quadric(), random_quadric());
+            if let Some(c) = classify_fast(&a, &b) {
+                decided += 1;
+                assert_eq!(c, classify_exact(&a, &b), "{a:?}, {b:?}");
+            }
+        }
+        assert!(decided * 100 >= total * 95, "{decided} of {total} decided");
+    }
+
+    /// A regular pencil is analysed (sphere and elliptic cylinder: roots 0, 1, 2, 4); a
+    /// singular pencil and a single quadric are not.
+    #[test]
+    fn analyze_pencil_only_for_regular_pencils() {
+        let q = |m: [i64; 4]| {
+            let mut d = [[0; 4]; 4];
+            for i in 0..4 {
+                d[i][i] = m[i];
+            }
+            Quadric::from_integers(d).expect("nonzero")
+        };
+        let (sphere, cylinder) = (q([1, 1, 1, -1]), q([2, 4, 0, -1]));
+        let analysis = analyze_pencil(&sphere, &cylinder).expect("a regular pencil");
+        assert_eq!(analysis.real_roots.len(), 4);
+        assert!(analysis.complex_roots.is_empty());
+        // two cones with the common vertex (0, 0, 0, 1): det(λA − B) ≡ 0
+        assert!(analyze_pencil(&q([1, 1, -1, 0]), &q([1, -1, 2, 0])).is_none());
+        assert!(analyze_pencil(&sphere, &q([2, 2, 2, -2])).is_none());
+    }
 
     #[test]
     fn every_table_class_key_is_distinct_and_complete() {

@@ -270,3 +270,17 @@ pub struct Description {
     /// One line for humans.
     pub summary: &'static str,
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The singular point keys of the JSON schema (README, `singular_points[]`).
+    #[test]
+    fn singular_point_keys_are_the_schema_ones() {
+        use SingularPointKind as S;
+        let kinds = [S::Acnode, S::Crunode, S::Cusp, S::Tangency, S::Multiple];
+        let keys = kinds.map(S::key);
+        assert_eq!(keys, ["acnode", "crunode", "cusp", "tangency", "multiple"]);
+    }
+}

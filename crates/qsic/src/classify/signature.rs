@@ -115,6 +115,31 @@ mod tests {
         assert_eq!(canonical(&a), canonical(&b));
     }
 
+    /// The canonical form is the least equivalent sequence, as documented: no rotation,
+    /// reversal or complement of it is smaller.
+    #[test]
+    fn canonical_is_the_least_equivalent_sequence() {
+        let s = parse("(2,((2,1)),2,(2,1),3,(2,1),2)").expect("valid");
+        let c = canonical(&s);
+        let mut cur = s.clone();
+        for _ in 0..s.len() / 2 {
+            for r in [false, true] {
+                for m in [false, true] {
+                    let mut t = cur.clone();
+                    if r {
+                        t.reverse();
+                    }
+                    if m {
+                        t = t.into_iter().map(SigItem::swapped).collect();
+                    }
+                    assert!(c <= t, "{c:?} > {t:?}");
+                }
+            }
+            cur = rotate(&cur);
+        }
+        assert!(c < s);
+    }
+
     #[test]
     fn case_16_has_two_classes_and_case_13_differs() {
         let a = parse("(0,((0,2)),2,(2,1),3,(3,0),4)").expect("valid");

@@ -88,3 +88,48 @@ pub fn classify_single(q: &Quadric) -> Classification {
         }),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every inertia up to sign, from diagonal matrices, and its negative (taxonomy.md).
+    #[test]
+    fn types_by_inertia_up_to_sign() {
+        let table: [([i64; 4], &str, &str, &[&str]); 8] = [
+            ([1, 1, 1, 1], "smooth_quadric", "empty", &[]),
+            ([1, 1, 1, -1], "smooth_quadric", "inertia_3_1", &["quadric"]),
+            (
+                [1, 1, -1, -1],
+                "smooth_quadric",
+                "inertia_2_2",
+                &["quadric"],
+            ),
+            ([1, 1, 1, 0], "cone", "point", &["point"]),
+            ([1, 1, -1, 0], "cone", "real_cone", &["quadric"]),
+            ([1, 1, 0, 0], "pair_of_planes", "line", &["line"]),
+            (
+                [1, -1, 0, 0],
+                "pair_of_planes",
+                "pair_of_planes",
+                &["plane"],
+            ),
+            ([1, 0, 0, 0], "double_plane", "double_plane", &["plane"]),
+        ];
+        for (d, complex, real, kinds) in table {
+            for sign in [1, -1] {
+                let mut m = [[0i64; 4]; 4];
+                for i in 0..4 {
+                    m[i][i] = sign * d[i];
+                }
+                let c = classify_single(&Quadric::from_integers(m).expect("nonzero"));
+                assert_eq!(c.pencil.key(), "single");
+                let components = &c.description.as_ref().expect("described").components;
+                let got: Vec<&str> = components.iter().map(|k| k.kind.key()).collect();
+                assert_eq!(got, kinds, "{d:?}");
+                let got = (c.complex_type(), c.real_type());
+                assert_eq!(got, (Some(complex), Some(real)), "{d:?} × {sign}");
+            }
+        }
+    }
+}
