@@ -26,23 +26,7 @@ impl SplitMix {
 /// A random quadric whose 10 polynomial coefficients are integers in [−10, 10]
 /// (matrix: 2× the coefficient on the diagonal, the coefficient off it).
 pub fn random_quadric(rng: &mut SplitMix) -> Quadric {
-    loop {
-        let mut m = [[0i64; 4]; 4];
-        for i in 0..4 {
-            for j in i..4 {
-                let c = rng.range(-10, 10);
-                if i == j {
-                    m[i][i] = 2 * c;
-                } else {
-                    m[i][j] = c;
-                    m[j][i] = c;
-                }
-            }
-        }
-        if let Ok(q) = Quadric::from_integers(m) {
-            return q;
-        }
-    }
+    Quadric::from_integers(random_integer_matrix(rng)).expect("a nonzero symmetric matrix")
 }
 
 /// The pairs of `cases.jsonl` whose id matches `filter`, with their labelled case.
