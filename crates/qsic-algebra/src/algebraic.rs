@@ -2,7 +2,7 @@
 //! with rational ends, refined on demand. Signs and comparisons are exact.
 
 use crate::poly::Poly;
-use crate::roots::{isolate_real_roots, refine_step, simplest_between, RootInterval};
+use crate::roots::{isolate_squarefree_real_roots, refine_step, simplest_between, RootInterval};
 use crate::sign::Sign;
 use dashu_ratio::RBig;
 use std::cmp::Ordering;
@@ -38,7 +38,7 @@ impl AlgebraicReal {
             let v = RBig::from_parts_signed(-sf.coeff(0), sf.coeff(1));
             return vec![AlgebraicReal::from_rational(v)];
         }
-        isolate_real_roots(&sf)
+        isolate_squarefree_real_roots(&sf)
             .into_iter()
             .map(|iv| match iv {
                 RootInterval::Exact(v) => AlgebraicReal::from_rational(v),
@@ -54,7 +54,7 @@ impl AlgebraicReal {
     /// The root of the square-free `poly` in `interval`, if the interval isolates one: an
     /// exact rational that is a root, or an open interval at whose ends `poly` has opposite
     /// nonzero signs (so exactly one root when `interval` comes from isolating a multiple
-    /// of `poly`, as in [`isolate_real_roots`]).
+    /// of `poly`, as in [`isolate_real_roots`](crate::roots::isolate_real_roots)).
     pub fn from_isolating_interval(poly: &Poly, interval: &RootInterval) -> Option<AlgebraicReal> {
         match interval {
             RootInterval::Exact(v) => poly

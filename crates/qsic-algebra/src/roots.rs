@@ -9,7 +9,7 @@
 //!
 //! # Method and cost
 //! Positive and negative roots are isolated apart (root 0 is pulled out first), each
-//! inside `(2^−k₁, 2^k₂)` from Cauchy's bounds on the roots of `p` and of its reverse. A
+//! inside `(2^−k₁, 2^k₂)` from Fujiwara's bounds on the roots of `p` and of its reverse. A
 //! work list (no recursion) holds open dyadic intervals; for each, the Descartes bound `v`
 //! of `p` on it is computed from `p` afresh, so nothing is kept alive between steps:
 //! - `v = 0`: no root; `v = 1`: one root, isolated.
@@ -116,7 +116,18 @@ pub fn isolate_real_roots(p: &Poly) -> Vec<RootInterval> {
     if p.degree().unwrap_or(0) == 0 {
         return Vec::new();
     }
-    let mut sf = p.squarefree_part();
+    isolate_squarefree_real_roots(&p.squarefree_part())
+}
+
+/// [`isolate_real_roots`] for a polynomial known to be square-free and primitive (such as
+/// a product of the factors of a square-free decomposition), which skips recomputing its
+/// square-free part.
+pub fn isolate_squarefree_real_roots(sf: &Poly) -> Vec<RootInterval> {
+    debug_assert!(sf.is_squarefree(), "isolate_squarefree_real_roots: {sf}");
+    if sf.degree().unwrap_or(0) == 0 {
+        return Vec::new();
+    }
+    let mut sf = sf.clone();
     let mut out = Vec::new();
     if sf.coeff(0).is_zero() {
         out.push(RootInterval::Exact(RBig::ZERO));
@@ -352,12 +363,12 @@ fn move_ends_off_roots(p0: &Poly, q: &Poly, iv: RootInterval) -> RootInterval {
 
 /// Bits of `|x|`.
 fn bit_len(x: &IBig) -> usize {
-    x.clone().unsigned_abs().bit_len()
+    x.bit_len()
 }
 
 /// The number of factors two of `x > 0`.
 fn trailing_zeros(x: &IBig) -> usize {
-    x.clone().unsigned_abs().trailing_zeros().unwrap_or(0)
+    x.trailing_zeros().unwrap_or(0)
 }
 
 /// `x·2^s` as a rational.
@@ -524,7 +535,7 @@ fn qir_step(p: &Poly, b: Bracket) -> Result<Bracket, RBig> {
         });
     }
     let (lo, hi, den) = (&b.lo << 1, &b.hi << 1, &b.den << 1);
-    let mid = (&b.lo + &b.hi).clone();
+    let mid = &b.lo + &b.hi;
     let n_exp = (m / 2).max(2);
     match Sign::of(&p.eval_homogeneous(&mid, &den)) {
         Sign::Zero => Err(RBig::from_parts_signed(mid, den)),

@@ -11,7 +11,7 @@
 use crate::quadric::Quadric;
 use qsic_algebra::matrix::{Inertia, MatrixPencil, SymMatrix4};
 use qsic_algebra::poly::binary::BinaryForm;
-use qsic_algebra::roots::{isolate_real_roots, rational_between};
+use qsic_algebra::roots::{isolate_squarefree_real_roots, rational_between};
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
 
 /// A point `(λ : μ)` of the pencil: `(α : 1)` is the member `αA − B`, `(1 : 0)` the member `A`.
@@ -194,7 +194,7 @@ impl PencilAnalysis {
         let squarefree = pieces
             .iter()
             .fold(Poly::constant(IBig::ONE), |acc, (p, _, _)| &acc * p);
-        let isolated = isolate_real_roots(&squarefree);
+        let isolated = isolate_squarefree_real_roots(&squarefree);
         let mut real_count = vec![0usize; pieces.len()];
         let mut real_roots: Vec<PencilRoot> = Vec::with_capacity(isolated.len() + 1);
         for iv in &isolated {
