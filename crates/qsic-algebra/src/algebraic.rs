@@ -283,6 +283,26 @@ impl fmt::Display for AlgebraicReal {
 mod tests {
     use super::*;
 
+    /// An interval isolating a root of a multiple of `poly` gives that root when `poly`
+    /// changes sign on it (or vanishes at an exact end), and nothing otherwise.
+    #[test]
+    fn roots_from_isolating_intervals() {
+        let x2m2 = Poly::from_i64s(&[-2, 0, 1]); // roots ±√2
+        let other = Poly::from_i64s(&[-3, 1]); // root 3
+        let sqrt2 = RootInterval::Open(RBig::ONE, RBig::from(2));
+        let r = AlgebraicReal::from_isolating_interval(&x2m2, &sqrt2).expect("√2 in (1, 2)");
+        assert_eq!(r.poly(), &x2m2);
+        assert_eq!(r.interval(), &sqrt2);
+        assert!(AlgebraicReal::from_isolating_interval(&other, &sqrt2).is_none());
+        let three = RootInterval::Exact(RBig::from(3));
+        assert_eq!(
+            AlgebraicReal::from_isolating_interval(&other, &three)
+                .and_then(|r| r.as_rational().cloned()),
+            Some(RBig::from(3))
+        );
+        assert!(AlgebraicReal::from_isolating_interval(&x2m2, &three).is_none());
+    }
+
     #[test]
     fn ordering_of_close_irrationals() {
         let s2 = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 1]));
