@@ -68,14 +68,10 @@ fn reduce(p: &Poly) -> Vec<u64> {
 /// `true` only if `a` and `b` are certainly coprime over ℚ: the prime divides neither
 /// leading coefficient and the gcd of the reductions is a constant. (Reduction can only
 /// raise the degree of the gcd when the leading coefficients survive it.) `false` means
-/// "not known"; both must be nonzero and non-constant for a `true`.
+/// "not known" (always so when one of them is zero).
 pub fn coprime_modular(a: &Poly, b: &Poly) -> bool {
     let (mut f, mut g) = (reduce(a), reduce(b));
-    if a.degree().unwrap_or(0) == 0
-        || b.degree().unwrap_or(0) == 0
-        || f.len() != a.coeffs().len()
-        || g.len() != b.coeffs().len()
-    {
+    if f.len() != a.coeffs().len() || g.len() != b.coeffs().len() {
         return false;
     }
     // Euclid over 𝔽_p
@@ -177,6 +173,10 @@ mod modular_tests {
         let b = &Poly::from_i64s(&[-1, 1]) * &Poly::new(vec![big, IBig::ONE]);
         assert!(!coprime_modular(&a, &b));
         assert_eq!(a.gcd(&b), Poly::from_i64s(&[-1, 1]));
+        // a nonzero constant is coprime with anything, zero with nothing but constants
+        let five = Poly::constant(IBig::from(5));
+        assert!(coprime_modular(&five, &b) && coprime_modular(&b, &five));
+        assert!(!coprime_modular(&Poly::zero(), &b) && !coprime_modular(&b, &Poly::zero()));
     }
 }
 
