@@ -8,6 +8,7 @@
 //! | [`roots`] | real root isolation with rational (dyadic) isolating intervals |
 //! | [`algebraic`] | real algebraic numbers and the exact sign of a polynomial at them |
 //! | [`matrix`] | small symmetric integer matrices, exact inertia, matrix pencils `λA − μB` |
+//! | [`factor`] | factorization of integers with a 128-bit cofactor bound, primality, Jacobi symbols, square roots modulo primes |
 //!
 //! Integers are [`dashu_int::IBig`], rationals [`dashu_ratio::RBig`]: pure Rust,
 //! small values inline on the stack.
@@ -16,6 +17,7 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod algebraic;
+pub mod factor;
 pub mod filter;
 pub mod matrix;
 pub mod poly;
