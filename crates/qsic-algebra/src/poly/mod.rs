@@ -637,4 +637,108 @@ mod tests {
         assert_eq!(p.content(), IBig::from(6));
         assert_eq!(p.primitive_part(), Poly::from_i64s(&[-1, 2, 3]));
     }
+
+    #[test]
+    fn rational_to_primitive_integer_and_back() {
+        let q = Poly::from_i64s(&[3, -6, 9])
+            .to_rational()
+            .scale(&RBig::from_parts_signed(IBig::from(-5), IBig::from(4)));
+        let (p, c) = Poly::from_rational(&q);
+        assert_eq!(p, Poly::from_i64s(&[-1, 2, -3]));
+        assert_eq!(q.scale(&c), p.to_rational());
+        assert_eq!(c, RBig::from_parts_signed(IBig::from(4), IBig::from(15)));
+        assert_eq!(
+            Poly::from_rational(&Poly::zero()),
+            (Poly::zero(), RBig::ONE)
+        );
+    }
+
+    #[test]
+    fn display_parenthesises_compound_coefficients() {
+        let t = Poly::from_i64s(&[1, -1]); // 1 − t, written "-x + 1"
+        let p: Poly<Poly> = Poly::new(vec![Poly::from_i64s(&[-2]), t, Poly::from_i64s(&[1])]);
+        assert_eq!(p.to_string(), "x^2 + (-x + 1)*x - 2");
+        assert_eq!(Poly::from_i64s(&[0, -1]).to_string(), "-x");
+        assert_eq!(format!("{:?}", Poly::<IBig>::zero()), "Poly(0)");
+    }
+
+    /// Random polynomials over ℤ[t] (coefficients small polynomials in t), ℚ(√5) and ℤ.
+    mod ring_properties {
+        use super::*;
+        use crate::field::Quadratic;
+        use crate::ring::Ring;
+        use proptest::prelude::*;
+
+        fn int_poly() -> impl Strategy<Value = Poly> {
+            prop::collection::vec(-9i64..9, 0..5).prop_map(|c| Poly::from_i64s(&c))
+        }
+
+        fn poly_in_t() -> impl Strategy<Value = Poly<Poly>> {
+            prop::collection::vec(int_poly(), 0..4).prop_map(Poly::new)
+        }
+
+        fn quadratic_poly() -> impl Strategy<Value = Poly<Quadratic>> {
+            prop::collection::vec((-9i64..9, -9i64..9), 0..4).prop_map(|c| {
+                Poly::new(
+                    c.into_iter()
+                        .map(|(a, b)| {
+                            Quadratic::new(RBig::from(a), RBig::from(b), IBig::from(5)).unwrap()
+                        })
+                        .collect(),
+                )
+            })
+        }
+
+        /// Ring axioms, evaluation as a homomorphism, Taylor shift as composition with
+        /// `x + k`, exact division undoing a product, pseudo-remainder identity.
+        fn check<C: Ring>(
+            a: &Poly<C>,
+            b: &Poly<C>,
+            c: &Poly<C>,
+            x: &C,
+        ) -> Result<(), TestCaseError> {
+            prop_assert_eq!(&(a + b) + c, a + &(b + c));
+            prop_assert_eq!(&(a * b) * c, a * &(b * c));
+            prop_assert_eq!(a * &(b + c), &(a * b) + &(a * c));
+            prop_assert_eq!(a * b, b * a);
+            prop_assert!((a - a).is_zero());
+            prop_assert_eq!((a * b).eval(x), a.eval(x).mul(&b.eval(x)));
+            prop_assert_eq!((a + b).eval(x), a.eval(x).add(&b.eval(x)));
+            let shift = Poly::new(vec![x.clone(), C::one()]);
+            prop_assert_eq!(a.shift(x), a.compose(&shift));
+            prop_assert_eq!(a.derivative().eval(x), {
+                // d/dx (a) at x from the Taylor shift: coefficient 1 of a(x + X)
+                a.shift(x).coeff(1)
+            });
+            if !b.is_zero() {
+                prop_assert_eq!((a * b).div_exact(b), Some(a.clone()));
+                let r = a.pseudo_rem(b);
+                prop_assert!(r.degree() < b.degree() || r.is_zero());
+                let k = a.degree().unwrap_or(0).saturating_sub(b.degree().unwrap()) + 1;
+                let lc = b
+                    .leading()
+                    .pow(if a.degree() >= b.degree() { k } else { 0 });
+                prop_assert!((&a.scale(&lc) - &r).div_exact(b).is_some());
+            }
+            Ok(())
+        }
+
+        proptest! {
+            #[test]
+            fn over_the_integers(a in int_poly(), b in int_poly(), c in int_poly(), x in -5i64..5) {
+                check(&a, &b, &c, &IBig::from(x))?;
+            }
+
+            #[test]
+            fn over_polynomials_in_t(a in poly_in_t(), b in poly_in_t(), c in poly_in_t(), x in int_poly()) {
+                check(&a, &b, &c, &x)?;
+            }
+
+            #[test]
+            fn over_a_quadratic_field(a in quadratic_poly(), b in quadratic_poly(), c in quadratic_poly(), x in (-4i64..4, -4i64..4)) {
+                let x = Quadratic::new(RBig::from(x.0), RBig::from(x.1), IBig::from(5)).unwrap();
+                check(&a, &b, &c, &x)?;
+            }
+        }
+    }
 }
