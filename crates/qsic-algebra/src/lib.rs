@@ -4,8 +4,10 @@
 //! |---|---|
 //! | [`filter`] | certified floating-point sign filters (error bounds; exact fallback is the caller's) |
 //! | [`sign`] | [`Sign`], the result of every exact sign decision |
-//! | [`poly`] | dense univariate integer polynomials: arithmetic, gcd, square-free decomposition, Sturm and Descartes counts |
+//! | [`ring`] | the [`Ring`] and [`Field`] traits: algorithms written once for ℤ, ℚ, ℤ\[t\], ℚ(α), … |
+//! | [`poly`] | dense univariate polynomials `Poly<C>` over a ring: arithmetic, subresultants, resultants, gcd, square-free decomposition; over ℤ also Sturm and Descartes counts |
 //! | [`roots`] | real root isolation with rational (dyadic) isolating intervals |
+//! | [`field`] | exact real extensions of ℚ: ℚ(√δ) ([`field::Quadratic`]) |
 //! | [`algebraic`] | real algebraic numbers and the exact sign of a polynomial at them |
 //! | [`matrix`] | small symmetric integer matrices, exact inertia, matrix pencils `λA − μB` |
 //! | [`factor`] | factorization of integers with a 128-bit cofactor bound, primality, Jacobi symbols, square roots modulo primes |
@@ -18,9 +20,11 @@
 
 pub mod algebraic;
 pub mod factor;
+pub mod field;
 pub mod filter;
 pub mod matrix;
 pub mod poly;
+pub mod ring;
 pub mod roots;
 pub mod sign;
 
@@ -28,6 +32,7 @@ pub use algebraic::AlgebraicReal;
 pub use dashu_int::IBig;
 pub use dashu_ratio::RBig;
 pub use poly::Poly;
+pub use ring::{Field, Ring};
 pub use sign::Sign;
 
 /// The non-negative gcd of two integers, with `gcd(0, v) = |v|` (dashu panics on two zeros).

@@ -1,8 +1,8 @@
 //! Polynomial gcd over ℤ by the subresultant pseudo-remainder sequence.
 //!
 //! The subresultant PRS (Collins 1967, Brown–Traub 1971) keeps coefficient growth
-//! linear in the degree without computing contents at each step; the primitive PRS
-//! ([`gcd_primitive_prs`]) is the simpler second route the tests compare it with.
+//! linear in the degree without computing contents at each step ([`Poly::gcd_domain`], generic); the primitive PRS
+//! (`gcd_primitive_prs`, in the tests) is the simpler second route they are compared with.
 
 use super::Poly;
 use dashu_int::IBig;
@@ -93,42 +93,16 @@ pub fn coprime_modular(a: &Poly, b: &Poly) -> bool {
     g.len() == 1
 }
 
-/// Gcd by the subresultant PRS.
-pub fn gcd_subresultant(a: &Poly, b: &Poly) -> Poly {
-    let (mut f, mut g) = match (a.degree(), b.degree()) {
-        (None, _) => return b.primitive_part(),
-        (_, None) => return a.primitive_part(),
-        (Some(da), Some(db)) if da >= db => (a.primitive_part(), b.primitive_part()),
-        _ => (b.primitive_part(), a.primitive_part()),
-    };
-    if g.is_constant() {
-        return Poly::constant(IBig::ONE);
-    }
-    let mut lead_g = IBig::ONE; // the paper's g
-    let mut h = IBig::ONE;
-    loop {
-        let delta = f.degree().unwrap_or(0) - g.degree().unwrap_or(0);
-        let r = f.pseudo_rem(&g);
-        match r.degree() {
-            None => return g.primitive_part(),
-            Some(0) => return Poly::constant(IBig::ONE),
-            Some(_) => {}
-        }
-        let divisor = &lead_g * h.pow(delta);
-        f = g;
-        g = Poly::new(r.coeffs().iter().map(|v| v / &divisor).collect());
-        lead_g = f.leading();
-        // h ← lead_g^δ / h^(δ−1)
-        h = if delta == 0 {
-            h
-        } else {
-            lead_g.pow(delta) / h.pow(delta - 1)
-        };
-    }
+/// Gcd by the subresultant PRS ([`Poly::gcd_domain`]) on the primitive parts.
+fn gcd_subresultant(a: &Poly, b: &Poly) -> Poly {
+    a.primitive_part()
+        .gcd_domain(&b.primitive_part())
+        .primitive_part()
 }
 
-/// Gcd by the primitive PRS (contents removed at every step).
-pub fn gcd_primitive_prs(a: &Poly, b: &Poly) -> Poly {
+/// Gcd by the primitive PRS (contents removed at every step): the tests' second route.
+#[cfg(test)]
+fn gcd_primitive_prs(a: &Poly, b: &Poly) -> Poly {
     let (mut f, mut g) = match (a.degree(), b.degree()) {
         (None, _) => return b.primitive_part(),
         (_, None) => return a.primitive_part(),
