@@ -224,7 +224,7 @@ pub fn is_prime(n: u128) -> bool {
     let one = mont.one;
     let minus_one = n - one;
     'bases: for &b in bases {
-        let mut x = mont.pow(mont.to_mont(b), d);
+        let mut x = mont.pow(mont.encode(b), d);
         if x == one || x == minus_one {
             continue;
         }
@@ -299,8 +299,8 @@ pub fn sqrt_mod_prime(a: u128, p: u128) -> Option<u128> {
     let q = (p - 1) >> s;
     // A non-residue: the least one is small for primes (well below this bound for p < 2^128).
     let z = (2..10_000u128).find(|&z| jacobi(z, p) == -1)?;
-    let am = mont.to_mont(a);
-    let mut c = mont.pow(mont.to_mont(z), q);
+    let am = mont.encode(a);
+    let mut c = mont.pow(mont.encode(z), q);
     let mut t = mont.pow(am, q);
     let mut r = mont.pow(am, q.div_ceil(2));
     let mut m = s;
@@ -324,17 +324,17 @@ pub fn sqrt_mod_prime(a: u128, p: u128) -> Option<u128> {
         t = mont.mul(t, c);
         r = mont.mul(r, b);
     }
-    let r = mont.from_mont(r);
-    (mont.from_mont(mont.mul(mont.to_mont(r), mont.to_mont(r))) == a).then_some(r)
+    let r = mont.decode(r);
+    (mont.decode(mont.mul(mont.encode(r), mont.encode(r))) == a).then_some(r)
 }
 
 /// A nontrivial factor of the odd composite `n`, spending at most `budget` rho steps.
 fn split(n: u128, budget: &mut u64) -> Option<u128> {
     let mont = Montgomery::new(n);
     for c in 1u128.. {
-        let cm = mont.to_mont(c);
+        let cm = mont.encode(c);
         let f = |y: u128| mont.add(mont.mul(y, y), cm);
-        let (mut x, mut y, mut ys) = (0u128, mont.to_mont(2), 0u128);
+        let (mut x, mut y, mut ys) = (0u128, mont.encode(2), 0u128);
         let mut q = mont.one;
         let mut g = 1u128;
         let mut r = 1u64;
@@ -448,11 +448,11 @@ impl Montgomery {
         self.redc(hi, lo)
     }
 
-    fn to_mont(&self, a: u128) -> u128 {
+    fn encode(&self, a: u128) -> u128 {
         self.mul(a % self.n, self.r2)
     }
 
-    fn from_mont(&self, a: u128) -> u128 {
+    fn decode(&self, a: u128) -> u128 {
         self.redc(0, a)
     }
 
@@ -494,7 +494,16 @@ mod tests {
 
     #[test]
     fn mul_wide_matches_split_products() {
-        let vals = [0u128, 1, 2, u64::MAX as u128, 1 << 64, u128::MAX, u128::MAX - 12345, 0xdead_beef_1234_5678_9abc_def0_1357_9bdf];
+        let vals = [
+            0u128,
+            1,
+            2,
+            u64::MAX as u128,
+            1 << 64,
+            u128::MAX,
+            u128::MAX - 12345,
+            0xdead_beef_1234_5678_9abc_def0_1357_9bdf,
+        ];
         for &a in &vals {
             for &b in &vals {
                 let (hi, lo) = mul_wide(a, b);
@@ -506,14 +515,30 @@ mod tests {
 
     #[test]
     fn montgomery_product_is_the_modular_product() {
-        let moduli = [3u128, 65537, (1 << 61) - 1, (1 << 127) - 1, u128::MAX, u128::MAX - 2, (1 << 127) + 1];
-        let vals = [0u128, 1, 2, 12345, u64::MAX as u128, u128::MAX / 3, u128::MAX - 1];
+        let moduli = [
+            3u128,
+            65537,
+            (1 << 61) - 1,
+            (1 << 127) - 1,
+            u128::MAX,
+            u128::MAX - 2,
+            (1 << 127) + 1,
+        ];
+        let vals = [
+            0u128,
+            1,
+            2,
+            12345,
+            u64::MAX as u128,
+            u128::MAX / 3,
+            u128::MAX - 1,
+        ];
         for &n in &moduli {
             let m = Montgomery::new(n);
             for &a in &vals {
                 for &b in &vals {
                     let want = IBig::from(a % n) * IBig::from(b % n) % IBig::from(n);
-                    let got = m.from_mont(m.mul(m.to_mont(a), m.to_mont(b)));
+                    let got = m.decode(m.mul(m.encode(a), m.encode(b)));
                     assert_eq!(IBig::from(got), want, "{a} * {b} mod {n}");
                 }
             }
@@ -529,12 +554,27 @@ mod tests {
         for n in (1u128 << 36)..(1 << 36) + 200 {
             assert_eq!(is_prime(n), is_prime_naive(n), "{n}");
         }
-        for n in [2047u128, 1373653, 25326001, 3215031751, 2152302898747, 3474749660383, 341550071728321, 3825123056546413051] {
+        for n in [
+            2047u128,
+            1373653,
+            25326001,
+            3215031751,
+            2152302898747,
+            3474749660383,
+            341550071728321,
+            3825123056546413051,
+        ] {
             assert!(!is_prime(n), "strong pseudoprime {n}");
         }
         // A 125-bit semiprime (beyond the proven range).
         assert!(!is_prime(((1u128 << 61) - 1) * (u64::MAX as u128 - 58)));
-        for p in [(1u128 << 61) - 1, (1 << 89) - 1, (1 << 107) - 1, (1 << 127) - 1, u64::MAX as u128 - 58] {
+        for p in [
+            (1u128 << 61) - 1,
+            (1 << 89) - 1,
+            (1 << 107) - 1,
+            (1 << 127) - 1,
+            u64::MAX as u128 - 58,
+        ] {
             assert!(is_prime(p), "{p}");
             assert!(!is_prime(p + 1), "{p}");
             if let Some(m) = p.checked_mul(3) {
@@ -561,14 +601,30 @@ mod tests {
         // Multiplicative in the modulus.
         for a in 0..60u128 {
             for (m, n) in [(3u128, 5u128), (7, 9), (15, 11), (21, 25)] {
-                assert_eq!(jacobi(a, m * n), jacobi(a, m) * jacobi(a, n), "({a}/{m}·{n})");
+                assert_eq!(
+                    jacobi(a, m * n),
+                    jacobi(a, m) * jacobi(a, n),
+                    "({a}/{m}·{n})"
+                );
             }
         }
     }
 
     #[test]
     fn square_roots_modulo_primes_square_back() {
-        let primes = [2u128, 3, 5, 17, 97, 257, 65537, 7681, (1 << 61) - 1, (1 << 89) - 1, (1 << 127) - 1];
+        let primes = [
+            2u128,
+            3,
+            5,
+            17,
+            97,
+            257,
+            65537,
+            7681,
+            (1 << 61) - 1,
+            (1 << 89) - 1,
+            (1 << 127) - 1,
+        ];
         for &p in &primes {
             for a in (0..200u128).chain([p - 1, p / 2]) {
                 let a = a % p;
@@ -606,7 +662,10 @@ mod tests {
             let f = factorize(&n).unwrap();
             assert_eq!(f.value(), n);
             assert!(f.factors.windows(2).all(|w| w[0].0 < w[1].0), "{n}: {f:?}");
-            assert!(f.factors.iter().all(|&(p, e)| is_prime(p) && e >= 1), "{n}: {f:?}");
+            assert!(
+                f.factors.iter().all(|&(p, e)| is_prime(p) && e >= 1),
+                "{n}: {f:?}"
+            );
         }
         assert_eq!(factorize(&IBig::ZERO), Err(FactorError::Zero));
     }

@@ -11,6 +11,7 @@
 //! | [`algebraic`] | real algebraic numbers and the exact sign of a polynomial at them |
 //! | [`matrix`] | small symmetric integer matrices, exact inertia, matrix pencils `λA − μB` |
 //! | [`factor`] | factorization of integers with a 128-bit cofactor bound, primality, Jacobi symbols, square roots modulo primes |
+//! | [`conic`] | rational points on conics: Legendre's theorem, a point or a point over ℚ(√δ), parameterization through a point |
 //!
 //! Integers are [`dashu_int::IBig`], rationals [`dashu_ratio::RBig`]: pure Rust,
 //! small values inline on the stack.
@@ -19,6 +20,7 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod algebraic;
+pub mod conic;
 pub mod factor;
 pub mod field;
 pub mod filter;
