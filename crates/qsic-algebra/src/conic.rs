@@ -19,9 +19,10 @@
 //! case `(xz + by, yz − ax, z² + ab)` is a solution, since
 //! `a(xz + by)² + b(yz − ax)² + c(z² + ab)² = (z² + ab)(Q(v) + abc)`. No search.
 //!
-//! **Certainty.** A returned point is checked on its conic. "No rational point" is certified by
-//! a prime `p | a` with Jacobi symbol `(−bc/p) = −1`, exact even if `p` were a composite
-//! mistaken for a prime (see [`crate::factor::is_prime`]).
+//! **Certainty.** A returned point is checked on its conic, and every square root modulo a
+//! prime is checked by squaring. "No rational point" rests on a prime `p | a` with Jacobi
+//! symbol `(−bc/p) = −1`: exact for the primes [`crate::factor`] finds (proven primes below
+//! `2⁸¹`, strong probable primes to 20 bases above).
 //!
 //! **Cost.** Factoring the numerators and denominators of the diagonal (primes found once are
 //! divided out of the others) dominates, bounded by [`crate::factor`]; then square roots modulo
