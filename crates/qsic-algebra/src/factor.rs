@@ -679,14 +679,10 @@ mod tests {
     }
 
     #[test]
-    fn oversized_and_hard_inputs_are_errors_quickly() {
+    fn oversized_inputs_are_errors() {
         // 65537 is above the trial limit: its ninth power is a 145-bit cofactor.
         let n = IBig::from(65537u64).pow(9);
         assert_eq!(factorize(&n), Err(FactorError::TooLarge { bits: 145 }));
-        // Two primes near 2^61 and 2^64: rho would need about 2^31 steps.
-        let start = std::time::Instant::now();
-        let n = IBig::from((1u128 << 61) - 1) * IBig::from(u64::MAX as u128 - 58);
-        assert_eq!(factorize(&n), Err(FactorError::HardToFactor { bits: 125 }));
-        assert!(start.elapsed().as_secs() < 20);
+        // (the rho budget is exercised by tests/conic.rs, too_large_or_hard_coefficients_are_errors)
     }
 }

@@ -374,7 +374,6 @@ fn large_coefficients_with_a_planted_point() {
 
 #[test]
 fn too_large_or_hard_coefficients_are_errors() {
-    let start = std::time::Instant::now();
     // 65537⁹ has no prime factor below 2¹⁶ and 145 bits.
     let mut c = diag(1, 1, -1);
     c[0][0] = RBig::from(IBig::from(65537).pow(9));
@@ -382,7 +381,6 @@ fn too_large_or_hard_coefficients_are_errors() {
         find_point(&c),
         Err(ConicError::Factor(FactorError::TooLarge { bits: 145 }))
     );
-    assert!(start.elapsed().as_millis() < 2000, "{:?}", start.elapsed());
     // Two primes near 2⁶¹ and 2⁶⁴ (rho would need about 2³¹ steps).
     let hard = IBig::from((1u128 << 61) - 1) * IBig::from(u64::MAX as u128 - 58);
     let r = solve_legendre(&hard, &IBig::ONE, &IBig::from(-1));
@@ -390,7 +388,6 @@ fn too_large_or_hard_coefficients_are_errors() {
         r,
         Err(ConicError::Factor(FactorError::HardToFactor { bits: 125 }))
     );
-    assert!(start.elapsed().as_secs() < 20, "{:?}", start.elapsed());
 }
 
 #[test]
