@@ -59,14 +59,6 @@ impl RootInterval {
         }
     }
 
-    /// `Some(v)` for a root known exactly.
-    pub fn as_exact(&self) -> Option<&RBig> {
-        match self {
-            RootInterval::Exact(v) => Some(v),
-            RootInterval::Open(..) => None,
-        }
-    }
-
     /// The same root of `p(−x)`: `−hi < x < −lo`.
     fn negated(self) -> RootInterval {
         match self {
@@ -181,35 +173,56 @@ enum Newton {
 
 /// Isolates the positive roots of the square-free `p0` with `p0(0) ≠ 0` (none for a constant).
 fn isolate_positive(p0: &Poly) -> Vec<RootInterval> {
-    isolate_positive_counted(p0).0
+    let mut isolation = PositiveIsolation::new(p0);
+    while isolation.step() {}
+    isolation.roots()
 }
 
-/// [`isolate_positive`], with the number of cells examined (the cost measure the tests bound).
-fn isolate_positive_counted(p0: &Poly) -> (Vec<RootInterval>, usize) {
-    let mut p = p0.clone();
-    let mut cells = 0;
-    let k_hi = root_bound_log2(&p);
-    let k_lo = root_bound_log2(&p.reverse());
-    // Every positive root lies in (2^−k_lo, 2^k_hi), strictly.
-    let mut work = vec![Cell {
-        lo: IBig::ONE,
-        hi: IBig::ONE << (k_hi + k_lo),
-        s: -(k_lo as isize),
-        n_exp: 2,
-        parent_var: 0,
-    }];
-    let mut found = Vec::new();
-    while let Some(cell) = work.pop() {
-        cells += 1;
+/// The isolation of the positive roots of the square-free `p0` with `p0(0) ≠ 0`, run one
+/// cell of the work list at a time (see the module docs).
+struct PositiveIsolation<'a> {
+    p0: &'a Poly,
+    /// `p0` with the rational roots found so far divided out.
+    p: Poly,
+    work: Vec<Cell>,
+    found: Vec<Found>,
+}
+
+impl<'a> PositiveIsolation<'a> {
+    fn new(p0: &'a Poly) -> PositiveIsolation<'a> {
+        let k_hi = root_bound_log2(p0);
+        let k_lo = root_bound_log2(&p0.reverse());
+        // Every positive root lies in (2^−k_lo, 2^k_hi), strictly.
+        let cell = Cell {
+            lo: IBig::ONE,
+            hi: IBig::ONE << (k_hi + k_lo),
+            s: -(k_lo as isize),
+            n_exp: 2,
+            parent_var: 0,
+        };
+        PositiveIsolation {
+            p0,
+            p: p0.clone(),
+            work: vec![cell],
+            found: Vec::new(),
+        }
+    }
+
+    /// Examines the next cell of the work list: drops it, records its root, or replaces it
+    /// by subcells. `false` when the list was empty.
+    fn step(&mut self) -> bool {
+        let Some(cell) = self.work.pop() else {
+            return false;
+        };
         // q(x) ∝ p(x·2^s): the cell is (lo, hi) for q, with integer ends.
-        let q = scaled(&p, cell.s);
+        let q = scaled(&self.p, cell.s);
         let v = variations(&q, &cell.lo, &cell.hi);
         if v == 0 {
-            continue;
+            return true;
         }
         if v == 1 {
-            found.push(Found::Open(cell.lo, cell.hi, cell.s));
-            continue;
+            self.found.push(Found::Open(cell.lo, cell.hi, cell.s));
+            return true;
         }
         let (la, lb) = (bit_len(&cell.lo), bit_len(&cell.hi));
         let (point, s, n_exp) = if lb >= la + 2 {
@@ -221,8 +234,8 @@ fn isolate_positive_counted(p0: &Poly) -> (Vec<RootInterval>, usize) {
                 .flatten()
             {
                 Some(Newton::Narrowed(c)) => {
-                    work.push(c.normalized());
-                    continue;
+                    self.work.push(c.normalized());
+                    return true;
                 }
                 Some(Newton::Root(x, s)) => (x, s, cell.n_exp),
                 None => (&cell.lo + &cell.hi, cell.s - 1, (cell.n_exp / 2).max(2)),
@@ -234,14 +247,15 @@ fn isolate_positive_counted(p0: &Poly) -> (Vec<RootInterval>, usize) {
             "split points lie inside the cell"
         );
         let (lo, hi) = (&cell.lo << up, &cell.hi << up);
-        if Sign::of(&scaled(&p, s).eval_integer(&point)).is_zero() {
-            p = p
+        if Sign::of(&scaled(&self.p, s).eval_integer(&point)).is_zero() {
+            self.p = self
+                .p
                 .div_exact(&Poly::vanishing_at(&to_rational(&point, s)))
                 .expect("a rational root gives a primitive linear factor");
-            found.push(Found::Exact(point.clone(), s));
+            self.found.push(Found::Exact(point.clone(), s));
         }
         for (lo, hi) in [(point.clone(), hi), (lo, point)] {
-            work.push(
+            self.work.push(
                 Cell {
                     lo,
                     hi,
@@ -252,26 +266,31 @@ fn isolate_positive_counted(p0: &Poly) -> (Vec<RootInterval>, usize) {
                 .normalized(),
             );
         }
+        true
     }
-    let roots = found
-        .into_iter()
-        .map(|f| match f {
-            Found::Exact(x, s) => RootInterval::Exact(to_rational(&x, s)),
-            Found::Open(lo, hi, s) => {
-                let (lo, hi) = (to_rational(&lo, s), to_rational(&hi, s));
-                // An end may be a rational root divided out after the cell was made.
-                let on_root = p0.sign_at(&lo).is_zero() || p0.sign_at(&hi).is_zero();
-                let iv = RootInterval::Open(lo, hi);
-                let iv = if on_root {
-                    move_ends_off_roots(p0, &p, iv)
-                } else {
-                    iv
-                };
-                exact_if_rational(&p, iv)
-            }
-        })
-        .collect();
-    (roots, cells)
+
+    /// The roots found, once [`PositiveIsolation::step`] has emptied the work list.
+    fn roots(self) -> Vec<RootInterval> {
+        let (p0, p) = (self.p0, &self.p);
+        self.found
+            .into_iter()
+            .map(|f| match f {
+                Found::Exact(x, s) => RootInterval::Exact(to_rational(&x, s)),
+                Found::Open(lo, hi, s) => {
+                    let (lo, hi) = (to_rational(&lo, s), to_rational(&hi, s));
+                    // An end may be a rational root divided out after the cell was made.
+                    let on_root = p0.sign_at(&lo).is_zero() || p0.sign_at(&hi).is_zero();
+                    let iv = RootInterval::Open(lo, hi);
+                    let iv = if on_root {
+                        move_ends_off_roots(p0, p, iv)
+                    } else {
+                        iv
+                    };
+                    exact_if_rational(p, iv)
+                }
+            })
+            .collect()
+    }
 }
 
 /// The root of the primitive `p` in the open interval `iv`, exactly if it is a rational
@@ -806,7 +825,7 @@ mod cluster_tests {
             let p = &s.scale(&ten_pow(2 * l)) - &Poly::from_i64s(&[1]);
             let r = isolated(&p);
             assert_eq!(r.len(), 4, "L = {l}");
-            assert!(r.iter().all(|iv| iv.as_exact().is_none()));
+            assert!(r.iter().all(|iv| matches!(iv, RootInterval::Open(..))));
         }
     }
 
@@ -869,6 +888,16 @@ mod cluster_tests {
 mod cost_tests {
     use super::*;
 
+    /// The positive roots, and the number of cells examined: the cost measure bounded here.
+    fn isolate_positive_counting_cells(p: &Poly) -> (Vec<RootInterval>, usize) {
+        let mut isolation = PositiveIsolation::new(p);
+        let mut cells = 0;
+        while isolation.step() {
+            cells += 1;
+        }
+        (isolation.roots(), cells)
+    }
+
     fn ten_pow(k: usize) -> IBig {
         IBig::from(10).pow(k)
     }
@@ -881,7 +910,7 @@ mod cost_tests {
         // 10^2000 (3x − 1)² − 2: roots (1 ± √2·10^−1000)/3
         let sq = Poly::from_i64s(&[1, -6, 9]).scale(&(&t * &t));
         let p = &(&sq - &Poly::from_i64s(&[2])) * &Poly::from_i64s(&[-3, 1]);
-        let (roots, cells) = isolate_positive_counted(&p);
+        let (roots, cells) = isolate_positive_counting_cells(&p);
         assert_eq!(roots.len(), 3);
         assert!(cells < 150, "{cells} cells");
     }
@@ -891,7 +920,7 @@ mod cost_tests {
     fn scales_cost_logarithmically_many_cells() {
         let t = ten_pow(3000);
         let p = &Poly::new(vec![-IBig::ONE, t.clone()]) * &Poly::new(vec![-t, IBig::ONE]);
-        let (roots, cells) = isolate_positive_counted(&p);
+        let (roots, cells) = isolate_positive_counting_cells(&p);
         assert_eq!(roots.len(), 2);
         assert!(cells < 200, "{cells} cells");
     }
@@ -909,7 +938,7 @@ mod cost_tests {
             assert_eq!(r.len(), 1);
             let v = RBig::from_parts_signed(IBig::from(3), d);
             assert!(r[0].lo() <= &v && &v <= r[0].hi());
-            assert_eq!(r[0].as_exact().is_some(), exact, "{:?}", r[0]);
+            assert_eq!(matches!(r[0], RootInterval::Exact(_)), exact, "{:?}", r[0]);
         }
     }
 }
@@ -936,7 +965,10 @@ mod bound_tests {
         let r = isolate_real_roots(&p);
         assert_eq!(r.len(), 4);
         // small leading coefficient: the integer roots are found exactly
-        assert!(r.iter().all(|iv| iv.as_exact().is_some()), "{r:?}");
+        assert!(
+            r.iter().all(|iv| matches!(iv, RootInterval::Exact(_))),
+            "{r:?}"
+        );
     }
 
     proptest! {

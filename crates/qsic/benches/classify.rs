@@ -5,7 +5,7 @@
 //! - `classify_case/case_NN`: each case's disguised copies through the exact path only.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use qsic::classify::classify_exact;
+use qsic::test_support::classify_exact;
 use qsic::{classify, Quadric};
 use std::hint::black_box;
 

@@ -31,3 +31,16 @@ pub mod shapes;
 pub use classify::{classify, classify_allowing_zero, classify_single, Classification};
 pub use error::Error;
 pub use quadric::Quadric;
+
+/// For this crate's integration tests and benchmarks only, not part of the API.
+#[doc(hidden)]
+pub mod test_support {
+    use crate::{Classification, Quadric};
+
+    /// [`classify()`](crate::classify()) by exact rational arithmetic alone, without the
+    /// machine-arithmetic fast path: the twin the differential tests compare with it, and
+    /// the route the exact-path benchmarks time.
+    pub fn classify_exact(a: &Quadric, b: &Quadric) -> Classification {
+        crate::classify::classify_exact(a, b)
+    }
+}

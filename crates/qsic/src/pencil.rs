@@ -11,7 +11,7 @@
 use crate::quadric::Quadric;
 use qsic_algebra::matrix::{Inertia, MatrixPencil, SymMatrix4};
 use qsic_algebra::poly::binary::BinaryForm;
-use qsic_algebra::roots::{isolate_squarefree_real_roots, rational_between};
+use qsic_algebra::roots::{rational_between, RootInterval};
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
 
 /// A point `(λ : μ)` of the pencil: `(α : 1)` is the member `αA − B`, `(1 : 0)` the member `A`.
@@ -42,7 +42,7 @@ pub struct PencilAnalysis {
     pub complex_roots: Vec<Vec<u8>>,
     /// Inertia of `λA − B` at a sample point of each arc between consecutive real roots,
     /// in the order of `real_roots` on the chart μ = 1: `arcs[0]` is left of the first
-    /// finite root, `arcs[i]` right of finite root `i − 1`. With no real root, one arc.
+    /// finite root, `arcs[i]` right of finite root `i − 1`. With no finite real root, one arc.
     pub arcs: Vec<(RBig, Inertia)>,
 }
 
@@ -165,80 +165,83 @@ impl PencilAnalysis {
             Some(MinorGcds::new(&data.pencil))
         };
 
-        // Pieces of the square-free decomposition with equal (multiplicity, orders in D1..D3).
-        let mut pieces: Vec<(Poly, usize, [usize; 3])> = Vec::new();
-        for (g, m) in &decomposition {
-            match &gcds {
-                None => pieces.push((g.clone(), *m, [0, 0, 0])),
-                Some(gc) => {
-                    let mut cur = vec![(g.clone(), [0usize; 3])];
-                    for k in (0..3).rev() {
-                        let mut next = Vec::new();
-                        for (p, ords) in cur {
-                            for (h, j) in split_by_order(&p, gc.d[k].chart()) {
-                                let mut o = ords;
-                                o[k] = j;
-                                next.push((h, o));
-                            }
+        // The pieces of f: square-free, pairwise coprime forms on which the multiplicity
+        // and the orders in D₁, D₂, D₃ are constant. The finite roots are split out of the
+        // square-free decomposition of the chart; the root at ∞ is the piece μ.
+        let mut forms: Vec<BinaryForm> = Vec::new();
+        let mut orders: Vec<(usize, [usize; 3])> = Vec::new();
+        for (g, m) in decomposition {
+            let mut split = vec![(g, [0usize; 3])];
+            if let Some(gc) = &gcds {
+                for k in (0..3).rev() {
+                    let mut next = Vec::new();
+                    for (p, ords) in split {
+                        for (h, j) in split_by_order(&p, gc.d[k].chart()) {
+                            let mut o = ords;
+                            o[k] = j;
+                            next.push((h, o));
                         }
-                        cur = next;
                     }
-                    pieces.extend(cur.into_iter().map(|(p, o)| (p, *m, o)));
+                    split = next;
                 }
             }
+            for (p, o) in split {
+                let d = p.degree().unwrap_or(0);
+                forms.push(BinaryForm::new(p, d));
+                orders.push((m, o));
+            }
+        }
+        if m_inf > 0 {
+            forms.push(BinaryForm::new(Poly::constant(IBig::ONE), 1));
+            orders.push((m_inf, gcds.as_ref().map_or([0; 3], MinorGcds::at_infinity)));
         }
 
         let e = data.pencil.principal_minor_sums();
-        // All finite real roots at once, isolated from each other: the product of the
-        // pieces is the square-free part of f (pieces are primitive and pairwise coprime).
-        let squarefree = pieces
-            .iter()
-            .fold(Poly::constant(IBig::ONE), |acc, (p, _, _)| &acc * p);
-        let isolated = isolate_squarefree_real_roots(&squarefree);
-        let mut real_count = vec![0usize; pieces.len()];
-        let mut real_roots: Vec<PencilRoot> = Vec::with_capacity(isolated.len() + 1);
-        for iv in &isolated {
-            let (j, r) = pieces
-                .iter()
-                .enumerate()
-                .find_map(|(j, (p, _, _))| {
-                    AlgebraicReal::from_isolating_interval(p, iv).map(|r| (j, r))
-                })
-                .expect("each root of the square-free part is a root of exactly one piece");
-            let (_, m, ords) = &pieces[j];
+        let roots = BinaryForm::real_roots_of_coprime(&forms);
+        let mut real_count = vec![0usize; forms.len()];
+        let mut real_roots: Vec<PencilRoot> = Vec::with_capacity(roots.len());
+        for (point, j) in roots {
+            let (m, ords) = orders[j];
             real_count[j] += 1;
-            // A simple root's inertia follows from its arcs (filled in below).
-            let inertia = if *m == 1 {
-                Inertia {
+            let inertia = match &point {
+                PencilPoint::Infinity => data.a.inertia(),
+                PencilPoint::Finite(r) if m > 1 => inertia_at(&e, r),
+                // A simple finite root's inertia follows from its arcs (filled in below).
+                PencilPoint::Finite(_) => Inertia {
                     positive: 0,
                     negative: 0,
                     zero: 1,
-                }
-            } else {
-                inertia_at(&e, &r)
+                },
             };
             real_roots.push(PencilRoot {
-                point: PencilPoint::Finite(r),
-                multiplicity: *m as u8,
-                blocks: blocks_from_orders(*m, *ords),
+                point,
+                multiplicity: m as u8,
+                blocks: blocks_from_orders(m, ords),
                 inertia,
             });
         }
         let mut complex_roots = Vec::new();
-        for ((p, m, ords), real) in pieces.iter().zip(&real_count) {
-            for _ in *real..p.degree().unwrap_or(0) {
-                complex_roots.push(blocks_from_orders(*m, *ords));
+        for ((form, &(m, ords)), real) in forms.iter().zip(&orders).zip(&real_count) {
+            for _ in *real..form.degree() {
+                complex_roots.push(blocks_from_orders(m, ords));
             }
         }
 
         // Sample points of the arcs, in the gaps between the isolating intervals.
+        let isolated: Vec<&RootInterval> = real_roots
+            .iter()
+            .filter_map(|r| match &r.point {
+                PencilPoint::Finite(x) => Some(x.interval()),
+                PencilPoint::Infinity => None,
+            })
+            .collect();
         let mut arcs = Vec::with_capacity(isolated.len() + 1);
         match (isolated.first(), isolated.last()) {
             (Some(first), Some(last)) => {
                 let x = RBig::from(first.lo().floor() - IBig::ONE);
                 arcs.push((x.clone(), inertia_at_rational(&e, &x)));
                 for w in isolated.windows(2) {
-                    let x = rational_between(&w[0], &w[1]);
+                    let x = rational_between(w[0], w[1]);
                     arcs.push((x.clone(), inertia_at_rational(&e, &x)));
                 }
                 let x = RBig::from(last.hi().ceil() + IBig::ONE);
@@ -253,7 +256,7 @@ impl PencilAnalysis {
         // At a simple root exactly one eigenvalue crosses zero: the member's inertia is the
         // smaller of its two arcs' counts.
         for (i, r) in real_roots.iter_mut().enumerate() {
-            if r.multiplicity == 1 {
+            if r.multiplicity == 1 && matches!(r.point, PencilPoint::Finite(_)) {
                 let (l, h) = (&arcs[i].1, &arcs[i + 1].1);
                 r.inertia = Inertia {
                     positive: l.positive.min(h.positive),
@@ -261,18 +264,6 @@ impl PencilAnalysis {
                     zero: 1,
                 };
             }
-        }
-        if m_inf > 0 {
-            let blocks = match &gcds {
-                None => vec![1],
-                Some(gc) => blocks_from_orders(m_inf, gc.at_infinity()),
-            };
-            real_roots.push(PencilRoot {
-                point: PencilPoint::Infinity,
-                multiplicity: m_inf as u8,
-                blocks,
-                inertia: data.a.inertia(),
-            });
         }
         PencilAnalysis {
             characteristic: f.clone(),
@@ -321,6 +312,7 @@ pub(crate) enum SigItem {
 }
 
 impl SigItem {
+    /// The same item for `−A, −B` (or seen across λ = ∞): positive and negative swapped.
     pub fn swapped(self) -> SigItem {
         match self {
             SigItem::Interval(p) => SigItem::Interval(4 - p),

@@ -128,8 +128,7 @@ impl Quadric {
     ///
     /// # Errors
     /// As [`Quadric::from_matrix`].
-    #[doc(hidden)]
-    pub fn from_matrix_big_route(m: [[RBig; 4]; 4]) -> Result<Self, Error> {
+    pub(crate) fn from_matrix_big_route(m: [[RBig; 4]; 4]) -> Result<Self, Error> {
         check_rational(&m)?;
         Ok(Self::primitive_big(m))
     }

@@ -10,7 +10,7 @@ mod inputs;
 use dashu_ratio::RBig;
 use inputs::representatives;
 use proptest::prelude::*;
-use qsic::classify::classify_exact;
+use qsic::test_support::classify_exact;
 use qsic::{classify, Quadric};
 
 type M = [[RBig; 4]; 4];

@@ -21,6 +21,7 @@
 
 mod fast;
 mod morphology;
+mod notation;
 mod signature;
 mod single;
 mod singular;
@@ -34,6 +35,7 @@ pub use morphology::{
 use crate::error::Error;
 use crate::pencil::{PencilAnalysis, PencilData, SigItem};
 use crate::quadric::Quadric;
+use notation::SegreKey;
 use std::collections::HashMap;
 use std::sync::OnceLock;
 use table::{CaseRow, CASES};
@@ -97,26 +99,38 @@ fn classify_fast(a: &Quadric, b: &Quadric) -> Option<Classification> {
 
 /// [`classify()`] without the machine-arithmetic fast path: every decision by exact
 /// rational arithmetic. The two must agree (property tests).
-pub fn classify_exact(a: &Quadric, b: &Quadric) -> Classification {
+pub(crate) fn classify_exact(a: &Quadric, b: &Quadric) -> Classification {
     let data = PencilData::new(a, b);
+    match pencil_kind(&data) {
+        PencilKind::Single => classify_single(a),
+        PencilKind::Singular => {
+            let (morphology, description) = singular::classify_singular(&data.a, &data.b)
+                .map_or((None, None), |(m, d)| (Some(m), Some(d)));
+            Classification {
+                pencil: PencilKind::Singular,
+                case: None,
+                segre: None,
+                signature: None,
+                index_sequence: None,
+                morphology,
+                description,
+            }
+        }
+        PencilKind::Regular => classify_regular(&PencilAnalysis::compute(&data)),
+    }
+}
+
+/// The kind of the pencil of two quadrics, decided once for every route: proportional
+/// forms are a single quadric (even where `det(λA − μB) ≢ 0`, for a nonsingular `A`);
+/// otherwise `det(λA − μB) ≡ 0` makes the pencil singular.
+fn pencil_kind(data: &PencilData) -> PencilKind {
     if data.a.is_proportional(&data.b) {
-        return classify_single(a);
+        PencilKind::Single
+    } else if data.f.is_zero() {
+        PencilKind::Singular
+    } else {
+        PencilKind::Regular
     }
-    if data.f.is_zero() {
-        let (morphology, description) = singular::classify_singular(&data.a, &data.b)
-            .map_or((None, None), |(m, d)| (Some(m), Some(d)));
-        return Classification {
-            pencil: PencilKind::Singular,
-            case: None,
-            segre: None,
-            signature: None,
-            index_sequence: None,
-            morphology,
-            description,
-        };
-    }
-    let analysis = PencilAnalysis::compute(&data);
-    classify_regular(&analysis)
 }
 
 /// Classifies a pair in which either form may be the zero form (`None`): the pencil of a
@@ -138,27 +152,22 @@ pub fn classify_allowing_zero(
 /// The exact analysis of the pencil of a regular pair; `None` for a singular or single pencil.
 pub fn analyze_pencil(a: &Quadric, b: &Quadric) -> Option<PencilAnalysis> {
     let data = PencilData::new(a, b);
-    if data.f.is_zero() || data.a.is_proportional(&data.b) {
-        return None;
-    }
-    Some(PencilAnalysis::compute(&data))
+    (pencil_kind(&data) == PencilKind::Regular).then(|| PencilAnalysis::compute(&data))
 }
 
 pub use single::classify_single;
 
-/// Key of a class: sorted block structures of all roots, number of distinct real roots,
-/// canonical signature sequence.
-type ClassKey = (Vec<Vec<u8>>, usize, Vec<SigItem>);
+/// Key of a class: the Segre characteristic (block structures of all roots, number of
+/// distinct real roots) and the canonical signature sequence.
+type ClassKey = (SegreKey, Vec<SigItem>);
 
 fn class_index() -> &'static HashMap<ClassKey, (&'static CaseRow, usize)> {
     static INDEX: OnceLock<HashMap<ClassKey, (&'static CaseRow, usize)>> = OnceLock::new();
     INDEX.get_or_init(|| {
         let mut map = HashMap::new();
         for row in CASES.iter() {
-            let (structures, real) = parse_segre(row.segre);
-            for (i, (sig, _)) in row.sequences.iter().enumerate() {
-                let seq = signature::parse(sig).expect("the case table holds valid sequences");
-                let key = (structures.clone(), real, signature::canonical(&seq));
+            for (i, (signature, _)) in row.sequences.iter().enumerate() {
+                let key = (row.segre.key, signature::canonical(signature.items()));
                 let previous = map.insert(key, (row, i));
                 debug_assert!(previous.is_none(), "two cases share a class key");
             }
@@ -167,45 +176,15 @@ fn class_index() -> &'static HashMap<ClassKey, (&'static CaseRow, usize)> {
     })
 }
 
-/// `[(11)11]_3` → (sorted block lists of each root, number of distinct real roots).
-fn parse_segre(s: &str) -> (Vec<Vec<u8>>, usize) {
-    let (body, real) = s.split_once("]_").expect("segre strings end with ]_n");
-    let mut roots = Vec::new();
-    let mut group: Option<Vec<u8>> = None;
-    for ch in body.trim_start_matches('[').chars() {
-        match ch {
-            '(' => group = Some(Vec::new()),
-            ')' => roots.push(group.take().unwrap_or_default()),
-            d => {
-                let v = d.to_digit(10).expect("segre digits") as u8;
-                match group.as_mut() {
-                    Some(g) => g.push(v),
-                    None => roots.push(vec![v]),
-                }
-            }
-        }
-    }
-    for r in roots.iter_mut() {
-        r.sort_unstable_by(|a, b| b.cmp(a));
-    }
-    roots.sort();
-    (roots, real.parse().expect("real root count"))
-}
-
 fn classify_regular(analysis: &PencilAnalysis) -> Classification {
-    let mut structures: Vec<Vec<u8>> = analysis
+    let structures = analysis
         .real_roots
         .iter()
-        .map(|r| r.blocks.clone())
-        .chain(analysis.complex_roots.iter().cloned())
-        .collect();
-    structures.sort();
-    let key = (
-        structures,
-        analysis.real_roots.len(),
-        signature::canonical(&analysis.signature_sequence()),
-    );
-    match class_index().get(&key) {
+        .map(|r| r.blocks.as_slice())
+        .chain(analysis.complex_roots.iter().map(Vec::as_slice));
+    let key = SegreKey::new(structures, analysis.real_roots.len())
+        .map(|segre| (segre, signature::canonical(&analysis.signature_sequence())));
+    match key.as_ref().and_then(|key| class_index().get(key)) {
         Some((row, i)) => from_row(row, *i),
         // Theorem 23 of the paper: every regular pencil falls in one of the 35 cases; a
         // miss is a bug, reported as an undetermined class rather than a wrong one.
@@ -226,9 +205,9 @@ fn from_row(row: &CaseRow, i: usize) -> Classification {
     Classification {
         pencil: PencilKind::Regular,
         case: Some(row.case),
-        segre: Some(row.segre),
-        signature: Some(row.sequences[i].0),
-        index_sequence: Some(row.sequences[i].1),
+        segre: Some(row.segre.text),
+        signature: Some(row.sequences[i].0.text),
+        index_sequence: Some(row.sequences[i].1.text),
         morphology: Some(Morphology {
             complex: row.complex,
             real: row.real,
@@ -297,18 +276,29 @@ mod tests {
         assert!(analyze_pencil(&sphere, &q([2, 2, 2, -2])).is_none());
     }
 
+    /// Proportional pairs are a single quadric at every rank, whether `det(λA − μB)`
+    /// vanishes identically (rank < 4) or not: the kind is decided before the singular
+    /// route, which relies on it and does not check again.
     #[test]
-    fn every_table_class_key_is_distinct_and_complete() {
-        assert_eq!(class_index().len(), 36);
+    fn proportional_pairs_are_single_at_every_rank() {
+        for rank in 1..=4 {
+            let mut d = [[0i64; 4]; 4];
+            for i in 0..rank {
+                d[i][i] = [1, -1, 2, 3][i];
+            }
+            let a = Quadric::from_integers(d).expect("nonzero");
+            let b = Quadric::from_integers(d.map(|r| r.map(|v| -3 * v))).expect("nonzero");
+            let data = PencilData::new(&a, &b);
+            assert_eq!(data.f.is_zero(), rank < 4);
+            assert_eq!(pencil_kind(&data), PencilKind::Single, "rank {rank}");
+            assert_eq!(classify_exact(&a, &b), classify_single(&a), "rank {rank}");
+            assert_eq!(classify(&a, &b), classify_single(&a), "rank {rank}");
+            assert!(analyze_pencil(&a, &b).is_none());
+        }
     }
 
     #[test]
-    fn segre_strings_parse() {
-        assert_eq!(
-            parse_segre("[(11)11]_3"),
-            (vec![vec![1], vec![1], vec![1, 1]], 3)
-        );
-        assert_eq!(parse_segre("[2(11)]_2"), (vec![vec![1, 1], vec![2]], 2));
-        assert_eq!(parse_segre("[(211)]_1"), (vec![vec![2, 1, 1]], 1));
+    fn every_table_class_key_is_distinct_and_complete() {
+        assert_eq!(class_index().len(), 36);
     }
 }

@@ -1,6 +1,6 @@
-//! Signature sequences: parsing the printed form, and the canonical form under the
-//! equivalences of Section 2.4 (rotation, reversal, complement) with the corrected rotation
-//! rule of ERRATA item 4: the root carried across λ = ∞ has its signature swapped.
+//! Signature sequences: the canonical form under the equivalences of Section 2.4 (rotation,
+//! reversal, complement) with the corrected rotation rule of ERRATA item 4: the root
+//! carried across λ = ∞ has its signature swapped. The printed form is read in `notation`.
 
 use crate::pencil::SigItem;
 
@@ -45,73 +45,23 @@ fn rotate(seq: &[SigItem]) -> Vec<SigItem> {
     out
 }
 
-/// Parses the printed form, e.g. `(2,((2,1)),2,(2,1),3)`: bare numbers are arcs, a pair in
-/// `m` parentheses is a root of multiplicity `m`.
-pub(crate) fn parse(text: &str) -> Option<Vec<SigItem>> {
-    let inner = text.strip_prefix('(')?.strip_suffix(')')?;
-    let bytes = inner.as_bytes();
-    let mut out = Vec::new();
-    let mut i = 0;
-    while i < bytes.len() {
-        match bytes[i] {
-            b',' => i += 1,
-            b'(' => {
-                let mut depth = 0;
-                while bytes.get(i) == Some(&b'(') {
-                    depth += 1;
-                    i += 1;
-                }
-                let end = i + inner[i..].find(')')?;
-                let (p, n) = inner[i..end].split_once(',')?;
-                out.push(SigItem::Root {
-                    p: p.trim().parse().ok()?,
-                    n: n.trim().parse().ok()?,
-                    mult: depth,
-                });
-                i = end;
-                for _ in 0..depth {
-                    if bytes.get(i) != Some(&b')') {
-                        return None;
-                    }
-                    i += 1;
-                }
-            }
-            _ => {
-                let end = inner[i..].find(',').map_or(inner.len(), |e| i + e);
-                out.push(SigItem::Interval(inner[i..end].trim().parse().ok()?));
-                i = end;
-            }
-        }
-    }
-    Some(out)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::classify::notation::SignatureSequence;
 
-    #[test]
-    fn parse_printed_sequences() {
-        let s = parse("(2,((2,1)),2,(2,1),3,(2,1),2)").expect("valid");
-        assert_eq!(s.len(), 7);
-        assert_eq!(
-            s[1],
-            SigItem::Root {
-                p: 2,
-                n: 1,
-                mult: 2
-            }
-        );
-        assert_eq!(s[6], SigItem::Interval(2));
-        assert_eq!(parse("(2)"), Some(vec![SigItem::Interval(2)]));
-        assert!(parse("(2,((2,1),2)").is_none());
+    fn parse(text: &'static str) -> Vec<SigItem> {
+        SignatureSequence::parse(text)
+            .expect("a valid sequence")
+            .items()
+            .to_vec()
     }
 
     #[test]
     fn the_two_printed_forms_of_case_5_are_one_class() {
         // ERRATA item 4: equivalent only with the swap at infinity.
-        let a = parse("(2,((2,1)),2,(2,1),3,(2,1),2)").expect("valid");
-        let b = parse("(2,((1,2)),2,(2,1),3,(2,1),2)").expect("valid");
+        let a = parse("(2,((2,1)),2,(2,1),3,(2,1),2)");
+        let b = parse("(2,((1,2)),2,(2,1),3,(2,1),2)");
         assert_eq!(canonical(&a), canonical(&b));
     }
 
@@ -119,7 +69,7 @@ mod tests {
     /// reversal or complement of it is smaller.
     #[test]
     fn canonical_is_the_least_equivalent_sequence() {
-        let s = parse("(2,((2,1)),2,(2,1),3,(2,1),2)").expect("valid");
+        let s = parse("(2,((2,1)),2,(2,1),3,(2,1),2)");
         let c = canonical(&s);
         let mut cur = s.clone();
         for _ in 0..s.len() / 2 {
@@ -142,9 +92,9 @@ mod tests {
 
     #[test]
     fn case_16_has_two_classes_and_case_13_differs() {
-        let a = parse("(0,((0,2)),2,(2,1),3,(3,0),4)").expect("valid");
-        let b = parse("(1,((1,1)),3,(3,0),4,(3,0),3)").expect("valid");
-        let c = parse("(2,((1,1)),2,(1,2),1,(1,2),2)").expect("valid");
+        let a = parse("(0,((0,2)),2,(2,1),3,(3,0),4)");
+        let b = parse("(1,((1,1)),3,(3,0),4,(3,0),3)");
+        let c = parse("(2,((1,1)),2,(1,2),1,(1,2),2)");
         assert_ne!(canonical(&a), canonical(&b));
         assert_ne!(canonical(&a), canonical(&c));
     }

@@ -124,10 +124,11 @@ use qsic_algebra::matrix::SymMatrix4;
 use qsic_algebra::poly::sturm::tarski_query;
 use qsic_algebra::{IBig, Poly, Sign};
 
-/// Classifies a singular pencil (`det(λA − μB) ≡ 0`, `A` and `B` not proportional), exactly.
+/// Classifies a singular pencil, exactly.
 ///
-/// `None` only if the preconditions fail (then the pencil is proportional or regular, and
-/// the caller has another route); for every valid input the type is determined.
+/// Precondition, decided by the caller (`pencil_kind`): `det(λA − μB) ≡ 0` and `A`, `B`
+/// not proportional. It is not checked again: every branch below relies on it, and
+/// `None` (no type) would mean it failed.
 pub(crate) fn classify_singular(
     a: &SymMatrix4,
     b: &SymMatrix4,
@@ -154,8 +155,9 @@ fn singular_morphology(a: &SymMatrix4, b: &SymMatrix4) -> Option<Morphology> {
         // k = 2: a pencil of binary forms (pairs of planes through the common line).
         2 => {
             let i = [pivots[0], pivots[1]];
-            binary_pencil(&sub2(a, i), &sub2(b, i))
+            Some(binary_pencil(&sub2(a, i), &sub2(b, i)))
         }
+        // k ≥ 3 means A ∝ B, excluded by the precondition.
         _ => None,
     }
 }
@@ -321,7 +323,7 @@ fn conic_pencil(a3: &M3, b3: &M3) -> Option<Morphology> {
                 match rank3(&member(&-&c2, &(IBig::from(3) * &c3))) {
                     2 => (C::LineAndTripleLine, R::Same),
                     1 => (C::QuadrupleLine, R::Same),
-                    _ => return None, // rank 0: A ∝ B
+                    _ => return None, // rank 0 would mean A ∝ B
                 }
             } else {
                 // a double root α = n/d: [21] (rank 2) or [(11)1] (rank 1)
@@ -349,7 +351,7 @@ fn conic_pencil(a3: &M3, b3: &M3) -> Option<Morphology> {
                         };
                         (C::TwoConcurrentDoubleLines, real)
                     }
-                    _ => return None,
+                    _ => return None, // rank 0 would mean A ∝ B
                 }
             }
         }
@@ -358,18 +360,9 @@ fn conic_pencil(a3: &M3, b3: &M3) -> Option<Morphology> {
 }
 
 /// The pencil of binary forms `(A₂, B₂)` obtained by projecting from the common singular
-/// line (`k = 2`).
-fn binary_pencil(a: &M2, b: &M2) -> Option<Morphology> {
+/// line (`k = 2`); they are not proportional, since `A` and `B` are not.
+fn binary_pencil(a: &M2, b: &M2) -> Morphology {
     use ComplexType as C;
-    // proportional forms would mean A ∝ B
-    let (av, bv) = (
-        [&a[0][0], &a[0][1], &a[1][1]],
-        [&b[0][0], &b[0][1], &b[1][1]],
-    );
-    let proportional = (0..3).all(|i| (0..3).all(|j| av[i] * bv[j] == av[j] * bv[i]));
-    if proportional {
-        return None;
-    }
     // det(λA − μB) = λ²·det A − λμ·s + μ²·det B
     let det_a = &a[0][0] * &a[1][1] - &a[0][1] * &a[0][1];
     let det_b = &b[0][0] * &b[1][1] - &b[0][1] * &b[0][1];
@@ -380,10 +373,10 @@ fn binary_pencil(a: &M2, b: &M2) -> Option<Morphology> {
     } else {
         C::QuadrupleLineOfPlanePairs
     };
-    Some(Morphology {
+    Morphology {
         complex,
         real: RealType::Same,
-    })
+    }
 }
 
 /// The description of each singular type: real components, how they meet, a summary.
@@ -509,12 +502,5 @@ mod tests {
         let (m, d) = classify_singular(&a, &b).expect("a singular pencil");
         assert_eq!(m.complex, ComplexType::ConicAndDoubleLine);
         assert_eq!(d.components.len(), 2);
-    }
-
-    #[test]
-    fn proportional_input_is_refused() {
-        let a = sym([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]]);
-        let b = sym([[2, 0, 0, 0], [0, 2, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]]);
-        assert!(classify_singular(&a, &b).is_none());
     }
 }

@@ -1,20 +1,25 @@
 //! The 35 morphologies of a regular pencil (Tu, Wang, Mourrain, Wang, CAGD 2009, Tables 1–3),
 //! with the corrections of `shared/papers/ERRATA.md`: one pair of parentheses per unit of
 //! root multiplicity, case 10 as `[22]_0`, a second class for case 16.
+//!
+//! The notations are written as the paper prints them and read by the compiler (module
+//! `notation`): a malformed entry, or one whose index sequence disagrees with its signature
+//! sequence or Segre characteristic, does not compile.
 
 use super::morphology::{
     ComplexType as C, Component, ComponentKind as K, Description, RealType as R,
     SingularPointKind as S, SingularPoints,
 };
+use super::notation::{case_class, case_segre, IndexSequence, Segre, SignatureSequence};
 
 /// One row of the table: a case and the sequences that characterise it.
 pub(crate) struct CaseRow {
     /// The paper's case number, 1–35.
     pub case: u8,
-    /// Segre characteristic with the number of distinct real roots, as printed.
-    pub segre: &'static str,
+    /// Segre characteristic with the number of distinct real roots.
+    pub segre: Segre,
     /// The signature sequences of the case (one per inequivalent class), each with its index sequence.
-    pub sequences: &'static [(&'static str, &'static str)],
+    pub sequences: &'static [(SignatureSequence, IndexSequence)],
     pub complex: C,
     pub real: R,
     pub components: &'static [(K, u8, u8, Option<bool>)],
@@ -53,8 +58,8 @@ macro_rules! row {
      [$(($k:ident, $m:expr, $n:expr, $cl:expr)),*], [$(($s:ident, $sn:expr)),*], $sum:expr) => {
         CaseRow {
             case: $case,
-            segre: $segre,
-            sequences: &[$(($sig, $idx)),+],
+            segre: case_segre($segre),
+            sequences: &[$(case_class($segre, $sig, $idx)),+],
             complex: C::$c,
             real: R::$r,
             components: &[$((K::$k, $m, $n, $cl)),*],
