@@ -1,34 +1,106 @@
 //! Real algebraic numbers: a square-free integer polynomial and an isolating interval
 //! with rational ends, refined on demand. Signs and comparisons are exact.
+//!
+//! # Refinement kept across calls
+//! Each number carries, besides the isolating interval it was made with, a refinement
+//! state (the narrowest interval found so far and the speed of quadratic interval
+//! refinement) behind an `Arc<Mutex<_>>` shared by its clones. Signs, comparisons and
+//! approximations take `&self`, start from that state and store back what they refined, so
+//! repeated questions at one number refine once. Why a lock rather than `&mut self`: the
+//! number is a value inside other values (`PencilRoot`, `ProjectivePoint`, sorted lists, a
+//! number field's context) queried through shared references, across threads; the state
+//! only ever narrows, so any stored interval is a valid answer, and a lock is held only to
+//! copy the state in or out (never while refining, never two at once: no deadlock, and a
+//! poisoned lock still holds a valid state). The stated interval ([`AlgebraicReal::interval`],
+//! `Display`) changes only through the `&mut self` methods.
+//!
+//! # Signs
+//! [`AlgebraicReal::sign_of`] first evaluates `q` on the refined interval by Horner's scheme
+//! in fixed-point interval arithmetic ([`sign_on_interval`]): once the interval is narrow,
+//! a nonzero sign costs `deg q` multiplications of integers of about `log₂(1/width)` bits.
+//! Otherwise zero is decided exactly by `gcd(poly, q)` changing sign on the interval, and a
+//! nonzero sign by refining until the enclosure excludes zero.
+//! [`AlgebraicReal::sign_of_sturm_tarski`] is the refinement-free second route.
 
 use crate::poly::Poly;
 use crate::roots::{isolate_squarefree_real_roots, refine_step, simplest_between, RootInterval};
 use crate::sign::Sign;
+use dashu_int::ops::{BitTest, DivEuclid};
+use dashu_int::IBig;
 use dashu_ratio::RBig;
 use std::cmp::Ordering;
 use std::fmt;
+use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 
 /// A real algebraic number `α`.
 ///
 /// Invariant ([`AlgebraicReal::is_valid`]): `poly` is square-free, primitive, of positive
-/// degree, and either `α` is the rational `interval` end (`RootInterval::Exact`) or
-/// `α` is the only root of `poly` in the open interval, whose ends are not roots.
+/// degree, and for the stated interval and the refined one alike, either `α` is the rational
+/// interval end (`RootInterval::Exact`) or `α` is the only root of `poly` in the open
+/// interval, whose ends are not roots.
 #[derive(Clone)]
 pub struct AlgebraicReal {
     poly: Poly,
     interval: RootInterval,
-    /// State of the quadratic interval refinement (see [`refine_step`]).
+    /// The narrowest interval known, shared by clones (module docs).
+    refined: Arc<Mutex<Refinement>>,
+}
+
+/// An isolating interval and the state of its quadratic refinement (see [`refine_step`]).
+#[derive(Clone, Debug)]
+struct Refinement {
+    interval: RootInterval,
     speed: usize,
 }
 
+impl Refinement {
+    fn new(interval: RootInterval) -> Refinement {
+        Refinement { interval, speed: 2 }
+    }
+
+    /// One step of quadratic interval refinement (exact values stay).
+    fn step(&mut self, poly: &Poly) {
+        self.interval = refine_step(poly, &self.interval, &mut self.speed);
+    }
+
+    /// `true` if the interval is shorter than `width` (or exact).
+    fn is_within(&self, width: &RBig) -> bool {
+        match &self.interval {
+            RootInterval::Exact(_) => true,
+            RootInterval::Open(lo, hi) => &(hi - lo) < width,
+        }
+    }
+
+    /// `true` if this interval is strictly narrower than `other`'s.
+    fn is_narrower_than(&self, other: &Refinement) -> bool {
+        match (&self.interval, &other.interval) {
+            (_, RootInterval::Exact(_)) => false,
+            (RootInterval::Exact(_), _) => true,
+            (RootInterval::Open(a, b), RootInterval::Open(c, d)) => b - a < d - c,
+        }
+    }
+
+    /// The sign of `q` at the root if the interval decides it without refinement.
+    fn sign_of(&self, q: &Poly) -> Option<Sign> {
+        match &self.interval {
+            RootInterval::Exact(v) => Some(q.sign_at(v)),
+            RootInterval::Open(lo, hi) => sign_on_interval(q, lo, hi),
+        }
+    }
+}
+
 impl AlgebraicReal {
+    fn with_interval(poly: Poly, interval: RootInterval) -> AlgebraicReal {
+        AlgebraicReal {
+            poly,
+            refined: Arc::new(Mutex::new(Refinement::new(interval.clone()))),
+            interval,
+        }
+    }
+
     /// The rational `v` as an algebraic number.
     pub fn from_rational(v: RBig) -> AlgebraicReal {
-        AlgebraicReal {
-            poly: Poly::vanishing_at(&v),
-            interval: RootInterval::Exact(v),
-            speed: 2,
-        }
+        AlgebraicReal::with_interval(Poly::vanishing_at(&v), RootInterval::Exact(v))
     }
 
     /// All real roots of `p`, in increasing order, each once.
@@ -42,11 +114,7 @@ impl AlgebraicReal {
             .into_iter()
             .map(|iv| match iv {
                 RootInterval::Exact(v) => AlgebraicReal::from_rational(v),
-                iv => AlgebraicReal {
-                    poly: sf.clone(),
-                    interval: iv,
-                    speed: 2,
-                },
+                iv => AlgebraicReal::with_interval(sf.clone(), iv),
             })
             .collect()
     }
@@ -62,24 +130,28 @@ impl AlgebraicReal {
                 .is_zero()
                 .then(|| AlgebraicReal::from_rational(v.clone())),
             RootInterval::Open(lo, hi) => (poly.sign_at(lo) * poly.sign_at(hi) == Sign::Negative)
-                .then(|| AlgebraicReal {
-                    poly: poly.clone(),
-                    interval: interval.clone(),
-                    speed: 2,
-                }),
+                .then(|| AlgebraicReal::with_interval(poly.clone(), interval.clone())),
         }
+    }
+
+    /// The same number defined by `factor`, a primitive factor of [`Self::poly`] of which
+    /// it is a root, isolated by the refined interval (a fresh refinement state).
+    pub(crate) fn with_factor(&self, factor: &Poly) -> AlgebraicReal {
+        debug_assert!(self.poly.div_exact(factor).is_some() && self.is_root_of_divisor(factor));
+        AlgebraicReal::with_interval(factor.clone(), self.snapshot().interval)
     }
 
     /// Checks the invariant (used in `debug_assert!`).
     pub fn is_valid(&self) -> bool {
-        match &self.interval {
+        let valid = |iv: &RootInterval| match iv {
             RootInterval::Exact(v) => self.poly.sign_at(v).is_zero(),
             RootInterval::Open(lo, hi) => {
                 lo < hi
                     && self.poly.is_squarefree()
                     && self.poly.sign_at(lo) * self.poly.sign_at(hi) == Sign::Negative
             }
-        }
+        };
+        valid(&self.interval) && valid(&self.snapshot().interval)
     }
 
     /// The defining square-free polynomial (for a rational, `q·x − p`).
@@ -87,12 +159,13 @@ impl AlgebraicReal {
         &self.poly
     }
 
-    /// The isolating interval.
+    /// The stated isolating interval (the one made with, or narrowed by [`Self::refine`]
+    /// and [`Self::refine_to`]).
     pub fn interval(&self) -> &RootInterval {
         &self.interval
     }
 
-    /// `Some(v)` if the number is known to be the rational `v`.
+    /// `Some(v)` if the number is known to be the rational `v` (from the stated interval).
     pub fn as_rational(&self) -> Option<&RBig> {
         match &self.interval {
             RootInterval::Exact(v) => Some(v),
@@ -100,27 +173,60 @@ impl AlgebraicReal {
         }
     }
 
-    /// Narrows the isolating interval: at least halves it, and squares the rate of
-    /// shrinking on success (quadratic interval refinement; exact numbers are left as they are).
-    pub fn refine(&mut self) {
-        self.interval = refine_step(&self.poly, &self.interval, &mut self.speed);
+    /// The shared refinement state, whatever another holder did with the lock.
+    fn lock(&self) -> MutexGuard<'_, Refinement> {
+        self.refined.lock().unwrap_or_else(PoisonError::into_inner)
     }
 
-    /// Refines until the interval is shorter than `width`.
-    pub fn refine_to(&mut self, width: &RBig) {
-        while let RootInterval::Open(lo, hi) = &self.interval {
-            if &(hi - lo) < width {
-                break;
-            }
-            self.refine();
+    /// A copy of the shared refinement state.
+    fn snapshot(&self) -> Refinement {
+        self.lock().clone()
+    }
+
+    /// Stores a refinement if it is narrower than the shared one.
+    fn store(&self, r: Refinement) {
+        let mut shared = self.lock();
+        if r.is_narrower_than(&shared) {
+            *shared = r;
         }
+    }
+
+    /// An isolating interval shorter than `width` (or the exact value), refining the shared
+    /// state as far as needed (quadratic refinement: about `log₂ log₂ (1/width)` steps once
+    /// the root is isolated from the others). `self` keeps its stated interval.
+    pub fn refined_interval(&self, width: &RBig) -> RootInterval {
+        let mut r = self.snapshot();
+        if r.is_within(width) {
+            return r.interval;
+        }
+        while !r.is_within(width) {
+            r.step(&self.poly);
+        }
+        let iv = r.interval.clone();
+        self.store(r);
+        iv
+    }
+
+    /// Narrows the stated isolating interval: at least halves it, and squares the rate of
+    /// shrinking on success (quadratic interval refinement; exact numbers are left as they
+    /// are). Starts from the shared refinement state.
+    pub fn refine(&mut self) {
+        let mut r = self.snapshot();
+        r.step(&self.poly);
+        self.interval = r.interval.clone();
+        self.store(r);
+    }
+
+    /// Refines the stated interval until it is shorter than `width`.
+    pub fn refine_to(&mut self, width: &RBig) {
+        self.interval = self.refined_interval(width);
     }
 
     /// The exact sign of `q(α)`.
     ///
-    /// Zero is decided by `gcd(poly, q)` changing sign on the isolating interval; a nonzero
-    /// sign by refining until Descartes' rule shows that `q` has no root in the interval.
-    /// Works on a copy: `self` keeps its interval.
+    /// Tried first on the refined interval by interval arithmetic ([`sign_on_interval`]);
+    /// zero is decided by `gcd(poly, q)` changing sign on the isolating interval; a nonzero
+    /// sign by refining (the shared state) until the interval enclosure of `q` excludes zero.
     ///
     /// ```
     /// # use qsic_algebra::{AlgebraicReal, Poly, Sign};
@@ -130,33 +236,80 @@ impl AlgebraicReal {
     /// assert_eq!(sqrt2.sign_of(&Poly::from_rational_roots(&[(1415, 1000)])), Sign::Negative);
     /// ```
     pub fn sign_of(&self, q: &Poly) -> Sign {
-        let (lo, hi) = match &self.interval {
-            RootInterval::Exact(v) => return q.sign_at(v),
-            RootInterval::Open(lo, hi) => (lo.clone(), hi.clone()),
-        };
-        if q.is_zero() {
-            return Sign::Zero;
-        }
         if q.is_constant() {
             return Sign::of(&q.leading());
         }
-        let g = self.poly.gcd(q);
-        if g.degree().unwrap_or(0) > 0 && g.sign_at(&lo) * g.sign_at(&hi) == Sign::Negative {
-            return Sign::Zero;
+        let r = self.snapshot();
+        if let Some(s) = r.sign_of(q) {
+            return s;
         }
-        let mut iv = RootInterval::Open(lo, hi);
-        let mut speed = self.speed;
-        loop {
-            match &iv {
-                RootInterval::Exact(v) => return q.sign_at(v),
-                RootInterval::Open(lo, hi) => {
-                    if q.count_roots_in_descartes(lo, hi) == 0 {
-                        // no root of q inside; its ends may be roots, the midpoint is not
-                        return q.sign_at(&((lo + hi) / RBig::from(2)));
-                    }
+        if let RootInterval::Open(lo, hi) = &r.interval {
+            let g = self.poly.gcd(q);
+            if g.degree().unwrap_or(0) > 0 && g.sign_at(lo) * g.sign_at(hi) == Sign::Negative {
+                return Sign::Zero;
+            }
+        }
+        self.refine_until_signed(r, q)
+    }
+
+    /// The sign of `q(α)` if the refined interval decides it without refining further
+    /// (exact when it answers).
+    pub(crate) fn sign_on_refined(&self, q: &Poly) -> Option<Sign> {
+        self.snapshot().sign_of(q)
+    }
+
+    /// The sign of `q(α)`, known to be nonzero: refines until interval arithmetic decides.
+    /// (With `q(α) = 0` and `α` irrational this would not end: callers decide zero first.)
+    pub(crate) fn sign_of_nonzero(&self, q: &Poly) -> Sign {
+        let r = self.snapshot();
+        match r.sign_of(q) {
+            Some(s) => s,
+            None => self.refine_until_signed(r, q),
+        }
+    }
+
+    /// Refines `r` until it decides the sign of `q` (nonzero at `α`), and stores it.
+    fn refine_until_signed(&self, mut r: Refinement, q: &Poly) -> Sign {
+        let s = loop {
+            r.step(&self.poly);
+            if let Some(s) = r.sign_of(q) {
+                break s;
+            }
+        };
+        self.store(r);
+        s
+    }
+
+    /// `true` if `α` is a root of `g`, a divisor of [`Self::poly`] over ℚ (integer or
+    /// rational coefficients, any scale): two signs at the ends of the refined interval.
+    pub(crate) fn is_root_of_divisor(&self, g: &Poly) -> bool {
+        match self.snapshot().interval {
+            RootInterval::Exact(v) => g.sign_at(&v).is_zero(),
+            RootInterval::Open(lo, hi) => g.sign_at(&lo) * g.sign_at(&hi) == Sign::Negative,
+        }
+    }
+
+    /// The exact sign of `q(α)` by the Sturm–Tarski theorem on the isolating interval
+    /// ([`tarski_query_in`](crate::poly::sturm::tarski_query_in)): no refinement, at the
+    /// cost of a signed remainder sequence of `(poly, poly'·q)`. A second route to
+    /// [`Self::sign_of`].
+    ///
+    /// ```
+    /// # use qsic_algebra::{AlgebraicReal, Poly, Sign};
+    /// let r = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 0, 1])).pop().unwrap(); // ∛2
+    /// assert_eq!(r.sign_of_sturm_tarski(&Poly::from_rational_roots(&[(126, 100)])), Sign::Negative);
+    /// assert_eq!(r.sign_of_sturm_tarski(&Poly::from_i64s(&[-4, 0, 0, 0, 0, 0, 1])), Sign::Zero);
+    /// ```
+    pub fn sign_of_sturm_tarski(&self, q: &Poly) -> Sign {
+        match self.snapshot().interval {
+            RootInterval::Exact(v) => q.sign_at(&v),
+            RootInterval::Open(lo, hi) => {
+                match crate::poly::sturm::tarski_query_in(&self.poly, q, &lo, &hi) {
+                    0 => Sign::Zero,
+                    t if t > 0 => Sign::Positive,
+                    _ => Sign::Negative,
                 }
             }
-            iv = refine_step(&self.poly, &iv, &mut speed);
         }
     }
 
@@ -178,41 +331,121 @@ impl AlgebraicReal {
 
     /// A float approximation (for display only).
     pub fn to_f64(&self) -> f64 {
-        let mut a = self.clone();
-        a.refine_to(&RBig::from_parts_signed(
-            1.into(),
-            dashu_int::IBig::ONE << 60,
-        ));
-        let (lo, hi) = (
-            a.interval.lo().to_f64().value(),
-            a.interval.hi().to_f64().value(),
-        );
-        (lo + hi) / 2.0
+        let iv = self.refined_interval(&RBig::from_parts_signed(1.into(), IBig::ONE << 60));
+        (iv.lo().to_f64().value() + iv.hi().to_f64().value()) / 2.0
     }
 
     /// A rational strictly between `self` and `other` (`self < other` required).
     pub fn rational_between(&self, other: &AlgebraicReal) -> RBig {
-        let (mut a, mut b) = (self.clone(), other.clone());
-        loop {
+        let (mut a, mut b) = (self.snapshot(), other.snapshot());
+        let v = loop {
             let (ahi, blo) = (a.interval.hi().clone(), b.interval.lo().clone());
-            let a_exact = a.as_rational().is_some();
-            let b_exact = b.as_rational().is_some();
+            let a_exact = a.interval.as_exact().is_some();
+            let b_exact = b.interval.as_exact().is_some();
             if ahi < blo || (ahi == blo && !a_exact && !b_exact) {
-                return simplest_between(&ahi, &blo, !a_exact, !b_exact);
+                break simplest_between(&ahi, &blo, !a_exact, !b_exact);
             }
             if ahi == blo && a_exact != b_exact {
                 // a point strictly inside the open interval next to the exact value
                 if !a_exact {
-                    a.refine();
+                    a.step(&self.poly);
                 } else {
-                    b.refine();
+                    b.step(&other.poly);
                 }
                 continue;
             }
-            a.refine();
-            b.refine();
-        }
+            a.step(&self.poly);
+            b.step(&other.poly);
+        };
+        self.store(a);
+        other.store(b);
+        v
     }
+}
+
+/// The sign of `q` on the whole closed interval `[lo, hi]` (`lo ≤ hi`), if Horner's scheme
+/// in interval arithmetic proves one: `Some(s)` means `q(x)` has sign `s` for every `x` in
+/// the interval; `None` means undecided (the enclosure meets zero).
+///
+/// The arithmetic is fixed point with `k` fractional bits, `k ≈ log₂(1/(hi − lo)) + 16 +
+/// log₂ deg q`: integers `[aₗ, aₕ]` enclose `2^k` times each Horner partial value, products
+/// are bounded by their extreme corners and rounded outward (floor below, ceiling above),
+/// so the enclosure is rigorous; its width is about `(hi − lo)` times a majorant of `|q′|`,
+/// so it decides every nonzero sign once the interval is narrow enough. Cost: `deg q`
+/// rounds of two (four when the interval holds zero) integer products.
+///
+/// ```
+/// # use qsic_algebra::{algebraic::sign_on_interval, Poly, RBig, Sign};
+/// let p = Poly::from_i64s(&[-2, 0, 1]); // x² − 2 on [1.4, 1.5]: both signs
+/// let r = |n: i64| RBig::from_parts_signed(n.into(), 1000.into());
+/// assert_eq!(sign_on_interval(&p, &r(1400), &r(1500)), None);
+/// assert_eq!(sign_on_interval(&p, &r(1415), &r(1416)), Some(Sign::Positive));
+/// assert_eq!(sign_on_interval(&p, &r(-1414), &r(1414)), Some(Sign::Negative));
+/// ```
+pub fn sign_on_interval(q: &Poly, lo: &RBig, hi: &RBig) -> Option<Sign> {
+    let n = q.degree()?;
+    if n == 0 {
+        return Some(Sign::of(&q.leading()));
+    }
+    let w = hi - lo;
+    let den_bits = IBig::from(w.denominator().clone()).bit_len();
+    let k = den_bits.saturating_sub(w.numerator().bit_len())
+        + 16
+        + (usize::BITS - n.leading_zeros()) as usize;
+    // x ∈ [xl, xh]·2^−k; reflect an interval of non-positive numbers to x ≥ 0
+    let (mut xl, mut xh) = (floor_scaled(lo, k), -floor_scaled(&-hi, k));
+    let reflect = xh <= IBig::ZERO;
+    if reflect {
+        (xl, xh) = (-xh, -xl);
+    }
+    let coeff = |i: usize| {
+        let c = &q.coeffs()[i];
+        if reflect && i % 2 == 1 {
+            -(c << k)
+        } else {
+            c << k
+        }
+    };
+    let mut al = coeff(n);
+    let mut ah = al.clone();
+    let nonnegative = xl >= IBig::ZERO;
+    for i in (0..n).rev() {
+        let (pl, ph) = if nonnegative {
+            (
+                if al >= IBig::ZERO {
+                    &al * &xl
+                } else {
+                    &al * &xh
+                },
+                if ah >= IBig::ZERO {
+                    &ah * &xh
+                } else {
+                    &ah * &xl
+                },
+            )
+        } else {
+            let p = [&al * &xl, &al * &xh, &ah * &xl, &ah * &xh];
+            let lo = p.iter().min().cloned().unwrap_or(IBig::ZERO);
+            let hi = p.iter().max().cloned().unwrap_or(IBig::ZERO);
+            (lo, hi)
+        };
+        let c = coeff(i);
+        al = (pl >> k) + &c;
+        ah = -((-ph) >> k) + c;
+    }
+    if al > IBig::ZERO {
+        Some(Sign::Positive)
+    } else if ah < IBig::ZERO {
+        Some(Sign::Negative)
+    } else {
+        None
+    }
+}
+
+/// `⌊v·2^k⌋`.
+fn floor_scaled(v: &RBig, k: usize) -> IBig {
+    let den = IBig::from(v.denominator().clone());
+    (v.numerator() << k).div_euclid(den)
 }
 
 impl PartialEq for AlgebraicReal {
@@ -225,6 +458,17 @@ impl Eq for AlgebraicReal {}
 impl PartialOrd for AlgebraicReal {
     fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
         Some(self.cmp(other))
+    }
+}
+
+/// `a < b` (`Less`) or `a > b` (`Greater`) if two isolating intervals are apart.
+fn separated(a: &RootInterval, b: &RootInterval) -> Option<Ordering> {
+    if a.hi() <= b.lo() && a != b {
+        Some(Ordering::Less)
+    } else if b.hi() <= a.lo() && a != b {
+        Some(Ordering::Greater)
+    } else {
+        None
     }
 }
 
@@ -241,25 +485,35 @@ impl Ord for AlgebraicReal {
         if self.as_rational().is_some() {
             return other.cmp(self).reverse();
         }
+        let (mut a, mut b) = (self.snapshot(), other.snapshot());
+        if let (RootInterval::Exact(x), RootInterval::Exact(y)) = (&a.interval, &b.interval) {
+            return x.cmp(y);
+        }
+        if let Some(o) = separated(&a.interval, &b.interval) {
+            return o;
+        }
         if other.is_root_of(&self.poly) {
-            // self's interval holds exactly one root of self.poly
-            let lo = AlgebraicReal::from_rational(self.interval.lo().clone());
-            let hi = AlgebraicReal::from_rational(self.interval.hi().clone());
-            if other > &lo && other < &hi {
+            // a's interval holds exactly one root of self.poly
+            let lo = AlgebraicReal::from_rational(a.interval.lo().clone());
+            let hi = AlgebraicReal::from_rational(a.interval.hi().clone());
+            if a.interval.as_exact().is_none() && other > &lo && other < &hi {
                 return Ordering::Equal;
             }
-        }
-        let (mut a, mut b) = (self.clone(), other.clone());
-        loop {
-            if a.interval.hi() <= b.interval.lo() {
-                return Ordering::Less;
+            if let Some(v) = a.interval.as_exact() {
+                return AlgebraicReal::from_rational(v.clone()).cmp(other);
             }
-            if b.interval.hi() <= a.interval.lo() {
-                return Ordering::Greater;
-            }
-            a.refine();
-            b.refine();
         }
+        // different numbers: refinement separates them
+        let o = loop {
+            if let Some(o) = separated(&a.interval, &b.interval) {
+                break o;
+            }
+            a.step(&self.poly);
+            b.step(&other.poly);
+        };
+        self.store(a);
+        other.store(b);
+        o
     }
 }
 
@@ -270,7 +524,7 @@ impl fmt::Debug for AlgebraicReal {
 }
 
 impl fmt::Display for AlgebraicReal {
-    /// `3/2`, or `root of x^2 - 2 in (1, 3/2)`.
+    /// `3/2`, or `root of x^2 - 2 in (1, 3/2)` (the stated interval).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match &self.interval {
             RootInterval::Exact(v) => write!(f, "{v}"),
@@ -282,6 +536,118 @@ impl fmt::Display for AlgebraicReal {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::poly::sturm::SturmSequence;
+    use proptest::prelude::*;
+
+    fn rat(n: i64, d: i64) -> RBig {
+        RBig::from_parts_signed(n.into(), d.into())
+    }
+
+    /// `T₆` and `1024 T₆ − 1`: their product has degree 12 and six pairs of roots about
+    /// `10⁻⁴` apart.
+    fn close_pair_factors() -> [Poly; 2] {
+        let (mut a, mut b) = (Poly::from_i64s(&[1]), Poly::from_i64s(&[0, 1]));
+        for _ in 0..6 {
+            let c = &(&Poly::from_i64s(&[0, 2]) * &b) - &a;
+            (a, b) = (b, c);
+        }
+        let other = &a.scale(&IBig::from(1024)) - &Poly::from_i64s(&[1]);
+        [a, other]
+    }
+
+    /// Repeated signs reuse the shared refinement: clones see it, the stated interval
+    /// stays, and a second sign does not refine again.
+    #[test]
+    fn refinement_is_shared_and_kept() {
+        fn send_sync<T: Send + Sync + Clone>() {}
+        send_sync::<AlgebraicReal>();
+        let [t6, other] = close_pair_factors();
+        let m = &t6 * &other;
+        let roots = AlgebraicReal::real_roots_of(&m);
+        assert_eq!(roots.len(), 12);
+        // the widest isolating interval of the seventh root
+        let stated = RootInterval::Open(
+            roots[5].rational_between(&roots[6]),
+            roots[6].rational_between(&roots[7]),
+        );
+        let a = &AlgebraicReal::from_isolating_interval(&m, &stated).expect("isolated");
+        let b = a.clone();
+        let width = |iv: &RootInterval| iv.hi() - iv.lo();
+        // the factor that does not vanish: its sign needs α apart from its close neighbour
+        let q = if a.sign_of_sturm_tarski(&t6).is_zero() {
+            other
+        } else {
+            t6
+        };
+        let s = a.sign_of_sturm_tarski(&q);
+        assert!(!s.is_zero());
+        assert_eq!(sign_on_interval(&q, stated.lo(), stated.hi()), None);
+        assert_eq!(a.sign_of(&q), s);
+        let after_first = b.refined_interval(&RBig::from(1000));
+        assert!(width(&after_first) < width(&stated));
+        assert_eq!(b.interval(), &stated);
+        for _ in 0..10 {
+            assert_eq!(b.sign_of(&q), s);
+        }
+        assert_eq!(a.refined_interval(&RBig::from(1000)), after_first);
+        assert!(a.is_valid() && b.is_valid());
+        // refine_to narrows the stated interval of this value only
+        let mut c = b.clone();
+        c.refine_to(&rat(1, 1 << 40));
+        assert!(width(c.interval()) < rat(1, 1 << 40));
+        assert_eq!(a.interval(), &stated);
+        assert_eq!(
+            a.to_string(),
+            format!("root of {m} in ({}, {})", stated.lo(), stated.hi())
+        );
+    }
+
+    proptest! {
+        /// A sign from interval arithmetic holds on the whole interval (Sturm count and
+        /// an end), and a narrow interval about a non-root decides.
+        #[test]
+        fn interval_signs_are_rigorous(
+            c in prop::collection::vec(-20i64..20, 1..9),
+            lo in (-40i64..40, 1i64..10),
+            w in (1i64..40, 1i64..10),
+        ) {
+            let q = Poly::from_i64s(&c);
+            let lo = rat(lo.0, lo.1);
+            let hi = &lo + rat(w.0, w.1);
+            if let Some(s) = sign_on_interval(&q, &lo, &hi) {
+                prop_assert_eq!(q.sign_at(&lo), s);
+                if q.degree().unwrap_or(0) > 0 {
+                    prop_assert_eq!(SturmSequence::new(&q).count_roots_in(&lo, &hi), 0);
+                }
+            }
+            let s = q.sign_at(&lo);
+            if !s.is_zero() {
+                let eps = RBig::from_parts_signed(IBig::ONE, IBig::ONE << 80);
+                prop_assert_eq!(sign_on_interval(&q, &(&lo - &eps), &(&lo + &eps)), Some(s));
+            }
+        }
+
+        /// `sign_of` (intervals, gcd, refinement) agrees with the Sturm–Tarski sign, zeros
+        /// included (`q` shares a factor with `p`).
+        #[test]
+        fn signs_agree_with_sturm_tarski(
+            f in prop::collection::vec(-9i64..9, 2..5),
+            g in prop::collection::vec(-9i64..9, 2..5),
+            r in prop::collection::vec(-9i64..9, 1..5),
+            shared in any::<bool>(),
+        ) {
+            let (f, g, r) = (Poly::from_i64s(&f), Poly::from_i64s(&g), Poly::from_i64s(&r));
+            let q = if shared { &f * &r } else { &(&f * &r) + &g };
+            for alpha in AlgebraicReal::real_roots_of(&(&f * &g)) {
+                let s = alpha.sign_of(&q);
+                prop_assert_eq!(s, alpha.sign_of_sturm_tarski(&q), "{} at {}", q, alpha);
+                prop_assert_eq!(alpha.sign_of(&q), s);
+                if shared && alpha.is_root_of(&f) {
+                    prop_assert_eq!(s, Sign::Zero);
+                }
+            }
+        }
+    }
 
     /// An interval isolating a root of a multiple of `poly` gives that root when `poly`
     /// changes sign on it (or vanishes at an exact end), and nothing otherwise.

@@ -7,8 +7,8 @@
 //! | [`ring`] | the [`Ring`] and [`Field`] traits: algorithms written once for ℤ, ℚ, ℤ\[t\], ℚ(α), … |
 //! | [`poly`] | dense univariate polynomials `Poly<C>` over a ring: arithmetic, subresultants, resultants, gcd, square-free decomposition; over ℤ also Sturm and Descartes counts |
 //! | [`roots`] | real root isolation with rational (dyadic) isolating intervals |
-//! | [`field`] | exact real extensions of ℚ: ℚ(√δ) ([`field::Quadratic`]) |
-//! | [`algebraic`] | real algebraic numbers and the exact sign of a polynomial at them |
+//! | [`field`] | exact real extensions of ℚ: ℚ(√δ) ([`field::Quadratic`]), ℚ(α) by dynamic evaluation ([`field::NumberField`]) |
+//! | [`algebraic`] | real algebraic numbers (refinement shared across calls) and the exact sign of a polynomial at them |
 //! | [`matrix`] | small symmetric integer matrices, exact inertia, matrix pencils `λA − μB` |
 //! | [`factor`] | factorization of integers with a 128-bit cofactor bound, primality, Jacobi symbols, square roots modulo primes |
 //! | [`conic`] | rational points on conics: Legendre's theorem, a point or a point over ℚ(√δ), parameterization through a point |

@@ -6,7 +6,7 @@
 //! | ℚ | [`RBig`] (a [`Field`]) |
 //! | ℤ\[t\], ℤ\[t\]\[λ\], ℚ\[x\], … | [`Poly<C>`](crate::Poly) over any of these |
 //! | ℚ(√δ) | [`Quadratic`](crate::field::Quadratic) (a [`Field`]) |
-//! | ℚ(α) | [`NumberFieldElement`](crate::field) (a [`Field`], D5 splitting) |
+//! | ℚ(α) | [`NumberFieldElement`](crate::field::NumberFieldElement) (a [`Field`], D5 splitting) |
 //!
 //! Every ring here is a commutative integral domain of characteristic zero (or, for ℚ(α)
 //! with a reducible defining polynomial, is treated as one by dynamic evaluation).

@@ -71,13 +71,35 @@ fn variations_across_the_line(seq: &[Poly]) -> i64 {
 /// assert_eq!(tarski_query(&Poly::from_roots(&[-1, 0, 2]), &Poly::from_roots(&[1])), -1);
 /// ```
 pub fn tarski_query(p: &Poly, q: &Poly) -> i64 {
+    variations_across_the_line(&tarski_sequence(p, q))
+}
+
+/// The signed remainder sequence of `(p, p'·q)` (Sturm–Tarski).
+fn tarski_sequence(p: &Poly, q: &Poly) -> Vec<Poly> {
     // p'q may be replaced by a positive multiple of its remainder mod p: the Cauchy index
     // of p'q/p does not change when a multiple of p is added.
     let mut pq = &p.derivative() * q;
     if pq.degree() >= p.degree() {
         pq = -&neg_rem(&pq, p);
     }
-    variations_across_the_line(&signed_remainder_sequence(p.clone(), pq))
+    signed_remainder_sequence(p.clone(), pq)
+}
+
+/// The Tarski query on an interval: `Σ sign q(α)` over the distinct roots `α` of `p` in
+/// `(a, b]`, for `a < b` that are not roots of `p` (the variations of the same sequence as
+/// [`tarski_query`] at `a` minus at `b`). With one root of `p` inside, it is the sign of
+/// `q` there, decided without refinement.
+///
+/// ```
+/// # use qsic_algebra::{Poly, RBig, poly::sturm::tarski_query_in};
+/// // √2 is the one root of x² − 2 in (1, 2]; x² − 3 is negative there
+/// let (p, q) = (Poly::from_i64s(&[-2, 0, 1]), Poly::from_i64s(&[-3, 0, 1]));
+/// assert_eq!(tarski_query_in(&p, &q, &RBig::ONE, &RBig::from(2)), -1);
+/// ```
+pub fn tarski_query_in(p: &Poly, q: &Poly, a: &RBig, b: &RBig) -> i64 {
+    let seq = tarski_sequence(p, q);
+    let at = |x: &RBig| count_variations(seq.iter().map(|s| s.sign_at(x))) as i64;
+    at(a) - at(b)
 }
 
 impl SturmSequence {

@@ -1,0 +1,980 @@
+//! ℚ(α) for a real algebraic number `α`, by dynamic evaluation (D5): no factoring.
+//!
+//! `α` is given as an [`AlgebraicReal`]: a root of a square-free integer polynomial `m`,
+//! isolated by an interval. An element is `c(α)` for a polynomial `c = C/d` (`C ∈ ℤ[x]`,
+//! `d > 0` an integer) reduced modulo the current defining polynomial. `m` need not be
+//! irreducible: when an inverse meets a zero divisor, `g = gcd(C, m)` splits `m = g · (m/g)`;
+//! the factor that vanishes at `α` is found from the signs of `g` at the ends of `α`'s
+//! isolating interval (exact), `m` shrinks to it, and the computation goes on. Every answer
+//! is right for `α` without ever knowing its minimal polynomial.
+//!
+//! | question | how |
+//! |---|---|
+//! | `c = 0`? ([`Ring::is_zero`]) | `c(α) ≠ 0` if interval arithmetic on `α`'s refined interval excludes zero; else exactly: `c = 0 ⇔ g = gcd(C, m)` vanishes at `α`, and `m` shrinks to `g` or to `m/g` |
+//! | `1/c` ([`Field::inv`]) | `S·C ≡ r (mod m)`, `r ∈ ℤ ∖ 0`, by a half-extended primitive remainder sequence over ℤ; when it ends in `g` of positive degree: `None` if `g(α) = 0` (then `m ← g`), else `m ← m/g` and again |
+//! | sign of `c(α)` ([`NumberFieldElement::sign`]) | interval arithmetic on the refined interval, else the exact zero test, else refinement |
+//!
+//! # Design
+//! A [`NumberField`] is a cheap handle (`Arc`) to a context holding `α` (whose polynomial is
+//! the defining polynomial), behind a `Mutex` held only to read or replace an `Arc` of that
+//! state: `Send + Sync`, no global state. The defining polynomial only ever shrinks to a
+//! factor of itself that vanishes at `α`, so an element reduced modulo an older multiple stays
+//! a valid representative and elements are never touched when the context learns something;
+//! two threads that each learn a factor are merged by their gcd (also a factor vanishing at
+//! `α`). `α`'s refinement state is shared (see [`crate::algebraic`]): repeated signs in one
+//! field refine `α` once. Rational constants carry no context, so [`Ring::zero`],
+//! [`Ring::one`] and [`Ring::from_int`] work; combining elements of two contexts made
+//! separately is a caller bug and panics (like [`Quadratic`](super::Quadratic) radicands).
+//! Integer numerators keep products and signs free of rational normalisation.
+
+use crate::algebraic::AlgebraicReal;
+use crate::poly::Poly;
+use crate::ring::{Field, Ring};
+use crate::sign::Sign;
+use dashu_int::IBig;
+use dashu_ratio::RBig;
+use std::fmt;
+use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
+
+/// The field ℚ(α) of a real algebraic number `α`: a handle to a shared context (module docs).
+#[derive(Clone)]
+pub struct NumberField {
+    state: Arc<Mutex<Arc<State>>>,
+}
+
+/// What the context knows; replaced as a whole when the defining polynomial shrinks.
+struct State {
+    /// `α`; its polynomial (square-free, primitive) is the defining polynomial.
+    alpha: AlgebraicReal,
+}
+
+impl State {
+    fn modulus(&self) -> &Poly {
+        self.alpha.poly()
+    }
+}
+
+/// An element `C(α)/d` of a [`NumberField`], or a rational (which belongs to every one).
+///
+/// Invariants: `d > 0`, `gcd(content(C), d) = 1`, and a numerator of positive degree has a
+/// field.
+#[derive(Clone)]
+pub struct NumberFieldElement {
+    num: Poly,
+    den: IBig,
+    field: Option<NumberField>,
+}
+
+impl NumberField {
+    /// ℚ(α). The refinement of `alpha` is shared with the field.
+    ///
+    /// ```
+    /// # use qsic_algebra::{field::NumberField, AlgebraicReal, Field, Poly, Ring, Sign};
+    /// // α = √2, given as a root of (x² − 2)(x² − 3): the factor is found when needed
+    /// let m = &Poly::from_i64s(&[-2, 0, 1]) * &Poly::from_i64s(&[-3, 0, 1]);
+    /// let sqrt2 = AlgebraicReal::real_roots_of(&m)[2].clone();
+    /// let k = NumberField::new(&sqrt2);
+    /// let a = k.generator();
+    /// assert_eq!(a.mul(&a), Ring::from_int(&2.into()));
+    /// assert_eq!(k.modulus(), Poly::from_i64s(&[-2, 0, 1]));
+    /// assert_eq!(a.sub(&Ring::from_int(&1.into())).inv().unwrap().sign(), Sign::Positive);
+    /// ```
+    pub fn new(alpha: &AlgebraicReal) -> NumberField {
+        NumberField {
+            state: Arc::new(Mutex::new(Arc::new(State {
+                alpha: alpha.clone(),
+            }))),
+        }
+    }
+
+    /// The generator `α`.
+    pub fn generator(&self) -> NumberFieldElement {
+        self.integer_element(&Poly::x())
+    }
+
+    /// The element `c(α)` of a rational polynomial.
+    pub fn element(&self, c: &Poly<RBig>) -> NumberFieldElement {
+        let (num, scale) = Poly::from_rational(c);
+        // c = num / scale
+        let num = num.scale(&IBig::from(scale.denominator().clone()));
+        self.reduced(num, scale.numerator().clone())
+    }
+
+    /// The element `c(α)` of an integer polynomial.
+    pub fn integer_element(&self, c: &Poly) -> NumberFieldElement {
+        self.reduced(c.clone(), IBig::ONE)
+    }
+
+    /// The current defining polynomial: square-free, primitive, vanishing at `α`, a factor
+    /// of the one the field was made with (its degree bounds `[ℚ(α) : ℚ]`).
+    pub fn modulus(&self) -> Poly {
+        self.snapshot().modulus().clone()
+    }
+
+    /// `α`, defined by the current defining polynomial (its refinement is the field's).
+    pub fn alpha(&self) -> AlgebraicReal {
+        self.snapshot().alpha.clone()
+    }
+
+    /// `num/den` reduced modulo the current defining polynomial, normalised.
+    fn reduced(&self, num: Poly, den: IBig) -> NumberFieldElement {
+        let (num, den) = reduce(num, den, self.snapshot().modulus());
+        NumberFieldElement::normalized(num, den, Some(self))
+    }
+
+    fn lock(&self) -> MutexGuard<'_, Arc<State>> {
+        self.state.lock().unwrap_or_else(PoisonError::into_inner)
+    }
+
+    fn snapshot(&self) -> Arc<State> {
+        self.lock().clone()
+    }
+
+    fn same_as(&self, other: &NumberField) -> bool {
+        Arc::ptr_eq(&self.state, &other.state)
+    }
+
+    /// Records that `factor` (a primitive factor of `seen`'s modulus) vanishes at `α`.
+    fn shrink(&self, seen: &Arc<State>, factor: Poly) {
+        let mut cur = self.lock();
+        let factor = if Arc::ptr_eq(&cur, seen) {
+            factor
+        } else {
+            // another thread shrank it meanwhile: both vanish at α, so does their gcd
+            cur.modulus().gcd(&factor)
+        };
+        if factor.degree() < cur.modulus().degree() {
+            let alpha = cur.alpha.with_factor(&factor);
+            *cur = Arc::new(State { alpha });
+        }
+    }
+
+    /// Whether `α` is a root of `g`, a primitive factor of `seen`'s modulus of positive
+    /// degree; shrinks the modulus to `g` or to its cofactor accordingly.
+    fn split(&self, seen: &Arc<State>, g: Poly) -> bool {
+        if seen.alpha.is_root_of_divisor(&g) {
+            self.shrink(seen, g);
+            true
+        } else {
+            let rest = seen
+                .modulus()
+                .div_exact(&g)
+                .expect("a primitive factor divides over ℤ (Gauss)");
+            self.shrink(seen, rest);
+            false
+        }
+    }
+
+    /// `C(α) = 0`, exactly (module docs).
+    fn vanishes(&self, c: &Poly) -> bool {
+        let seen = self.snapshot();
+        if let Some(s) = seen.alpha.sign_on_refined(c) {
+            return s.is_zero();
+        }
+        // A working precision once per field makes most later nonzero tests one evaluation.
+        seen.alpha.refined_interval(&working_width());
+        if let Some(s) = seen.alpha.sign_on_refined(c) {
+            return s.is_zero();
+        }
+        self.decide_zero(&seen, c)
+    }
+
+    /// `C(α) = 0` by `g = gcd(C, modulus)`, splitting the modulus when `g` is a proper factor.
+    fn decide_zero(&self, seen: &Arc<State>, c: &Poly) -> bool {
+        let g = seen.modulus().gcd(c);
+        g.degree().unwrap_or(0) > 0 && self.split(seen, g)
+    }
+
+    /// `(S, r)` with `S(α)·C(α) = r ≠ 0`, or `None` if `C(α) = 0`.
+    fn invert(&self, c: &Poly) -> Option<(Poly, IBig)> {
+        // Each failed round shrinks the modulus seen by the next: at most deg m rounds.
+        loop {
+            let seen = self.snapshot();
+            match inverse_mod(c, seen.modulus()) {
+                Ok(sr) => return Some(sr),
+                Err(g) => {
+                    if self.split(&seen, g) {
+                        return None;
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// `2⁻⁶⁴`: the width to which `α` is refined before a zero test falls back to a gcd.
+fn working_width() -> RBig {
+    RBig::from_parts_signed(IBig::ONE, IBig::ONE << 64)
+}
+
+/// `num/den` as `num′/den′` with `deg num′ < deg m` (pseudo-remainder: `den` takes the
+/// power of `lc(m)`).
+fn reduce(num: Poly, den: IBig, m: &Poly) -> (Poly, IBig) {
+    let (Some(n), Some(dm)) = (num.degree(), m.degree()) else {
+        return (num, den);
+    };
+    if n < dm {
+        return (num, den);
+    }
+    let l = m.leading();
+    let scale = if l.is_one() { l } else { l.pow(n - dm + 1) };
+    (num.pseudo_rem(m), den * scale)
+}
+
+/// `lc(b)^(δ+1)·a = q·b + r` with `deg r < deg b`, `δ = deg a − deg b ≥ 0`:
+/// `(lc(b)^(δ+1), q, r)`.
+fn pseudo_div_rem(a: &Poly, b: &Poly) -> (IBig, Poly, Poly) {
+    let (da, db) = (a.degree().unwrap_or(0), b.degree().unwrap_or(0));
+    let l = b.leading();
+    let bc = b.coeffs();
+    let mut r = a.coeffs().to_vec();
+    let mut q = vec![IBig::ZERO; da - db + 1];
+    for k in (0..=da - db).rev() {
+        let t = r[k + db].clone();
+        r.truncate(k + db + 1);
+        for v in r.iter_mut().chain(q.iter_mut()) {
+            *v *= &l;
+        }
+        for (j, bj) in bc.iter().enumerate() {
+            r[k + j] -= &t * bj;
+        }
+        q[k] = t;
+        r.truncate(k + db);
+    }
+    (l.pow(da - db + 1), Poly::new(q), Poly::new(r))
+}
+
+/// Divides `r` and `s` by the gcd of all their coefficients.
+fn remove_common_content(r: Poly, s: Poly) -> (Poly, Poly) {
+    let g = crate::int_gcd(&r.content(), &s.content());
+    if g.is_zero() || g.is_one() {
+        return (r, s);
+    }
+    (r.map(|v| v / &g), s.map(|v| v / &g))
+}
+
+/// `Ok((S, r))` with `S·c ≡ r (mod m)`, `r` a nonzero integer, or `Err(g)` with `g` the
+/// primitive gcd of `c` and `m` when it has positive degree (`m` of positive degree).
+///
+/// A half-extended primitive remainder sequence over ℤ: `rᵢ ≡ sᵢ·c (mod m)` from
+/// `r₀ = m, s₀ = 0` and `r₁ ≡ lc(m)^e·c, s₁ = lc(m)^e`; each step
+/// `lc(rᵢ)^(δ+1)·rᵢ₋₁ = q·rᵢ + rᵢ₊₁`, `sᵢ₊₁ = lc(rᵢ)^(δ+1)·sᵢ₋₁ − q·sᵢ`, both divided by
+/// their common content.
+fn inverse_mod(c: &Poly, m: &Poly) -> Result<(Poly, IBig), Poly> {
+    let (r1, s1) = match (c.degree(), m.degree()) {
+        (Some(dc), Some(dm)) if dc >= dm => (
+            c.pseudo_rem(m),
+            Poly::constant(m.leading().pow(dc - dm + 1)),
+        ),
+        _ => (c.clone(), Poly::constant(IBig::ONE)),
+    };
+    let (mut r0, mut s0) = (m.clone(), Poly::zero());
+    let (mut r1, mut s1) = remove_common_content(r1, s1);
+    loop {
+        match r1.degree() {
+            None => return Err(r0.primitive_part()),
+            Some(0) => return Ok((s1, r1.leading())),
+            Some(_) => {
+                let (k, q, r) = pseudo_div_rem(&r0, &r1);
+                let s = &s0.scale(&k) - &(&q * &s1);
+                let (r, s) = remove_common_content(r, s);
+                (r0, s0) = (r1, s1);
+                (r1, s1) = (r, s);
+            }
+        }
+    }
+}
+
+impl NumberFieldElement {
+    /// The rational `v` (in every field).
+    pub fn rational(v: RBig) -> NumberFieldElement {
+        NumberFieldElement {
+            num: Poly::constant(v.numerator().clone()),
+            den: IBig::from(v.denominator().clone()),
+            field: None,
+        }
+    }
+
+    /// `num/den` with the invariants restored (`den ≠ 0`).
+    fn normalized(num: Poly, den: IBig, field: Option<&NumberField>) -> NumberFieldElement {
+        let field = field.cloned();
+        if num.is_zero() {
+            return NumberFieldElement {
+                num,
+                den: IBig::ONE,
+                field,
+            };
+        }
+        let mut g = crate::int_gcd(&num.content(), &den);
+        if den < IBig::ZERO {
+            g = -g;
+        }
+        let (num, den) = if g.is_one() {
+            (num, den)
+        } else {
+            (num.map(|v| v / &g), den / &g)
+        };
+        NumberFieldElement { num, den, field }
+    }
+
+    /// The integer numerator `C` of `self = C(α)/d` (reduced modulo the defining polynomial
+    /// at the time it was computed).
+    pub fn numerator(&self) -> &Poly {
+        &self.num
+    }
+
+    /// The positive denominator `d` of `self = C(α)/d`.
+    pub fn denominator(&self) -> &IBig {
+        &self.den
+    }
+
+    /// The representative `C/d ∈ ℚ[x]`.
+    pub fn representative(&self) -> Poly<RBig> {
+        let d = RBig::from(self.den.clone());
+        self.num.map(|v| RBig::from(v.clone()) / &d)
+    }
+
+    /// The field, `None` for a rational made without one.
+    pub fn field(&self) -> Option<&NumberField> {
+        self.field.as_ref()
+    }
+
+    /// The field of an element of positive degree.
+    fn field_if_irrational(&self) -> Option<&NumberField> {
+        self.field.as_ref().filter(|_| !self.num.is_constant())
+    }
+
+    /// The exact sign of `c(α)`.
+    ///
+    /// Interval arithmetic on `α`'s refined interval decides nonzero signs (microseconds once
+    /// `α` is refined); otherwise the exact zero test (module docs), then refinement of `α`,
+    /// kept in the field for the next sign.
+    ///
+    /// ```
+    /// # use qsic_algebra::{field::{NumberField, NumberFieldElement}, AlgebraicReal, Poly, RBig, Sign};
+    /// let alpha = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 0, 1])).pop().unwrap();
+    /// let a = NumberField::new(&alpha).generator(); // ∛2
+    /// let r = |n: i64, d: i64| NumberFieldElement::rational(RBig::from_parts_signed(n.into(), d.into()));
+    /// assert_eq!((&a - &r(126, 100)).sign(), Sign::Negative);
+    /// assert_eq!((&a - &r(125, 100)).sign(), Sign::Positive);
+    /// assert_eq!((&(&a * &a) * &a - r(2, 1)).sign(), Sign::Zero);
+    /// ```
+    pub fn sign(&self) -> Sign {
+        let Some(field) = self.field_if_irrational() else {
+            return Sign::of(&self.num.leading());
+        };
+        let seen = field.snapshot();
+        if let Some(s) = seen.alpha.sign_on_refined(&self.num) {
+            return s;
+        }
+        if field.decide_zero(&seen, &self.num) {
+            return Sign::Zero;
+        }
+        field.snapshot().alpha.sign_of_nonzero(&self.num)
+    }
+
+    /// A float approximation (display only): the representative at a rational within
+    /// `2⁻⁶⁴` of `α`.
+    pub fn to_f64(&self) -> f64 {
+        let x = match self.field_if_irrational() {
+            None => RBig::ZERO,
+            Some(field) => {
+                let iv = field.snapshot().alpha.refined_interval(&working_width());
+                (iv.lo() + iv.hi()) / RBig::from(2)
+            }
+        };
+        (self.num.eval_rational(&x) / RBig::from(self.den.clone()))
+            .to_f64()
+            .value()
+    }
+
+    /// The common field of two operands.
+    ///
+    /// # Panics
+    /// If both belong to fields made separately.
+    fn common_field<'a>(&'a self, o: &'a Self) -> Option<&'a NumberField> {
+        match (&self.field, &o.field) {
+            (Some(a), Some(b)) => {
+                assert!(a.same_as(b), "elements of different number fields combined");
+                Some(a)
+            }
+            (Some(a), None) | (None, Some(a)) => Some(a),
+            (None, None) => None,
+        }
+    }
+}
+
+impl Ring for NumberFieldElement {
+    fn zero() -> Self {
+        NumberFieldElement::rational(RBig::ZERO)
+    }
+    fn one() -> Self {
+        NumberFieldElement::rational(RBig::ONE)
+    }
+    fn from_int(v: &IBig) -> Self {
+        NumberFieldElement::rational(RBig::from(v.clone()))
+    }
+    /// Exact (module docs); may shrink the field's defining polynomial.
+    fn is_zero(&self) -> bool {
+        match self.field_if_irrational() {
+            None => self.num.is_zero(),
+            Some(f) => f.vanishes(&self.num),
+        }
+    }
+    /// # Panics
+    /// If the operands belong to different fields (all binary operations).
+    fn add(&self, o: &Self) -> Self {
+        let field = self.common_field(o);
+        if self.den == o.den {
+            return NumberFieldElement::normalized(&self.num + &o.num, self.den.clone(), field);
+        }
+        let num = &self.num.scale(&o.den) + &o.num.scale(&self.den);
+        NumberFieldElement::normalized(num, &self.den * &o.den, field)
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self.add(&o.neg())
+    }
+    fn mul(&self, o: &Self) -> Self {
+        let field = self.common_field(o);
+        let den = &self.den * &o.den;
+        let (num, den) = match (self.num.is_constant(), o.num.is_constant(), field) {
+            (true, _, _) => (o.num.scale(&self.num.leading()), den),
+            (_, true, _) => (self.num.scale(&o.num.leading()), den),
+            (_, _, Some(f)) => reduce(&self.num * &o.num, den, f.snapshot().modulus()),
+            (_, _, None) => (&self.num * &o.num, den),
+        };
+        NumberFieldElement::normalized(num, den, field)
+    }
+    fn neg(&self) -> Self {
+        NumberFieldElement {
+            num: -&self.num,
+            den: self.den.clone(),
+            field: self.field.clone(),
+        }
+    }
+    fn div_exact(&self, d: &Self) -> Option<Self> {
+        Field::div(self, d)
+    }
+}
+
+impl Field for NumberFieldElement {
+    /// `None` exactly when [`Ring::is_zero`] says so (may shrink the defining polynomial).
+    fn inv(&self) -> Option<Self> {
+        let Some(field) = self.field_if_irrational() else {
+            let v = self.num.leading();
+            return (!v.is_zero()).then(|| {
+                NumberFieldElement::normalized(
+                    Poly::constant(self.den.clone()),
+                    v,
+                    self.field.as_ref(),
+                )
+            });
+        };
+        // 1/(C/d) = d·S/r
+        let (s, r) = field.invert(&self.num)?;
+        Some(NumberFieldElement::normalized(
+            s.scale(&self.den),
+            r,
+            Some(field),
+        ))
+    }
+}
+
+/// Exact equality of values (equal representations, or a zero test of the difference).
+impl PartialEq for NumberFieldElement {
+    fn eq(&self, other: &Self) -> bool {
+        (self.num == other.num && self.den == other.den) || Ring::sub(self, other).is_zero()
+    }
+}
+
+macro_rules! forward_op {
+    ($tr:ident, $m:ident) => {
+        impl std::ops::$tr for NumberFieldElement {
+            type Output = NumberFieldElement;
+            fn $m(self, rhs: NumberFieldElement) -> NumberFieldElement {
+                Ring::$m(&self, &rhs)
+            }
+        }
+        impl std::ops::$tr for &NumberFieldElement {
+            type Output = NumberFieldElement;
+            fn $m(self, rhs: &NumberFieldElement) -> NumberFieldElement {
+                Ring::$m(self, rhs)
+            }
+        }
+    };
+}
+forward_op!(Add, add);
+forward_op!(Sub, sub);
+forward_op!(Mul, mul);
+
+impl std::ops::Neg for NumberFieldElement {
+    type Output = NumberFieldElement;
+    fn neg(self) -> NumberFieldElement {
+        Ring::neg(&self)
+    }
+}
+
+impl fmt::Display for NumberFieldElement {
+    /// The representative as a polynomial in `α`: `α^2 - 1/3*α + 5`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.representative().to_string().replace('x', "α"))
+    }
+}
+
+impl fmt::Debug for NumberFieldElement {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "NumberFieldElement({self})")
+    }
+}
+
+impl fmt::Debug for NumberField {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "NumberField(α = {})", self.snapshot().alpha)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    type Nfe = NumberFieldElement;
+
+    /// SplitMix64: deterministic inputs without a dependency.
+    struct Rng(u64);
+    impl Rng {
+        fn next(&mut self) -> u64 {
+            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = self.0;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            z ^ (z >> 31)
+        }
+        /// Uniform in `[lo, hi]`.
+        fn int(&mut self, lo: i64, hi: i64) -> i64 {
+            lo + (self.next() % (hi - lo + 1) as u64) as i64
+        }
+    }
+
+    fn rat(n: i64, d: i64) -> RBig {
+        RBig::from_parts_signed(n.into(), d.into())
+    }
+
+    fn pow2_inv(k: usize) -> RBig {
+        RBig::from_parts_signed(IBig::ONE, IBig::ONE << k)
+    }
+
+    fn abs(v: &RBig) -> RBig {
+        if *v < RBig::ZERO {
+            -v
+        } else {
+            v.clone()
+        }
+    }
+
+    /// Chebyshev's `T_n`.
+    fn chebyshev(n: usize) -> Poly {
+        let (mut a, mut b) = (Poly::from_i64s(&[1]), Poly::from_i64s(&[0, 1]));
+        for _ in 0..n {
+            let c = &(&Poly::from_i64s(&[0, 2]) * &b) - &a;
+            (a, b) = (b, c);
+        }
+        a
+    }
+
+    /// `T₆ · (1024 T₆ − 1)`: degree 12, twelve real roots in six pairs about `10⁻⁴` apart.
+    fn close_pairs_12() -> Poly {
+        let t6 = chebyshev(6);
+        &t6 * &(&t6.scale(&IBig::from(1024)) - &Poly::from_i64s(&[1]))
+    }
+
+    /// A square-free degree-12 integer polynomial with coefficients in `[−20, 20]` and a
+    /// real root.
+    fn random_12(rng: &mut Rng) -> Poly {
+        loop {
+            let mut c: Vec<i64> = (0..12).map(|_| rng.int(-20, 20)).collect();
+            c.push(rng.int(1, 20));
+            let p = Poly::from_i64s(&c);
+            if p.is_squarefree() && p.count_real_roots_sturm() > 0 {
+                return p;
+            }
+        }
+    }
+
+    fn random_poly(rng: &mut Rng, len: usize) -> Poly<RBig> {
+        Poly::new(
+            (0..len)
+                .map(|_| rat(rng.int(-9, 9), rng.int(1, 5)))
+                .collect(),
+        )
+    }
+
+    /// Fields to test in: ∛2, a root in each close pair of the degree-12 polynomial's
+    /// middle, and a root of a random degree-12 polynomial.
+    fn fields() -> Vec<NumberField> {
+        let cbrt2 = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 0, 1])).remove(0);
+        let close = AlgebraicReal::real_roots_of(&close_pairs_12());
+        assert_eq!(close.len(), 12);
+        let random = AlgebraicReal::real_roots_of(&random_12(&mut Rng(12))).remove(0);
+        [cbrt2, close[5].clone(), close[6].clone(), random]
+            .iter()
+            .map(NumberField::new)
+            .collect()
+    }
+
+    /// `Σ i·|fᵢ|·R^(i−1)` and `Σ |fᵢ|·Rⁱ`: bounds on `|f′|` and `|f|` on `[−R, R]`.
+    fn bounds(f: &Poly<RBig>, r: &RBig) -> (RBig, RBig) {
+        let (mut lip, mut max, mut pw) = (RBig::ZERO, RBig::ZERO, RBig::ONE);
+        for (i, c) in f.coeffs().iter().enumerate() {
+            if i > 0 {
+                lip += abs(c) * RBig::from(i) * &pw;
+                pw *= r;
+            }
+            max += abs(c) * &pw;
+        }
+        (lip, max)
+    }
+
+    /// Checks `f(α)·g(α) = h(α)` (`g = None`: `f(α) + 0 = h(α)`, used for sums via `f = a + b`
+    /// computed independently) at a rational `r` near `α`: by the mean value theorem,
+    /// `|f(r)g(r) − h(r)| ≤ w(L_h + L_f|g(r)| + (|f(r)| + wL_f)L_g)` for `|r − α| ≤ w`, where
+    /// `L` bounds the derivative on the interval. `w` is chosen so the bound is below
+    /// `2⁻²⁰⁰`; a wrong representative misses by far more.
+    fn check_product_at_approximation(
+        alpha: &AlgebraicReal,
+        f: &Poly<RBig>,
+        g: &Poly<RBig>,
+        h: &Poly<RBig>,
+    ) {
+        let coarse = alpha.refined_interval(&pow2_inv(200));
+        let big_r = abs(coarse.lo()).max(abs(coarse.hi()));
+        let ((lf, mf), (lg, mg), (lh, _)) =
+            (bounds(f, &big_r), bounds(g, &big_r), bounds(h, &big_r));
+        let k = RBig::ONE + &lh + &lf * &mg + (&mf + &lf) * &lg;
+        let width = pow2_inv(200 + k.ceil().bit_len());
+        let iv = alpha.refined_interval(&width);
+        let r = (iv.lo() + iv.hi()) / RBig::from(2);
+        let w = iv.hi() - iv.lo();
+        let (fr, gr, hr) = (f.eval(&r), g.eval(&r), h.eval(&r));
+        let bound = &w * (&lh + &lf * abs(&gr) + (abs(&fr) + &w * &lf) * &lg);
+        assert!(bound < pow2_inv(199), "bound {bound}");
+        assert!(
+            abs(&(&fr * &gr - &hr)) <= bound,
+            "{f} · {g} ≠ {h} at {alpha}"
+        );
+    }
+
+    fn constant(v: RBig) -> Poly<RBig> {
+        Poly::constant(v)
+    }
+
+    use dashu_int::ops::BitTest;
+
+    /// Sums, products and inverses against exact evaluation at rationals within `2⁻²⁰⁰` of `α`.
+    #[test]
+    fn arithmetic_agrees_with_rational_approximations() {
+        let mut rng = Rng(7);
+        for k in fields() {
+            let alpha = k.alpha();
+            let n = k.modulus().degree().unwrap();
+            for _ in 0..4 {
+                let a = k.element(&random_poly(&mut rng, n));
+                let b = k.element(&random_poly(&mut rng, n));
+                let (ar, br) = (a.representative(), b.representative());
+                let sum = (&a + &b).representative();
+                check_product_at_approximation(&alpha, &(&ar + &br), &constant(RBig::ONE), &sum);
+                let product = (&a * &b).representative();
+                assert!(product.degree() < Some(n));
+                check_product_at_approximation(&alpha, &ar, &br, &product);
+                let inv = a.inv().expect("a random element is nonzero");
+                check_product_at_approximation(
+                    &alpha,
+                    &ar,
+                    &inv.representative(),
+                    &constant(RBig::ONE),
+                );
+                // x·x⁻¹ = 1 and the defining polynomial did not change (irreducible factor found
+                // or not, nothing vanished)
+                assert_eq!(&a * &inv, Nfe::one());
+                assert_eq!(k.modulus().degree(), Some(n));
+            }
+        }
+    }
+
+    #[test]
+    fn reducible_defining_polynomials_split() {
+        let x2m2 = Poly::from_i64s(&[-2, 0, 1]);
+        let x2m3 = Poly::from_i64s(&[-3, 0, 1]);
+        let m = &x2m2 * &x2m3;
+        let roots = AlgebraicReal::real_roots_of(&m); // −√3, −√2, √2, √3
+                                                      // (root, is α² − 2 zero, sign of α, the factor it ends with)
+        let cases = [
+            (&roots[0], false, Sign::Negative, &x2m3),
+            (&roots[1], true, Sign::Negative, &x2m2),
+            (&roots[2], true, Sign::Positive, &x2m2),
+            (&roots[3], false, Sign::Positive, &x2m3),
+        ];
+        for (alpha, sqrt2, sign, factor) in cases {
+            let k = NumberField::new(alpha);
+            let a = k.generator();
+            let cube = &(&a * &a) * &a; // reduced modulo the quartic, before any split
+            let e = &(&a * &a) - &Nfe::from_int(&2.into());
+            assert_eq!(e.is_zero(), sqrt2, "α² − 2 at {alpha}");
+            // a zero teaches the factor; a nonzero shown by interval arithmetic does not
+            assert_eq!(k.modulus().degree(), Some(if sqrt2 { 2 } else { 4 }));
+            let f = &(&a * &a) - &Nfe::from_int(&3.into());
+            assert_eq!(f.inv().is_none(), !sqrt2, "1/(α² − 3) at {alpha}");
+            assert_eq!(&k.modulus(), factor, "{alpha}");
+            assert_eq!(a.sign(), sign);
+            assert_eq!(e.sign() == Sign::Zero, sqrt2);
+            if !sqrt2 {
+                // √3: α² − 2 = 1
+                assert_eq!(e, Nfe::one());
+                assert_eq!(e.inv().unwrap(), Nfe::one());
+            }
+            // the element reduced modulo the old quartic is still α³
+            let d = Nfe::from_int(&if sqrt2 { 2 } else { 3 }.into());
+            assert_eq!(&cube * &cube, &(&d * &d) * &d);
+            assert_eq!(&k.modulus(), factor);
+        }
+        // Inverting α² − 3 at √3 finds the factor x² − 3.
+        let k = NumberField::new(&roots[3]);
+        let a = k.generator();
+        assert!((&(&a * &a) - &Nfe::from_int(&3.into())).inv().is_none());
+        assert_eq!(k.modulus(), x2m3);
+        // A rational root: α = 1 of (x − 1)(x² − 2), isolated by (1/2, 5/4).
+        let m = &Poly::from_roots(&[1]) * &x2m2;
+        let one = AlgebraicReal::from_isolating_interval(
+            &m,
+            &crate::roots::RootInterval::Open(rat(1, 2), rat(5, 4)),
+        )
+        .expect("1 is isolated");
+        let k = NumberField::new(&one);
+        let a = k.generator();
+        let e = &(&a * &a) - &Nfe::from_int(&2.into());
+        assert_eq!(e.inv(), Some(Nfe::from_int(&(-1).into())));
+        assert_eq!(k.modulus(), Poly::from_roots(&[1]));
+        assert_eq!(a, Nfe::one());
+        assert_eq!(a.sign(), Sign::Positive);
+    }
+
+    #[test]
+    fn gcds_over_an_extension() {
+        let m = &Poly::from_i64s(&[-2, 0, 1]) * &Poly::from_i64s(&[-3, 0, 1]);
+        let roots = AlgebraicReal::real_roots_of(&m);
+        // x − c over ℚ(α)
+        let lin = |c: &Nfe| Poly::new(vec![c.neg(), Nfe::one()]);
+        let r = |v: i64| Nfe::from_int(&v.into());
+        for (i, alpha) in roots.iter().enumerate() {
+            let k = NumberField::new(alpha);
+            let a = k.generator();
+            let p = &lin(&a) * &lin(&r(-1));
+            let q = &lin(&a) * &lin(&r(5));
+            assert_eq!(p.gcd_monic(&q), lin(&a), "{alpha}");
+            assert_eq!(p.gcd_domain(&q).monic(), lin(&a));
+            // gcd(x² − 2, x − α) is x − α at ±√2 and 1 at ±√3 (a D5 split inside Euclid)
+            let x2m2 = Poly::from_i64s(&[-2, 0, 1]).map(Nfe::from_int);
+            let g = x2m2.gcd_monic(&lin(&a));
+            let sqrt2 = i == 1 || i == 2;
+            assert_eq!(
+                g,
+                if sqrt2 {
+                    lin(&a)
+                } else {
+                    Poly::constant(Nfe::one())
+                }
+            );
+            assert_eq!(k.modulus().degree(), Some(2));
+        }
+    }
+
+    /// Resultants and discriminants over ℚ(α) agree with those over ℤ[t] evaluated at `α`,
+    /// and with the product formulas over given roots.
+    #[test]
+    fn resultants_and_discriminants_over_the_field() {
+        let mut rng = Rng(3);
+        for k in fields() {
+            let n = k.modulus().degree().unwrap();
+            // P(t, y), Q(t, y) with constant leading coefficients in y
+            let random_zt = |rng: &mut Rng, lead: bool| -> Poly<Poly> {
+                let len = if lead { 4 } else { 3 };
+                let mut c: Vec<Poly> = (0..len - 1)
+                    .map(|_| Poly::from_i64s(&[rng.int(-5, 5), rng.int(-5, 5), rng.int(-5, 5)]))
+                    .collect();
+                c.push(Poly::from_i64s(&[rng.int(1, 3)]));
+                Poly::new(c)
+            };
+            let (p, q) = (random_zt(&mut rng, true), random_zt(&mut rng, false));
+            let at_alpha = |f: &Poly<Poly>| f.map(|c| k.integer_element(c));
+            let (pa, qa) = (at_alpha(&p), at_alpha(&q));
+            assert_eq!(pa.resultant(&qa), k.integer_element(&p.resultant(&q)));
+            assert_eq!(pa.discriminant(), k.integer_element(&p.discriminant()));
+            // p = ∏(y − aᵢ): res(p, q) = ∏ q(aᵢ), disc(p) = ∏_{i<j} (aᵢ − aⱼ)²
+            let roots: Vec<Nfe> = (0..3)
+                .map(|_| k.element(&random_poly(&mut rng, n)))
+                .collect();
+            let p = roots.iter().fold(Poly::constant(Nfe::one()), |acc, a| {
+                &acc * &Poly::new(vec![a.neg(), Nfe::one()])
+            });
+            let expect = roots.iter().fold(Nfe::one(), |acc, a| acc * qa.eval(a));
+            assert_eq!(p.resultant(&qa), expect);
+            let mut disc = Nfe::one();
+            for i in 0..3 {
+                for j in i + 1..3 {
+                    let d = &roots[i] - &roots[j];
+                    disc = &disc * &(&d * &d);
+                }
+            }
+            assert_eq!(p.discriminant(), disc);
+            // a repeated root: zero
+            let double = &p * &Poly::new(vec![roots[0].neg(), Nfe::one()]);
+            assert!(double.discriminant().is_zero());
+        }
+    }
+
+    /// Many signs at each root of a degree-12 polynomial with close pairs of roots, against
+    /// the Sturm–Tarski route; elements near zero included (`T₆(α)` is `1/1024` at half the
+    /// roots).
+    #[test]
+    fn many_signs_at_degree_12_roots() {
+        let m = close_pairs_12();
+        let t6 = chebyshev(6).to_rational();
+        let mut rng = Rng(11);
+        let mut nonzero = 0;
+        for alpha in AlgebraicReal::real_roots_of(&m) {
+            let k = NumberField::new(&alpha);
+            let mut elements: Vec<Poly<RBig>> =
+                (0..12).map(|_| random_poly(&mut rng, 12)).collect();
+            elements.push(t6.clone());
+            elements.push(&t6.scale(&RBig::from(1024)) - &constant(RBig::ONE));
+            elements.push(&t6.scale(&RBig::from(1024)) - &constant(rat(1023, 1024)));
+            for c in &elements {
+                let e = k.element(c);
+                let expect = alpha.sign_of_sturm_tarski(&Poly::from_rational(c).0);
+                assert_eq!(e.sign(), expect, "{c} at {alpha}");
+                assert_eq!(e.sign(), expect, "again");
+                assert_eq!(e.is_zero(), expect == Sign::Zero);
+                nonzero += usize::from(expect != Sign::Zero);
+            }
+            // the exact zero found the factor of α
+            assert_eq!(k.modulus().degree(), Some(6));
+        }
+        assert!(nonzero >= 12 * 13);
+    }
+
+    #[test]
+    fn threads_share_one_field() {
+        fn send_sync<T: Send + Sync + Clone>() {}
+        send_sync::<NumberField>();
+        send_sync::<Nfe>();
+        let m = &Poly::from_i64s(&[-2, 0, 1]) * &Poly::from_i64s(&[-3, 0, 1]);
+        let sqrt3 = AlgebraicReal::real_roots_of(&m).remove(3);
+        let k = NumberField::new(&sqrt3);
+        let a = k.generator();
+        let r = |v: i64| Nfe::from_int(&v.into());
+        std::thread::scope(|s| {
+            for t in 0..2 {
+                let a = a.clone();
+                s.spawn(move || {
+                    let sq = &a * &a;
+                    let one_less = &a - &r(1);
+                    let inv = one_less.inv().expect("√3 ≠ 1");
+                    if t == 0 {
+                        assert!(!(&sq - &r(2)).is_zero());
+                    }
+                    assert!((&sq - &r(3)).inv().is_none());
+                    assert_eq!(&inv * &one_less, Nfe::one());
+                    assert_eq!((&sq - &r(3)).sign(), Sign::Zero);
+                });
+            }
+        });
+        assert_eq!(k.modulus(), Poly::from_i64s(&[-3, 0, 1]));
+        assert!((a.to_f64() - 3f64.sqrt()).abs() < 1e-12);
+    }
+
+    #[test]
+    fn rationals_and_display() {
+        let k = &fields()[0];
+        let a = k.generator();
+        let e = &(&a * &a) - &(&a * &Nfe::rational(rat(1, 3)));
+        let e = &e + &Nfe::from_int(&5.into());
+        assert_eq!(e.to_string(), "α^2 - 1/3*α + 5");
+        assert_eq!((&a * &(&a * &a)).to_string(), "2");
+        assert_eq!(
+            Nfe::rational(rat(-2, 3)).inv(),
+            Some(Nfe::rational(rat(-3, 2)))
+        );
+        assert_eq!(Nfe::zero().inv(), None);
+        assert_eq!(Nfe::rational(rat(-2, 3)).sign(), Sign::Negative);
+        assert!(format!("{k:?}").contains("x^3 - 2"));
+    }
+
+    #[test]
+    #[should_panic(expected = "different number fields")]
+    fn different_fields_do_not_mix() {
+        let f = fields();
+        let _ = f[0].generator() + f[1].generator();
+    }
+
+    proptest! {
+        /// The integer remainder sequences: `k·a = q·b + r`, and `S·c ≡ r (mod m)` with a
+        /// nonzero integer `r`, or the gcd (checked against [`Poly::gcd`]).
+        #[test]
+        fn integer_division_and_inverses(
+            a in prop::collection::vec(-30i64..30, 1..9),
+            b in prop::collection::vec(-30i64..30, 2..6),
+            f in prop::collection::vec(-5i64..5, 1..4),
+        ) {
+            let (a, b, f) = (Poly::from_i64s(&a), Poly::from_i64s(&b), Poly::from_i64s(&f));
+            prop_assume!(b.degree().unwrap_or(0) > 0 && a.degree() >= b.degree() && !f.is_zero());
+            let (k, q, r) = pseudo_div_rem(&a, &b);
+            prop_assert_eq!(&a.scale(&k), &(&(&q * &b) + &r));
+            prop_assert!(r.degree() < b.degree());
+            // a shared factor f makes c = a·f a zero divisor modulo m = b·f
+            let (c, m) = (&a * &f, &b * &f);
+            match inverse_mod(&c, &m) {
+                Ok((s, r)) => {
+                    prop_assert!(!r.is_zero());
+                    prop_assert!((&(&s * &c) - &Poly::constant(r)).pseudo_rem(&m).is_zero());
+                    prop_assert_eq!(c.gcd(&m).degree(), Some(0));
+                }
+                Err(g) => {
+                    prop_assert!(g.degree().unwrap_or(0) > 0);
+                    prop_assert_eq!(g, c.gcd(&m));
+                }
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(24))]
+        #[test]
+        fn field_identities(
+            which in 0usize..4,
+            a in prop::collection::vec((-20i64..20, 1i64..6), 0..12),
+            b in prop::collection::vec((-20i64..20, 1i64..6), 0..12),
+            c in prop::collection::vec((-20i64..20, 1i64..6), 0..12),
+        ) {
+            let k = &fields()[which];
+            let el = |v: &[(i64, i64)]| {
+                k.element(&Poly::new(v.iter().map(|&(n, d)| rat(n, d)).collect()))
+            };
+            let (a, b, c) = (el(&a), el(&b), el(&c));
+            prop_assert_eq!(&(&a * &b) * &c, &a * &(&b * &c));
+            prop_assert_eq!(&a * &(&b + &c), &(&a * &b) + &(&a * &c));
+            prop_assert_eq!(&(&a - &b) + &b, a.clone());
+            match a.inv() {
+                Some(i) => prop_assert_eq!(&a * &i, Nfe::one()),
+                None => prop_assert!(a.is_zero()),
+            }
+            // signs: against the float where it is far from zero, and additive order
+            let (s, f) = (a.sign(), a.to_f64());
+            if f.abs() > 1e-6 {
+                prop_assert_eq!(s, if f > 0.0 { Sign::Positive } else { Sign::Negative });
+            }
+            prop_assert_eq!(s == Sign::Zero, a.is_zero());
+            prop_assert_eq!((&a - &b).sign() == Sign::Zero, a == b);
+            prop_assert_eq!((&a * &a).sign() == Sign::Positive, s != Sign::Zero);
+        }
+    }
+}
