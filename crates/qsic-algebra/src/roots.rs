@@ -59,6 +59,14 @@ impl RootInterval {
         }
     }
 
+    /// `Some(v)` for a root known exactly.
+    pub fn as_exact(&self) -> Option<&RBig> {
+        match self {
+            RootInterval::Exact(v) => Some(v),
+            RootInterval::Open(..) => None,
+        }
+    }
+
     /// The same root of `p(−x)`: `−hi < x < −lo`.
     fn negated(self) -> RootInterval {
         match self {
