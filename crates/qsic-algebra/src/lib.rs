@@ -5,6 +5,7 @@
 //! | [`filter`] | certified floating-point sign filters (error bounds; exact fallback is the caller's) |
 //! | [`sign`] | [`Sign`], the result of every exact sign decision |
 //! | [`poly`] | dense univariate integer polynomials: arithmetic, gcd, square-free decomposition, Sturm and Descartes counts |
+//! | [`mpoly`] | sparse multivariate rational polynomials (up to 8 variables): arithmetic, degrees, coefficients in one variable, quadratic forms |
 //! | [`roots`] | real root isolation with rational (dyadic) isolating intervals |
 //! | [`algebraic`] | real algebraic numbers and the exact sign of a polynomial at them |
 //! | [`matrix`] | small symmetric integer matrices, exact inertia, matrix pencils `λA − μB` |
@@ -18,6 +19,7 @@
 pub mod algebraic;
 pub mod filter;
 pub mod matrix;
+pub mod mpoly;
 pub mod poly;
 pub mod roots;
 pub mod sign;
@@ -25,6 +27,7 @@ pub mod sign;
 pub use algebraic::AlgebraicReal;
 pub use dashu_int::IBig;
 pub use dashu_ratio::RBig;
+pub use mpoly::MPoly;
 pub use poly::Poly;
 pub use sign::Sign;
 
