@@ -13,9 +13,11 @@
 //! longer ones, and every error, go through the big rationals of [`parse_number`]. Input sizes are bounded by
 //! [`crate::limits`], so no string, however built, makes a reader panic or run long.
 
+mod expression;
 mod number;
 mod polynomial;
 
+pub use expression::{parse_rational_function, RationalFunction, Variable, VARIABLE_NAMES};
 pub use number::parse_number;
 use number::parse_number_small;
 pub use polynomial::{parse_quadric, parse_quadric_big_route};
