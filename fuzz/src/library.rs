@@ -5,7 +5,10 @@
 #![allow(clippy::needless_range_loop)]
 
 use dashu_ratio::RBig;
-use qsic::io::{parse_number as read_number, parse_quadric};
+use qsic::io::{
+    moving_matrix_from_polynomial, parse_number as read_number, parse_quadric,
+    parse_rational_function, Variable,
+};
 use qsic::{classify, Quadric};
 
 /// The text the readers see: invalid UTF-8 replaced, so every input reaches them.
@@ -22,6 +25,22 @@ pub fn parse_polynomial(data: &[u8]) {
     let printed = q.to_polynomial_string();
     match parse_quadric(&printed) {
         Ok(again) => assert_eq!(again, q, "{printed:?} reads back as another quadric"),
+        Err(e) => panic!("{printed:?} does not read back: {e}"),
+    }
+}
+
+/// `parse_rational_function` (all variables) and `moving_matrix_from_polynomial` never
+/// panic, and what the first accepts prints (`Display`) as an expression that reads back as
+/// the same quotient.
+pub fn parse_expression(data: &[u8]) {
+    let text = text(data);
+    let _ = moving_matrix_from_polynomial(&text);
+    let Ok(f) = parse_rational_function(&text, &Variable::ALL) else {
+        return;
+    };
+    let printed = f.to_string();
+    match parse_rational_function(&printed, &Variable::ALL) {
+        Ok(again) => assert_eq!(again, f, "{printed:?} reads back as another quotient"),
         Err(e) => panic!("{printed:?} does not read back: {e}"),
     }
 }

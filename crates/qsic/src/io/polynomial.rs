@@ -11,6 +11,7 @@ use dashu_int::ops::BitTest;
 use dashu_int::UBig;
 use dashu_ratio::RBig;
 use qsic_algebra::mpoly::MPoly;
+use std::borrow::Cow;
 
 /// Reads a quadric from a polynomial in `x, y, z, w` of degree at most 2.
 ///
@@ -439,39 +440,62 @@ fn half(c: &RBig) -> RBig {
     }
 }
 
+/// The first term of `poly` (in the order 1, x, y, z, w, x², x·y, … of the variables
+/// x, y, z, w) whose degree in x, y, z, w is not allowed, as an error.
+fn first_bad_term(poly: &MPoly, bad: impl Fn(u32) -> bool, why: &str) -> Result<(), Error> {
+    let xyzw = [0, 1, 2, 3];
+    let first = poly
+        .terms()
+        .iter()
+        .filter(|(m, _)| bad(m.degree_in_vars(&xyzw)))
+        .min_by_key(|(m, _)| (m.degree_in_vars(&xyzw), std::cmp::Reverse(*m)));
+    match first {
+        None => Ok(()),
+        Some((m, c)) => Err(Error::Degree {
+            message: format!(
+                "term '{}' has degree {}{why}",
+                MPoly::term(*m, c.clone()).to_string_with(&VARIABLE_NAMES),
+                m.degree_in_vars(&xyzw)
+            ),
+        }),
+    }
+}
+
+/// The quadratic form in x, y, z, w of a nonzero polynomial of degree at most 2 in them
+/// (its coefficients may hold other variables): the polynomial itself if it uses `w`,
+/// which must then be homogeneous of degree 2, else its homogenization with `w`.
+///
+/// # Errors
+/// [`Error::Degree`] naming a term of degree above 2, or, if `w` occurs, not 2.
+pub(crate) fn quadratic_part(poly: &MPoly) -> Result<Cow<'_, MPoly>, Error> {
+    let w = Variable::W.index();
+    first_bad_term(
+        poly,
+        |d| d > 2,
+        " in x, y, z, w; a quadric has degree at most 2",
+    )?;
+    if poly.uses(w) {
+        first_bad_term(
+            poly,
+            |d| d != 2,
+            "; a form in x,y,z,w must be homogeneous of degree 2 \
+             (leave out w to write an affine equation in x, y, z)",
+        )?;
+        return Ok(Cow::Borrowed(poly));
+    }
+    // Every term has degree at most 2 in x, y, z: homogenization cannot fail.
+    Ok(Cow::Owned(
+        poly.homogenize(&[0, 1, 2], w, 2).unwrap_or_default(),
+    ))
+}
+
 /// The quadric of a polynomial in x, y, z, w of degree at most 2 (as read): homogeneity
 /// check or homogenization with `w`, then the matrix of the quadratic form.
 fn quadric_from_poly(poly: &MPoly) -> Result<Quadric, Error> {
     if poly.is_zero() {
         return Err(Error::ZeroQuadric);
     }
-    let w = Variable::W.index();
-    let homogenized;
-    let form = if poly.uses(w) {
-        // The first term of the wrong degree, in the order 1, x, y, z, w, x², x·y, ….
-        let bad = poly
-            .terms()
-            .iter()
-            .filter(|(m, _)| m.degree() != 2)
-            .min_by_key(|(m, _)| (m.degree(), std::cmp::Reverse(*m)));
-        if let Some((m, c)) = bad {
-            return Err(Error::Degree {
-                message: format!(
-                    "term '{}' has degree {}; a form in x,y,z,w must be homogeneous \
-                     of degree 2 (leave out w to write an affine equation in x, y, z)",
-                    MPoly::term(*m, c.clone()).to_string_with(&VARIABLE_NAMES),
-                    m.degree()
-                ),
-            });
-        }
-        poly
-    } else {
-        // The reader refused every product of degree above 2.
-        homogenized = poly.homogenize(&[0, 1, 2], w, 2).ok_or(Error::Degree {
-            message: "a quadric has degree at most 2".into(),
-        })?;
-        &homogenized
-    };
+    let form = quadratic_part(poly)?;
     // A form in x, y, z, w of degree 2: each term is vᵢ·vⱼ, i ≤ j, for A[i][j] (and A[j][i]).
     let mut m: [[RBig; 4]; 4] = Default::default();
     for (monomial, c) in form.terms() {
