@@ -76,7 +76,8 @@ fn names(vars: &[Variable]) -> String {
 
 /// A quotient of polynomials `numerator / denominator` in the variables of [`Variable`],
 /// reduced by the rational content: the denominator has coprime integer coefficients and
-/// a positive leading coefficient, and is `1` when constant (so also for zero).
+/// a positive leading coefficient (that of its greatest monomial, [`MPoly`]'s order), and
+/// is `1` when constant (so also for zero).
 ///
 /// Common polynomial factors are not cancelled: `(t^2-1)/(t-1)` keeps its denominator.
 /// Two quotients are the same function when `n₁·d₂ = n₂·d₁` ([`RationalFunction::same_as`]).
@@ -88,9 +89,10 @@ pub struct RationalFunction {
 
 impl RationalFunction {
     /// `numerator / denominator` reduced by the rational content, or `None` if the
-    /// denominator is zero.
+    /// denominator is zero or a variable without a name (index 7) occurs.
     pub fn new(numerator: MPoly, denominator: MPoly) -> Option<RationalFunction> {
-        if denominator.is_zero() {
+        let unnamed = VARIABLE_NAMES.len();
+        if denominator.is_zero() || numerator.uses(unnamed) || denominator.uses(unnamed) {
             return None;
         }
         let (numerator, denominator) = normalize(numerator, Some(denominator));
@@ -946,6 +948,14 @@ mod tests {
         assert!(!read_all("(t^2-1)/(t-1)").same_as(&read_all("t - 1")));
         assert!(read_all("0/(t-1)").is_polynomial());
         assert_eq!(RationalFunction::new(MPoly::one(), MPoly::zero()), None);
+        assert_eq!(RationalFunction::new(MPoly::var(7), MPoly::one()), None);
+        let (n, d) = (
+            MPoly::var(4).scale(&q(3, 1)),
+            MPoly::var(4).scale(&q(-6, 1)),
+        );
+        let f = RationalFunction::new(n, d).expect("a nonzero denominator");
+        assert_eq!(f.to_string(), "(-1/2*t)/(t)");
+        assert!(f.same_as(&read_all("-1/2")) && !f.is_polynomial());
     }
 
     #[test]
@@ -1070,6 +1080,23 @@ mod tests {
             ")".repeat(MAX_NESTING_DEPTH)
         );
         assert_eq!(read_all(&nested), read_all("t"));
+    }
+
+    #[test]
+    fn deepest_recursion_fits_in_a_small_stack() {
+        // Each level goes through a sum, a product and a power: the most frames per '('.
+        let depth = MAX_NESTING_DEPTH;
+        let text = format!("{}t{}", "(1+2*-".repeat(depth), ")".repeat(depth));
+        let parsed = std::thread::Builder::new()
+            .stack_size(512 * 1024)
+            .spawn(move || parse_rational_function(&text, &[Variable::T]))
+            .expect("a thread")
+            .join()
+            .expect("no stack overflow");
+        // f(t) = 1 + 2·(−t) applied 64 times: f∘…∘f(0) = (1 − (−2)^64)/3.
+        let at_zero = parsed.expect("within the limits").eval(&point([0; 7]));
+        let want = (RBig::ONE - RBig::from(-2).pow(64)) / RBig::from(3);
+        assert_eq!(at_zero, Some(want));
     }
 
     #[test]
