@@ -459,6 +459,19 @@ impl MPoly {
     /// # Panics
     /// If a variable that occurs has no name.
     pub fn to_string_with(&self, names: &[&str]) -> String {
+        self.to_string_with_numbers(names, |c| c.to_string())
+    }
+
+    /// [`MPoly::to_string_with`], each coefficient's absolute value (a positive rational)
+    /// written by `number`.
+    ///
+    /// # Panics
+    /// If a variable that occurs has no name.
+    pub fn to_string_with_numbers(
+        &self,
+        names: &[&str],
+        number: impl Fn(&RBig) -> String,
+    ) -> String {
         if self.is_zero() {
             return "0".into();
         }
@@ -474,7 +487,7 @@ impl MPoly {
             let a = if negative { -c } else { c.clone() };
             let mut factors: Vec<String> = Vec::new();
             if !a.is_one() || *m == Monomial::ONE {
-                factors.push(a.to_string());
+                factors.push(number(&a));
             }
             for (i, &e) in m.0.iter().enumerate() {
                 match e {
@@ -776,6 +789,8 @@ mod tests {
         assert_eq!(MPoly::zero().to_string_with(&names), "0");
         assert_eq!(MPoly::constant(q(-1, 1)).to_string(), "-1");
         assert_eq!(p.to_string(), "3*x0^2 - x0*x1 - 1/2*x4 + 5");
+        let bracketed = p.to_string_with_numbers(&names, |c| format!("({c})"));
+        assert_eq!(bracketed, "(3)*x^2 - x*y - (1/2)*t + (5)");
     }
 
     #[test]

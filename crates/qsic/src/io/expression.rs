@@ -8,6 +8,7 @@ use crate::limits::{
     MAX_COEFFICIENT_BITS, MAX_DEGREE, MAX_EXPANSION_BITS, MAX_INPUT_LEN, MAX_NESTING_DEPTH,
     MAX_POWER_EXPONENT, MAX_TERMS, OVERHEAD_BITS,
 };
+use crate::quadric::push_number;
 use dashu_ratio::RBig;
 use qsic_algebra::mpoly::{bits, MPoly};
 use std::fmt;
@@ -143,14 +144,22 @@ impl RationalFunction {
 
 impl fmt::Display for RationalFunction {
     /// `numerator` alone if the denominator is 1, else `(numerator)/(denominator)`, in the
-    /// syntax [`parse_rational_function`] reads.
+    /// syntax [`parse_rational_function`] reads: a coefficient longer than one numeral may
+    /// be is written as a product of numerals (`(391*1e9999)`), as in
+    /// [`Quadric::to_polynomial_string`](crate::Quadric::to_polynomial_string).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let num = self.numerator.to_string_with(&VARIABLE_NAMES);
+        let write = |p: &MPoly| {
+            p.to_string_with_numbers(&VARIABLE_NAMES, |c| {
+                let mut s = String::new();
+                push_number(&mut s, c);
+                s
+            })
+        };
+        let num = write(&self.numerator);
         if self.is_polynomial() {
             return f.write_str(&num);
         }
-        let den = self.denominator.to_string_with(&VARIABLE_NAMES);
-        write!(f, "({num})/({den})")
+        write!(f, "({num})/({})", write(&self.denominator))
     }
 }
 
@@ -936,6 +945,19 @@ mod tests {
         ];
         for (text, want) in table {
             assert_eq!(read_all(text).eval(&at).as_ref(), Some(want), "{text:?}");
+        }
+    }
+
+    #[test]
+    fn long_coefficients_print_in_a_form_read_back() {
+        // Found by fuzzing: 111e9999 has 10 002 digits, more than one numeral may have.
+        for text in [
+            "111e9999*t",
+            "1e-9999*t/(t+1)",
+            "(7e9999+3)^2*x + 2/(3e9999*t + 1)",
+        ] {
+            let f = read_all(text);
+            assert_eq!(read_all(&f.to_string()), f, "{text}");
         }
     }
 
