@@ -3,9 +3,10 @@
 set -u
 cd "$(dirname "$0")"
 secs=${1:-600}
-for t in parse_polynomial parse_number classify_invariance batch_lines; do
+for t in parse_polynomial parse_expression parse_number classify_invariance batch_lines; do
   case $t in
     parse_polynomial) extra=(-dict=dict/polynomial.dict -max_len=256) ;;
+    parse_expression) extra=(-dict=dict/polynomial.dict -max_len=256) ;;
     parse_number) extra=(-dict=dict/polynomial.dict -max_len=128) ;;
     classify_invariance) extra=(-max_len=256) ;;
     batch_lines) extra=(-dict=dict/batch.dict -max_len=512) ;;

@@ -5,8 +5,12 @@
 #![allow(clippy::needless_range_loop)]
 
 use dashu_ratio::RBig;
-use qsic::io::{parse_number as read_number, parse_quadric};
-use qsic::{classify, Quadric};
+use qsic::io::{
+    moving_matrix_from_polynomial, parse_number as read_number, parse_quadric,
+    parse_rational_function, Variable,
+};
+use qsic::limits::MAX_INPUT_LEN;
+use qsic::{classify, Error, Quadric};
 
 /// The text the readers see: invalid UTF-8 replaced, so every input reaches them.
 fn text(data: &[u8]) -> String {
@@ -14,7 +18,8 @@ fn text(data: &[u8]) -> String {
 }
 
 /// `parse_quadric` never panics, and what it accepts prints (`to_polynomial_string`) as a
-/// polynomial that reads back as the same quadric.
+/// polynomial that reads back as the same quadric, unless the printout is longer than
+/// `MAX_INPUT_LEN` (`(1e9999+1)^7*(x+y+z+w)^2` has ten coefficients of 70 000 digits).
 pub fn parse_polynomial(data: &[u8]) {
     let Ok(q) = parse_quadric(&text(data)) else {
         return;
@@ -22,6 +27,25 @@ pub fn parse_polynomial(data: &[u8]) {
     let printed = q.to_polynomial_string();
     match parse_quadric(&printed) {
         Ok(again) => assert_eq!(again, q, "{printed:?} reads back as another quadric"),
+        Err(Error::Limit { .. }) if printed.len() > MAX_INPUT_LEN => {}
+        Err(e) => panic!("{printed:?} does not read back: {e}"),
+    }
+}
+
+/// `parse_rational_function` (all variables) and `moving_matrix_from_polynomial` never
+/// panic, and what the first accepts prints (`Display`) as an expression that reads back as
+/// the same quotient, unless the printout is longer than `MAX_INPUT_LEN` (a short input
+/// can expand to many long coefficients).
+pub fn parse_expression(data: &[u8]) {
+    let text = text(data);
+    let _ = moving_matrix_from_polynomial(&text);
+    let Ok(f) = parse_rational_function(&text, &Variable::ALL) else {
+        return;
+    };
+    let printed = f.to_string();
+    match parse_rational_function(&printed, &Variable::ALL) {
+        Ok(again) => assert_eq!(again, f, "{printed:?} reads back as another quotient"),
+        Err(Error::Limit { .. }) if printed.len() > MAX_INPUT_LEN => {}
         Err(e) => panic!("{printed:?} does not read back: {e}"),
     }
 }

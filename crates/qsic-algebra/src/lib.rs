@@ -6,6 +6,7 @@
 //! | [`sign`] | [`Sign`], the result of every exact sign decision |
 //! | [`ring`] | the [`Ring`] and [`Field`] traits: algorithms written once for ℤ, ℚ, ℤ\[t\], ℚ(α), … |
 //! | [`poly`] | dense univariate polynomials `Poly<C>` over a ring: arithmetic, subresultants, resultants, gcd, square-free decomposition; over ℤ also Sturm and Descartes counts |
+//! | [`mpoly`] | sparse multivariate rational polynomials (up to 8 variables): arithmetic, degrees, coefficients in one variable, quadratic forms |
 //! | [`roots`] | real root isolation with rational (dyadic) isolating intervals |
 //! | [`field`] | exact real extensions of ℚ: ℚ(√δ) ([`field::Quadratic`]), ℚ(α) by dynamic evaluation ([`field::NumberField`]) |
 //! | [`algebraic`] | real algebraic numbers (refinement shared across calls) and the exact sign of a polynomial at them |
@@ -25,6 +26,7 @@ pub mod factor;
 pub mod field;
 pub mod filter;
 pub mod matrix;
+pub mod mpoly;
 pub mod poly;
 pub mod ring;
 pub mod roots;
@@ -33,6 +35,7 @@ pub mod sign;
 pub use algebraic::AlgebraicReal;
 pub use dashu_int::IBig;
 pub use dashu_ratio::RBig;
+pub use mpoly::MPoly;
 pub use poly::Poly;
 pub use ring::{Field, Ring};
 pub use sign::Sign;

@@ -18,13 +18,15 @@ pub enum Error {
         /// What was expected or found.
         message: String,
     },
-    /// A variable other than x, y, z, w.
-    #[error("unknown variable '{name}' at column {column} (allowed: x, y, z, w)")]
+    /// A name that is not one of the variables the reader allows (x, y, z, w for a quadric).
+    #[error("unknown variable '{name}' at column {column} (allowed: {allowed})")]
     UnknownVariable {
         /// The name as written.
         name: String,
         /// 1-based character column.
         column: usize,
+        /// The allowed variables, as a list: `x, y, z, w`.
+        allowed: String,
     },
     /// A term whose degree is not allowed: above 2, or, in a form that uses `w`, not exactly 2.
     #[error("{message}")]

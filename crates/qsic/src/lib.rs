@@ -3,7 +3,7 @@
 //! | module | owns |
 //! |---|---|
 //! | [`quadric`] | [`Quadric`], a validated symmetric 4×4 rational matrix |
-//! | [`io`] | reading quadrics from polynomial strings and matrices, exactly |
+//! | [`io`] | reading quadrics from polynomial strings and matrices, rational functions and moving quadrics, exactly |
 //! | [`shapes`] | constructors for spheres, cylinders, cones, … from rational parameters |
 //! | [`pencil`] | the pencil `λA − μB`: characteristic form, real roots, Segre structure, inertia |
 //! | [`mod@classify`] | [`classify()`]: regular (35 cases), singular and single pencils |

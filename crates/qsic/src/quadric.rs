@@ -699,7 +699,7 @@ fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
 /// Writes the positive rational `v` as the polynomial reader reads it: `p/q`, or, when that
 /// is longer than one numeral may be, its integers with their trailing zeros as exponents
 /// (`391e9999`), split into numerals that respect the digit and exponent limits.
-fn push_number(s: &mut String, v: &RBig) {
+pub(crate) fn push_number(s: &mut String, v: &RBig) {
     let (p, q) = (v.numerator().to_string(), v.denominator().to_string());
     if p.len() + q.len() <= MAX_NUMBER_DIGITS {
         s.push_str(&v.to_string());

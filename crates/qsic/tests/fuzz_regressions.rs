@@ -36,6 +36,11 @@ fn parse_polynomial_regressions() {
 }
 
 #[test]
+fn parse_expression_regressions() {
+    replay("parse_expression", library::parse_expression);
+}
+
+#[test]
 fn parse_number_regressions() {
     replay("parse_number", library::parse_number);
 }

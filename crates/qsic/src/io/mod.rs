@@ -7,15 +7,26 @@
 //! | [`quadric_from_rows`] | a 4×4 matrix of number strings |
 //! | [`quadric_from_array`] | the same as an array `[[S; 4]; 4]` |
 //! | [`quadric_from_f64_rows`] | a 4×4 matrix of `f64`, each converted exactly |
+//! | [`parse_rational_function`] | an expression in chosen variables with any division: a quotient of polynomials |
+//! | [`moving_matrix_from_rows`] | a 4×4 matrix of rational functions of `t`: a [`MovingMatrix`] over one denominator |
+//! | [`moving_matrix_from_polynomial`] | a quadratic form in `x, y, z, w` with coefficients rational in `t`: the same |
+//!
+//! Polynomials and rational functions are read by one Pratt parser (`expression`); the
+//! quadric reader is that parser in a grammar of degree ≤ 2 in `x, y, z, w`, with a
+//! machine-arithmetic reader in front for plain sums of terms.
 //!
 //! Every value is exact: `0.1` is one tenth. Numbers of up to 18 digits are read in machine
 //! arithmetic and the quadric built from them without big numbers (see [`crate::quadric`]);
 //! longer ones, and every error, go through the big rationals of [`parse_number`]. Input sizes are bounded by
 //! [`crate::limits`], so no string, however built, makes a reader panic or run long.
 
+mod expression;
+mod moving;
 mod number;
 mod polynomial;
 
+pub use expression::{parse_rational_function, RationalFunction, Variable, VARIABLE_NAMES};
+pub use moving::{moving_matrix_from_polynomial, moving_matrix_from_rows, MovingMatrix};
 pub use number::parse_number;
 use number::parse_number_small;
 pub use polynomial::{parse_quadric, parse_quadric_big_route};

@@ -1,16 +1,17 @@
-//! Reading a quadric from a polynomial string in `x, y, z, w`: a tokenizer, a
-//! recursive-descent reader that expands as it goes into the 15 monomials of
-//! degree ≤ 2, then homogenization and the symmetric matrix.
+//! Reading a quadric from a polynomial string in `x, y, z, w`: a machine-arithmetic reader
+//! for plain sums of terms, and the general route, the expression reader of
+//! [`super::expression`] in its quadric grammar, then homogenization and the matrix.
 
-use super::number::{check_digits, excerpt, scan_numeral, NumeralError};
+use super::expression::{read, Grammar, Variable, VARIABLE_NAMES};
+use super::number::scan_numeral;
 use crate::error::Error;
-use crate::limits::{
-    MAX_COEFFICIENT_BITS, MAX_EXPANSION_BITS, MAX_INPUT_LEN, MAX_NESTING_DEPTH, MAX_POWER_EXPONENT,
-};
+use crate::limits::MAX_INPUT_LEN;
 use crate::quadric::{Quadric, SmallRational};
 use dashu_int::ops::BitTest;
 use dashu_int::UBig;
 use dashu_ratio::RBig;
+use qsic_algebra::mpoly::MPoly;
+use std::borrow::Cow;
 
 /// Reads a quadric from a polynomial in `x, y, z, w` of degree at most 2.
 ///
@@ -26,7 +27,8 @@ use dashu_ratio::RBig;
 /// coefficient of `vᵢ²` and `A[i][j] = A[j][i]` half that of `vᵢvⱼ`.
 ///
 /// # Grammar
-/// With the usual precedence (power over product over sum):
+/// That of [`parse_rational_function`](super::parse_rational_function), with the usual
+/// precedence (power over sign over product over sum):
 ///
 /// ```text
 /// sum     := term (('+' | '-') term)*
@@ -42,7 +44,7 @@ use dashu_ratio::RBig;
 /// `2*x^2`, `3 x*y` is `3*x*y`, `(x+1)(x-1)` a product, and `1/2x` is
 /// `(1/2)*x`; a number after a factor (`x 2`) is an error. A sign binds looser
 /// than a power: `-x^2` is `-(x^2)`. Exponents are integers from 0 to
-/// [`MAX_POWER_EXPONENT`]; chained powers `x^2^2` are refused as ambiguous.
+/// [`MAX_POWER_EXPONENT`](crate::limits::MAX_POWER_EXPONENT); chained powers `x^2^2` are refused as ambiguous.
 ///
 /// Parentheses are expanded exactly. A product or power whose degree exceeds 2
 /// is refused at once, even if later terms would cancel it (`x^3 - x^3`), so
@@ -97,26 +99,12 @@ pub fn parse_quadric(text: &str) -> Result<Quadric, Error> {
 /// As [`parse_quadric`].
 #[doc(hidden)]
 pub fn parse_quadric_big_route(text: &str) -> Result<Quadric, Error> {
-    if text.len() > MAX_INPUT_LEN {
-        return Err(Error::Limit {
-            what: format!("{} bytes in a polynomial string", text.len()),
-            limit: MAX_INPUT_LEN,
-        });
-    }
-    let mut budget = Budget {
-        left: MAX_EXPANSION_BITS,
+    let grammar = Grammar {
+        variables: &[Variable::X, Variable::Y, Variable::Z, Variable::W],
+        denominator_variables: &[],
+        quadric: true,
     };
-    let tokens = tokenize(text, &mut budget)?;
-    let mut parser = Parser {
-        text,
-        tokens,
-        pos: 0,
-        depth: 0,
-        budget,
-        spare: Spare::default(),
-    };
-    let poly = parser.parse()?;
-    quadric_from_poly(poly)
+    quadric_from_poly(read(text, &grammar)?.numerator())
 }
 
 /// Longest text the machine reader takes (bytes). Its numbers have at most 128 bits, so
@@ -401,11 +389,6 @@ const MONOMIALS: [[u8; 4]; N] = [
     [0, 0, 0, 2],
 ];
 
-/// Total degree of monomial `k`.
-fn degree_of(k: usize) -> usize {
-    MONOMIALS[k].iter().map(|&e| usize::from(e)).sum()
-}
-
 /// `PRODUCTS[i][j]` is the index of the product of monomials `i` and `j`, or
 /// [`NO_MONOMIAL`] if its degree exceeds 2.
 const PRODUCTS: [[u8; N]; N] = product_table();
@@ -446,748 +429,81 @@ fn product_index(i: usize, j: usize) -> Option<usize> {
     }
 }
 
-/// Monomial `k` written as in [`Quadric::to_polynomial_string`] (`x^2`, `x*y`, `1`).
-fn monomial_text(k: usize) -> String {
-    let factors: Vec<String> = MONOMIALS[k]
-        .iter()
-        .zip(VARIABLES)
-        .filter(|(&e, _)| e > 0)
-        .map(|(&e, v)| {
-            if e == 1 {
-                v.to_string()
-            } else {
-                format!("{v}^{e}")
-            }
-        })
-        .collect();
-    if factors.is_empty() {
-        "1".into()
-    } else {
-        factors.join("*")
-    }
-}
-
-/// A term `c·monomial` as text, e.g. `3*x`, `-x*w`, `-1/2`.
-fn term_text(c: &RBig, k: usize) -> String {
-    if k == 0 {
-        c.to_string()
-    } else if c.is_one() {
-        monomial_text(k)
-    } else if *c == RBig::NEG_ONE {
-        format!("-{}", monomial_text(k))
-    } else {
-        format!("{c}*{}", monomial_text(k))
-    }
-}
-
-/// What is left of [`MAX_EXPANSION_BITS`] for reading one polynomial.
-#[derive(Debug)]
-struct Budget {
-    left: usize,
-}
-
-impl Budget {
-    /// Accounts for a newly computed number: refuses it if it is larger than
-    /// [`MAX_COEFFICIENT_BITS`] or the total exceeds [`MAX_EXPANSION_BITS`].
-    #[inline]
-    fn charge(&mut self, c: &RBig) -> Result<(), Error> {
-        let bits = c.numerator().bit_len() + c.denominator().bit_len();
-        match self.left.checked_sub(bits) {
-            Some(left) if bits <= MAX_COEFFICIENT_BITS => {
-                self.left = left;
-                Ok(())
-            }
-            _ => Err(Self::refusal(bits)),
-        }
-    }
-
-    /// Why [`Budget::charge`] refuses a number of `bits` bits.
-    #[cold]
-    fn refusal(bits: usize) -> Error {
-        if bits > MAX_COEFFICIENT_BITS {
-            Error::Limit {
-                what: format!("a coefficient of {bits} bits while expanding the polynomial"),
-                limit: MAX_COEFFICIENT_BITS,
-            }
-        } else {
-            Error::Limit {
-                what: "total size of the numbers computed while expanding the polynomial, in bits"
-                    .into(),
-                limit: MAX_EXPANSION_BITS,
-            }
-        }
-    }
-}
-
-/// A polynomial of degree ≤ 2 in x, y, z, w: its terms with a nonzero
-/// coefficient, as (index into [`MONOMIALS`], coefficient), in increasing
-/// order of index.
-///
-/// Since [`MONOMIALS`] is ordered by degree, the degree is that of the last
-/// term. Most polynomials met while reading have one or a few terms, so this
-/// is much cheaper to build, combine and drop than 15 dense coefficients, and
-/// it keeps the frames of the recursive reader small.
-#[derive(Debug, Default)]
-struct Poly {
-    terms: Vec<(usize, RBig)>,
-}
-
-/// `a · b`, with shortcuts for a factor 1 and for integers (no gcd needed).
-fn product(a: &RBig, b: &RBig) -> RBig {
-    if b.is_one() {
-        a.clone()
-    } else if a.is_one() {
-        b.clone()
-    } else if a.is_int() && b.is_int() {
-        RBig::from(a.numerator() * b.numerator())
-    } else {
-        a * b
-    }
-}
-
-/// `a += b`, or `a -= b` if `negative`, with a shortcut for integers.
-fn accumulate(a: &mut RBig, b: &RBig, negative: bool) {
-    if a.is_int() && b.is_int() {
-        let n = if negative {
-            a.numerator() - b.numerator()
-        } else {
-            a.numerator() + b.numerator()
-        };
-        *a = RBig::from(n);
-    } else if negative {
-        *a -= b;
-    } else {
-        *a += b;
-    }
-}
-
-/// Storage of the polynomials dropped while reading, reused to build new ones
-/// without allocating.
-#[derive(Debug, Default)]
-struct Spare(Vec<Vec<(usize, RBig)>>);
-
-impl Spare {
-    /// At most this many buffers are kept.
-    const KEEP: usize = 16;
-
-    /// An empty buffer, with room for any polynomial.
-    fn take(&mut self) -> Vec<(usize, RBig)> {
-        self.0.pop().unwrap_or_else(|| Vec::with_capacity(N))
-    }
-
-    /// Takes back the storage of a polynomial that is no longer needed.
-    fn keep(&mut self, p: Poly) {
-        let mut terms = p.terms;
-        if terms.capacity() > 0 && self.0.len() < Self::KEEP {
-            terms.clear();
-            self.0.push(terms);
-        }
-    }
-
-    fn constant(&mut self, value: RBig) -> Poly {
-        let mut terms = Vec::new();
-        if !value.is_zero() {
-            terms = self.take();
-            terms.push((0, value));
-        }
-        Poly { terms }
-    }
-
-    fn variable(&mut self, i: usize) -> Poly {
-        let mut terms = self.take();
-        terms.push((1 + i, RBig::ONE));
-        Poly { terms }
-    }
-
-    fn copy(&mut self, p: &Poly) -> Poly {
-        let mut terms = self.take();
-        terms.extend_from_slice(&p.terms);
-        Poly { terms }
-    }
-}
-
-impl Poly {
-    fn is_zero(&self) -> bool {
-        self.terms.is_empty()
-    }
-
-    /// Degree of the highest nonzero monomial; 0 for the zero polynomial.
-    fn degree(&self) -> usize {
-        self.terms.last().map_or(0, |&(k, _)| degree_of(k))
-    }
-
-    fn negate(&mut self) {
-        for (_, c) in &mut self.terms {
-            *c = -std::mem::take(c);
-        }
-    }
-
-    /// `self += sign · other`.
-    ///
-    /// Every coefficient of `self` that `other` changes is charged, in
-    /// increasing order of monomial, even if it cancels to zero.
-    fn add_assign(
-        &mut self,
-        mut other: Poly,
-        negative: bool,
-        budget: &mut Budget,
-        spare: &mut Spare,
-    ) -> Result<(), Error> {
-        let wanted = self.terms.len() + other.terms.len();
-        if wanted > self.terms.capacity() {
-            // At most N terms: grow once rather than term by term.
-            self.terms.reserve(wanted.min(N) - self.terms.len());
-        }
-        let mut cancelled = false;
-        for (k, b) in other.terms.drain(..) {
-            match self.terms.binary_search_by_key(&k, |&(i, _)| i) {
-                Ok(p) => {
-                    let a = &mut self.terms[p].1;
-                    accumulate(a, &b, negative);
-                    budget.charge(a)?;
-                    cancelled |= a.is_zero();
-                }
-                Err(p) => {
-                    let b = if negative { -b } else { b };
-                    budget.charge(&b)?;
-                    self.terms.insert(p, (k, b));
-                }
-            }
-        }
-        spare.keep(other);
-        if cancelled {
-            self.terms.retain(|(_, c)| !c.is_zero());
-        }
-        Ok(())
-    }
-
-    /// `self · factor` for a nonzero rational `factor`.
-    fn scale(&mut self, factor: &RBig, budget: &mut Budget) -> Result<(), Error> {
-        for (_, c) in &mut self.terms {
-            if !factor.is_one() {
-                *c = product(c, factor);
-            }
-            budget.charge(c)?;
-        }
-        Ok(())
-    }
-
-    /// The product, or `Ok(Err(degree))` if its degree would exceed 2.
-    ///
-    /// The degree of a product is the sum of the degrees (no zero divisors), so
-    /// the refusal is exact and decided before any multiplication. Each new
-    /// coefficient is charged as it is accumulated, for the terms of `self`
-    /// in increasing order and within each for those of `other`; products by
-    /// a single term, the usual case, are computed in the storage of an operand.
-    fn mul(
-        mut self,
-        mut other: Poly,
-        budget: &mut Budget,
-        spare: &mut Spare,
-    ) -> Result<Result<Poly, usize>, Error> {
-        if self.is_zero() || other.is_zero() {
-            spare.keep(self);
-            spare.keep(other);
-            return Ok(Ok(Poly::default()));
-        }
-        let degree = self.degree() + other.degree();
-        if degree > 2 {
-            return Ok(Err(degree));
-        }
-        let out = match (self.terms.as_mut_slice(), other.terms.as_slice()) {
-            ([(i, a)], [(j, b)]) => {
-                // degree(i) + degree(j) ≤ 2, so the monomial is in the table.
-                if let Some(k) = product_index(*i, *j) {
-                    // A product of nonzero rationals is nonzero.
-                    *a = product(a, b);
-                    *i = k;
-                    budget.charge(a)?;
-                } else {
-                    self.terms.clear();
-                }
-                spare.keep(other);
-                self
-            }
-            ([(0, c)], _) => {
-                let c = std::mem::take(c);
-                spare.keep(self);
-                other.scale(&c, budget)?;
-                other
-            }
-            (_, [(0, c)]) => {
-                self.scale(c, budget)?;
-                spare.keep(other);
-                self
-            }
-            _ => {
-                let out = self.mul_general(&other, budget, spare.take())?;
-                spare.keep(self);
-                spare.keep(other);
-                out
-            }
-        };
-        Ok(Ok(out))
-    }
-
-    /// The product into the empty buffer `terms`, when its degree is known to
-    /// be at most 2.
-    fn mul_general(
-        &self,
-        other: &Poly,
-        budget: &mut Budget,
-        mut terms: Vec<(usize, RBig)>,
-    ) -> Result<Poly, Error> {
-        let mut cancelled = false;
-        for (i, a) in &self.terms {
-            for (j, b) in &other.terms {
-                let Some(k) = product_index(*i, *j) else {
-                    continue;
-                };
-                let p = product(a, b);
-                match terms.binary_search_by_key(&k, |&(m, _)| m) {
-                    Ok(q) => {
-                        let c = &mut terms[q].1;
-                        accumulate(c, &p, false);
-                        budget.charge(c)?;
-                        cancelled |= c.is_zero();
-                    }
-                    Err(q) => {
-                        budget.charge(&p)?;
-                        terms.insert(q, (k, p));
-                    }
-                }
-            }
-        }
-        if cancelled {
-            terms.retain(|(_, c)| !c.is_zero());
-        }
-        Ok(Poly { terms })
-    }
-}
-
-/// A lexical token.
-#[derive(Debug)]
-enum Tok {
-    Number(RBig),
-    Variable(usize),
-    Plus,
-    Minus,
-    Star,
-    Slash,
-    /// `^` or `**`.
-    Power,
-    Open,
-    Close,
-    End,
-}
-
-/// A token with its place: 1-based character column and byte range.
-#[derive(Debug)]
-struct Token {
-    tok: Tok,
-    column: usize,
-    start: usize,
-    end: usize,
-}
-
-/// Splits `text` into tokens, ending with [`Tok::End`].
-fn tokenize(text: &str, budget: &mut Budget) -> Result<Vec<Token>, Error> {
-    // A token takes at least one byte: no growth for short texts.
-    let mut tokens = Vec::with_capacity((text.len() + 1).min(1024));
-    let mut column = 1;
-    let mut rest = text.char_indices().peekable();
-    while let Some((start, ch)) = rest.next() {
-        let mut len = ch.len_utf8();
-        let mut width = 1;
-        let tok = match ch {
-            c if c.is_whitespace() => {
-                column += 1;
-                continue;
-            }
-            '+' => Tok::Plus,
-            '-' => Tok::Minus,
-            '/' => Tok::Slash,
-            '^' => Tok::Power,
-            '(' => Tok::Open,
-            ')' => Tok::Close,
-            '*' => {
-                if rest.next_if(|&(_, c)| c == '*').is_some() {
-                    len = 2;
-                    width = 2;
-                    Tok::Power
-                } else {
-                    Tok::Star
-                }
-            }
-            '0'..='9' | '.' => {
-                let (numeral, n) = scan_numeral(&text[start..]).map_err(|e| match e {
-                    NumeralError::Limit(limit) => limit,
-                    NumeralError::Malformed { message, .. } => Error::Syntax { column, message },
-                })?;
-                check_digits(numeral.digit_count())?;
-                // A numeral is ASCII: its byte length is its width in characters.
-                len = n;
-                width = n;
-                if n > 1 {
-                    // Skip the other n - 1 characters of the numeral.
-                    rest.nth(n - 2);
-                }
-                let value = numeral.value();
-                budget.charge(&value)?;
-                Tok::Number(value)
-            }
-            c if c.is_alphabetic() || c == '_' => {
-                while rest
-                    .next_if(|&(_, c)| c.is_alphabetic() || c.is_ascii_digit() || c == '_')
-                    .is_some()
-                {}
-                let end = rest.peek().map_or(text.len(), |&(i, _)| i);
-                let name = &text[start..end];
-                match VARIABLES
-                    .iter()
-                    .position(|v| name.len() == 1 && name.starts_with(*v))
-                {
-                    Some(i) => {
-                        len = end - start;
-                        Tok::Variable(i)
-                    }
-                    None => {
-                        return Err(Error::UnknownVariable {
-                            name: excerpt(name),
-                            column,
-                        })
-                    }
-                }
-            }
-            c => {
-                return Err(Error::Syntax {
-                    column,
-                    message: format!("unexpected character '{c}'"),
-                })
-            }
-        };
-        tokens.push(Token {
-            tok,
-            column,
-            start,
-            end: start + len,
-        });
-        column += width;
-    }
-    tokens.push(Token {
-        tok: Tok::End,
-        column,
-        start: text.len(),
-        end: text.len(),
-    });
-    Ok(tokens)
-}
-
-/// Recursive-descent reader over the tokens, expanding as it goes.
-struct Parser<'a> {
-    text: &'a str,
-    tokens: Vec<Token>,
-    pos: usize,
-    depth: usize,
-    budget: Budget,
-    spare: Spare,
-}
-
-impl Parser<'_> {
-    fn peek(&self) -> &Token {
-        // The last token is End and is never consumed, so `pos` stays in range.
-        &self.tokens[self.pos.min(self.tokens.len() - 1)]
-    }
-
-    fn advance(&mut self) {
-        if !matches!(self.peek().tok, Tok::End) {
-            self.pos += 1;
-        }
-    }
-
-    fn syntax(column: usize, message: impl Into<String>) -> Error {
-        Error::Syntax {
-            column,
-            message: message.into(),
-        }
-    }
-
-    /// What the current token is, for messages.
-    fn describe(&self) -> String {
-        let t = self.peek();
-        match t.tok {
-            Tok::End => "the end of the input".into(),
-            Tok::Number(_) => format!("the number '{}'", excerpt(&self.text[t.start..t.end])),
-            _ => format!("'{}'", &self.text[t.start..t.end]),
-        }
-    }
-
-    /// The whole input as one polynomial.
-    fn parse(&mut self) -> Result<Poly, Error> {
-        if matches!(self.peek().tok, Tok::End) {
-            return Err(Self::syntax(1, "empty polynomial"));
-        }
-        let poly = self.sum()?;
-        match self.peek().tok {
-            Tok::End => Ok(poly),
-            Tok::Close => Err(Self::syntax(self.peek().column, "unmatched ')'")),
-            Tok::Number(_) => Err(Self::syntax(
-                self.peek().column,
-                format!(
-                    "expected an operator before {}; write the number first, as in '2*x' or '2x'",
-                    self.describe()
-                ),
-            )),
-            _ => Err(Self::syntax(
-                self.peek().column,
-                format!("expected an operator, found {}", self.describe()),
-            )),
-        }
-    }
-
-    fn sum(&mut self) -> Result<Poly, Error> {
-        let mut acc = self.term()?;
-        loop {
-            let negative = match self.peek().tok {
-                Tok::Plus => false,
-                Tok::Minus => true,
-                _ => return Ok(acc),
-            };
-            self.advance();
-            let t = self.term()?;
-            acc.add_assign(t, negative, &mut self.budget, &mut self.spare)?;
-        }
-    }
-
-    /// Consumes any run of unary signs; true if their product is negative.
-    fn signs(&mut self) -> bool {
-        let mut negative = false;
-        loop {
-            match self.peek().tok {
-                Tok::Plus => {}
-                Tok::Minus => negative = !negative,
-                _ => return negative,
-            }
-            self.advance();
-        }
-    }
-
-    fn term(&mut self) -> Result<Poly, Error> {
-        let first = self.pos;
-        let negative = self.signs();
-        let mut acc = self.power()?;
-        loop {
-            let (divide, op_column) = match self.peek().tok {
-                Tok::Star => (false, Some(self.peek().column)),
-                Tok::Slash => (true, Some(self.peek().column)),
-                Tok::Variable(_) | Tok::Open => (false, None),
-                _ => break,
-            };
-            if op_column.is_some() {
-                self.advance();
-            }
-            let factor_negative = self.signs();
-            let mut factor = self.power()?;
-            if factor_negative {
-                factor.negate();
-            }
-            if divide {
-                let column = op_column.unwrap_or(1);
-                let divisor = match factor.terms.as_slice() {
-                    [] => return Err(Self::syntax(column, "division by zero")),
-                    [(0, divisor)] => divisor,
-                    _ => {
-                        return Err(Self::syntax(
-                            column,
-                            "can only divide by a number, not by an expression in x, y, z, w",
-                        ))
-                    }
-                };
-                let inverse = RBig::ONE / divisor;
-                acc.scale(&inverse, &mut self.budget)?;
-                self.spare.keep(factor);
-            } else {
-                acc = self.checked_product(acc, factor, first)?;
-            }
-        }
-        if negative {
-            acc.negate();
-        }
-        Ok(acc)
-    }
-
-    /// `a · b`, or [`Error::Degree`] naming the source text from token `first` to here.
-    fn checked_product(&mut self, a: Poly, b: Poly, first: usize) -> Result<Poly, Error> {
-        a.mul(b, &mut self.budget, &mut self.spare)?
-            .map_err(|degree| self.degree_error(first, degree))
-    }
-
-    fn degree_error(&self, first: usize, degree: usize) -> Error {
-        let from = &self.tokens[first.min(self.tokens.len() - 1)];
-        let to = &self.tokens[self
-            .pos
-            .saturating_sub(1)
-            .max(first)
-            .min(self.tokens.len() - 1)];
-        let snippet = self.text[from.start..to.end.max(from.start)].trim();
-        Error::Degree {
-            message: format!(
-                "term '{}' at column {} has degree {degree}; a quadric has degree at most 2",
-                excerpt(snippet),
-                from.column
-            ),
-        }
-    }
-
-    fn power(&mut self) -> Result<Poly, Error> {
-        let first = self.pos;
-        let mut base = self.atom()?;
-        if !matches!(self.peek().tok, Tok::Power) {
-            return Ok(base);
-        }
-        self.advance();
-        let t = self.peek();
-        let raw = &self.text[t.start..t.end];
-        let exponent_column = t.column;
-        if !matches!(t.tok, Tok::Number(_)) || !raw.bytes().all(|b| b.is_ascii_digit()) {
-            return Err(Self::syntax(
-                exponent_column,
-                format!(
-                    "the exponent must be a non-negative integer, found {}",
-                    self.describe()
-                ),
-            ));
-        }
-        let digits = raw.trim_start_matches('0');
-        let n = match digits.parse::<usize>() {
-            Ok(n) if n <= MAX_POWER_EXPONENT => n,
-            _ if digits.is_empty() => 0,
-            _ => {
-                return Err(Error::Limit {
-                    what: format!("exponent {} at column {exponent_column}", excerpt(raw)),
-                    limit: MAX_POWER_EXPONENT,
-                })
-            }
-        };
-        self.advance();
-        if matches!(self.peek().tok, Tok::Power) {
-            return Err(Self::syntax(
-                self.peek().column,
-                "chained powers are ambiguous; use parentheses, as in '(x^2)^2'",
-            ));
-        }
-        let base_degree = base.degree();
-        if base_degree * n > 2 {
-            return Err(self.degree_error(first, base_degree * n));
-        }
-        if n == 0 {
-            self.spare.keep(base);
-            return Ok(self.spare.constant(RBig::ONE));
-        }
-        // The first factor, 1 · base, is base itself: only its coefficients
-        // are charged, as a product would.
-        for (_, c) in &base.terms {
-            self.budget.charge(c)?;
-        }
-        if n == 1 {
-            return Ok(base);
-        }
-        let mut acc = self.spare.copy(&base);
-        for step in 1..n {
-            let factor = if step + 1 == n {
-                std::mem::take(&mut base)
-            } else {
-                self.spare.copy(&base)
-            };
-            acc = self.checked_product(acc, factor, first)?;
-        }
-        Ok(acc)
-    }
-
-    fn atom(&mut self) -> Result<Poly, Error> {
-        let column = self.peek().column;
-        let poly = match &self.peek().tok {
-            Tok::Number(value) => {
-                let value = value.clone();
-                self.spare.constant(value)
-            }
-            &Tok::Variable(i) => self.spare.variable(i),
-            Tok::Open => {
-                if self.depth >= MAX_NESTING_DEPTH {
-                    return Err(Error::Limit {
-                        what: format!("nesting of parentheses at column {column}"),
-                        limit: MAX_NESTING_DEPTH,
-                    });
-                }
-                self.depth += 1;
-                self.advance();
-                let inner = self.sum()?;
-                if !matches!(self.peek().tok, Tok::Close) {
-                    return Err(Self::syntax(
-                        self.peek().column,
-                        format!(
-                            "expected ')' to close the '(' at column {column}, found {}",
-                            self.describe()
-                        ),
-                    ));
-                }
-                self.depth -= 1;
-                inner
-            }
-            _ => {
-                return Err(Self::syntax(
-                    column,
-                    format!(
-                        "expected a number, a variable or '(', found {}",
-                        self.describe()
-                    ),
-                ))
-            }
-        };
-        self.advance();
-        Ok(poly)
-    }
-}
-
 /// `c / 2`, with shortcuts for integers.
-fn half(c: RBig) -> RBig {
+fn half(c: &RBig) -> RBig {
     if !c.is_int() {
         c / RBig::from(2)
     } else if c.numerator().bit(0) {
-        RBig::from_parts(c.into_parts().0, UBig::from(2u8))
+        RBig::from_parts(c.numerator().clone(), UBig::from(2u8))
     } else {
-        RBig::from(c.into_parts().0 >> 1)
+        RBig::from(c.numerator() >> 1)
     }
 }
 
-/// The quadric of an expanded polynomial: homogeneity check or homogenization, then the matrix.
-fn quadric_from_poly(poly: Poly) -> Result<Quadric, Error> {
+/// The first term of `poly` (in the order 1, x, y, z, w, x², x·y, … of the variables
+/// x, y, z, w) whose degree in x, y, z, w is not allowed, as an error.
+fn first_bad_term(poly: &MPoly, bad: impl Fn(u32) -> bool, why: &str) -> Result<(), Error> {
+    let xyzw = [0, 1, 2, 3];
+    let first = poly
+        .terms()
+        .iter()
+        .filter(|(m, _)| bad(m.degree_in_vars(&xyzw)))
+        .min_by_key(|(m, _)| (m.degree_in_vars(&xyzw), std::cmp::Reverse(*m)));
+    match first {
+        None => Ok(()),
+        Some((m, c)) => Err(Error::Degree {
+            message: format!(
+                "term '{}' has degree {}{why}",
+                MPoly::term(*m, c.clone()).to_string_with(&VARIABLE_NAMES),
+                m.degree_in_vars(&xyzw)
+            ),
+        }),
+    }
+}
+
+/// The quadratic form in x, y, z, w of a nonzero polynomial of degree at most 2 in them
+/// (its coefficients may hold other variables): the polynomial itself if it uses `w`,
+/// which must then be homogeneous of degree 2, else its homogenization with `w`.
+///
+/// # Errors
+/// [`Error::Degree`] naming a term of degree above 2, or, if `w` occurs, not 2.
+pub(crate) fn quadratic_part(poly: &MPoly) -> Result<Cow<'_, MPoly>, Error> {
+    let w = Variable::W.index();
+    first_bad_term(
+        poly,
+        |d| d > 2,
+        " in x, y, z, w; a quadric has degree at most 2",
+    )?;
+    if poly.uses(w) {
+        first_bad_term(
+            poly,
+            |d| d != 2,
+            "; a form in x,y,z,w must be homogeneous of degree 2 \
+             (leave out w to write an affine equation in x, y, z)",
+        )?;
+        return Ok(Cow::Borrowed(poly));
+    }
+    // Every term has degree at most 2 in x, y, z: homogenization cannot fail.
+    Ok(Cow::Owned(
+        poly.homogenize(&[0, 1, 2], w, 2).unwrap_or_default(),
+    ))
+}
+
+/// The quadric of a polynomial in x, y, z, w of degree at most 2 (as read): homogeneity
+/// check or homogenization with `w`, then the matrix of the quadratic form.
+fn quadric_from_poly(poly: &MPoly) -> Result<Quadric, Error> {
     if poly.is_zero() {
         return Err(Error::ZeroQuadric);
     }
-    let uses_w = poly.terms.iter().any(|&(k, _)| MONOMIALS[k][3] > 0);
+    let form = quadratic_part(poly)?;
+    // A form in x, y, z, w of degree 2: each term is vᵢ·vⱼ, i ≤ j, for A[i][j] (and A[j][i]).
     let mut m: [[RBig; 4]; 4] = Default::default();
-    for (k, c) in poly.terms {
-        let mut e = MONOMIALS[k];
-        let degree = degree_of(k);
-        if uses_w && degree != 2 {
-            return Err(Error::Degree {
-                message: format!(
-                    "term '{}' has degree {degree}; a form in x,y,z,w must be homogeneous \
-                     of degree 2 (leave out w to write an affine equation in x, y, z)",
-                    term_text(&c, k)
-                ),
-            });
-        }
-        // Homogenize: raise the power of w to reach degree 2 (degree ≤ 2 here).
-        e[3] += u8::try_from(2usize.saturating_sub(degree)).unwrap_or(0);
-        let mut vars = e
-            .iter()
-            .enumerate()
-            .flat_map(|(v, &p)| std::iter::repeat_n(v, usize::from(p)));
+    for (monomial, c) in form.terms() {
+        let e = monomial.exponents();
+        let mut vars = (0..4).flat_map(|v| std::iter::repeat_n(v, usize::from(e[v])));
         if let (Some(i), Some(j)) = (vars.next(), vars.next()) {
             if i == j {
-                m[i][i] = c;
+                m[i][i] = c.clone();
             } else {
                 let half = half(c);
                 m[i][j] = half.clone();
@@ -1201,6 +517,8 @@ fn quadric_from_poly(poly: Poly) -> Result<Quadric, Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::io::number::excerpt;
+    use crate::limits::MAX_NESTING_DEPTH;
     use dashu_int::{IBig, UBig};
     use proptest::prelude::*;
     use std::time::{Duration, Instant};
@@ -1224,7 +542,8 @@ mod tests {
         assert_eq!(HOMOGENIZED[5], (0, 0));
         assert_eq!(HOMOGENIZED[6], (0, 1));
         assert_eq!(HOMOGENIZED[13], (2, 3));
-        assert!((0..N).all(|k| (degree_of(k) == 2) == (k >= FIRST_QUADRATIC)));
+        let degree = |k: usize| MONOMIALS[k].iter().sum::<u8>();
+        assert!((0..N).all(|k| (degree(k) == 2) == (k >= FIRST_QUADRATIC)));
     }
 
     #[test]
@@ -1391,7 +710,8 @@ mod tests {
                 parse_quadric(text),
                 Err(Error::UnknownVariable {
                     name: name.into(),
-                    column
+                    column,
+                    allowed: "x, y, z, w".into()
                 }),
                 "input {text:?}"
             );
@@ -1402,6 +722,7 @@ mod tests {
     fn degree_errors_name_the_term() {
         let table = [
             ("x^3", "term 'x^3' at column 1 has degree 3"),
+            ("y + x^17", "term 'x^17' at column 5 has degree 17"),
             ("y^2 + x*y*z", "term 'x*y*z' at column 7 has degree 3"),
             (
                 "(x+y)^3 - (x+y)^3",
@@ -1458,7 +779,7 @@ mod tests {
             "x".repeat(MAX_INPUT_LEN + 1),
             "x^2 + 1e999999999".into(),
             format!("x^2 + {}", "1".repeat(20_000)),
-            "x^17".into(),
+            "x^65".into(),
             "x^99999999999999999999999999".into(),
             format!("{}x{}", "(".repeat(10_000), ")".repeat(10_000)),
             // Numeric towers grow numbers, not degrees.

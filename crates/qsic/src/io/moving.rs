@@ -1,0 +1,491 @@
+//! Moving quadrics: 4×4 symmetric matrices whose entries are rational functions of `t`,
+//! read from a matrix of strings or from a quadratic form, put over one denominator.
+
+use super::expression::{read, Grammar, RationalFunction, Variable};
+use super::number::excerpt;
+use super::polynomial::quadratic_part;
+use super::{check_shape, parse_rational_function};
+use crate::error::Error;
+use crate::limits::{MAX_DEGREE, MAX_MOVING_MATRIX_BITS};
+use crate::quadric::Quadric;
+use dashu_int::{IBig, UBig};
+use dashu_ratio::RBig;
+use qsic_algebra::mpoly::{bits, MPoly};
+use qsic_algebra::Poly;
+
+/// A moving quadric `A(t) = M(t) / d(t)`: a symmetric matrix `M` of polynomials in `t`
+/// and one common denominator `d`, in canonical form.
+///
+/// Canonical: integer coefficients with no common factor among all 17 polynomials,
+/// `d` with a positive leading coefficient, and no common root of `d` and all the `Mᵢⱼ`
+/// (`gcd(d, M₀₀, …, M₃₃) = 1`); so two moving matrices are equal exactly when they are
+/// the same function of `t`. `d` is then the lcm of the reduced denominators of the
+/// entries: `M` is `A` with its denominators cleared.
+///
+/// The quadric at `t` is `M(t)` ([`MovingMatrix::quadric_at`]): the same surface as
+/// `A(t)` where `d(t) ≠ 0` (scaled by `d(t)`, whose sign may flip the inertia), and its
+/// limit where `d(t) = 0`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct MovingMatrix {
+    numerators: [[Poly; 4]; 4],
+    denominator: Poly,
+}
+
+impl MovingMatrix {
+    /// The symmetric matrix `M(t)` of numerators.
+    pub fn numerators(&self) -> &[[Poly; 4]; 4] {
+        &self.numerators
+    }
+
+    /// The common denominator `d(t)`.
+    pub fn denominator(&self) -> &Poly {
+        &self.denominator
+    }
+
+    /// `A(t) = M(t)/d(t)` at a rational `t`, or `None` where `d(t) = 0`.
+    pub fn at(&self, t: &RBig) -> Option<[[RBig; 4]; 4]> {
+        let d = self.denominator.eval_rational(t);
+        if d.is_zero() {
+            return None;
+        }
+        Some(std::array::from_fn(|i| {
+            std::array::from_fn(|j| self.numerators[i][j].eval_rational(t) / &d)
+        }))
+    }
+
+    /// The quadric `M(t)` at a rational `t`.
+    ///
+    /// # Errors
+    /// [`Error::ZeroQuadric`] at a common root of all the entries of `M` (where `A(t)` is
+    /// zero too).
+    pub fn quadric_at(&self, t: &RBig) -> Result<Quadric, Error> {
+        Quadric::from_matrix(std::array::from_fn(|i| {
+            std::array::from_fn(|j| self.numerators[i][j].eval_rational(t))
+        }))
+    }
+}
+
+/// Reads a moving quadric from a 4×4 matrix of rational functions of `t`, each read by
+/// [`parse_rational_function`] (`"(t**2 - 1)/(t**2 + 1)"`, `"-2*t/(t^2+1)"`, `"1/2"`),
+/// and clears the denominators: `M = lcm(denominators)·A` (see [`MovingMatrix`]).
+///
+/// # Errors
+/// - [`Error::Shape`] if `rows` is not 4 rows of 4 entries;
+/// - [`Error::Entry`] (0-based row and column) wrapping the error of the first entry that
+///   cannot be read, row by row (a name other than `t` is an [`Error::UnknownVariable`]);
+/// - [`Error::Limit`] if the coefficients of all entries together have more than
+///   [`MAX_MOVING_MATRIX_BITS`] bits, or the common denominator a degree above
+///   [`MAX_DEGREE`];
+/// - [`Error::NotSymmetric`] (with the two texts) if `Aᵢⱼ ≠ Aⱼᵢ` as rational functions;
+/// - [`Error::ZeroQuadric`] if every entry is zero.
+///
+/// # Examples
+/// ```
+/// use dashu_ratio::RBig;
+/// use qsic::io::moving_matrix_from_rows;
+/// use qsic_algebra::Poly;
+///
+/// // Example 4.1 of Jia et al. (2013): the lcm of the denominators is (3t − 4)².
+/// let (a, b) = ("4/(9*t**2 - 24*t + 16)", "-2/(3*t - 4)");
+/// let rows = [[a, "0", "0", b], ["0", "4", "0", "0"], ["0", "0", "4", "0"], [b, "0", "0", "0"]];
+/// let m = moving_matrix_from_rows(&rows.map(|r| r.to_vec()))?;
+/// assert_eq!(m.denominator(), &Poly::from_i64s(&[16, -24, 9]));
+/// assert_eq!(m.numerators()[0][3], Poly::from_i64s(&[8, -6])); // −2(3t − 4)
+/// assert_eq!(m.at(&RBig::from(2)).map(|a| a[0][0].clone()), Some(RBig::ONE));
+/// assert!(m.at(&RBig::from_parts(4.into(), 3u8.into())).is_none()); // a pole
+/// # Ok::<(), qsic::error::Error>(())
+/// ```
+pub fn moving_matrix_from_rows<S: AsRef<str>>(rows: &[Vec<S>]) -> Result<MovingMatrix, Error> {
+    check_shape(rows)?;
+    let t = Variable::T.index();
+    let mut entries: Vec<Vec<RationalFunction>> = Vec::with_capacity(4);
+    for (i, row) in rows.iter().enumerate() {
+        let mut read_row = Vec::with_capacity(4);
+        for (j, text) in row.iter().enumerate() {
+            let f = parse_rational_function(text.as_ref(), &[Variable::T]).map_err(|e| {
+                Error::Entry {
+                    row: i,
+                    col: j,
+                    source: Box::new(e),
+                }
+            })?;
+            read_row.push(f);
+        }
+        entries.push(read_row);
+    }
+    let size = entries
+        .iter()
+        .flatten()
+        .map(|f| size_in_bits(f.numerator()) + size_in_bits(f.denominator()))
+        .sum();
+    check_moving_size(size)?;
+    for i in 0..4 {
+        for j in i + 1..4 {
+            if !entries[i][j].same_as(&entries[j][i]) {
+                return Err(Error::NotSymmetric {
+                    row: i,
+                    col: j,
+                    a: excerpt(rows[i][j].as_ref().trim()),
+                    b: excerpt(rows[j][i].as_ref().trim()),
+                });
+            }
+        }
+    }
+    if entries.iter().flatten().all(|f| f.numerator().is_zero()) {
+        return Err(Error::ZeroQuadric);
+    }
+    // The lcm of the denominators, primitive (Gauss: primitive factors, primitive products).
+    let mut common = Poly::constant(IBig::ONE);
+    for f in entries.iter().flatten() {
+        let d = integer_poly(f.denominator(), t);
+        if common.div_exact(&d).is_none() {
+            let g = common.gcd(&d);
+            common = (&common * &d).div_exact(&g).unwrap_or(common);
+            let degree = common.degree().unwrap_or(0);
+            if degree > MAX_DEGREE as usize {
+                return Err(Error::Limit {
+                    what: format!("degree {degree} of the common denominator"),
+                    limit: MAX_DEGREE as usize,
+                });
+            }
+        }
+    }
+    let numerators = std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            let f = &entries[i][j];
+            // d divides the primitive `common` in ℤ[t] (Gauss's lemma).
+            let cofactor = common
+                .div_exact(&integer_poly(f.denominator(), t))
+                .unwrap_or_default();
+            rational_times(&dense(f.numerator(), t), &cofactor)
+        })
+    });
+    Ok(canonical(numerators, common))
+}
+
+/// Reads a moving quadric from a quadratic form in `x, y, z, w` whose coefficients are
+/// rational functions of `t`, such as `x^2 + t*y^2 - (1+t^2)/(1-t)*z*w`: the same
+/// grammar as [`parse_rational_function`] with the variables `x, y, z, w, t`, divisions
+/// by expressions in `t` only. As in [`parse_quadric`](super::parse_quadric), a form
+/// that uses `w` must be homogeneous of degree 2 in `x, y, z, w`; one that does not is
+/// an affine equation in `x, y, z`, homogenised with `w`.
+///
+/// # Errors
+/// - as [`parse_rational_function`] ([`Error::Syntax`] for a division by an expression in
+///   `x, y, z, w`);
+/// - [`Error::Degree`] naming a term of degree above 2 in `x, y, z, w`, or, in a form
+///   using `w`, not exactly 2;
+/// - [`Error::Limit`] if the coefficients have more than [`MAX_MOVING_MATRIX_BITS`] bits;
+/// - [`Error::ZeroQuadric`] if the form is zero.
+///
+/// # Examples
+/// ```
+/// use qsic::io::{moving_matrix_from_polynomial, moving_matrix_from_rows};
+///
+/// let m = moving_matrix_from_polynomial("x^2 + t*y^2 - (1+t^2)/(1-t)*z*w")?;
+/// // The entry of z·w is −(1 + t²)/(2 − 2t): the common denominator is 2(t − 1).
+/// assert_eq!(m.denominator(), &qsic_algebra::Poly::from_i64s(&[-2, 2]));
+/// assert_eq!(m.numerators()[2][3], qsic_algebra::Poly::from_i64s(&[1, 0, 1]));
+/// let half = "(1+t^2)/(2t-2)";
+/// let rows = [["1", "0", "0", "0"], ["0", "t", "0", "0"], ["0", "0", "0", half], ["0", "0", half, "0"]];
+/// assert_eq!(moving_matrix_from_rows(&rows.map(|r| r.to_vec()))?, m);
+/// # Ok::<(), qsic::error::Error>(())
+/// ```
+pub fn moving_matrix_from_polynomial(text: &str) -> Result<MovingMatrix, Error> {
+    let grammar = Grammar {
+        variables: &[
+            Variable::X,
+            Variable::Y,
+            Variable::Z,
+            Variable::W,
+            Variable::T,
+        ],
+        denominator_variables: &[Variable::T],
+        quadric: false,
+    };
+    let f = read(text, &grammar)?;
+    check_moving_size(size_in_bits(f.numerator()) + size_in_bits(f.denominator()))?;
+    if f.numerator().is_zero() {
+        return Err(Error::ZeroQuadric);
+    }
+    let t = Variable::T.index();
+    let form = quadratic_part(f.numerator())?
+        .quadratic_form(&[0, 1, 2, 3])
+        .ok_or_else(|| Error::Degree {
+            message: "a quadric is a form of degree 2".into(),
+        })?;
+    let numerators = std::array::from_fn(|i| std::array::from_fn(|j| dense(&form[i][j], t)));
+    Ok(canonical(numerators, integer_poly(f.denominator(), t)))
+}
+
+/// Bits of all the coefficients of `p`.
+fn size_in_bits(p: &MPoly) -> usize {
+    p.terms().iter().map(|(_, c)| bits(c)).sum()
+}
+
+fn check_moving_size(size: usize) -> Result<(), Error> {
+    if size > MAX_MOVING_MATRIX_BITS {
+        return Err(Error::Limit {
+            what: format!("{size} bits of coefficients in a moving matrix"),
+            limit: MAX_MOVING_MATRIX_BITS,
+        });
+    }
+    Ok(())
+}
+
+/// The dense coefficients in `t` of a polynomial in `t` alone.
+fn dense(p: &MPoly, t: usize) -> Vec<RBig> {
+    // Every reader caller allows no other variable here.
+    p.to_univariate(t).unwrap_or_default()
+}
+
+/// A polynomial in `t` with integer coefficients (a denominator of a
+/// [`RationalFunction`]) as a [`Poly`].
+fn integer_poly(p: &MPoly, t: usize) -> Poly {
+    Poly::new(dense(p, t).into_iter().map(|c| c.into_parts().0).collect())
+}
+
+/// `a · b` for a rational polynomial `a` and an integer one `b`, dense, lowest first.
+fn rational_times(a: &[RBig], b: &Poly) -> Vec<RBig> {
+    let b = b.coeffs();
+    if a.is_empty() || b.is_empty() {
+        return Vec::new();
+    }
+    let mut out = vec![RBig::ZERO; a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] += x * RBig::from(y.clone());
+        }
+    }
+    out
+}
+
+/// The canonical [`MovingMatrix`] of `m / d` (see there), for `d ≠ 0`.
+fn canonical(m: [[Vec<RBig>; 4]; 4], d: Poly) -> MovingMatrix {
+    // Clear the denominators of the coefficients of M.
+    let mut lcm = UBig::ONE;
+    for c in m.iter().flatten().flatten() {
+        let den = c.denominator();
+        if !den.is_one() {
+            let g = dashu_int::ops::Gcd::gcd(&lcm, den);
+            lcm = &lcm / g * den;
+        }
+    }
+    let lcm = IBig::from(lcm);
+    let integer = |p: &Vec<RBig>| {
+        Poly::new(
+            p.iter()
+                .map(|c| c.numerator() * (&lcm / IBig::from(c.denominator().clone())))
+                .collect(),
+        )
+    };
+    let mut numerators: [[Poly; 4]; 4] =
+        std::array::from_fn(|i| std::array::from_fn(|j| integer(&m[i][j])));
+    let mut denominator = d.scale(&lcm);
+    // Common roots of d and all the entries.
+    let mut g = denominator.primitive_part();
+    for p in numerators.iter().flatten() {
+        if g.degree() == Some(0) {
+            break;
+        }
+        if !p.is_zero() {
+            g = g.gcd(p);
+        }
+    }
+    if g.degree().unwrap_or(0) > 0 {
+        // g is primitive and divides each of them in ℚ[t], so in ℤ[t] (Gauss).
+        denominator = denominator.div_exact(&g).unwrap_or(denominator);
+        for p in numerators.iter_mut().flatten() {
+            *p = p.div_exact(&g).unwrap_or_else(|| p.clone());
+        }
+    }
+    // The common content of all, with the sign of the leading coefficient of d.
+    let mut content = denominator.content();
+    for p in numerators.iter().flatten() {
+        content = qsic_algebra::int_gcd(&content, &p.content());
+    }
+    if denominator.leading() < IBig::ZERO {
+        content = -content;
+    }
+    if !content.is_one() {
+        denominator = divide_exactly(&denominator, &content);
+        for p in numerators.iter_mut().flatten() {
+            *p = divide_exactly(p, &content);
+        }
+    }
+    MovingMatrix {
+        numerators,
+        denominator,
+    }
+}
+
+/// `p / k` for an integer `k` dividing every coefficient.
+fn divide_exactly(p: &Poly, k: &IBig) -> Poly {
+    Poly::new(p.coeffs().iter().map(|c| c / k).collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rows(m: [[&str; 4]; 4]) -> Vec<Vec<String>> {
+        m.iter()
+            .map(|r| r.iter().map(|s| s.to_string()).collect())
+            .collect()
+    }
+
+    fn q(n: i64, d: u64) -> RBig {
+        RBig::from_parts(IBig::from(n), UBig::from(d))
+    }
+
+    #[test]
+    fn denominators_are_cleared_by_their_lcm() {
+        let m = moving_matrix_from_rows(&rows([
+            ["1/(t-1)", "0", "0", "0"],
+            ["0", "1/(t+1)", "0", "0"],
+            ["0", "0", "t/(2t^2 - 2)", "0"],
+            ["0", "0", "0", "-1/2"],
+        ]))
+        .expect("a valid moving matrix");
+        // lcm = t² − 1; M = diag(2(t+1), 2(t−1), t, −(t² − 1)) after clearing the halves.
+        assert_eq!(m.denominator(), &Poly::from_i64s(&[-2, 0, 2]));
+        let n = m.numerators();
+        assert_eq!(n[0][0], Poly::from_i64s(&[2, 2]));
+        assert_eq!(n[1][1], Poly::from_i64s(&[-2, 2]));
+        assert_eq!(n[2][2], Poly::from_i64s(&[0, 1]));
+        assert_eq!(n[3][3], Poly::from_i64s(&[1, 0, -1]));
+        assert_eq!(m.at(&RBig::ONE), None);
+        let at3 = m.at(&q(3, 1)).expect("d(3) ≠ 0");
+        assert_eq!((at3[0][0].clone(), at3[2][2].clone()), (q(1, 2), q(3, 16)));
+        // At the pole t = 1 the quadric is the limit: M(1) = diag(4, 0, 1, 0).
+        let q1 = m.quadric_at(&RBig::ONE).expect("M(1) ≠ 0");
+        assert_eq!(
+            q1,
+            Quadric::from_integers([[4, 0, 0, 0], [0; 4], [0, 0, 1, 0], [0; 4]]).expect("valid")
+        );
+    }
+
+    #[test]
+    fn common_factors_cancel() {
+        // Every entry has the factor (t − 2)/(t − 2): nothing is left of it.
+        let m = moving_matrix_from_rows(&rows([
+            ["(t-2)/(t^2-4)", "0", "0", "0"],
+            ["0", "(t^2 - 4)/(t^2 - 4)", "0", "0"],
+            ["0", "0", "0", "0"],
+            ["0", "0", "0", "0"],
+        ]))
+        .expect("valid");
+        assert_eq!(m.denominator(), &Poly::from_i64s(&[2, 1]));
+        assert_eq!(m.numerators()[0][0], Poly::from_i64s(&[1]));
+        assert_eq!(m.numerators()[1][1], Poly::from_i64s(&[2, 1]));
+        // A constant matrix: integer entries over an integer denominator, without a common factor.
+        let c = moving_matrix_from_rows(&rows([
+            ["1/2", "1/3", "0", "0"],
+            ["1/3", "0", "0", "0"],
+            ["0"; 4],
+            ["0"; 4],
+        ]))
+        .expect("valid");
+        assert_eq!(c.denominator(), &Poly::from_i64s(&[6]));
+        assert_eq!(c.numerators()[0][0], Poly::from_i64s(&[3]));
+        assert_eq!(c.numerators()[0][1], Poly::from_i64s(&[2]));
+    }
+
+    #[test]
+    fn errors_name_the_entry() {
+        let mut m = [["0"; 4]; 4];
+        m[0][0] = "1";
+        m[1][2] = "1/(1+t)";
+        m[2][1] = "2/(2+2t)";
+        assert!(moving_matrix_from_rows(&rows(m)).is_ok());
+        m[2][1] = "1/(1-t)";
+        assert_eq!(
+            moving_matrix_from_rows(&rows(m)),
+            Err(Error::NotSymmetric {
+                row: 1,
+                col: 2,
+                a: "1/(1+t)".into(),
+                b: "1/(1-t)".into()
+            })
+        );
+        m[2][1] = "1/(x+t)";
+        match moving_matrix_from_rows(&rows(m)) {
+            Err(Error::Entry {
+                row: 2,
+                col: 1,
+                source,
+            }) => assert_eq!(
+                *source,
+                Error::UnknownVariable {
+                    name: "x".into(),
+                    column: 4,
+                    allowed: "t".into()
+                }
+            ),
+            other => panic!("{other:?}"),
+        }
+        m[2][1] = "1/(t-t)";
+        assert!(matches!(
+            moving_matrix_from_rows(&rows(m)),
+            Err(Error::Entry { row: 2, col: 1, .. })
+        ));
+        assert_eq!(
+            moving_matrix_from_rows(&rows([["0/(t+1)"; 4]; 4])),
+            Err(Error::ZeroQuadric)
+        );
+        assert!(matches!(
+            moving_matrix_from_rows(&vec![vec!["t"; 4]; 3]),
+            Err(Error::Shape { rows: 3, .. })
+        ));
+        // Distinct denominators whose lcm has degree above MAX_DEGREE.
+        let wide: Vec<Vec<String>> = (0..4)
+            .map(|i: usize| {
+                (0..4)
+                    .map(|j: usize| format!("1/(t^7 - {})", 1 + i.min(j) * 4 + i.max(j)))
+                    .collect()
+            })
+            .collect();
+        assert!(matches!(
+            moving_matrix_from_rows(&wide),
+            Err(Error::Limit { .. })
+        ));
+        let huge = format!("{}t", "9".repeat(9000));
+        let many = [[huge.as_str(); 4]; 4];
+        assert!(matches!(
+            moving_matrix_from_rows(&rows(many)),
+            Err(Error::Limit { .. })
+        ));
+    }
+
+    #[test]
+    fn polynomial_form_errors() {
+        let table: &[(&str, &str)] = &[
+            ("x^3*t + y^2", "term 'x^3*t' has degree 3 in x, y, z, w"),
+            ("x^2 + t*w", "term 'w*t' has degree 1; a form in x,y,z,w"),
+            ("x*w + 1/(1+t)", "term '1' has degree 0; a form in x,y,z,w"),
+        ];
+        for (text, want) in table {
+            match moving_matrix_from_polynomial(text) {
+                Err(Error::Degree { message }) => {
+                    assert!(message.starts_with(want), "{text:?}: {message}")
+                }
+                other => panic!("{text:?}: {other:?}"),
+            }
+        }
+        // Affine: t·x is t·x·w, so A[0][3] = t/2.
+        let affine = moving_matrix_from_polynomial("x^2 + t*x").expect("an affine form");
+        assert_eq!(affine.numerators()[0][3], Poly::from_i64s(&[0, 1]));
+        assert_eq!(affine.numerators()[0][0], Poly::from_i64s(&[2]));
+        match moving_matrix_from_polynomial("x^2 + y/(x - t)") {
+            Err(Error::Syntax { column: 8, message }) => assert_eq!(
+                message,
+                "can only divide by an expression in t, not by one in x, y, z, w"
+            ),
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(
+            moving_matrix_from_polynomial("t*x^2 - x^2*t"),
+            Err(Error::ZeroQuadric)
+        );
+    }
+}
