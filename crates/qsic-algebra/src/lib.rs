@@ -9,7 +9,8 @@
 //! | [`roots`] | real root isolation with rational (dyadic) isolating intervals |
 //! | [`field`] | exact real extensions of ℚ: ℚ(√δ) ([`field::Quadratic`]) |
 //! | [`algebraic`] | real algebraic numbers and the exact sign of a polynomial at them |
-//! | [`matrix`] | small symmetric integer matrices, exact inertia, matrix pencils `λA − μB` |
+//! | [`linalg`] | matrices over a ring or field: one determinant/minor implementation (expansion for `N ≤ 4`, Bareiss), Gauss–Jordan (rank, kernel, solve, inverse), congruence diagonalization, real points and plane pairs of rational quadratic forms |
+//! | [`matrix`] | symmetric 4×4 integer matrices, exact inertia, matrix pencils `λA − μB` over any coefficient ring |
 //!
 //! Integers are [`dashu_int::IBig`], rationals [`dashu_ratio::RBig`]: pure Rust,
 //! small values inline on the stack.
@@ -20,6 +21,7 @@
 pub mod algebraic;
 pub mod field;
 pub mod filter;
+pub mod linalg;
 pub mod matrix;
 pub mod poly;
 pub mod ring;
@@ -30,7 +32,7 @@ pub use algebraic::AlgebraicReal;
 pub use dashu_int::IBig;
 pub use dashu_ratio::RBig;
 pub use poly::Poly;
-pub use ring::{Field, Ring};
+pub use ring::{Field, RealField, Ring};
 pub use sign::Sign;
 
 /// The non-negative gcd of two integers, with `gcd(0, v) = |v|` (dashu panics on two zeros).

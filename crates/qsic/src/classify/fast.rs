@@ -13,36 +13,27 @@
 //!   by the signs of `f` there, and the inertia at each sample comes from the certified
 //!   signs of the principal minor sums `E₁…E₄`.
 //!
+//! The polynomials `E_k(λ)` come from the one minor implementation
+//! ([`qsic_algebra::linalg::minors`], in `i128`) by evaluation and interpolation: `E₁…E₄` of the
+//! members `−B`, `A − B`, `−A − B` (λ = 0, 1, −1) and `A` (the leading coefficients), and
+//! `det(2A − B)`; a polynomial of degree `k ≤ 4` is determined by these values (module
+//! function `interpolate`).
+//!
 //! Precondition, checked: every entry is below [`ENTRY_LIMIT`] = 2²⁴ in absolute value. Then
-//! every coefficient of `E₄` is below `4!·2⁴·2⁹⁶ < 2¹⁰⁵` (no `i128` overflow) and the
+//! the members' entries are below `3·2²⁴`, every product of four of them below `81·2⁹⁶ < 2¹⁰³`,
+//! and every minor, sum of at most 24 such products, below `2¹⁰⁸` (no `i128` overflow; the
+//! interpolation's sums of a few such values with factors up to 16 stay below `2¹¹⁴`); the
 //! discriminant's terms, products of six coefficients, stay below `2¹⁰²⁴` (no float overflow).
 
 use qsic_algebra::filter::{certified_sign, certified_sign_poly, sum_of_products_bound};
+use qsic_algebra::linalg::minors::{det, principal_minor_sums};
 use qsic_algebra::Sign;
-
-type Lin = [i128; 2];
 
 /// Entries must be below this in absolute value (see the module docs).
 pub(crate) const ENTRY_LIMIT: u64 = 1 << 24;
 
 fn within_entry_limit(m: &[[i64; 4]; 4]) -> bool {
     m.iter().flatten().all(|v| v.unsigned_abs() < ENTRY_LIMIT)
-}
-
-fn mul<const N: usize, const M: usize, const K: usize>(x: &[i128; N], y: &[i128; M]) -> [i128; K] {
-    let mut out = [0i128; K];
-    for (i, a) in x.iter().enumerate() {
-        for (j, b) in y.iter().enumerate() {
-            out[i + j] += a * b;
-        }
-    }
-    out
-}
-
-fn add<const N: usize>(x: &mut [i128; N], y: &[i128; N], sign: i128) {
-    for (a, b) in x.iter_mut().zip(y) {
-        *a += sign * b;
-    }
 }
 
 /// `E₁…E₄` of `λA − B` as exact polynomials (low degree first).
@@ -53,46 +44,65 @@ struct MinorSums {
     e4: [i128; 5],
 }
 
-fn minor_sums(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> MinorSums {
-    let e = |i: usize, j: usize| -> Lin { [-(b[i][j] as i128), a[i][j] as i128] };
-    let m2 = |r: [usize; 2], c: [usize; 2]| -> [i128; 3] {
-        let mut x: [i128; 3] = mul(&e(r[0], c[0]), &e(r[1], c[1]));
-        add(&mut x, &mul(&e(r[0], c[1]), &e(r[1], c[0])), -1);
-        x
-    };
-    let mut e1 = [0i128; 2];
-    for i in 0..4 {
-        add(&mut e1, &e(i, i), 1);
+/// The coefficients `c₀…c_k` of a polynomial of degree `k ≤ 4` from its leading coefficient
+/// `c_k` and its values `p(0)`, `p(1)`, `p(−1)` and, for `k = 4`, `p(2)`:
+/// `p(1) + p(−1) = 2(c₀ + c₂ + c₄)`, `p(1) − p(−1) = 2(c₁ + c₃)`,
+/// `p(2) − c₀ − 4c₂ − 16c₄ = 2c₁ + 8c₃` (every division exact).
+fn interpolate<const K: usize>(
+    (lead, p0, p1, pm1): (i128, i128, i128, i128),
+    p2: i128,
+) -> [i128; K] {
+    let mut c = [0i128; K];
+    let k = K - 1;
+    (c[0], c[k]) = (p0, lead);
+    let (even, odd) = ((p1 + pm1) / 2, (p1 - pm1) / 2);
+    match k {
+        2 => c[1] = p1 - p0 - lead,
+        3 => (c[1], c[2]) = (odd - lead, even - p0),
+        4 => {
+            c[2] = even - p0 - lead;
+            c[3] = (p2 - p0 - 4 * c[2] - 16 * lead - 2 * odd) / 6;
+            c[1] = odd - c[3];
+        }
+        _ => {}
     }
-    let mut e2 = [0i128; 3];
+    c
+}
+
+fn minor_sums(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> MinorSums {
+    // the member λA − B (|entries| < 3·2²⁴, so the i64 arithmetic is exact)
+    let member = |l: i64| {
+        let mut m = [[0i128; 4]; 4];
+        for i in 0..4 {
+            for j in 0..4 {
+                m[i][j] = i128::from(l * a[i][j] - b[i][j]);
+            }
+        }
+        m
+    };
+    let lead = principal_minor_sums(&member_at_infinity(a));
+    let p0 = principal_minor_sums(&member(0));
+    let p1 = principal_minor_sums(&member(1));
+    let pm1 = principal_minor_sums(&member(-1));
+    let p2 = det(&member(2));
+    let at = |k: usize| (lead[k], p0[k], p1[k], pm1[k]);
+    MinorSums {
+        e1: interpolate(at(0), 0),
+        e2: interpolate(at(1), 0),
+        e3: interpolate(at(2), 0),
+        e4: interpolate(at(3), p2),
+    }
+}
+
+/// `A`, the member at `λ = ∞` (its minors are the leading coefficients).
+fn member_at_infinity(a: &[[i64; 4]; 4]) -> [[i128; 4]; 4] {
+    let mut m = [[0i128; 4]; 4];
     for i in 0..4 {
-        for j in (i + 1)..4 {
-            add(&mut e2, &m2([i, j], [i, j]), 1);
+        for j in 0..4 {
+            m[i][j] = i128::from(a[i][j]);
         }
     }
-    let mut e3 = [0i128; 4];
-    for [r0, r1, r2] in [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]] {
-        // expand along the first row
-        add(&mut e3, &mul(&e(r0, r0), &m2([r1, r2], [r1, r2])), 1);
-        add(&mut e3, &mul(&e(r0, r1), &m2([r1, r2], [r0, r2])), -1);
-        add(&mut e3, &mul(&e(r0, r2), &m2([r1, r2], [r0, r1])), 1);
-    }
-    // Laplace expansion along rows 0, 1.
-    let mut e4 = [0i128; 5];
-    // (columns of rows 0, 1; the complementary columns of rows 2, 3)
-    let splits = [
-        ([0, 1], [2, 3]),
-        ([0, 2], [1, 3]),
-        ([0, 3], [1, 2]),
-        ([1, 2], [0, 3]),
-        ([1, 3], [0, 2]),
-        ([2, 3], [0, 1]),
-    ];
-    for (c, rest) in splits {
-        let s = if (1 + c[0] + c[1]) % 2 == 0 { 1 } else { -1 };
-        add(&mut e4, &mul(&m2([0, 1], c), &m2([2, 3], rest)), s);
-    }
-    MinorSums { e1, e2, e3, e4 }
+    m
 }
 
 fn to_f64<const N: usize>(c: &[i128; N]) -> [f64; N] {
@@ -337,6 +347,33 @@ mod tests {
         (b[0][1], b[1][0], b[2][3], b[3][2]) = (-1, -1, -2, -2);
         assert_eq!(exact_case(a, b), Some(4));
         assert_eq!(classify_simple_roots(&a, &b), Some(4));
+    }
+
+    /// The interpolated `E₁…E₄` are the exact pencil's, on random pairs up to the entry limit
+    /// and on a Hadamard matrix of entries ±(2²⁴ − 1) (the largest determinant there); test
+    /// builds check every `i128` operation for overflow.
+    #[test]
+    fn interpolated_minor_sums_are_the_exact_ones() {
+        use qsic_algebra::matrix::{MatrixPencil, SymMatrix4};
+        use qsic_algebra::{IBig, Poly};
+        let l = ENTRY_LIMIT as i64 - 1;
+        let h = [[l, l, l, l], [l, -l, l, -l], [l, l, -l, -l], [l, -l, -l, l]];
+        let minus_h = h.map(|r| r.map(|v| -v));
+        let mut pairs = vec![(h, minus_h), (h, h), (minus_h, [[l; 4]; 4])];
+        let mut rng = SplitMix(7);
+        for range in [10, l] {
+            for _ in 0..100 {
+                pairs.push((rng.matrix(range), rng.matrix(range)));
+            }
+        }
+        let poly = |c: &[i128]| Poly::new(c.iter().map(|&v| IBig::from(v)).collect());
+        for (a, b) in pairs {
+            let s = minor_sums(&a, &b);
+            let sym = |m| SymMatrix4::from_i64(m).expect("symmetric");
+            let exact = MatrixPencil::new(sym(a), sym(b)).principal_minor_sums();
+            let got = [poly(&s.e1), poly(&s.e2), poly(&s.e3), poly(&s.e4)];
+            assert_eq!(got, exact, "A = {a:?}, B = {b:?}");
+        }
     }
 
     /// The precondition is checked: an entry of 2²⁴ or more sends the pair to the exact path
