@@ -9,7 +9,6 @@ use crate::ring::Ring;
 use crate::sign::Sign;
 use dashu_int::IBig;
 use dashu_ratio::RBig;
-use std::sync::OnceLock;
 
 pub use crate::linalg::Inertia;
 
@@ -159,17 +158,13 @@ impl SymMatrix4 {
 ///
 /// `MatrixPencil` (over ℤ) is the pencil of two quadrics; `MatrixPencil<Poly>` (entries in
 /// ℤ\[t\]) is that of two moving quadrics `A(t), B(t)`, with `det(λA(t) − B(t))` a
-/// `Poly<Poly>` (λ outer, t inner). The principal minor sums and the determinant are computed
-/// at construction; every minor (for the gcds `D_k`) on first use.
+/// `Poly<Poly>` (λ outer, t inner). Every minor of `λA − B` is computed once, at construction
+/// ([`SmallMinors::of_pencil`]: evaluation at five values of `λ` and interpolation).
 #[derive(Clone)]
 pub struct MatrixPencil<C = IBig> {
     a: [[C; 4]; 4],
     b: [[C; 4]; 4],
-    /// Entries `a_ij·λ − b_ij`.
-    entries: [[Poly<C>; 4]; 4],
-    /// `E₁(λ), …, E₄(λ)`.
-    sums: [Poly<C>; 4],
-    all: OnceLock<SmallMinors<Poly<C>>>,
+    minors: SmallMinors<Poly<C>>,
 }
 
 impl<C: Ring> std::fmt::Debug for MatrixPencil<C> {
@@ -178,7 +173,7 @@ impl<C: Ring> std::fmt::Debug for MatrixPencil<C> {
     }
 }
 
-/// Two pencils are equal when their matrices are (whatever has been computed of them).
+/// Two pencils are equal when their matrices are.
 impl<C: Ring> PartialEq for MatrixPencil<C> {
     fn eq(&self, other: &Self) -> bool {
         self.a == other.a && self.b == other.b
@@ -198,17 +193,8 @@ impl<C: Ring> MatrixPencil<C> {
     /// The pencil `λA − μB` of two 4×4 matrices over `C` (symmetric or not; for symmetric
     /// ones each minor is computed once up to `minor(R, C) = minor(C, R)`).
     pub fn from_entries(a: [[C; 4]; 4], b: [[C; 4]; 4]) -> MatrixPencil<C> {
-        let entries: [[Poly<C>; 4]; 4] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| Poly::new(vec![b[i][j].neg(), a[i][j].clone()]))
-        });
-        let sums = minors::principal_minor_sums(&entries);
-        MatrixPencil {
-            a,
-            b,
-            entries,
-            sums,
-            all: OnceLock::new(),
-        }
+        let minors = SmallMinors::of_pencil(&a, &b);
+        MatrixPencil { a, b, minors }
     }
 
     /// `A`.
@@ -230,14 +216,13 @@ impl<C: Ring> MatrixPencil<C> {
 
     /// `f(λ) = det(λA − B)`, the characteristic polynomial (a binary quartic form).
     pub fn det_poly(&self) -> Poly<C> {
-        self.sums[3].clone()
+        self.minors.minor(&[0, 1, 2, 3], &[0, 1, 2, 3]).clone()
     }
 
     /// Every nonzero `k×k` minor of `λA − B` (`1 ≤ k ≤ 4`), for symmetric `A`, `B` each once
     /// up to the symmetry `minor(R, C) = minor(C, R)`.
     pub fn minors(&self, k: usize) -> Vec<Poly<C>> {
-        self.all
-            .get_or_init(|| SmallMinors::all(&self.entries))
+        self.minors
             .of_order(k)
             .into_iter()
             .filter(|p| !p.is_zero())
@@ -249,7 +234,10 @@ impl<C: Ring> MatrixPencil<C> {
     /// The inertia of the member at `λ` follows from their signs
     /// ([`Inertia::from_minor_sum_signs`]).
     pub fn principal_minor_sums(&self) -> [Poly<C>; 4] {
-        self.sums.clone()
+        self.minors
+            .principal_minor_sums()
+            .try_into()
+            .expect("four sums of a 4×4 pencil")
     }
 }
 

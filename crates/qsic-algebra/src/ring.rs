@@ -194,42 +194,52 @@ impl Ring for RBig {
 /// # Panics
 /// [`Ring::from_int`] panics on an integer outside the `i128` range.
 impl Ring for i128 {
+    #[inline]
     fn zero() -> Self {
         0
     }
+    #[inline]
     fn one() -> Self {
         1
     }
+    #[inline]
     fn from_int(v: &IBig) -> Self {
         i128::try_from(v).expect("an integer in the i128 range")
     }
+    #[inline]
     fn is_zero(&self) -> bool {
         *self == 0
     }
+    #[inline]
     fn add(&self, rhs: &Self) -> Self {
         self + rhs
     }
+    #[inline]
     fn sub(&self, rhs: &Self) -> Self {
         self - rhs
     }
+    #[inline]
     fn mul(&self, rhs: &Self) -> Self {
         self * rhs
     }
+    #[inline]
     fn neg(&self) -> Self {
         -self
     }
+    #[inline]
     fn div_exact(&self, d: &Self) -> Option<Self> {
-        match self.checked_rem(*d) {
-            Some(0) => self.checked_div(*d),
-            _ => None,
-        }
+        // |q·d| ≤ |self|: the check cannot overflow
+        self.checked_div(*d).filter(|q| q * d == *self)
     }
+    #[inline]
     fn add_assign(&mut self, rhs: &Self) {
         *self += rhs;
     }
+    #[inline]
     fn sub_mul_assign(&mut self, a: &Self, b: &Self) {
         *self -= a * b;
     }
+    #[inline]
     fn add_mul_assign(&mut self, a: &Self, b: &Self) {
         *self += a * b;
     }

@@ -141,7 +141,8 @@ struct Expansion<R> {
 
 /// The expansion itself (module docs). With `symmetric`, only slots `(R, C)` with `R ≤ C` are
 /// computed and `minor(C, R) = minor(R, C)` is read from them.
-#[inline]
+// Inlined into each caller, so that its need and symmetry are constants there.
+#[inline(always)]
 fn expand<R: Ring, const N: usize>(m: &[[R; N]; N], need: Need, symmetric: bool) -> Expansion<R> {
     const {
         assert!(
@@ -239,18 +240,25 @@ pub fn principal_minor_sums<R: Ring, const N: usize>(m: &[[R; N]; N]) -> [R; N] 
 /// matrix, once per unordered pair of row and column sets).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SmallMinors<R> {
-    n: usize,
-    symmetric: bool,
-    m1: Vec<R>,
-    m2: [[R; 6]; 6],
-    m3: [[R; 4]; 4],
-    det: R,
+    pub(super) n: usize,
+    /// Only slots with row set ≤ column set are stored.
+    pub(super) symmetric: bool,
+    /// The entries, row by row.
+    pub(super) m1: Vec<R>,
+    pub(super) m2: [[R; 6]; 6],
+    pub(super) m3: [[R; 4]; 4],
+    pub(super) det: R,
 }
 
 impl<R: Ring> SmallMinors<R> {
     /// Every minor of `m`.
     pub fn all<const N: usize>(m: &[[R; N]; N]) -> SmallMinors<R> {
         let symmetric = (0..N).all(|i| (i + 1..N).all(|j| m[i][j] == m[j][i]));
+        SmallMinors::all_with(m, symmetric)
+    }
+
+    /// Every minor of `m`, stored for a symmetric matrix if `symmetric` (which `m` must then be).
+    pub(super) fn all_with<const N: usize>(m: &[[R; N]; N], symmetric: bool) -> SmallMinors<R> {
         let e = expand(m, Need::All, symmetric);
         SmallMinors {
             n: N,
@@ -265,6 +273,27 @@ impl<R: Ring> SmallMinors<R> {
     /// The size `N`.
     pub fn size(&self) -> usize {
         self.n
+    }
+
+    /// `[E₁, …, E_N]`, the sums of the principal minors of each order.
+    pub fn principal_minor_sums(&self) -> Vec<R> {
+        let n = self.n;
+        let mut e = vec![R::zero(); n];
+        for i in 0..n {
+            e[0].add_assign(&self.m1[i * n + i]);
+        }
+        if n == 4 {
+            (0..6).for_each(|p| e[1].add_assign(&self.m2[p][p]));
+            (0..4).for_each(|t| e[2].add_assign(&self.m3[t][t]));
+        } else if n == 3 {
+            [0, 1, 3]
+                .iter()
+                .for_each(|&p| e[1].add_assign(&self.m2[p][p]));
+        }
+        if n > 1 {
+            e[n - 1] = self.det.clone();
+        }
+        e
     }
 
     /// The minor on the given rows and columns (increasing, of the same length `k ≤ N`).

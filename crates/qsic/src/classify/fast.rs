@@ -13,11 +13,9 @@
 //!   by the signs of `f` there, and the inertia at each sample comes from the certified
 //!   signs of the principal minor sums `E₁…E₄`.
 //!
-//! The polynomials `E_k(λ)` come from the one minor implementation
-//! ([`qsic_algebra::linalg::minors`], in `i128`) by evaluation and interpolation: `E₁…E₄` of the
-//! members `−B`, `A − B`, `−A − B` (λ = 0, 1, −1) and `A` (the leading coefficients), and
-//! `det(2A − B)`; a polynomial of degree `k ≤ 4` is determined by these values (module
-//! function `interpolate`).
+//! The polynomials `E_k(λ)` come from the one minor implementation in `i128`
+//! ([`qsic_algebra::linalg::pencil::principal_minor_sums_of_members`]: the principal minors of
+//! the members at `λ = ∞, 0, ±1` and `det(2A − B)`, then interpolation).
 //!
 //! Precondition, checked: every entry is below [`ENTRY_LIMIT`] = 2²⁴ in absolute value. Then
 //! the members' entries are below `3·2²⁴`, every product of four of them below `81·2⁹⁶ < 2¹⁰³`,
@@ -26,7 +24,7 @@
 //! discriminant's terms, products of six coefficients, stay below `2¹⁰²⁴` (no float overflow).
 
 use qsic_algebra::filter::{certified_sign, certified_sign_poly, sum_of_products_bound};
-use qsic_algebra::linalg::minors::{det, principal_minor_sums};
+use qsic_algebra::linalg::pencil::principal_minor_sums_of_members;
 use qsic_algebra::Sign;
 
 /// Entries must be below this in absolute value (see the module docs).
@@ -44,65 +42,35 @@ struct MinorSums {
     e4: [i128; 5],
 }
 
-/// The coefficients `c₀…c_k` of a polynomial of degree `k ≤ 4` from its leading coefficient
-/// `c_k` and its values `p(0)`, `p(1)`, `p(−1)` and, for `k = 4`, `p(2)`:
-/// `p(1) + p(−1) = 2(c₀ + c₂ + c₄)`, `p(1) − p(−1) = 2(c₁ + c₃)`,
-/// `p(2) − c₀ − 4c₂ − 16c₄ = 2c₁ + 8c₃` (every division exact).
-fn interpolate<const K: usize>(
-    (lead, p0, p1, pm1): (i128, i128, i128, i128),
-    p2: i128,
-) -> [i128; K] {
-    let mut c = [0i128; K];
-    let k = K - 1;
-    (c[0], c[k]) = (p0, lead);
-    let (even, odd) = ((p1 + pm1) / 2, (p1 - pm1) / 2);
-    match k {
-        2 => c[1] = p1 - p0 - lead,
-        3 => (c[1], c[2]) = (odd - lead, even - p0),
-        4 => {
-            c[2] = even - p0 - lead;
-            c[3] = (p2 - p0 - 4 * c[2] - 16 * lead - 2 * odd) / 6;
-            c[1] = odd - c[3];
-        }
-        _ => {}
-    }
-    c
-}
-
 fn minor_sums(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> MinorSums {
-    // the member λA − B (|entries| < 3·2²⁴, so the i64 arithmetic is exact)
-    let member = |l: i64| {
+    // the members lA − B and A, formed in i64 (|entries| < 3·2²⁴)
+    let member = |l: i64, k: i64| {
         let mut m = [[0i128; 4]; 4];
         for i in 0..4 {
             for j in 0..4 {
-                m[i][j] = i128::from(l * a[i][j] - b[i][j]);
+                m[i][j] = i128::from(l * a[i][j] - k * b[i][j]);
             }
         }
         m
     };
-    let lead = principal_minor_sums(&member_at_infinity(a));
-    let p0 = principal_minor_sums(&member(0));
-    let p1 = principal_minor_sums(&member(1));
-    let pm1 = principal_minor_sums(&member(-1));
-    let p2 = det(&member(2));
-    let at = |k: usize| (lead[k], p0[k], p1[k], pm1[k]);
+    let [e1, e2, e3, e4] = principal_minor_sums_of_members([
+        &member(1, 0),
+        &member(0, 1),
+        &member(1, 1),
+        &member(-1, 1),
+        &member(2, 1),
+    ]);
     MinorSums {
-        e1: interpolate(at(0), 0),
-        e2: interpolate(at(1), 0),
-        e3: interpolate(at(2), 0),
-        e4: interpolate(at(3), p2),
+        e1: lowest(&e1),
+        e2: lowest(&e2),
+        e3: lowest(&e3),
+        e4,
     }
 }
 
-/// `A`, the member at `λ = ∞` (its minors are the leading coefficients).
-fn member_at_infinity(a: &[[i64; 4]; 4]) -> [[i128; 4]; 4] {
-    let mut m = [[0i128; 4]; 4];
-    for i in 0..4 {
-        for j in 0..4 {
-            m[i][j] = i128::from(a[i][j]);
-        }
-    }
-    m
+/// The lowest `K` coefficients.
+fn lowest<const K: usize>(c: &[i128; 5]) -> [i128; K] {
+    std::array::from_fn(|i| c[i])
 }
 
 fn to_f64<const N: usize>(c: &[i128; N]) -> [f64; N] {

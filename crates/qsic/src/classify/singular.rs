@@ -121,6 +121,7 @@ use super::morphology::{
     SingularPoints,
 };
 use qsic_algebra::linalg::minors::{det, principal_minor_sums};
+use qsic_algebra::linalg::pencil::pencil_principal_minor_sums;
 use qsic_algebra::linalg::Matrix;
 use qsic_algebra::matrix::SymMatrix4;
 use qsic_algebra::poly::sturm::tarski_query;
@@ -206,10 +207,7 @@ fn combine3(a: &M3, p: &IBig, b: &M3, q: &IBig) -> M3 {
 
 /// `[E₁(λ), E₂(λ), E₃(λ)]` of `λA − B` (`E₃` is `det(λA − B)`).
 fn pencil_minor_sums3(a: &M3, b: &M3) -> [Poly; 3] {
-    let entries: [[Poly; 3]; 3] = std::array::from_fn(|i| {
-        std::array::from_fn(|j| Poly::new(vec![-b[i][j].clone(), a[i][j].clone()]))
-    });
-    principal_minor_sums(&entries)
+    pencil_principal_minor_sums(a, b).map(|c| Poly::new(c.to_vec()))
 }
 
 /// The regular or singular pencil of conics `(A₃, B₃)` obtained by projecting from the
