@@ -10,7 +10,8 @@
 //! | [`roots`] | real root isolation with rational (dyadic) isolating intervals |
 //! | [`field`] | exact real extensions of ℚ: ℚ(√δ) ([`field::Quadratic`]), ℚ(α) by dynamic evaluation ([`field::NumberField`]) |
 //! | [`algebraic`] | real algebraic numbers (refinement shared across calls) and the exact sign of a polynomial at them |
-//! | [`matrix`] | small symmetric integer matrices, exact inertia, matrix pencils `λA − μB` |
+//! | [`linalg`] | matrices over a ring or field: one determinant/minor implementation (expansion for `N ≤ 4`, Bareiss), Gauss–Jordan (rank, kernel, solve, inverse), congruence diagonalization, real points and plane pairs of rational quadratic forms |
+//! | [`matrix`] | symmetric 4×4 integer matrices, exact inertia, matrix pencils `λA − μB` over any coefficient ring |
 //! | [`factor`] | factorization of integers with a 128-bit cofactor bound, primality, Jacobi symbols, square roots modulo primes |
 //! | [`conic`] | rational points on conics: Legendre's theorem, a point or a point over ℚ(√δ), parameterization through a point |
 //!
@@ -25,6 +26,7 @@ pub mod conic;
 pub mod factor;
 pub mod field;
 pub mod filter;
+pub mod linalg;
 pub mod matrix;
 pub mod mpoly;
 pub mod poly;
@@ -37,7 +39,7 @@ pub use dashu_int::IBig;
 pub use dashu_ratio::RBig;
 pub use mpoly::MPoly;
 pub use poly::Poly;
-pub use ring::{Field, Ring};
+pub use ring::{Field, RealField, Ring};
 pub use sign::Sign;
 
 /// The non-negative gcd of two integers, with `gcd(0, v) = |v|` (dashu panics on two zeros).

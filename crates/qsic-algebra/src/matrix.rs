@@ -1,60 +1,22 @@
-//! Small symmetric integer matrices: exact inertia, and the pencil `λA − μB` of two of them.
+//! Symmetric 4×4 integer matrices with exact inertia, and the pencil `λA − μB` of two 4×4
+//! matrices over any coefficient ring (ℤ, or ℤ\[t\] for moving quadrics). Determinants and
+//! minors come from [`linalg::minors`](crate::linalg::minors), written once for every ring.
 
+use crate::linalg::minors::{self, SmallMinors};
+use crate::linalg::Matrix;
 use crate::poly::Poly;
+use crate::ring::Ring;
 use crate::sign::Sign;
 use dashu_int::IBig;
 use dashu_ratio::RBig;
 
-/// The inertia of a real symmetric matrix: numbers of positive, negative and zero eigenvalues.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct Inertia {
-    /// Positive eigenvalues.
-    pub positive: u8,
-    /// Negative eigenvalues.
-    pub negative: u8,
-    /// Zero eigenvalues (4 − rank).
-    pub zero: u8,
-}
-
-impl Inertia {
-    /// The rank `positive + negative`.
-    pub fn rank(&self) -> u8 {
-        self.positive + self.negative
-    }
-
-    /// The inertia of `−M`.
-    pub fn negated(&self) -> Inertia {
-        Inertia {
-            positive: self.negative,
-            negative: self.positive,
-            zero: self.zero,
-        }
-    }
-
-    /// The inertia of a 4×4 symmetric matrix from the signs of the sums `E₁…E₄` of its
-    /// principal minors of each order (the characteristic polynomial is
-    /// `x⁴ − E₁x³ + E₂x² − E₃x + E₄`; it is real-rooted, so Descartes' rule counts its
-    /// positive and negative roots exactly).
-    pub fn from_minor_sum_signs(e: [Sign; 4]) -> Inertia {
-        let var = |s: [Sign; 5]| crate::sign::count_variations(s) as u8;
-        let pos = var([Sign::Positive, -e[0], e[1], -e[2], e[3]]);
-        let neg = var([Sign::Positive, e[0], e[1], e[2], e[3]]);
-        Inertia {
-            positive: pos,
-            negative: neg,
-            zero: 4 - pos - neg,
-        }
-    }
-}
+pub use crate::linalg::Inertia;
 
 /// A symmetric 4×4 integer matrix.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct SymMatrix4 {
     m: [[IBig; 4]; 4],
 }
-
-const PAIRS: [(usize, usize); 6] = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
-const TRIPLES: [[usize; 3]; 4] = [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]];
 
 impl SymMatrix4 {
     /// `Some` if `m` is symmetric.
@@ -153,38 +115,17 @@ impl SymMatrix4 {
 
     /// Sums `[E₁, E₂, E₃, E₄]` of the principal minors of each order (`E₄` is the determinant).
     pub fn principal_minor_sums(&self) -> [IBig; 4] {
-        let m = &self.m;
-        let e1 = &m[0][0] + &m[1][1] + &m[2][2] + &m[3][3];
-        let mut e2 = IBig::ZERO;
-        for &(i, j) in &PAIRS {
-            e2 += &m[i][i] * &m[j][j] - &m[i][j] * &m[i][j];
-        }
-        let mut e3 = IBig::ZERO;
-        for t in &TRIPLES {
-            e3 += det3(m, t, t);
-        }
-        [e1, e2, e3, self.det()]
+        minors::principal_minor_sums(&self.m)
     }
 
     /// The determinant.
     pub fn det(&self) -> IBig {
-        let m = &self.m;
-        let mut d = IBig::ZERO;
-        for (c, &cols) in [[1, 2, 3], [0, 2, 3], [0, 1, 3], [0, 1, 2]]
-            .iter()
-            .enumerate()
-        {
-            if m[0][c].is_zero() {
-                continue;
-            }
-            let minor = det3(m, &[1, 2, 3], &cols);
-            if c % 2 == 0 {
-                d += &m[0][c] * minor;
-            } else {
-                d -= &m[0][c] * minor;
-            }
-        }
-        d
+        minors::det(&self.m)
+    }
+
+    /// The same matrix as a [`Matrix`].
+    pub fn to_matrix(&self) -> Matrix<IBig> {
+        Matrix::from_array(self.m.clone())
     }
 
     /// Exact inertia from the signs of the principal minor sums (Descartes on the
@@ -205,205 +146,98 @@ impl SymMatrix4 {
         ])
     }
 
-    /// Exact inertia by symmetric Gaussian elimination over ℚ (LDLᵀ with 1×1 and 2×2
-    /// pivots, Sylvester's law of inertia): the second, independent route.
-    pub fn inertia_ldl(&self) -> Inertia {
-        let mut s: Vec<Vec<RBig>> = self
-            .m
-            .iter()
-            .map(|r| r.iter().map(|v| RBig::from(v.clone())).collect())
-            .collect();
-        let (mut pos, mut neg) = (0u8, 0u8);
-        while !s.is_empty() {
-            let n = s.len();
-            if let Some(i) = (0..n).find(|&i| !s[i][i].is_zero()) {
-                let p = s[i][i].clone();
-                if p > RBig::ZERO {
-                    pos += 1;
-                } else {
-                    neg += 1;
-                }
-                let keep: Vec<usize> = (0..n).filter(|&k| k != i).collect();
-                s = keep
-                    .iter()
-                    .map(|&r| {
-                        keep.iter()
-                            .map(|&c| &s[r][c] - &s[r][i] * &s[i][c] / &p)
-                            .collect()
-                    })
-                    .collect();
-            } else if let Some((i, j)) = (0..n)
-                .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
-                .find(|&(i, j)| !s[i][j].is_zero())
-            {
-                // 2×2 pivot [[0, b], [b, 0]]: one positive, one negative eigenvalue.
-                pos += 1;
-                neg += 1;
-                let b = s[i][j].clone();
-                let keep: Vec<usize> = (0..n).filter(|&k| k != i && k != j).collect();
-                // inverse of [[0,b],[b,0]] is [[0,1/b],[1/b,0]]
-                s = keep
-                    .iter()
-                    .map(|&r| {
-                        keep.iter()
-                            .map(|&c| &s[r][c] - (&s[r][i] * &s[j][c] + &s[r][j] * &s[i][c]) / &b)
-                            .collect()
-                    })
-                    .collect();
-            } else {
-                break;
-            }
-        }
-        Inertia {
-            positive: pos,
-            negative: neg,
-            zero: 4 - pos - neg,
-        }
-    }
-
     /// The rank.
     pub fn rank(&self) -> u8 {
         self.inertia().rank()
     }
 }
 
-fn det3(m: &[[IBig; 4]; 4], r: &[usize; 3], c: &[usize; 3]) -> IBig {
-    let a = |i: usize, j: usize| &m[r[i]][c[j]];
-    a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1))
-        - a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0))
-        + a(0, 2) * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0))
-}
-
-/// The pencil `λA − μB` of two symmetric 4×4 integer matrices, studied through
-/// polynomials in `λ` on the chart `μ = 1`; each is a binary form of a known degree `k`
-/// in `(λ, μ)`, so a degree drop below `k` is a root at `λ = ∞` of that multiplicity.
+/// The pencil `λA − μB` of two 4×4 matrices over a coefficient ring `C`, studied through
+/// polynomials in `λ` over `C` on the chart `μ = 1`; each is a binary form of a known degree
+/// `k` in `(λ, μ)`, so a degree drop below `k` is a root at `λ = ∞` of that multiplicity.
 ///
-/// All minors of `λA − B` are computed once, at construction: the 2×2 minors from the
-/// entries, the 3×3 minors by expansion along a row into 2×2 minors, the determinant from
-/// the 3×3 minors.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct MatrixPencil {
-    a: SymMatrix4,
-    b: SymMatrix4,
-    /// Entries `a_ij·λ − b_ij`, row by row.
-    entries: Vec<Poly>,
-    /// 2×2 minors, `[row pair][column pair]`, pairs indexed as in `PAIRS`.
-    m2: Vec<Poly>,
-    /// 3×3 minors, `[row triple][column triple]`, triples indexed as in `TRIPLES`.
-    m3: Vec<Poly>,
-    det: Poly,
+/// `MatrixPencil` (over ℤ) is the pencil of two quadrics; `MatrixPencil<Poly>` (entries in
+/// ℤ\[t\]) is that of two moving quadrics `A(t), B(t)`, with `det(λA(t) − B(t))` a
+/// `Poly<Poly>` (λ outer, t inner). Every minor of `λA − B` is computed once, at construction
+/// ([`SmallMinors::of_pencil`]: evaluation at five values of `λ` and interpolation).
+#[derive(Clone)]
+pub struct MatrixPencil<C = IBig> {
+    a: [[C; 4]; 4],
+    b: [[C; 4]; 4],
+    minors: SmallMinors<Poly<C>>,
 }
 
-fn pair_index(i: usize, j: usize) -> usize {
-    PAIRS
-        .iter()
-        .position(|&p| p == (i.min(j), i.max(j)))
-        .expect("a valid pair")
+impl<C: Ring> std::fmt::Debug for MatrixPencil<C> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "MatrixPencil(A = {:?}, B = {:?})", self.a, self.b)
+    }
 }
+
+/// Two pencils are equal when their matrices are.
+impl<C: Ring> PartialEq for MatrixPencil<C> {
+    fn eq(&self, other: &Self) -> bool {
+        self.a == other.a && self.b == other.b
+    }
+}
+
+impl<C: Ring + Eq> Eq for MatrixPencil<C> {}
 
 impl MatrixPencil {
-    /// The pencil `λA − μB`.
+    /// The pencil `λA − μB` of two symmetric integer matrices.
     pub fn new(a: SymMatrix4, b: SymMatrix4) -> MatrixPencil {
-        let e = |i: usize, j: usize| Poly::new(vec![-b.m[i][j].clone(), a.m[i][j].clone()]);
-        let entries: Vec<Poly> = (0..16).map(|k| e(k / 4, k % 4)).collect();
-        let ent = |i: usize, j: usize| &entries[4 * i + j];
-        let mut m2 = vec![Poly::zero(); 36];
-        for (ri, &(r0, r1)) in PAIRS.iter().enumerate() {
-            for (ci, &(c0, c1)) in PAIRS.iter().enumerate().skip(ri) {
-                let v = &(ent(r0, c0) * ent(r1, c1)) - &(ent(r0, c1) * ent(r1, c0));
-                m2[6 * ci + ri] = v.clone();
-                m2[6 * ri + ci] = v;
-            }
-        }
-        let mut m3 = vec![Poly::zero(); 16];
-        for (ri, r) in TRIPLES.iter().enumerate() {
-            for (ci, c) in TRIPLES.iter().enumerate().skip(ri) {
-                let mut acc = Poly::zero();
-                for j in 0..3 {
-                    let x = ent(r[0], c[j]);
-                    if x.is_zero() {
-                        continue;
-                    }
-                    let rest: Vec<usize> = (0..3).filter(|&k| k != j).map(|k| c[k]).collect();
-                    let sub = &m2[6 * pair_index(r[1], r[2]) + pair_index(rest[0], rest[1])];
-                    let t = x * sub;
-                    acc = if j % 2 == 0 { &acc + &t } else { &acc - &t };
-                }
-                m3[4 * ci + ri] = acc.clone();
-                m3[4 * ri + ci] = acc;
-            }
-        }
-        // expand along row 0: columns j, minor of rows {1,2,3} (triple 3) and the other columns
-        let mut det = Poly::zero();
-        for j in 0..4 {
-            let x = ent(0, j);
-            if x.is_zero() {
-                continue;
-            }
-            let t = x * &m3[4 * 3 + (3 - j)];
-            det = if j % 2 == 0 { &det + &t } else { &det - &t };
-        }
-        MatrixPencil {
-            a,
-            b,
-            entries,
-            m2,
-            m3,
-            det,
-        }
+        MatrixPencil::from_entries(a.m, b.m)
+    }
+}
+
+impl<C: Ring> MatrixPencil<C> {
+    /// The pencil `λA − μB` of two 4×4 matrices over `C` (symmetric or not; for symmetric
+    /// ones each minor is computed once up to `minor(R, C) = minor(C, R)`).
+    pub fn from_entries(a: [[C; 4]; 4], b: [[C; 4]; 4]) -> MatrixPencil<C> {
+        let minors = SmallMinors::of_pencil(&a, &b);
+        MatrixPencil { a, b, minors }
     }
 
     /// `A`.
-    pub fn a(&self) -> &SymMatrix4 {
+    pub fn a(&self) -> &[[C; 4]; 4] {
         &self.a
     }
 
     /// `B`.
-    pub fn b(&self) -> &SymMatrix4 {
+    pub fn b(&self) -> &[[C; 4]; 4] {
         &self.b
     }
 
-    /// The member `λA − μB` at integers `(λ, μ)`.
-    pub fn member(&self, lambda: &IBig, mu: &IBig) -> SymMatrix4 {
-        self.a.combine(lambda, &self.b, mu)
+    /// The member `λA − μB` at `(λ, μ)`.
+    pub fn member(&self, lambda: &C, mu: &C) -> [[C; 4]; 4] {
+        std::array::from_fn(|i| {
+            std::array::from_fn(|j| lambda.mul(&self.a[i][j]).sub(&mu.mul(&self.b[i][j])))
+        })
     }
 
     /// `f(λ) = det(λA − B)`, the characteristic polynomial (a binary quartic form).
-    pub fn det_poly(&self) -> Poly {
-        self.det.clone()
+    pub fn det_poly(&self) -> Poly<C> {
+        self.minors.minor(&[0, 1, 2, 3], &[0, 1, 2, 3]).clone()
     }
 
-    /// Every nonzero `k×k` minor of `λA − B` (`1 ≤ k ≤ 4`), each once up to the symmetry
-    /// `minor(R, C) = minor(C, R)`.
-    pub fn minors(&self, k: usize) -> Vec<Poly> {
-        let upper = |v: &[Poly], n: usize| -> Vec<Poly> {
-            (0..n)
-                .flat_map(|r| (r..n).map(move |c| (r, c)))
-                .map(|(r, c)| v[n * r + c].clone())
-                .filter(|p| !p.is_zero())
-                .collect()
-        };
-        match k {
-            1 => (0..4)
-                .flat_map(|i| (i..4).map(move |j| (i, j)))
-                .map(|(i, j)| self.entries[4 * i + j].clone())
-                .filter(|p| !p.is_zero())
-                .collect(),
-            2 => upper(&self.m2, 6),
-            3 => upper(&self.m3, 4),
-            4 if !self.det.is_zero() => vec![self.det.clone()],
-            _ => Vec::new(),
-        }
+    /// Every nonzero `k×k` minor of `λA − B` (`1 ≤ k ≤ 4`), for symmetric `A`, `B` each once
+    /// up to the symmetry `minor(R, C) = minor(C, R)`.
+    pub fn minors(&self, k: usize) -> Vec<Poly<C>> {
+        self.minors
+            .of_order(k)
+            .into_iter()
+            .filter(|p| !p.is_zero())
+            .cloned()
+            .collect()
     }
 
     /// `[E₁(λ), …, E₄(λ)]`: the sums of principal minors of `λA − B` of each order.
     /// The inertia of the member at `λ` follows from their signs
     /// ([`Inertia::from_minor_sum_signs`]).
-    pub fn principal_minor_sums(&self) -> [Poly; 4] {
-        let e1 = (0..4).fold(Poly::zero(), |acc, i| &acc + &self.entries[5 * i]);
-        let e2 = (0..6).fold(Poly::zero(), |acc, p| &acc + &self.m2[7 * p]);
-        let e3 = (0..4).fold(Poly::zero(), |acc, t| &acc + &self.m3[5 * t]);
-        [e1, e2, e3, self.det.clone()]
+    pub fn principal_minor_sums(&self) -> [Poly<C>; 4] {
+        self.minors
+            .principal_minor_sums()
+            .try_into()
+            .expect("four sums of a 4×4 pencil")
     }
 }
 
@@ -427,17 +261,23 @@ mod tests {
         })
     }
 
+    /// The second route to the inertia: congruence diagonalization over ℚ (Sylvester).
+    fn inertia_by_congruence(m: &SymMatrix4) -> Inertia {
+        let q = m.to_matrix().map(|v| RBig::from(v.clone()));
+        q.diagonalize_congruent().expect("symmetric").inertia()
+    }
+
     proptest! {
         #[test]
-        fn descartes_and_ldl_inertia_agree(m in sym()) {
-            prop_assert_eq!(m.inertia(), m.inertia_ldl());
+        fn descartes_and_congruence_inertia_agree(m in sym()) {
+            prop_assert_eq!(m.inertia(), inertia_by_congruence(&m));
         }
 
         #[test]
         fn pencil_polys_match_members(a in sym(), b in sym(), l in -5i64..6) {
             let p = MatrixPencil::new(a.clone(), b.clone());
             let lam = IBig::from(l);
-            let member = p.member(&lam, &IBig::ONE);
+            let member = SymMatrix4::new(p.member(&lam, &IBig::ONE)).expect("symmetric");
             let x = RBig::from(l);
             prop_assert_eq!(p.det_poly().eval_rational(&x), RBig::from(member.det()));
             let e = p.principal_minor_sums();
@@ -524,11 +364,11 @@ mod tests {
             .is_zero());
     }
 
-    /// Zero diagonals force the LDLᵀ route through 2×2 pivots: it must still agree with the
-    /// principal-minor route on every such matrix with off-diagonal entries in {−1, 0, 1, 2}
-    /// (and a diagonal that is zero or `(0, 0, 1, −2)`).
+    /// Zero diagonals force the congruence route through its `e_k + e_j` step: it must still
+    /// agree with the principal-minor route on every such matrix with off-diagonal entries in
+    /// {−1, 0, 1, 2} (and a diagonal that is zero or `(0, 0, 1, −2)`).
     #[test]
-    fn ldl_with_two_by_two_pivots_agrees() {
+    fn congruence_with_zero_diagonals_agrees() {
         let values = [-1i64, 0, 1, 2];
         let pairs = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
         for diagonal in [[0, 0, 0, 0], [0, 0, 1, -2]] {
@@ -542,7 +382,7 @@ mod tests {
                     m[i][i] = diagonal[i];
                 }
                 let s = SymMatrix4::from_i64(m).expect("symmetric");
-                assert_eq!(s.inertia_ldl(), s.inertia(), "{m:?}");
+                assert_eq!(inertia_by_congruence(&s), s.inertia(), "{m:?}");
             }
         }
     }
@@ -599,6 +439,52 @@ mod tests {
         let singular = MatrixPencil::new(diag([1, 1, 1, 0]), diag([1, 2, 3, 0]));
         assert!(singular.minors(4).is_empty());
         assert_eq!(singular.minors(3).len(), 1);
+    }
+
+    /// A pencil over ℤ[t] (moving quadrics `A(t)`, `B(t)`): `det(λA(t) − B(t))` and every
+    /// minor, specialised at `t = t₀`, are those of the integer pencil `(A(t₀), B(t₀))`.
+    #[test]
+    fn moving_pencil_specialises_to_integer_pencils() {
+        // A(t) = A₀ + tA₁, B(t) = B₀ + t²B₁ with small symmetric integer matrices
+        let a0 = [[1, 0, 2, 0], [0, -1, 0, 1], [2, 0, 0, 3], [0, 1, 3, 2]];
+        let a1 = [[0, 1, 0, 0], [1, 2, 0, 0], [0, 0, -1, 1], [0, 0, 1, 0]];
+        let b0 = [[2, 1, 0, 0], [1, 0, 1, 0], [0, 1, 3, 0], [0, 0, 0, -1]];
+        let b1 = [[1, 0, 0, 1], [0, 0, 0, 0], [0, 0, 1, 0], [1, 0, 0, 0]];
+        let a: [[Poly; 4]; 4] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| Poly::from_i64s(&[a0[i][j], a1[i][j]]))
+        });
+        let b: [[Poly; 4]; 4] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| Poly::from_i64s(&[b0[i][j], 0, b1[i][j]]))
+        });
+        let moving = MatrixPencil::from_entries(a, b);
+        let f: Poly<Poly> = moving.det_poly();
+        assert_eq!(f.degree(), Some(4));
+        for t in -3i64..4 {
+            let at = |m: &[[Poly; 4]; 4]| m.clone().map(|r| r.map(|p| p.eval(&IBig::from(t))));
+            let fixed = MatrixPencil::from_entries(at(moving.a()), at(moving.b()));
+            let special = |p: &Poly<Poly>| p.map(|c| c.eval(&IBig::from(t)));
+            assert_eq!(special(&f), fixed.det_poly(), "t = {t}");
+            for (m, e) in moving
+                .principal_minor_sums()
+                .iter()
+                .zip(fixed.principal_minor_sums())
+            {
+                assert_eq!(special(m), e, "t = {t}");
+            }
+            for k in 1..=3 {
+                let mut got: Vec<String> = moving
+                    .minors(k)
+                    .iter()
+                    .map(special)
+                    .filter(|p| !p.is_zero())
+                    .map(|p| p.to_string())
+                    .collect();
+                let mut want: Vec<String> = fixed.minors(k).iter().map(|p| p.to_string()).collect();
+                got.sort();
+                want.sort();
+                assert_eq!(got, want, "t = {t}, k = {k}");
+            }
+        }
     }
 
     /// Integer entries with a common factor are divided by it; the zero matrix stays zero.

@@ -7,6 +7,9 @@
 //! | ℤ\[t\], ℤ\[t\]\[λ\], ℚ\[x\], … | [`Poly<C>`](crate::Poly) over any of these |
 //! | ℚ(√δ) | [`Quadratic`](crate::field::Quadratic) (a [`Field`]) |
 //! | ℚ(α) | [`NumberFieldElement`](crate::field::NumberFieldElement) (a [`Field`], D5 splitting) |
+//! | ℤ in machine words | `i128`, for fast paths that bound their inputs (see its impl) |
+//!
+//! [`RealField`] adds an exact sign (ℚ, real ℚ(√δ); ℚ(α) where α is real).
 //!
 //! Every ring here is a commutative integral domain of characteristic zero (or, for ℚ(α)
 //! with a reducible defining polynomial, is treated as one by dynamic evaluation).
@@ -82,6 +85,13 @@ pub trait Field: Ring {
     fn div(&self, d: &Self) -> Option<Self> {
         d.inv().map(|i| self.mul(&i))
     }
+}
+
+/// An ordered field: a [`Field`] with an exact sign (ℚ, real quadratic fields, real
+/// number fields). Inertia and real points need it.
+pub trait RealField: Field {
+    /// The sign, decided exactly.
+    fn sign(&self) -> crate::Sign;
 }
 
 impl Ring for IBig {
@@ -175,6 +185,82 @@ impl Ring for RBig {
     }
 }
 
+/// ℤ in a machine word, for fast paths whose inputs are bounded: `+ − ×` are Rust's
+/// operators, which panic on overflow in debug builds (tests) and wrap in release builds, so
+/// a caller must prove that no intermediate value leaves the `i128` range (the classifier's
+/// fast path does, in its module docs). [`Ring::div_exact`] and [`Ring::from_int`] are exact
+/// and checked.
+///
+/// # Panics
+/// [`Ring::from_int`] panics on an integer outside the `i128` range.
+impl Ring for i128 {
+    #[inline]
+    fn zero() -> Self {
+        0
+    }
+    #[inline]
+    fn one() -> Self {
+        1
+    }
+    #[inline]
+    fn from_int(v: &IBig) -> Self {
+        i128::try_from(v).expect("an integer in the i128 range")
+    }
+    #[inline]
+    fn is_zero(&self) -> bool {
+        *self == 0
+    }
+    #[inline]
+    fn add(&self, rhs: &Self) -> Self {
+        self + rhs
+    }
+    #[inline]
+    fn sub(&self, rhs: &Self) -> Self {
+        self - rhs
+    }
+    #[inline]
+    fn mul(&self, rhs: &Self) -> Self {
+        self * rhs
+    }
+    #[inline]
+    fn neg(&self) -> Self {
+        -self
+    }
+    #[inline]
+    fn div_exact(&self, d: &Self) -> Option<Self> {
+        // |q·d| ≤ |self|: the check cannot overflow
+        self.checked_div(*d).filter(|q| q * d == *self)
+    }
+    #[inline]
+    fn add_assign(&mut self, rhs: &Self) {
+        *self += rhs;
+    }
+    #[inline]
+    fn sub_mul_assign(&mut self, a: &Self, b: &Self) {
+        *self -= a * b;
+    }
+    #[inline]
+    fn add_mul_assign(&mut self, a: &Self, b: &Self) {
+        *self += a * b;
+    }
+}
+
+impl RealField for RBig {
+    fn sign(&self) -> crate::Sign {
+        crate::Sign::of_rational(self)
+    }
+}
+
+/// ℚ(√δ) is ordered for `δ > 0` (√δ the positive root).
+///
+/// # Panics
+/// On an element `a + b√δ` with `b ≠ 0` and `δ < 0` (not real, hence unsigned).
+impl RealField for crate::field::Quadratic {
+    fn sign(&self) -> crate::Sign {
+        crate::field::Quadratic::sign(self).expect("the sign of a real element of Q(sqrt d)")
+    }
+}
+
 impl Field for RBig {
     fn inv(&self) -> Option<Self> {
         (!RBig::is_zero(self)).then(|| RBig::ONE / self)
@@ -251,6 +337,33 @@ mod tests {
         assert_eq!(a, Z(IBig::from(-3)));
         a.add_assign(&Z(IBig::from(3)));
         assert!(a.is_zero() && !a.is_one() && Z::one().is_one());
+    }
+
+    #[test]
+    fn machine_integers() {
+        assert_eq!(Ring::div_exact(&12i128, &-4), Some(-3));
+        assert_eq!(Ring::div_exact(&12i128, &5), None);
+        assert_eq!(Ring::div_exact(&12i128, &0), None);
+        assert_eq!(Ring::div_exact(&i128::MIN, &-1), None);
+        assert_eq!(<i128 as Ring>::from_int(&IBig::from(-7)), -7);
+        let mut acc = 10i128;
+        acc.sub_mul_assign(&3, &4);
+        acc.add_assign(&1);
+        assert_eq!(acc, -1);
+        acc.add_mul_assign(&2, &5);
+        assert_eq!((acc, Ring::pow(&-3i128, 3)), (9, -27));
+    }
+
+    #[test]
+    fn real_field_signs() {
+        use crate::field::Quadratic;
+        use crate::Sign;
+        let third = RBig::from_parts(IBig::from(-1), 3u8.into());
+        assert_eq!(RealField::sign(&third), Sign::Negative);
+        assert_eq!(RealField::sign(&RBig::ZERO), Sign::Zero);
+        // 1 − √2 < 0
+        let x = Quadratic::rational(RBig::ONE) - Quadratic::sqrt(&IBig::from(2));
+        assert_eq!(RealField::sign(&x), Sign::Negative);
     }
 
     #[test]

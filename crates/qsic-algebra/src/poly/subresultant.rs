@@ -17,6 +17,7 @@
 //! `psc_j ≠ 0`.
 
 use super::Poly;
+use crate::linalg::minors::det_bareiss;
 use crate::ring::Ring;
 
 impl<C: Ring> Poly<C> {
@@ -215,44 +216,6 @@ impl<C: Ring> Poly<C> {
     }
 }
 
-/// The determinant of a square matrix over an integral domain by Bareiss' fraction-free
-/// elimination (`O(n³)` ring operations, exact divisions only); `1` for the empty matrix.
-pub fn det_bareiss<C: Ring>(mut m: Vec<Vec<C>>) -> C {
-    let n = m.len();
-    let mut sign_flip = false;
-    let mut prev = C::one();
-    for k in 0..n {
-        let Some(p) = (k..n).find(|&i| !m[i][k].is_zero()) else {
-            return C::zero();
-        };
-        if p != k {
-            m.swap(p, k);
-            sign_flip = !sign_flip;
-        }
-        for i in k + 1..n {
-            for j in k + 1..n {
-                let v = m[i][j]
-                    .mul(&m[k][k])
-                    .sub(&m[i][k].mul(&m[k][j]))
-                    .div_exact(&prev)
-                    .expect("Bareiss divides exactly");
-                m[i][j] = v;
-            }
-        }
-        prev = m[k][k].clone();
-    }
-    let d = if n == 0 {
-        C::one()
-    } else {
-        m[n - 1][n - 1].clone()
-    };
-    if sign_flip {
-        d.neg()
-    } else {
-        d
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -386,51 +349,6 @@ mod tests {
         let at_t = g.eval(&t);
         assert!(at_t.is_zero(), "{g}");
         assert_eq!(a.resultant(&b), Poly::zero());
-    }
-
-    #[test]
-    fn bareiss_matches_cofactor_expansion() {
-        fn cofactor(m: &[Vec<i64>]) -> i64 {
-            if m.is_empty() {
-                return 1;
-            }
-            (0..m.len())
-                .map(|c| {
-                    let minor: Vec<Vec<i64>> = m[1..]
-                        .iter()
-                        .map(|r| {
-                            r.iter()
-                                .enumerate()
-                                .filter(|&(j, _)| j != c)
-                                .map(|(_, &v)| v)
-                                .collect()
-                        })
-                        .collect();
-                    let s = if c % 2 == 0 { 1 } else { -1 };
-                    s * m[0][c] * cofactor(&minor)
-                })
-                .sum()
-        }
-        let mats: Vec<Vec<Vec<i64>>> = vec![
-            vec![],
-            vec![vec![5]],
-            vec![vec![0, 1], vec![1, 0]],
-            vec![vec![0, 0, 1], vec![0, 2, 0], vec![3, 0, 0]],
-            vec![
-                vec![2, -1, 0, 3],
-                vec![1, 4, 2, -2],
-                vec![0, 0, 0, 1],
-                vec![5, 1, -3, 2],
-            ],
-            vec![vec![1, 2, 3], vec![2, 4, 6], vec![1, 0, 1]],
-        ];
-        for m in mats {
-            let big: Vec<Vec<IBig>> = m
-                .iter()
-                .map(|r| r.iter().map(|&v| z(v)).collect())
-                .collect();
-            assert_eq!(det_bareiss(big), z(cofactor(&m)), "{m:?}");
-        }
     }
 
     proptest! {

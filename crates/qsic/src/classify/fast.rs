@@ -13,36 +13,25 @@
 //!   by the signs of `f` there, and the inertia at each sample comes from the certified
 //!   signs of the principal minor sums `E₁…E₄`.
 //!
+//! The polynomials `E_k(λ)` come from the one minor implementation in `i128`
+//! ([`qsic_algebra::linalg::pencil::principal_minor_sums_of_members`]: the principal minors of
+//! the members at `λ = ∞, 0, ±1` and `det(2A − B)`, then interpolation).
+//!
 //! Precondition, checked: every entry is below [`ENTRY_LIMIT`] = 2²⁴ in absolute value. Then
-//! every coefficient of `E₄` is below `4!·2⁴·2⁹⁶ < 2¹⁰⁵` (no `i128` overflow) and the
+//! the members' entries are below `3·2²⁴`, every product of four of them below `81·2⁹⁶ < 2¹⁰³`,
+//! and every minor, sum of at most 24 such products, below `2¹⁰⁸` (no `i128` overflow; the
+//! interpolation's sums of a few such values with factors up to 16 stay below `2¹¹⁴`); the
 //! discriminant's terms, products of six coefficients, stay below `2¹⁰²⁴` (no float overflow).
 
 use qsic_algebra::filter::{certified_sign, certified_sign_poly, sum_of_products_bound};
+use qsic_algebra::linalg::pencil::principal_minor_sums_of_members;
 use qsic_algebra::Sign;
-
-type Lin = [i128; 2];
 
 /// Entries must be below this in absolute value (see the module docs).
 pub(crate) const ENTRY_LIMIT: u64 = 1 << 24;
 
 fn within_entry_limit(m: &[[i64; 4]; 4]) -> bool {
     m.iter().flatten().all(|v| v.unsigned_abs() < ENTRY_LIMIT)
-}
-
-fn mul<const N: usize, const M: usize, const K: usize>(x: &[i128; N], y: &[i128; M]) -> [i128; K] {
-    let mut out = [0i128; K];
-    for (i, a) in x.iter().enumerate() {
-        for (j, b) in y.iter().enumerate() {
-            out[i + j] += a * b;
-        }
-    }
-    out
-}
-
-fn add<const N: usize>(x: &mut [i128; N], y: &[i128; N], sign: i128) {
-    for (a, b) in x.iter_mut().zip(y) {
-        *a += sign * b;
-    }
 }
 
 /// `E₁…E₄` of `λA − B` as exact polynomials (low degree first).
@@ -54,45 +43,34 @@ struct MinorSums {
 }
 
 fn minor_sums(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> MinorSums {
-    let e = |i: usize, j: usize| -> Lin { [-(b[i][j] as i128), a[i][j] as i128] };
-    let m2 = |r: [usize; 2], c: [usize; 2]| -> [i128; 3] {
-        let mut x: [i128; 3] = mul(&e(r[0], c[0]), &e(r[1], c[1]));
-        add(&mut x, &mul(&e(r[0], c[1]), &e(r[1], c[0])), -1);
-        x
-    };
-    let mut e1 = [0i128; 2];
-    for i in 0..4 {
-        add(&mut e1, &e(i, i), 1);
-    }
-    let mut e2 = [0i128; 3];
-    for i in 0..4 {
-        for j in (i + 1)..4 {
-            add(&mut e2, &m2([i, j], [i, j]), 1);
+    // the members lA − B and A, formed in i64 (|entries| < 3·2²⁴)
+    let member = |l: i64, k: i64| {
+        let mut m = [[0i128; 4]; 4];
+        for i in 0..4 {
+            for j in 0..4 {
+                m[i][j] = i128::from(l * a[i][j] - k * b[i][j]);
+            }
         }
+        m
+    };
+    let [e1, e2, e3, e4] = principal_minor_sums_of_members([
+        &member(1, 0),
+        &member(0, 1),
+        &member(1, 1),
+        &member(-1, 1),
+        &member(2, 1),
+    ]);
+    MinorSums {
+        e1: lowest(&e1),
+        e2: lowest(&e2),
+        e3: lowest(&e3),
+        e4,
     }
-    let mut e3 = [0i128; 4];
-    for [r0, r1, r2] in [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]] {
-        // expand along the first row
-        add(&mut e3, &mul(&e(r0, r0), &m2([r1, r2], [r1, r2])), 1);
-        add(&mut e3, &mul(&e(r0, r1), &m2([r1, r2], [r0, r2])), -1);
-        add(&mut e3, &mul(&e(r0, r2), &m2([r1, r2], [r0, r1])), 1);
-    }
-    // Laplace expansion along rows 0, 1.
-    let mut e4 = [0i128; 5];
-    // (columns of rows 0, 1; the complementary columns of rows 2, 3)
-    let splits = [
-        ([0, 1], [2, 3]),
-        ([0, 2], [1, 3]),
-        ([0, 3], [1, 2]),
-        ([1, 2], [0, 3]),
-        ([1, 3], [0, 2]),
-        ([2, 3], [0, 1]),
-    ];
-    for (c, rest) in splits {
-        let s = if (1 + c[0] + c[1]) % 2 == 0 { 1 } else { -1 };
-        add(&mut e4, &mul(&m2([0, 1], c), &m2([2, 3], rest)), s);
-    }
-    MinorSums { e1, e2, e3, e4 }
+}
+
+/// The lowest `K` coefficients.
+fn lowest<const K: usize>(c: &[i128; 5]) -> [i128; K] {
+    std::array::from_fn(|i| c[i])
 }
 
 fn to_f64<const N: usize>(c: &[i128; N]) -> [f64; N] {
@@ -337,6 +315,33 @@ mod tests {
         (b[0][1], b[1][0], b[2][3], b[3][2]) = (-1, -1, -2, -2);
         assert_eq!(exact_case(a, b), Some(4));
         assert_eq!(classify_simple_roots(&a, &b), Some(4));
+    }
+
+    /// The interpolated `E₁…E₄` are the exact pencil's, on random pairs up to the entry limit
+    /// and on a Hadamard matrix of entries ±(2²⁴ − 1) (the largest determinant there); test
+    /// builds check every `i128` operation for overflow.
+    #[test]
+    fn interpolated_minor_sums_are_the_exact_ones() {
+        use qsic_algebra::matrix::{MatrixPencil, SymMatrix4};
+        use qsic_algebra::{IBig, Poly};
+        let l = ENTRY_LIMIT as i64 - 1;
+        let h = [[l, l, l, l], [l, -l, l, -l], [l, l, -l, -l], [l, -l, -l, l]];
+        let minus_h = h.map(|r| r.map(|v| -v));
+        let mut pairs = vec![(h, minus_h), (h, h), (minus_h, [[l; 4]; 4])];
+        let mut rng = SplitMix(7);
+        for range in [10, l] {
+            for _ in 0..100 {
+                pairs.push((rng.matrix(range), rng.matrix(range)));
+            }
+        }
+        let poly = |c: &[i128]| Poly::new(c.iter().map(|&v| IBig::from(v)).collect());
+        for (a, b) in pairs {
+            let s = minor_sums(&a, &b);
+            let sym = |m| SymMatrix4::from_i64(m).expect("symmetric");
+            let exact = MatrixPencil::new(sym(a), sym(b)).principal_minor_sums();
+            let got = [poly(&s.e1), poly(&s.e2), poly(&s.e3), poly(&s.e4)];
+            assert_eq!(got, exact, "A = {a:?}, B = {b:?}");
+        }
     }
 
     /// The precondition is checked: an entry of 2²⁴ or more sends the pair to the exact path

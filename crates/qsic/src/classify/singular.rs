@@ -120,6 +120,9 @@ use super::morphology::{
     ComplexType, Component, ComponentKind, Description, Morphology, RealType, SingularPointKind,
     SingularPoints,
 };
+use qsic_algebra::linalg::minors::{det, principal_minor_sums};
+use qsic_algebra::linalg::pencil::pencil_principal_minor_sums;
+use qsic_algebra::linalg::Matrix;
 use qsic_algebra::matrix::SymMatrix4;
 use qsic_algebra::poly::sturm::tarski_query;
 use qsic_algebra::{IBig, Poly, Sign};
@@ -175,55 +178,19 @@ fn sub2(m: &SymMatrix4, i: [usize; 2]) -> M2 {
     i.map(|r| i.map(|c| e[r][c].clone()))
 }
 
-/// The pivot columns of the stacked 8×4 matrix `[A; B]` by fraction-free (Bareiss)
-/// Gaussian elimination: `4 −` their number is the dimension of the common kernel, and the
-/// principal submatrices on them are the projected pencil (module docs). Every entry stays
-/// a minor of `[A; B]` (Sylvester's identity), so the divisions are exact and the numbers
-/// grow only linearly.
+/// The pivot columns of the stacked 8×4 matrix `[A; B]` (fraction-free elimination,
+/// [`Matrix::pivot_columns`]): `4 −` their number is the dimension of the common kernel, and
+/// the principal submatrices on them are the projected pencil (module docs).
 fn pivot_columns(a: &SymMatrix4, b: &SymMatrix4) -> Vec<usize> {
-    let mut rows: Vec<[IBig; 4]> = a
+    let rows: Vec<Vec<IBig>> = a
         .entries()
         .iter()
         .chain(b.entries().iter())
-        .filter(|r| r.iter().any(|v| !v.is_zero()))
-        .cloned()
+        .map(|r| r.to_vec())
         .collect();
-    let mut pivots = Vec::with_capacity(4);
-    let mut previous = IBig::ONE;
-    let mut top = 0;
-    for col in 0..4 {
-        if top == rows.len() {
-            break;
-        }
-        let Some(p) = (top..rows.len()).find(|&r| !rows[r][col].is_zero()) else {
-            continue;
-        };
-        rows.swap(top, p);
-        let (head, tail) = rows.split_at_mut(top + 1);
-        let piv = &head[top];
-        for row in tail.iter_mut() {
-            let f = std::mem::take(&mut row[col]);
-            for c in col + 1..4 {
-                row[c] = (&row[c] * &piv[col] - &f * &piv[c]) / &previous;
-            }
-        }
-        previous = piv[col].clone();
-        pivots.push(col);
-        top += 1;
-    }
-    pivots
-}
-
-/// `[E₁, E₂, E₃]`: sums of the principal minors of each order of a symmetric 3×3 matrix.
-fn minor_sums3(m: &M3) -> [IBig; 3] {
-    let e1 = &m[0][0] + &m[1][1] + &m[2][2];
-    let e2 = &m[0][0] * &m[1][1] - &m[0][1] * &m[0][1] + &m[0][0] * &m[2][2] - &m[0][2] * &m[0][2]
-        + &m[1][1] * &m[2][2]
-        - &m[1][2] * &m[1][2];
-    let e3 = &m[0][0] * (&m[1][1] * &m[2][2] - &m[1][2] * &m[1][2])
-        - &m[0][1] * (&m[0][1] * &m[2][2] - &m[1][2] * &m[0][2])
-        + &m[0][2] * (&m[0][1] * &m[1][2] - &m[1][1] * &m[0][2]);
-    [e1, e2, e3]
+    Matrix::from_rows(rows)
+        .expect("rows of length 4")
+        .pivot_columns()
 }
 
 /// The rank of a real symmetric 3×3 matrix: the largest `k` with `E_k ≠ 0` (the
@@ -240,28 +207,9 @@ fn combine3(a: &M3, p: &IBig, b: &M3, q: &IBig) -> M3 {
     std::array::from_fn(|i| std::array::from_fn(|j| p * &a[i][j] - q * &b[i][j]))
 }
 
-/// The entries of `λA − B` as polynomials in `λ`.
-fn pencil_entries3(a: &M3, b: &M3) -> [[Poly; 3]; 3] {
-    std::array::from_fn(|i| {
-        std::array::from_fn(|j| Poly::new(vec![-b[i][j].clone(), a[i][j].clone()]))
-    })
-}
-
-fn minor2(m: &[[Poly; 3]; 3], r: [usize; 2], c: [usize; 2]) -> Poly {
-    &(&m[r[0]][c[0]] * &m[r[1]][c[1]]) - &(&m[r[0]][c[1]] * &m[r[1]][c[0]])
-}
-
-/// `det(λA − B)`.
-fn det_poly3(a: &M3, b: &M3) -> Poly {
-    let m = pencil_entries3(a, b);
-    &(&(&m[0][0] * &minor2(&m, [1, 2], [1, 2])) - &(&m[0][1] * &minor2(&m, [1, 2], [0, 2])))
-        + &(&m[0][2] * &minor2(&m, [1, 2], [0, 1]))
-}
-
-/// `E₂(λA − B)`, the sum of the principal 2×2 minors.
-fn e2_poly3(a: &M3, b: &M3) -> Poly {
-    let m = pencil_entries3(a, b);
-    &(&minor2(&m, [0, 1], [0, 1]) + &minor2(&m, [0, 2], [0, 2])) + &minor2(&m, [1, 2], [1, 2])
+/// `[E₁(λ), E₂(λ), E₃(λ)]` of `λA − B` (`E₃` is `det(λA − B)`).
+fn pencil_minor_sums3(a: &M3, b: &M3) -> [Poly; 3] {
+    pencil_principal_minor_sums(a, b).map(|c| Poly::new(c.to_vec()))
 }
 
 /// The regular or singular pencil of conics `(A₃, B₃)` obtained by projecting from the
@@ -277,7 +225,7 @@ fn e2_poly3(a: &M3, b: &M3) -> Poly {
 fn conic_pencil(a3: &M3, b3: &M3) -> Option<Morphology> {
     use ComplexType as C;
     use RealType as R;
-    let f = det_poly3(a3, b3);
+    let [_, e2, f] = pencil_minor_sums3(a3, b3);
     if f.is_zero() {
         // a single ε = 1 block: a common line and a moving one
         return Some(Morphology {
@@ -287,15 +235,15 @@ fn conic_pencil(a3: &M3, b3: &M3) -> Option<Morphology> {
     }
     // A chart without a root at ∞: A* = A₃ + t·B₃ with det A* ≠ 0 (det₃ has at most
     // three roots, so one of t = 0, 1, −1, 2 works).
-    let (a_star, f) = if f.degree() == Some(3) {
-        (a3.clone(), f)
+    let (a_star, f, e2) = if f.degree() == Some(3) {
+        (a3.clone(), f, e2)
     } else {
         let a_star = [1i64, -1, 2]
             .iter()
             .map(|&t| combine3(a3, &IBig::ONE, b3, &IBig::from(-t)))
-            .find(|m| !minor_sums3(m)[2].is_zero())?;
-        let f = det_poly3(&a_star, b3);
-        (a_star, f)
+            .find(|m| !det(m).is_zero())?;
+        let [_, e2, f] = pencil_minor_sums3(&a_star, b3);
+        (a_star, f, e2)
     };
     let [c0, c1, c2, c3] = [0, 1, 2, 3].map(|i| f.coeff(i));
     let disc = IBig::from(18) * &c3 * &c2 * &c1 * &c0 - IBig::from(4) * c2.pow(3) * &c0
@@ -303,13 +251,13 @@ fn conic_pencil(a3: &M3, b3: &M3) -> Option<Morphology> {
         - IBig::from(4) * &c3 * c1.pow(3)
         - IBig::from(27) * c3.pow(2) * c0.pow(2);
     // [E₁, E₂, E₃] of the member p·A* − q·B₃ at the root λ = p/q
-    let member = |p: &IBig, q: &IBig| minor_sums3(&combine3(&a_star, p, b3, q));
+    let member = |p: &IBig, q: &IBig| principal_minor_sums(&combine3(&a_star, p, b3, q));
     let (complex, real) = match Sign::of(&disc) {
         // [111], four base points: two real (one real root) …
         Sign::Negative => (C::FourConcurrentLines, R::TwoConcurrentLines),
         // … four or none (three real roots)
         Sign::Positive => {
-            let real = if tarski_query(&f, &e2_poly3(&a_star, b3)) == -3 {
+            let real = if tarski_query(&f, &e2) == -3 {
                 R::Same
             } else {
                 R::Point
