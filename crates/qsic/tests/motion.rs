@@ -100,16 +100,15 @@ fn corpus_instants_and_types() {
         );
         for (w, got) in want_instants.iter().zip(&motion.instants) {
             assert_same_instant(&w["t"], &got.t, id);
-            match &got.class {
-                InstantType::Exact(c) => assert_eq!(
-                    our_type(MotionType::of(c)),
-                    recorded_type(w),
-                    "{id} at {}",
-                    got.t
-                ),
-                // never a guess: only irrational instants may stay unclassified
-                InstantType::IrrationalUnclassified => assert!(got.t.as_rational().is_none()),
-            }
+            let InstantType::Exact(c) = &got.class else {
+                panic!("{id}: instant {} not classified", got.t);
+            };
+            assert_eq!(
+                our_type(MotionType::of(c)),
+                recorded_type(w),
+                "{id} at {}",
+                got.t
+            );
         }
         let want_intervals = d["intervals"].as_array().unwrap();
         assert_eq!(motion.intervals.len(), want_intervals.len(), "{id}");
@@ -204,5 +203,52 @@ fn assert_symmetric(m: &Motion) {
             MotionType::of(&m.intervals[k].classification),
             MotionType::of(&m.intervals[n - 1 - k].classification)
         );
+    }
+}
+
+/// The same motion with the fixed sphere of radius √2: the instants move to the irrational
+/// ±(√2 ± 1) (roots of t⁴ − 6t² + 1) and 0, and every type — on the intervals and at the
+/// irrational instants, classified in ℚ(α) — is the one of the rational motion above.
+#[test]
+fn sphere_through_sphere_irrational_instants() {
+    let rational = MovingPencil::new(
+        moving_matrix_from_polynomial("x^2 + y^2 + z^2 - 4").unwrap(),
+        moving_matrix_from_polynomial("(x - t)^2 + y^2 + z^2 - 1").unwrap(),
+    )
+    .variations()
+    .unwrap();
+    let pencil = MovingPencil::new(
+        moving_matrix_from_polynomial("x^2 + y^2 + z^2 - 2").unwrap(),
+        moving_matrix_from_polynomial("(x - t)^2 + y^2 + z^2 - 1").unwrap(),
+    );
+    let motion = pencil.variations().unwrap();
+    assert_eq!(motion.instants.len(), 5);
+    let quartic = Poly::from_i64s(&[1, 0, -6, 0, 1]);
+    let approx = [
+        -1.0 - 2f64.sqrt(),
+        1.0 - 2f64.sqrt(),
+        0.0,
+        2f64.sqrt() - 1.0,
+        1.0 + 2f64.sqrt(),
+    ];
+    for ((i, r), x) in motion.instants.iter().zip(&rational.instants).zip(approx) {
+        if x == 0.0 {
+            assert_eq!(i.t.as_rational(), Some(&RBig::ZERO));
+        } else {
+            assert!(
+                i.t.is_root_of(&quartic) && (i.t.to_f64() - x).abs() < 1e-9,
+                "{}",
+                i.t
+            );
+        }
+        let (InstantType::Exact(a), InstantType::Exact(b)) = (&i.class, &r.class) else {
+            panic!("unclassified instant {}", i.t);
+        };
+        assert_eq!(MotionType::of(a), MotionType::of(b), "at {}", i.t);
+        assert_eq!(a.segre, b.segre);
+        assert_eq!(a.index_sequence, b.index_sequence);
+    }
+    for (i, r) in motion.intervals.iter().zip(&rational.intervals) {
+        assert_eq!(i.classification, r.classification);
     }
 }

@@ -22,6 +22,7 @@
 //! whose type equals that of both neighbours and merges the intervals around them.
 
 mod instants;
+mod irrational;
 
 use crate::classify::{classify_allowing_zero, Classification};
 use crate::error::Error;
@@ -271,7 +272,8 @@ impl MovingPencil {
         for c in &candidates {
             instant_types.push(match c.as_rational() {
                 Some(v) => InstantType::Exact(self.classify_at(v)?),
-                None => InstantType::IrrationalUnclassified,
+                None => irrational::classify_at_irrational(&self.entries, c)
+                    .map_or(InstantType::IrrationalUnclassified, InstantType::Exact),
             });
         }
         let mut intervals = vec![MotionInterval {
@@ -363,4 +365,48 @@ fn gcd_free_basis(polys: &[Poly]) -> Vec<Poly> {
         basis = next;
     }
     basis
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::moving_matrix_from_polynomial;
+
+    /// The `ℚ(α)` route given a rational `α` agrees in full with the rational classifier,
+    /// at instants and between them, for regular pencils of several motions.
+    #[test]
+    fn number_field_route_agrees_with_the_rational_classifier() {
+        let motions = [
+            ("x^2 + y^2 + z^2 - 4", "(x - t)^2 + y^2 + z^2 - 1"),
+            (
+                "x^2 - y^2 - 2*z*w",
+                "x^2 + t^2*y^2 + (1 - t)*z^2 - 2*t*z*w + w^2",
+            ),
+            (
+                "x^2 + y^2 - z^2 - w^2",
+                "x^2/2 + y^2/2 + (z + t*w)^2/2 - w^2",
+            ),
+            ("x^2 + y^2 - 1", "(x - t)^2 + t*z^2 - 1"),
+        ];
+        let mut compared = 0;
+        for (a, b) in motions {
+            let p = MovingPencil::new(
+                moving_matrix_from_polynomial(a).unwrap(),
+                moving_matrix_from_polynomial(b).unwrap(),
+            );
+            for n in -12..=12 {
+                let t = RBig::from_parts_signed(n.into(), 4u8.into());
+                let exact = p.classify_at(&t).unwrap();
+                let alpha = AlgebraicReal::from_rational(t.clone());
+                let via_field = irrational::classify_at_irrational(&p.entries, &alpha);
+                if exact.pencil.key() == "regular" {
+                    assert_eq!(via_field.as_ref(), Some(&exact), "{a}, {b} at t = {t}");
+                    compared += 1;
+                } else {
+                    assert!(via_field.is_none());
+                }
+            }
+        }
+        assert!(compared > 80, "{compared}");
+    }
 }
