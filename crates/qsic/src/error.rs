@@ -94,4 +94,7 @@ pub enum Error {
     /// An invalid parameter of a shape constructor (e.g. a non-positive squared radius).
     #[error("invalid shape parameter: {0}")]
     InvalidShape(String),
+    /// A moving pencil outside what the motion analysis handles (e.g. singular for every `t`).
+    #[error("moving pencil not supported: {0}")]
+    UnsupportedMotion(String),
 }

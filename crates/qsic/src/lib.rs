@@ -7,6 +7,7 @@
 //! | [`shapes`] | constructors for spheres, cylinders, cones, … from rational parameters |
 //! | [`pencil`] | the pencil `λA − μB`: characteristic form, real roots, Segre structure, inertia |
 //! | [`mod@classify`] | [`classify()`]: regular (35 cases), singular and single pencils |
+//! | [`motion`] | moving quadrics: critical instants and the type between them, exactly |
 //! | [`limits`] | documented bounds on untrusted input |
 //!
 //! ```
@@ -24,6 +25,7 @@ pub mod classify;
 pub mod error;
 pub mod io;
 pub mod limits;
+pub mod motion;
 pub mod pencil;
 pub mod quadric;
 pub mod shapes;

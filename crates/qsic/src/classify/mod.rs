@@ -182,8 +182,22 @@ fn classify_regular(analysis: &PencilAnalysis) -> Classification {
         .iter()
         .map(|r| r.blocks.as_slice())
         .chain(analysis.complex_roots.iter().map(Vec::as_slice));
-    let key = SegreKey::new(structures, analysis.real_roots.len())
-        .map(|segre| (segre, signature::canonical(&analysis.signature_sequence())));
+    classify_regular_parts(
+        structures,
+        analysis.real_roots.len(),
+        analysis.signature_sequence(),
+    )
+}
+
+/// The class of a regular pencil from the block structures of its roots (`real` of them
+/// real) and its signature sequence (as [`PencilAnalysis::signature_sequence`]); the route
+/// of pencils whose coefficients are not rational (`motion`).
+pub(crate) fn classify_regular_parts<'a>(
+    structures: impl IntoIterator<Item = &'a [u8]>,
+    real: usize,
+    sequence: Vec<SigItem>,
+) -> Classification {
+    let key = SegreKey::new(structures, real).map(|segre| (segre, signature::canonical(&sequence)));
     match key.as_ref().and_then(|key| class_index().get(key)) {
         Some((row, i)) => from_row(row, *i),
         // Theorem 23 of the paper: every regular pencil falls in one of the 35 cases; a

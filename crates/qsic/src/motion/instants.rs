@@ -1,0 +1,231 @@
+//! Candidate instants of a moving pencil: polynomials in `t` whose real roots contain every
+//! instant where the class of `λA(t) − μB(t)` can change.
+//!
+//! Everything is a binary form in `(λ, μ)` over `ℤ[t]`, stored as its chart `μ = 1` (a
+//! [`Poly<Poly>`], `ℤ[t][λ]`) with a formal degree, so a root at `λ = ∞` is an ordinary root
+//! and resultants are taken with the formal degrees (Sylvester matrices): they vanish at `t₀`
+//! exactly when the specialised forms share a root in `ℙ¹` (or one of them vanishes).
+
+use qsic_algebra::linalg::minors::det_bareiss;
+use qsic_algebra::{IBig, Poly, Ring};
+
+/// `ℤ[t][λ]`.
+pub(crate) type TPoly = Poly<Poly>;
+
+/// A binary form over `ℤ[t]`: its chart and formal degree (`degree ≥ deg chart`).
+#[derive(Clone, Debug)]
+pub(crate) struct Form {
+    pub chart: TPoly,
+    pub degree: usize,
+}
+
+impl Form {
+    /// The coefficients of `λ^i μ^(d−i)`, `i = 0..=d` (trailing zeros kept).
+    fn coefficients(&self) -> Vec<Poly> {
+        (0..=self.degree).map(|i| self.chart.coeff(i)).collect()
+    }
+}
+
+/// The gcd of the coefficients (polynomials in `t`) of `p` in `ℤ[t]`, integer content
+/// included, with positive leading coefficient; zero for `p = 0`.
+pub(crate) fn t_content(p: &TPoly) -> Poly {
+    let mut g = Poly::zero();
+    for c in p.coeffs() {
+        if g.degree() != Some(0) {
+            g = g.gcd(c);
+        }
+    }
+    if g.is_zero() {
+        return g;
+    }
+    // the gcd of the integer contents, as the content of the polynomial they form
+    let k = Poly::new(p.coeffs().iter().map(Poly::content).collect()).content();
+    g.primitive_part().scale(&k)
+}
+
+/// `p` divided by its `t`-content and by the sign of its leading coefficient's leading
+/// coefficient: primitive over `ℤ[t]`.
+pub(crate) fn t_primitive(p: &TPoly) -> TPoly {
+    let c = t_content(p);
+    if c.is_zero() {
+        return p.clone();
+    }
+    let mut c = c;
+    if p.leading().leading() < IBig::ZERO {
+        c = c.neg();
+    }
+    p.map(|v| {
+        v.div_exact(&c)
+            .expect("the content divides every coefficient")
+    })
+}
+
+/// A gcd over `ℚ(t)` of two polynomials in `λ`, primitive over `ℤ[t]`.
+pub(crate) fn gcd_t(a: &TPoly, b: &TPoly) -> TPoly {
+    t_primitive(&a.gcd_domain(b))
+}
+
+/// Square-free decomposition over `ℚ(t)` of a nonzero `f ∈ ℤ[t][λ]`: pairwise coprime,
+/// square-free, `ℤ[t]`-primitive factors of positive degree in `λ` with their multiplicities.
+///
+/// With `P₀ = f`, `P_{j+1} = gcd(P_j, P_j′) = ∏ gᵢ^max(i−j−1, 0)`, the quotients
+/// `s_j = P_j/P_{j+1} = ∏_{i>j} gᵢ` give `g_{j+1} = s_j/s_{j+1}` (at most four gcds here).
+pub(crate) fn squarefree_decomposition_t(f: &TPoly) -> Vec<(TPoly, usize)> {
+    let mut p = vec![t_primitive(f)];
+    while p.last().expect("nonempty").degree().unwrap_or(0) > 0 {
+        let last = p.last().expect("nonempty");
+        p.push(gcd_t(last, &last.derivative()));
+    }
+    let s: Vec<TPoly> = p
+        .windows(2)
+        .map(|w| t_primitive(&w[0].div_exact(&w[1]).expect("the gcd divides (Gauss)")))
+        .collect();
+    let mut out = Vec::new();
+    for i in 0..s.len() {
+        let g = match s.get(i + 1) {
+            Some(next) => t_primitive(&s[i].div_exact(next).expect("nested square-free parts")),
+            None => s[i].clone(),
+        };
+        if g.degree().unwrap_or(0) > 0 {
+            out.push((g, i + 1));
+        }
+    }
+    out
+}
+
+/// The resultant of two binary forms over `ℤ[t]` with their formal degrees (the Sylvester
+/// determinant); `Res(F, G) = F₀^n` for `deg F = 0` and vice versa.
+pub(crate) fn resultant_forms(f: &Form, g: &Form) -> Poly {
+    let (m, n) = (f.degree, g.degree);
+    let (fc, gc) = (f.coefficients(), g.coefficients());
+    if m == 0 {
+        return fc[0].pow(n);
+    }
+    if n == 0 {
+        return gc[0].pow(m);
+    }
+    let size = m + n;
+    let mut rows = vec![vec![Poly::zero(); size]; size];
+    for r in 0..n {
+        for (i, c) in fc.iter().enumerate() {
+            // highest power first
+            rows[r][r + m - i] = c.clone();
+        }
+    }
+    for r in 0..m {
+        for (i, c) in gc.iter().enumerate() {
+            rows[n + r][r + n - i] = c.clone();
+        }
+    }
+    det_bareiss(rows)
+}
+
+/// The discriminant of a binary form of degree `d ≥ 2` up to a nonzero integer factor:
+/// `Res(∂F/∂λ, ∂F/∂μ)`, which vanishes at `t₀` exactly when `F(t₀)` has a repeated root in
+/// `ℙ¹` (or is zero). `None` for `d < 2` (no condition).
+pub(crate) fn discriminant_form(f: &Form) -> Option<Poly> {
+    let d = f.degree;
+    if d < 2 {
+        return None;
+    }
+    let c = f.coefficients();
+    let dl: Vec<Poly> = (1..=d).map(|i| c[i].scale(&IBig::from(i))).collect();
+    let dm: Vec<Poly> = (0..d).map(|i| c[i].scale(&IBig::from(d - i))).collect();
+    let fl = Form {
+        chart: Poly::new(dl),
+        degree: d - 1,
+    };
+    let fm = Form {
+        chart: Poly::new(dm),
+        degree: d - 1,
+    };
+    Some(resultant_forms(&fl, &fm))
+}
+
+/// The entries `λ·A(t) − B(t)` of the pencil's chart.
+pub(crate) fn pencil_entries(a: &[[Poly; 4]; 4], b: &[[Poly; 4]; 4]) -> [[TPoly; 4]; 4] {
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| Poly::new(vec![b[i][j].neg(), a[i][j].clone()]))
+    })
+}
+
+/// All `k×k` minors of a 4×4 matrix over `ℤ[t][λ]`.
+pub(crate) fn minors(m: &[[TPoly; 4]; 4], k: usize) -> Vec<TPoly> {
+    let subsets: Vec<Vec<usize>> = (0u8..16)
+        .filter(|s| s.count_ones() as usize == k)
+        .map(|s| (0..4).filter(|i| s >> i & 1 == 1).collect())
+        .collect();
+    let mut out = Vec::with_capacity(subsets.len() * subsets.len());
+    for rows in &subsets {
+        for cols in &subsets {
+            let sub: Vec<Vec<TPoly>> = rows
+                .iter()
+                .map(|&i| cols.iter().map(|&j| m[i][j].clone()).collect())
+                .collect();
+            out.push(det_bareiss(sub));
+        }
+    }
+    out
+}
+
+/// Polynomials in `t` vanishing wherever the gcd of the `k×k` minors (forms of degree `k`)
+/// specialised at `t₀` has more roots than the generic gcd `D_k` specialised: the quotients
+/// `mⱼ/D_k` then share a root at `t₀`. Two integer combinations of the quotients share it too,
+/// so their resultant vanishes there; combinations are tried until the resultant is nonzero.
+/// `Err` if every tried pair has a zero resultant (not expected for coprime quotients).
+pub(crate) fn rank_conditions(minors: &[TPoly], k: usize) -> Result<Vec<Poly>, String> {
+    let nonzero: Vec<&TPoly> = minors.iter().filter(|m| !m.is_zero()).collect();
+    if nonzero.is_empty() {
+        return Ok(Vec::new());
+    }
+    let mut g = TPoly::zero();
+    let mut mu = k;
+    for m in &nonzero {
+        g = g.gcd_domain(m);
+        mu = mu.min(k - m.degree().unwrap_or(0));
+    }
+    let g = t_primitive(&g);
+    let e = k - g.degree().unwrap_or(0) - mu;
+    let quotients: Vec<TPoly> = nonzero
+        .iter()
+        .map(|m| m.div_exact(&g).expect("the gcd divides each minor (Gauss)"))
+        .collect();
+    if e == 0 {
+        // constants in λ: they share a "root" where they all vanish
+        let mut c = Poly::zero();
+        for q in &quotients {
+            c = c.gcd(&q.coeff(0));
+        }
+        return Ok(vec![c]);
+    }
+    let combination = |s: i64| {
+        let mut acc = TPoly::zero();
+        let mut w = IBig::ONE;
+        for q in &quotients {
+            acc = &acc + &q.map(|c| c.scale(&w));
+            w *= IBig::from(s);
+        }
+        Form {
+            chart: acc,
+            degree: e,
+        }
+    };
+    // Each pair's resultant may have extra roots (where just those two combinations meet);
+    // the gcd over three pairs keeps the common ones.
+    let mut g = Poly::zero();
+    let mut found = 0;
+    for (s1, s2) in [(1, 2), (-3, 5), (7, -2), (4, 11), (-5, -9), (13, 6)] {
+        let r = resultant_forms(&combination(s1), &combination(s2));
+        if !r.is_zero() {
+            g = g.gcd(&r);
+            found += 1;
+            if found == 3 {
+                break;
+            }
+        }
+    }
+    if found == 0 {
+        return Err(format!("no separating combination of the {k}×{k} minors"));
+    }
+    Ok(vec![g])
+}

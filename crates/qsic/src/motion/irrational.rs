@@ -1,0 +1,389 @@
+//! The class of a regular pencil at an irrational instant `t = α`, exactly, in `K = ℚ(α)`.
+//!
+//! The same analysis as [`crate::pencil`], with coefficients in `K` (dynamic evaluation,
+//! exact signs): `f(λ; α)` split into square-free pieces of equal multiplicity and equal
+//! orders in `D₁, D₂, D₃` (gcds over `K[λ]` of the minors); the real roots of their product
+//! isolated by Sturm sequences over `K` and bisection; the inertia at multiple roots from the
+//! signs of the principal-minor sums `E_k` there (Sturm–Tarski queries over `K`), on arcs at
+//! rational samples, at simple roots from the neighbouring arcs. Singular and single pencils
+//! at `α` are not handled here (`None`).
+
+use super::instants::TPoly;
+use crate::classify::{classify_regular_parts, Classification};
+use crate::pencil::SigItem;
+use qsic_algebra::field::number_field::{NumberField, NumberFieldElement as K};
+use qsic_algebra::linalg::minors::det_bareiss;
+use qsic_algebra::matrix::Inertia;
+use qsic_algebra::{AlgebraicReal, Field, IBig, Poly, RBig, Ring, Sign};
+
+/// Bisection steps allowed for isolating the roots (distinct roots of a quartic over `K`).
+const MAX_STEPS: usize = 20_000;
+
+type KPoly = Poly<K>;
+
+/// The classification of `λA(α) − B(α)` for a regular pencil at `α`; `None` when the pencil
+/// at `α` is singular or a single quadric, or the isolation exceeds its budget.
+pub(crate) fn classify_at_irrational(
+    entries: &[[TPoly; 4]; 4],
+    alpha: &AlgebraicReal,
+) -> Option<Classification> {
+    let field = NumberField::new(alpha);
+    let e: [[KPoly; 4]; 4] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| entries[i][j].map(|c| field.integer_element(c)))
+    });
+    let a: Vec<K> = e.iter().flatten().map(|p| p.coeff(1)).collect();
+    let b: Vec<K> = e.iter().flatten().map(|p| p.coeff(0)).collect();
+    if a.iter().all(Ring::is_zero) || b.iter().all(Ring::is_zero) || proportional(&a, &b) {
+        return None;
+    }
+    let rows = |sel: &[usize]| -> Vec<Vec<KPoly>> {
+        sel.iter()
+            .map(|&i| sel.iter().map(|&j| e[i][j].clone()).collect())
+            .collect()
+    };
+    let f = det_bareiss(rows(&[0, 1, 2, 3]));
+    if f.is_zero() {
+        return None;
+    }
+    let m_inf = 4 - f.degree().unwrap_or(0);
+    let decomposition = f.squarefree_decomposition_field();
+    let simple = m_inf <= 1 && decomposition.iter().all(|(_, m)| *m == 1);
+
+    // D_k over K[λ] (monic chart) and its multiplicity at ∞, k = 1, 2, 3.
+    let mut d: Vec<(KPoly, usize)> = Vec::new();
+    if !simple {
+        for k in 1..=3 {
+            let mut g = KPoly::zero();
+            let mut mu = k;
+            for m in all_minors(&e, k) {
+                if !m.is_zero() {
+                    mu = mu.min(k - m.degree().unwrap_or(0));
+                    g = g.gcd_monic(&m);
+                }
+            }
+            d.push((g, mu));
+        }
+    }
+
+    // Pieces: (square-free chart, multiplicity, orders in D₁..D₃).
+    let mut pieces: Vec<(KPoly, usize, [usize; 3])> = Vec::new();
+    for (g, m) in decomposition {
+        let mut split = vec![(g, [0usize; 3])];
+        for (k, (dk, _)) in d.iter().enumerate() {
+            let mut next = Vec::new();
+            for (p, ords) in split {
+                for (h, j) in split_by_order(&p, dk) {
+                    let mut o = ords;
+                    o[k] = j;
+                    next.push((h, o));
+                }
+            }
+            split = next;
+        }
+        for (p, o) in split {
+            pieces.push((p, m, o));
+        }
+    }
+    let product = pieces
+        .iter()
+        .fold(KPoly::constant(K::one()), |acc, (p, _, _)| &acc * p);
+    let roots = isolate(&product)?;
+    let sturms: Vec<Vec<KPoly>> = pieces.iter().map(|(p, _, _)| sturm(p, None)).collect();
+    let principal = principal_minor_sums(&e);
+
+    let mut real: Vec<(usize, Option<Inertia>)> = Vec::new(); // (piece, inertia if multiple)
+    for root in &roots {
+        let piece = (0..pieces.len()).find(|&i| match root {
+            Root::Exact(x) => pieces[i].0.eval(&K::rational(x.clone())).is_zero(),
+            Root::Open(lo, hi) => variations(&sturms[i], lo) > variations(&sturms[i], hi),
+        })?;
+        let inertia = (pieces[piece].1 > 1).then(|| {
+            let signs = principal
+                .each_ref()
+                .map(|q| sign_at_root(&product, q, root));
+            Inertia::from_minor_sum_signs(signs)
+        });
+        real.push((piece, inertia));
+    }
+    let samples = arc_samples(&product, &roots)?;
+    let arcs: Vec<Inertia> = samples
+        .iter()
+        .map(|x| {
+            let x = K::rational(x.clone());
+            Inertia::from_minor_sum_signs(principal.each_ref().map(|q| q.eval(&x).sign()))
+        })
+        .collect();
+
+    let mut real_blocks: Vec<Vec<u8>> = Vec::new();
+    let mut complex_blocks: Vec<Vec<u8>> = Vec::new();
+    let mut seq = vec![SigItem::Interval(arcs[0].positive)];
+    for (i, (piece, inertia)) in real.iter().enumerate() {
+        let (_, m, o) = &pieces[*piece];
+        real_blocks.push(blocks_from_orders(*m, *o));
+        let inertia = inertia.unwrap_or(Inertia {
+            positive: arcs[i].positive.min(arcs[i + 1].positive),
+            negative: arcs[i].negative.min(arcs[i + 1].negative),
+            zero: 1,
+        });
+        seq.push(SigItem::Root {
+            p: inertia.positive,
+            n: inertia.negative,
+            mult: *m as u8,
+        });
+        seq.push(SigItem::Interval(arcs[i + 1].positive));
+    }
+    for (i, (p, m, o)) in pieces.iter().enumerate() {
+        let nreal = real.iter().filter(|(j, _)| *j == i).count();
+        for _ in nreal..p.degree().unwrap_or(0) {
+            complex_blocks.push(blocks_from_orders(*m, *o));
+        }
+    }
+    if m_inf > 0 {
+        let ords = if d.is_empty() {
+            [0; 3]
+        } else {
+            [d[0].1, d[1].1, d[2].1]
+        };
+        real_blocks.push(blocks_from_orders(m_inf, ords));
+        // the member A(α): the signs of E_k(A) are the λ^k coefficients of E_k(λ)
+        let signs: [Sign; 4] = std::array::from_fn(|k| principal[k].coeff(k + 1).sign());
+        let inertia = Inertia::from_minor_sum_signs(signs);
+        seq.push(SigItem::Root {
+            p: inertia.positive,
+            n: inertia.negative,
+            mult: m_inf as u8,
+        });
+        seq.push(SigItem::Interval(4 - arcs[0].positive));
+    }
+    let structures = real_blocks
+        .iter()
+        .map(Vec::as_slice)
+        .chain(complex_blocks.iter().map(Vec::as_slice));
+    Some(classify_regular_parts(structures, real_blocks.len(), seq))
+}
+
+/// `a ∝ b` (both nonzero vectors).
+fn proportional(a: &[K], b: &[K]) -> bool {
+    (0..a.len()).all(|i| (0..a.len()).all(|j| a[i].mul(&b[j]).sub(&a[j].mul(&b[i])).is_zero()))
+}
+
+fn all_minors(e: &[[KPoly; 4]; 4], k: usize) -> Vec<KPoly> {
+    let subsets: Vec<Vec<usize>> = (0u8..16)
+        .filter(|s| s.count_ones() as usize == k)
+        .map(|s| (0..4).filter(|i| s >> i & 1 == 1).collect())
+        .collect();
+    let mut out = Vec::new();
+    for r in &subsets {
+        for c in &subsets {
+            out.push(det_bareiss(
+                r.iter()
+                    .map(|&i| c.iter().map(|&j| e[i][j].clone()).collect())
+                    .collect(),
+            ));
+        }
+    }
+    out
+}
+
+/// `E_k(λ)`, the sums of the principal `k×k` minors, `k = 1..4`.
+fn principal_minor_sums(e: &[[KPoly; 4]; 4]) -> [KPoly; 4] {
+    std::array::from_fn(|k| {
+        let mut sum = KPoly::zero();
+        for s in (0u8..16).filter(|s| s.count_ones() as usize == k + 1) {
+            let sel: Vec<usize> = (0..4).filter(|i| s >> i & 1 == 1).collect();
+            let m = det_bareiss(
+                sel.iter()
+                    .map(|&i| sel.iter().map(|&j| e[i][j].clone()).collect())
+                    .collect(),
+            );
+            sum = &sum + &m;
+        }
+        sum
+    })
+}
+
+/// Splits the square-free `p` into the parts whose roots have order `j` in `d`.
+fn split_by_order(p: &KPoly, d: &KPoly) -> Vec<(KPoly, usize)> {
+    let mut out = Vec::new();
+    let mut rest = p.clone();
+    if !d.is_zero() {
+        for (dj, j) in d.squarefree_decomposition_field() {
+            let h = rest.gcd_monic(&dj);
+            if h.degree().unwrap_or(0) > 0 {
+                rest = rest.div_rem(&h).0;
+                out.push((h, j));
+            }
+        }
+    }
+    if rest.degree().unwrap_or(0) > 0 {
+        out.push((rest, 0));
+    }
+    out
+}
+
+/// Jordan block sizes from the orders of a root in `D₁, D₂, D₃` and in `f = D₄`.
+fn blocks_from_orders(m: usize, ords: [usize; 3]) -> Vec<u8> {
+    let mut e: Vec<u8> = Vec::with_capacity(4);
+    let mut prev = 0;
+    for v in [ords[0], ords[1], ords[2], m] {
+        let x = v.saturating_sub(prev);
+        if x > 0 {
+            e.push(x as u8);
+        }
+        prev = v;
+    }
+    e.sort_unstable_by(|a, b| b.cmp(a));
+    e
+}
+
+/// The signed remainder sequence of `p` and `p′·q` (`q = 1` without `q`): a Sturm sequence,
+/// or the Sturm–Tarski sequence of `q` on the roots of `p`.
+fn sturm(p: &KPoly, q: Option<&KPoly>) -> Vec<KPoly> {
+    let second = match q {
+        Some(q) => &p.derivative() * q,
+        None => p.derivative(),
+    };
+    let mut seq = vec![p.clone()];
+    let mut next = second;
+    while !next.is_zero() {
+        let r = seq.last().expect("nonempty").rem(&next);
+        seq.push(next);
+        next = -&r;
+    }
+    seq
+}
+
+/// Sign changes of the sequence at a rational `x`.
+fn variations(seq: &[KPoly], x: &RBig) -> usize {
+    let x = K::rational(x.clone());
+    qsic_algebra::sign::count_variations(seq.iter().map(|p| p.eval(&x).sign()))
+}
+
+/// A real root of the square-free product: exact, or alone in `(lo, hi)` with neither end a root.
+enum Root {
+    Exact(RBig),
+    Open(RBig, RBig),
+}
+
+/// The real roots of the square-free `p ∈ K[λ]`, increasing: bisection of `(−B, B]` with
+/// Sturm counts (`V(a) − V(b)` roots in `(a, b]`). `None` past [`MAX_STEPS`].
+fn isolate(p: &KPoly) -> Option<Vec<Root>> {
+    if p.degree().unwrap_or(0) == 0 {
+        return Some(Vec::new());
+    }
+    let seq = sturm(p, None);
+    let bound = RBig::from(root_bound(p)?);
+    let mut work = vec![(-bound.clone(), bound)];
+    let mut out: Vec<Root> = Vec::new();
+    let mut steps = 0;
+    while let Some((lo, hi)) = work.pop() {
+        steps += 1;
+        if steps > MAX_STEPS {
+            return None;
+        }
+        let count = variations(&seq, &lo) - variations(&seq, &hi);
+        if count == 0 {
+            continue;
+        }
+        let hi_root = p.eval(&K::rational(hi.clone())).is_zero();
+        // an open cell must not end at a root (the Sturm–Tarski counts need it): a cell
+        // starting at a neighbour's exact root is split further
+        let lo_root = !hi_root && p.eval(&K::rational(lo.clone())).is_zero();
+        if count == 1 && !lo_root {
+            out.push(if hi_root {
+                Root::Exact(hi)
+            } else {
+                Root::Open(lo, hi)
+            });
+            continue;
+        }
+        let mid = (&lo + &hi) / RBig::from(2);
+        // right half first on the stack so the left pops first? order is fixed by sorting
+        work.push((mid.clone(), hi));
+        work.push((lo, mid));
+    }
+    out.sort_by(|a, b| upper(a).cmp(upper(b)));
+    Some(out)
+}
+
+fn upper(r: &Root) -> &RBig {
+    match r {
+        Root::Exact(x) => x,
+        Root::Open(_, hi) => hi,
+    }
+}
+
+/// `2^k` above the absolute value of every root (Cauchy: `1 + max |aᵢ/aₙ|`), by exact signs.
+fn root_bound(p: &KPoly) -> Option<IBig> {
+    let n = p.degree()?;
+    let lead = p.coeff(n).inv()?;
+    let mut k = 1usize;
+    for i in 0..n {
+        let r = p.coeff(i).mul(&lead);
+        while k < 100_000 {
+            let b = K::rational(RBig::from(IBig::ONE << k));
+            if b.sub(&r).sign() == Sign::Positive && b.add(&r).sign() == Sign::Positive {
+                break;
+            }
+            k += 1;
+        }
+    }
+    Some(IBig::ONE << (k + 1))
+}
+
+/// The sign of `q` at the root of the square-free `p`.
+fn sign_at_root(p: &KPoly, q: &KPoly, root: &Root) -> Sign {
+    match root {
+        Root::Exact(x) => q.eval(&K::rational(x.clone())).sign(),
+        Root::Open(lo, hi) => {
+            let seq = sturm(p, Some(q));
+            let t = variations(&seq, lo) as i64 - variations(&seq, hi) as i64;
+            match t {
+                0 => Sign::Zero,
+                t if t > 0 => Sign::Positive,
+                _ => Sign::Negative,
+            }
+        }
+    }
+}
+
+/// One rational left of the first root, between each two, right of the last (`0` without).
+fn arc_samples(p: &KPoly, roots: &[Root]) -> Option<Vec<RBig>> {
+    let (Some(first), Some(last)) = (roots.first(), roots.last()) else {
+        return Some(vec![RBig::ZERO]);
+    };
+    let lower = |r: &Root| match r {
+        Root::Exact(x) => x.clone(),
+        Root::Open(lo, _) => lo.clone(),
+    };
+    let mut out = vec![lower(first) - RBig::ONE];
+    let seq = sturm(p, None);
+    for w in roots.windows(2) {
+        match (&w[0], &w[1]) {
+            // cells are disjoint: the end of an open cell is not a root and the next root
+            // lies beyond it
+            (Root::Open(_, hi), _) => out.push(hi.clone()),
+            (Root::Exact(x), Root::Exact(y)) => out.push((x + y) / RBig::from(2)),
+            (Root::Exact(x), Root::Open(lo, hi)) => {
+                // the next root is in (lo, hi] and above x: shrink its cell until lo > x
+                let (mut lo, mut hi) = (lo.clone(), hi.clone());
+                let mut steps = 0;
+                while lo <= *x {
+                    steps += 1;
+                    if steps > MAX_STEPS {
+                        return None;
+                    }
+                    let mid = (&lo + &hi) / RBig::from(2);
+                    if variations(&seq, &lo) == variations(&seq, &mid) {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                out.push((x + &lo) / RBig::from(2));
+            }
+        }
+    }
+    out.push(upper(last) + RBig::ONE);
+    Some(out)
+}

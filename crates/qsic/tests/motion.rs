@@ -1,0 +1,254 @@
+//! Moving quadrics: the instants and types of `moving.jsonl` (which correct the paper), and
+//! constructed motions whose instants are known by hand.
+
+use qsic::io::{moving_matrix_from_polynomial, moving_matrix_from_rows, MovingMatrix};
+use qsic::motion::{InstantType, Motion, MotionType, MovingPencil};
+use qsic_algebra::{AlgebraicReal, Poly, RBig};
+use serde_json::Value;
+
+fn rational(text: &str) -> RBig {
+    let (n, d) = text.split_once('/').unwrap_or((text, "1"));
+    RBig::from_parts_signed(n.trim().parse().unwrap(), d.trim().parse().unwrap())
+}
+
+fn matrix(v: &Value) -> MovingMatrix {
+    let rows: Vec<Vec<String>> = v
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| {
+            r.as_array()
+                .unwrap()
+                .iter()
+                .map(|e| e.as_str().unwrap().to_string())
+                .collect()
+        })
+        .collect();
+    moving_matrix_from_rows(&rows).unwrap()
+}
+
+/// A polynomial in `t` read through the moving-quadric reader (as the coefficient of `x²`).
+fn poly_in_t(text: &str) -> Poly {
+    let m = moving_matrix_from_polynomial(&format!("({text})*x^2")).unwrap();
+    m.numerators()[0][0].clone()
+}
+
+/// The recorded type of an instant or interval.
+fn recorded_type(v: &Value) -> (String, Option<u64>, String, String) {
+    (
+        v["pencil"].as_str().unwrap().to_string(),
+        v["case"].as_u64(),
+        v["complex_type"].as_str().unwrap().to_string(),
+        v["real_type"].as_str().unwrap().to_string(),
+    )
+}
+
+fn our_type(t: MotionType) -> (String, Option<u64>, String, String) {
+    (
+        t.pencil.to_string(),
+        t.case.map(u64::from),
+        t.complex_type.unwrap().to_string(),
+        t.real_type.unwrap().to_string(),
+    )
+}
+
+/// The recorded instant `v` is `t`: equal rationals, or the same polynomial (up to sign) and
+/// an isolating interval containing the recorded approximation.
+fn assert_same_instant(v: &Value, t: &AlgebraicReal, id: &str) {
+    if let Some(s) = v.as_str() {
+        assert_eq!(t.as_rational(), Some(&rational(s)), "{id}: instant {s}");
+        return;
+    }
+    assert!(t.as_rational().is_none(), "{id}: {t} should be irrational");
+    let want = poly_in_t(v["poly"].as_str().unwrap());
+    let got = t.poly().primitive_part();
+    assert!(
+        got == want || got == -&want,
+        "{id}: polynomial {got}, want {want}"
+    );
+    let x: f64 = v["approx"].as_str().unwrap().parse().unwrap();
+    let iv = t.interval();
+    assert!(
+        iv.lo().to_f64().value() <= x && x <= iv.hi().to_f64().value(),
+        "{id}: {x} outside {iv:?}"
+    );
+}
+
+fn corpus() -> Vec<Value> {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/moving.jsonl");
+    std::fs::read_to_string(path)
+        .unwrap()
+        .lines()
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
+
+/// Every example of the corpus: the same instants, the same type on every interval and at
+/// every instant (irrational ones classified in ℚ(α)).
+#[test]
+fn corpus_instants_and_types() {
+    for d in corpus() {
+        let id = d["id"].as_str().unwrap();
+        let pencil = MovingPencil::new(matrix(&d["A"]), matrix(&d["B"]));
+        let motion = pencil.variations().unwrap();
+        let want_instants = d["instants"].as_array().unwrap();
+        assert_eq!(
+            motion.instants.len(),
+            want_instants.len(),
+            "{id}: {motion:?}"
+        );
+        for (w, got) in want_instants.iter().zip(&motion.instants) {
+            assert_same_instant(&w["t"], &got.t, id);
+            let InstantType::Exact(c) = &got.class else {
+                panic!("{id}: instant {} not classified", got.t);
+            };
+            assert_eq!(
+                our_type(MotionType::of(c)),
+                recorded_type(w),
+                "{id} at {}",
+                got.t
+            );
+        }
+        let want_intervals = d["intervals"].as_array().unwrap();
+        assert_eq!(motion.intervals.len(), want_intervals.len(), "{id}");
+        for (w, got) in want_intervals.iter().zip(&motion.intervals) {
+            let c = &got.classification;
+            assert_eq!(
+                our_type(MotionType::of(c)),
+                recorded_type(w),
+                "{id} at {}",
+                got.sample
+            );
+            // the interval's ends are the neighbouring instants
+            for (end, key) in [(&got.from, "from"), (&got.to, "to")] {
+                match end {
+                    None => assert!(w[key].is_null(), "{id}: {key}"),
+                    Some(t) => assert_same_instant(&w[key], t, id),
+                }
+            }
+            // its sample lies inside it
+            assert!(got
+                .from
+                .as_ref()
+                .is_none_or(|a| *a < AlgebraicReal::from_rational(got.sample.clone())));
+            assert!(got
+                .to
+                .as_ref()
+                .is_none_or(|b| AlgebraicReal::from_rational(got.sample.clone()) < *b));
+        }
+    }
+}
+
+/// The square-free part of `f(λ; t)` over ℚ(t) (λ-gcd with the derivative), its
+/// discriminant by the library's resultant (an independent route from the motion module's
+/// Sylvester determinants), times the leading coefficient and the t-content of `f`.
+fn collision_polynomial(p: &MovingPencil) -> Poly {
+    let f = p.characteristic();
+    let g = f.gcd_domain(&f.derivative());
+    // g primitive over ℤ[t], so that it divides f (Gauss)
+    let c = g.coeffs().iter().fold(Poly::zero(), |a, b| a.gcd(b));
+    let g = g.map(|v| v.div_exact(&c).unwrap());
+    let k = Poly::new(g.coeffs().iter().map(Poly::content).collect()).content();
+    let g = g.map(|v| v.div_exact(&Poly::constant(k.clone())).unwrap());
+    let sf = f.div_exact(&g).unwrap();
+    let content = f.coeffs().iter().fold(Poly::zero(), |a, b| a.gcd(b));
+    &(&sf.resultant(&sf.derivative()) * &sf.leading()) * &content
+}
+
+/// Two spheres, radius 2 fixed at the origin and radius 1 centred at `(t, 0, 0)`: instants
+/// ±3 (external tangency), ±1 (internal tangency), 0 (concentric); a real circle for
+/// 1 < |t| < 3, nothing real outside; the motion is symmetric under `t ↦ −t` (the mirror
+/// `x ↦ −x`), so the types are too.
+#[test]
+fn sphere_through_sphere() {
+    let a = moving_matrix_from_polynomial("x^2 + y^2 + z^2 - 4").unwrap();
+    let b = moving_matrix_from_polynomial("(x - t)^2 + y^2 + z^2 - 1").unwrap();
+    let pencil = MovingPencil::new(a, b);
+    let motion = pencil.variations().unwrap();
+    let ts: Vec<RBig> = motion
+        .instants
+        .iter()
+        .map(|i| i.t.as_rational().expect("rational instants").clone())
+        .collect();
+    assert_eq!(ts, [-3, -1, 0, 1, 3].map(RBig::from).to_vec(), "{motion:?}");
+    assert_symmetric(&motion);
+    // 1 < t < 3: two spheres meeting in a circle (case 17, one real conic)
+    let circle = &motion.intervals[4].classification;
+    assert_eq!(circle.case, Some(17));
+    assert_eq!(circle.real_type(), Some("one_conic"));
+    assert_ne!(
+        MotionType::of(&motion.intervals[5].classification),
+        MotionType::of(circle)
+    );
+    let collisions = collision_polynomial(&pencil);
+    for i in &motion.instants {
+        assert!(i.t.is_root_of(&collisions), "{}", i.t);
+    }
+}
+
+/// The types of a motion symmetric under `t ↦ −t` mirror each other.
+fn assert_symmetric(m: &Motion) {
+    let n = m.instants.len();
+    for k in 0..n {
+        let (a, b) = (&m.instants[k], &m.instants[n - 1 - k]);
+        assert_eq!(
+            a.class.classification().map(MotionType::of),
+            b.class.classification().map(MotionType::of)
+        );
+    }
+    let n = m.intervals.len();
+    for k in 0..n {
+        assert_eq!(
+            MotionType::of(&m.intervals[k].classification),
+            MotionType::of(&m.intervals[n - 1 - k].classification)
+        );
+    }
+}
+
+/// The same motion with the fixed sphere of radius √2: the instants move to the irrational
+/// ±(√2 ± 1) (roots of t⁴ − 6t² + 1) and 0, and every type — on the intervals and at the
+/// irrational instants, classified in ℚ(α) — is the one of the rational motion above.
+#[test]
+fn sphere_through_sphere_irrational_instants() {
+    let rational = MovingPencil::new(
+        moving_matrix_from_polynomial("x^2 + y^2 + z^2 - 4").unwrap(),
+        moving_matrix_from_polynomial("(x - t)^2 + y^2 + z^2 - 1").unwrap(),
+    )
+    .variations()
+    .unwrap();
+    let pencil = MovingPencil::new(
+        moving_matrix_from_polynomial("x^2 + y^2 + z^2 - 2").unwrap(),
+        moving_matrix_from_polynomial("(x - t)^2 + y^2 + z^2 - 1").unwrap(),
+    );
+    let motion = pencil.variations().unwrap();
+    assert_eq!(motion.instants.len(), 5);
+    let quartic = Poly::from_i64s(&[1, 0, -6, 0, 1]);
+    let approx = [
+        -1.0 - 2f64.sqrt(),
+        1.0 - 2f64.sqrt(),
+        0.0,
+        2f64.sqrt() - 1.0,
+        1.0 + 2f64.sqrt(),
+    ];
+    for ((i, r), x) in motion.instants.iter().zip(&rational.instants).zip(approx) {
+        if x == 0.0 {
+            assert_eq!(i.t.as_rational(), Some(&RBig::ZERO));
+        } else {
+            assert!(
+                i.t.is_root_of(&quartic) && (i.t.to_f64() - x).abs() < 1e-9,
+                "{}",
+                i.t
+            );
+        }
+        let (InstantType::Exact(a), InstantType::Exact(b)) = (&i.class, &r.class) else {
+            panic!("unclassified instant {}", i.t);
+        };
+        assert_eq!(MotionType::of(a), MotionType::of(b), "at {}", i.t);
+        assert_eq!(a.segre, b.segre);
+        assert_eq!(a.index_sequence, b.index_sequence);
+    }
+    for (i, r) in motion.intervals.iter().zip(&rational.intervals) {
+        assert_eq!(i.classification, r.classification);
+    }
+}
