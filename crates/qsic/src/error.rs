@@ -94,4 +94,12 @@ pub enum Error {
     /// An invalid parameter of a shape constructor (e.g. a non-positive squared radius).
     #[error("invalid shape parameter: {0}")]
     InvalidShape(String),
+    /// A parameterization this version cannot give: the class is not covered yet, or the
+    /// sub-case needs an algebraic parameterization surface or a biquadratic field. Says which.
+    #[error("parameterization not available: {0}")]
+    Unsupported(String),
+    /// An exact algebra step failed within its documented bounds (e.g. factoring in
+    /// Legendre's theorem), or an internal consistency check of the parameterization.
+    #[error("algebra: {0}")]
+    Algebra(String),
 }

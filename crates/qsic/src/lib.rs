@@ -7,6 +7,7 @@
 //! | [`shapes`] | constructors for spheres, cylinders, cones, … from rational parameters |
 //! | [`pencil`] | the pencil `λA − μB`: characteristic form, real roots, Segre structure, inertia |
 //! | [`mod@classify`] | [`classify()`]: regular (35 cases), singular and single pencils |
+//! | [`param`] | Levin's parameterization `a(u) ± d(u)√s(u)` of a nonsingular quartic, exactly; Theorem 12 |
 //! | [`limits`] | documented bounds on untrusted input |
 //!
 //! ```
@@ -24,6 +25,7 @@ pub mod classify;
 pub mod error;
 pub mod io;
 pub mod limits;
+pub mod param;
 pub mod pencil;
 pub mod quadric;
 pub mod shapes;
