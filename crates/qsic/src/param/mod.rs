@@ -56,10 +56,13 @@ pub struct DiscriminantRoots {
     pub roots: Vec<AlgebraicReal>,
     /// `u = ∞` is a root (`deg s < 4`).
     pub at_infinity: bool,
+    /// `s` has no multiple finite root (`gcd(s, s′) = 1`).
+    pub squarefree: bool,
     /// A rational sample of each open interval between consecutive finite roots and the sign
     /// of `s` there: `arcs[0]` left of the first root, `arcs[i]` right of root `i − 1`
-    /// (one arc when there is no finite root). `s ≥ 0` exactly on the closures of the
-    /// positive arcs: the real branches.
+    /// (one arc when there is no finite root); unless `u = ∞` is a root, the first and the
+    /// last are one arc through ∞. `s ≥ 0` exactly on the closures of the positive arcs:
+    /// the `u`-intervals of the real branches.
     pub arcs: Vec<(RBig, Sign)>,
 }
 
@@ -103,8 +106,7 @@ impl LevinParameterization {
     pub fn real_components(&self) -> Result<u8, Error> {
         let s = &self.s;
         let deg = s.degree().unwrap_or(0);
-        let finite_simple = s.gcd_monic(&s.derivative()).degree() == Some(0);
-        if deg < 3 || !finite_simple {
+        if deg < 3 || !self.discriminant.squarefree {
             return Err(Error::Algebra(format!("s(u) = {s} has a multiple root")));
         }
         let dr = &self.discriminant;
@@ -124,8 +126,9 @@ impl LevinParameterization {
 /// quartic (cases 1–4: `det(λA − B)` has four simple roots), with a rational real ruled
 /// surface: a member of inertia (2, 2) at a rational λ of its arc, or a cone at a rational
 /// root. Candidates in order: the pencil analysis' sample of each (2, 2) arc, cones at
-/// rational roots, then more small-height rationals of the (2, 2) arcs; the first with
-/// rational rulings wins, else the least radicand.
+/// rational roots (the first with rational rulings wins, else the least radicand), then,
+/// only if none of these has real rulings over ℚ or a quadratic field, more small-height
+/// rationals of the (2, 2) arcs.
 ///
 /// # Errors
 /// [`Error::Unsupported`] for other classes, when the only real ruled members are cones at
@@ -227,7 +230,8 @@ fn choose_surface(
             PencilPoint::Infinity => candidates.push((None, SurfaceKind::Cone)),
         }
     }
-    // more rationals of the (2, 2) arcs, tried when the first ones give no rational ruling
+    // more rationals of the (2, 2) arcs, tried only when the first ones give no ruling
+    let primary = candidates.len();
     let finite: Vec<&RootInterval> = analysis
         .real_roots
         .iter()
@@ -246,7 +250,10 @@ fn choose_surface(
         }
     }
     let mut best: Option<ParameterizationSurface> = None;
-    for (lambda, kind) in candidates {
+    for (k, (lambda, kind)) in candidates.into_iter().enumerate() {
+        if k >= primary && best.is_some() {
+            break;
+        }
         let matrix = member(a, b, lambda.as_ref());
         let ruling = match kind {
             SurfaceKind::DoublyRuled => parameterize_doubly_ruled(&matrix)?,
@@ -344,8 +351,12 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
         .iter()
         .map(|c| c.as_rational().cloned())
         .collect();
-    let roots = match rational {
-        Some(c) => AlgebraicReal::real_roots_of(&Poly::from_rational(&Poly::new(c)).0),
+    let (roots, squarefree) = match rational {
+        Some(c) => {
+            let p = Poly::from_rational(&Poly::new(c)).0;
+            let squarefree = p.squarefree_part().degree() == p.degree();
+            (AlgebraicReal::real_roots_of(&p), squarefree)
+        }
         None => {
             let conj = s.map(Quadratic::conjugate);
             let norm: Vec<RBig> = (s * &conj)
@@ -354,15 +365,23 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
                 .map(|c| c.as_rational().cloned().expect("a norm is rational"))
                 .collect();
             let sf = Poly::from_rational(&Poly::new(norm)).0.squarefree_part();
-            let chain = sturm_chain(s);
-            isolate_real_roots(&sf)
+            let squarefree = s.gcd_monic(&s.derivative()).degree() == Some(0);
+            // each interval holds one root of s·s̄; a simple root of s there changes its
+            // sign, and a square-free s has no other kind (else count by Sturm)
+            let chain = (!squarefree).then(|| sturm_chain(s));
+            let sign_at = |x: &RBig| sign(&s.eval(&q(x)));
+            let roots = isolate_real_roots(&sf)
                 .into_iter()
-                .filter(|iv| match iv {
-                    RootInterval::Exact(r) => s.eval(&q(r)).is_zero(),
-                    RootInterval::Open(lo, hi) => variations(&chain, lo) > variations(&chain, hi),
+                .filter(|iv| match (iv, &chain) {
+                    (RootInterval::Exact(r), _) => s.eval(&q(r)).is_zero(),
+                    (RootInterval::Open(lo, hi), None) => sign_at(lo) != sign_at(hi),
+                    (RootInterval::Open(lo, hi), Some(chain)) => {
+                        variations(chain, lo) > variations(chain, hi)
+                    }
                 })
                 .filter_map(|iv| AlgebraicReal::from_isolating_interval(&sf, &iv))
-                .collect()
+                .collect();
+            (roots, squarefree)
         }
     };
     let mut samples = Vec::new();
@@ -386,6 +405,59 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
     DiscriminantRoots {
         roots,
         at_infinity: s.degree().unwrap_or(0) < 4,
+        squarefree,
         arcs,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rq(v: i64) -> Quadratic {
+        Quadratic::rational(RBig::from(v))
+    }
+
+    #[test]
+    fn roots_of_s_over_a_quadratic_field_are_those_of_s_not_of_its_conjugate() {
+        // s = (u − √2)(u − 1 − √2)(u² + 1): the norm also vanishes at −√2 and 1 − √2
+        let r2 = Quadratic::sqrt(&IBig::from(2));
+        let lin = |c: Quadratic| Poly::new(vec![c.neg(), rq(1)]);
+        let s = &(&lin(r2.clone()) * &lin(rq(1).add(&r2))) * &Poly::new(vec![rq(1), rq(0), rq(1)]);
+        let d = discriminant_roots(&s);
+        let approx: Vec<f64> = d.roots.iter().map(AlgebraicReal::to_f64).collect();
+        assert_eq!(approx.len(), 2, "{approx:?}");
+        assert!(
+            (approx[0] - 2f64.sqrt()).abs() < 1e-6 && (approx[1] - 1.0 - 2f64.sqrt()).abs() < 1e-6
+        );
+        let signs: Vec<Sign> = d.arcs.iter().map(|(_, s)| *s).collect();
+        assert_eq!(signs, [Sign::Positive, Sign::Negative, Sign::Positive]);
+        assert!(!d.at_infinity);
+        assert!(d.squarefree);
+        // a double root: found by the Sturm chain, flagged
+        let double = &(&lin(r2.clone()) * &lin(r2.clone())) * &Poly::new(vec![rq(1), rq(0), rq(1)]);
+        let d = discriminant_roots(&double);
+        assert!(!d.squarefree && d.roots.len() == 1);
+        assert!((d.roots[0].to_f64() - 2f64.sqrt()).abs() < 1e-6);
+        // a cubic: the fourth root is u = ∞
+        let cubic = &lin(r2.clone()) * &Poly::new(vec![rq(1), rq(0), rq(1)]);
+        let d = discriminant_roots(&cubic);
+        assert!(d.at_infinity && d.roots.len() == 1);
+        // no real root, negative: the sample's sign
+        let d = discriminant_roots(&Poly::new(vec![rq(-1), rq(0), rq(0), rq(0), r2.neg()]));
+        assert!(d.roots.is_empty() && d.arcs == [(RBig::ZERO, Sign::Negative)]);
+    }
+
+    #[test]
+    fn more_samples_stay_inside_the_arc() {
+        let (lo, hi) = (RBig::from(-1), RBig::from(3));
+        for (l, h) in [(Some(&lo), Some(&hi)), (None, Some(&hi)), (Some(&lo), None)] {
+            let xs = more_samples(l, &RBig::ONE, h);
+            assert_eq!(xs.len(), 6);
+            for x in xs {
+                assert!(x != RBig::ONE);
+                assert!(l.is_none_or(|l| &x > l) && h.is_none_or(|h| &x < h), "{x}");
+            }
+        }
     }
 }

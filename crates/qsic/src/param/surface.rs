@@ -321,6 +321,11 @@ pub(crate) fn parameterize_doubly_ruled(
         (e1.clone(), combine(&s22, e1, &two.mul(&s12).neg(), e2))
     } else {
         let disc = s12.mul(&s12).sub(&s11.mul(&s22));
+        if disc.sign() != Some(qsic_algebra::Sign::Positive) {
+            return Err(Error::Algebra(
+                "no real lines through a point of an inertia (2, 2) member".into(),
+            ));
+        }
         let Some(root) = sqrt_in_field(&disc, delta0.as_ref()) else {
             return Ok(None);
         };
