@@ -97,4 +97,12 @@ pub enum Error {
     /// A moving pencil outside what the motion analysis handles (e.g. singular for every `t`).
     #[error("moving pencil not supported: {0}")]
     UnsupportedMotion(String),
+    /// A parameterization this version cannot give: the class is not covered yet, or the
+    /// sub-case needs an algebraic parameterization surface or a biquadratic field. Says which.
+    #[error("parameterization not available: {0}")]
+    Unsupported(String),
+    /// An exact algebra step failed within its documented bounds (e.g. factoring in
+    /// Legendre's theorem), or an internal consistency check of the parameterization.
+    #[error("algebra: {0}")]
+    Algebra(String),
 }

@@ -8,6 +8,7 @@
 //! | [`pencil`] | the pencil `λA − μB`: characteristic form, real roots, Segre structure, inertia |
 //! | [`mod@classify`] | [`classify()`]: regular (35 cases), singular and single pencils |
 //! | [`motion`] | moving quadrics: critical instants and the type between them, exactly |
+//! | [`param`] | Levin's parameterization `a(u) ± d(u)√s(u)` of a nonsingular quartic, exactly; Theorem 12 |
 //! | [`limits`] | documented bounds on untrusted input |
 //!
 //! ```
@@ -26,6 +27,7 @@ pub mod error;
 pub mod io;
 pub mod limits;
 pub mod motion;
+pub mod param;
 pub mod pencil;
 pub mod quadric;
 pub mod shapes;

@@ -1,0 +1,463 @@
+//! Levin's parameterization of the intersection curve, exactly (enhanced-Levin paper, §1.3,
+//! Appendix A, Theorem 12). First slice: nonsingular quartics (cases 1–4).
+//!
+//! | entry point | what |
+//! |---|---|
+//! | [`parameterize_smooth_quartic`] | surface `S`, its ruling `b + v·d`, `p(u) = a(u) ± d(u)√s(u)`, the real roots of `s` |
+//! | [`LevinParameterization::real_components`] | Theorem 12: the number of real components from the roots of `s` |
+//!
+//! With `S` a real ruled member of the pencil parameterized as `q(u, v) = b(u) + v·d(u)`,
+//! substituting `q` into a second member `Q` gives `c₂v² + 2c₁v + c₀ = 0`, `c₂ = dᵀQd`,
+//! `c₁ = bᵀQd`, `c₀ = bᵀQb`, hence `p(u) = a(u) ± d(u)√s(u)` with `a = c₂b − c₁d` and
+//! `s = c₁² − c₀c₂`; identically `aᵀQa + s·dᵀQd = 0` and `aᵀQd = 0` for every member `Q`.
+//! `u` runs over ℝ ∪ {∞}: `s` is a binary quartic, its degree drop a root at `u = ∞`.
+
+mod surface;
+
+pub use surface::{PolyVector, RuledParameterization};
+
+use crate::classify::analyze_pencil;
+use crate::error::Error;
+use crate::pencil::{PencilAnalysis, PencilPoint};
+use crate::quadric::Quadric;
+use qsic_algebra::field::Quadratic;
+use qsic_algebra::roots::{isolate_real_roots, simplest_between, RootInterval};
+use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring, Sign};
+use surface::{parameterize_cone, parameterize_doubly_ruled, poly_form, q, to_quadratic};
+
+/// The kind of a real ruled member of the pencil.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SurfaceKind {
+    /// Nonsingular of inertia (2, 2): a hyperboloid of one sheet or a hyperbolic paraboloid.
+    DoublyRuled,
+    /// Rank 3 and indefinite: a cone or a cylinder (vertex at infinity).
+    Cone,
+}
+
+/// The parameterization surface: a real ruled member `S` of the pencil and its ruling.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ParameterizationSurface {
+    /// `S = λA − B` for `Some(λ)`, `S = A` for `None` (λ = ∞), with `A`, `B` the primitive
+    /// integer matrices of the quadrics ([`Quadric::integer_matrix`]). Rational in this slice.
+    pub lambda: Option<RBig>,
+    /// The matrix of `S`.
+    pub matrix: [[RBig; 4]; 4],
+    /// Doubly ruled or a cone.
+    pub kind: SurfaceKind,
+    /// `q(u, v) = b(u) + v·d(u)` with `qᵀSq ≡ 0`.
+    pub ruling: RuledParameterization,
+}
+
+/// The real roots of `s(u)` on ℝ ∪ {∞} and its sign between them.
+#[derive(Clone, Debug)]
+pub struct DiscriminantRoots {
+    /// The distinct finite real roots, increasing. Over ℚ(√δ) each is given as a root of the
+    /// square-free part of the norm `s·s̄ ∈ ℚ[u]` with an interval isolating it there.
+    pub roots: Vec<AlgebraicReal>,
+    /// `u = ∞` is a root (`deg s < 4`).
+    pub at_infinity: bool,
+    /// `s` has no multiple finite root (`gcd(s, s′) = 1`).
+    pub squarefree: bool,
+    /// A rational sample of each open interval between consecutive finite roots and the sign
+    /// of `s` there: `arcs[0]` left of the first root, `arcs[i]` right of root `i − 1`
+    /// (one arc when there is no finite root); unless `u = ∞` is a root, the first and the
+    /// last are one arc through ∞. `s ≥ 0` exactly on the closures of the positive arcs:
+    /// the `u`-intervals of the real branches.
+    pub arcs: Vec<(RBig, Sign)>,
+}
+
+/// Which input quadric was substituted into the ruling (the other member spanning the pencil
+/// with `S`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Substituted {
+    /// `A` (whenever `S = λA − B` with finite λ).
+    A,
+    /// `B` (when `S = A`).
+    B,
+}
+
+/// Levin's parameterization `p(u) = a(u) ± d(u)√s(u)` of a nonsingular quartic.
+#[derive(Clone, Debug)]
+pub struct LevinParameterization {
+    /// The parameterization surface.
+    pub surface: ParameterizationSurface,
+    /// The quadric substituted into `q(u, v)`.
+    pub substituted: Substituted,
+    /// `a(u) = c₂b − c₁d`.
+    pub a: PolyVector,
+    /// `d(u)`, the ruling's second generating curve.
+    pub d: PolyVector,
+    /// `s(u) = c₁² − c₀c₂`, a binary quartic in the chart `t = 1`.
+    pub s: Poly<Quadratic>,
+    /// The radicand `δ` when the coefficients are in ℚ(√δ), `None` over ℚ.
+    pub delta: Option<IBig>,
+    /// The real roots of `s` and its signs.
+    pub discriminant: DiscriminantRoots,
+}
+
+impl LevinParameterization {
+    /// The number of real connected components of the (nonsingular) curve by Theorem 12:
+    /// four simple real roots of `s` on ℝ ∪ {∞} — two; two — one; none and `s > 0` — two;
+    /// `s < 0` everywhere — none.
+    ///
+    /// # Errors
+    /// [`Error::Algebra`] if `s` has a multiple root or an odd number of real roots: the
+    /// curve is not a nonsingular quartic (an internal inconsistency for cases 1–4).
+    pub fn real_components(&self) -> Result<u8, Error> {
+        let s = &self.s;
+        let deg = s.degree().unwrap_or(0);
+        if deg < 3 || !self.discriminant.squarefree {
+            return Err(Error::Algebra(format!("s(u) = {s} has a multiple root")));
+        }
+        let dr = &self.discriminant;
+        let n = dr.roots.len() + usize::from(dr.at_infinity);
+        match n {
+            4 => Ok(2),
+            2 => Ok(1),
+            0 => Ok(if dr.arcs[0].1 == Sign::Positive { 2 } else { 0 }),
+            _ => Err(Error::Algebra(format!(
+                "s(u) = {s} has {n} real roots on the projective line"
+            ))),
+        }
+    }
+}
+
+/// Levin's parameterization of the intersection of `a` and `b` when it is a nonsingular
+/// quartic (cases 1–4: `det(λA − B)` has four simple roots), with a rational real ruled
+/// surface: a member of inertia (2, 2) at a rational λ of its arc, or a cone at a rational
+/// root. Candidates in order: the pencil analysis' sample of each (2, 2) arc, cones at
+/// rational roots (the first with rational rulings wins, else the least radicand), then,
+/// only if none of these has real rulings over ℚ or a quadratic field, more small-height
+/// rationals of the (2, 2) arcs.
+///
+/// # Errors
+/// [`Error::Unsupported`] for other classes, when the only real ruled members are cones at
+/// irrational roots, or when every candidate's rulings need a biquadratic field (not yet
+/// implemented); [`Error::Algebra`] when a conic's rational point cannot be found within the
+/// factoring bounds.
+///
+/// # Examples
+/// ```
+/// use qsic::{io::parse_quadric, param::parameterize_smooth_quartic};
+/// // a sphere and an ellipsoidal cylinder: two closed components
+/// let a = parse_quadric("x^2+y^2+z^2-w^2").unwrap();
+/// let b = parse_quadric("2*x^2+4*y^2-w^2").unwrap();
+/// let p = parameterize_smooth_quartic(&a, &b).unwrap();
+/// assert_eq!(p.real_components().unwrap(), 2);
+/// ```
+pub fn parameterize_smooth_quartic(
+    a: &Quadric,
+    b: &Quadric,
+) -> Result<LevinParameterization, Error> {
+    let analysis = analyze_pencil(a, b)
+        .ok_or_else(|| Error::Unsupported("a singular or single pencil".into()))?;
+    let simple = analysis.real_roots.iter().all(|r| r.multiplicity == 1)
+        && analysis.complex_roots.iter().all(|blocks| blocks == &[1])
+        && analysis.real_roots.len() + analysis.complex_roots.len() == 4;
+    if !simple {
+        return Err(Error::Unsupported(
+            "only nonsingular quartics (four simple roots of det(λA − B)) so far".into(),
+        ));
+    }
+    // the pencil analysis works on the primitive integer matrices: so does λ
+    let (am, bm) = (integer_matrix(a), integer_matrix(b));
+    let surface = choose_surface(&am, &bm, &analysis)?;
+    let (qm, substituted) = match surface.lambda {
+        Some(_) => (&am, Substituted::A),
+        None => (&bm, Substituted::B),
+    };
+    let qm = to_quadratic(qm);
+    let (bv, dv) = (&surface.ruling.b, &surface.ruling.d);
+    let c2 = poly_form(&qm, dv, dv);
+    let c1 = poly_form(&qm, bv, dv);
+    let c0 = poly_form(&qm, bv, bv);
+    let s = &(&c1 * &c1) - &(&c0 * &c2);
+    if s.is_zero() {
+        return Err(Error::Algebra("s(u) vanishes identically".into()));
+    }
+    let av: PolyVector = std::array::from_fn(|i| &(&c2 * &bv[i]) - &(&c1 * &dv[i]));
+    let discriminant = discriminant_roots(&s);
+    Ok(LevinParameterization {
+        delta: surface.ruling.delta.clone(),
+        substituted,
+        a: av,
+        d: dv.clone(),
+        s,
+        discriminant,
+        surface,
+    })
+}
+
+/// The primitive integer matrix of `q` (a positive multiple of its matrix), as rationals.
+fn integer_matrix(q: &Quadric) -> [[RBig; 4]; 4] {
+    let m = q.integer_matrix().entries();
+    std::array::from_fn(|i| std::array::from_fn(|j| RBig::from(m[i][j].clone())))
+}
+
+/// The member `λA − B` (`A` for `None`).
+fn member(a: &[[RBig; 4]; 4], b: &[[RBig; 4]; 4], lambda: Option<&RBig>) -> [[RBig; 4]; 4] {
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| match lambda {
+            Some(l) => l * &a[i][j] - &b[i][j],
+            None => a[i][j].clone(),
+        })
+    })
+}
+
+/// Picks the parameterization surface (see [`parameterize_smooth_quartic`]).
+fn choose_surface(
+    a: &[[RBig; 4]; 4],
+    b: &[[RBig; 4]; 4],
+    analysis: &PencilAnalysis,
+) -> Result<ParameterizationSurface, Error> {
+    let mut candidates: Vec<(Option<RBig>, SurfaceKind)> = Vec::new();
+    for (sample, inertia) in &analysis.arcs {
+        if inertia.positive == 2 && inertia.negative == 2 {
+            candidates.push((Some(sample.clone()), SurfaceKind::DoublyRuled));
+        }
+    }
+    let mut irrational_cones = 0;
+    for root in &analysis.real_roots {
+        let i = root.inertia;
+        if i.rank() != 3 || i.positive == 0 || i.negative == 0 {
+            continue;
+        }
+        match &root.point {
+            PencilPoint::Finite(v) => match v.as_rational() {
+                Some(r) => candidates.push((Some(r.clone()), SurfaceKind::Cone)),
+                None => irrational_cones += 1,
+            },
+            PencilPoint::Infinity => candidates.push((None, SurfaceKind::Cone)),
+        }
+    }
+    // more rationals of the (2, 2) arcs, tried only when the first ones give no ruling
+    let primary = candidates.len();
+    let finite: Vec<&RootInterval> = analysis
+        .real_roots
+        .iter()
+        .filter_map(|r| match &r.point {
+            PencilPoint::Finite(v) => Some(v.interval()),
+            PencilPoint::Infinity => None,
+        })
+        .collect();
+    for (i, (sample, inertia)) in analysis.arcs.iter().enumerate() {
+        if inertia.positive == 2 && inertia.negative == 2 {
+            let lo = i.checked_sub(1).map(|k| finite[k].hi().clone());
+            let hi = finite.get(i).map(|r| r.lo().clone());
+            for lambda in more_samples(lo.as_ref(), sample, hi.as_ref()) {
+                candidates.push((Some(lambda), SurfaceKind::DoublyRuled));
+            }
+        }
+    }
+    let mut best: Option<ParameterizationSurface> = None;
+    for (k, (lambda, kind)) in candidates.into_iter().enumerate() {
+        if k >= primary && best.is_some() {
+            break;
+        }
+        let matrix = member(a, b, lambda.as_ref());
+        let ruling = match kind {
+            SurfaceKind::DoublyRuled => parameterize_doubly_ruled(&matrix)?,
+            SurfaceKind::Cone => parameterize_cone(&matrix)?,
+        };
+        let Some(ruling) = ruling else { continue };
+        let size = |s: &ParameterizationSurface| s.ruling.delta.as_ref().map(|d| d.clone() * d);
+        let candidate = ParameterizationSurface {
+            lambda,
+            matrix,
+            kind,
+            ruling,
+        };
+        let better = match &best {
+            None => true,
+            Some(old) => match (size(old), size(&candidate)) {
+                (Some(o), Some(n)) => n < o,
+                (Some(_), None) => true,
+                _ => false,
+            },
+        };
+        if better {
+            let rational = candidate.ruling.delta.is_none();
+            best = Some(candidate);
+            if rational {
+                break;
+            }
+        }
+    }
+    best.ok_or_else(|| {
+        Error::Unsupported(if irrational_cones > 0 {
+            "the only real ruled members are cones at irrational λ (not yet)".into()
+        } else {
+            "the rulings need a biquadratic field (not yet)".into()
+        })
+    })
+}
+
+/// Small-height rationals of the open interval `(lo, hi)` (unbounded for `None`) other than
+/// `sample`: the simplest ones on either side of it, then between those and `sample`.
+fn more_samples(lo: Option<&RBig>, sample: &RBig, hi: Option<&RBig>) -> Vec<RBig> {
+    let left = match lo {
+        Some(l) => simplest_between(l, sample, false, false),
+        None => sample - RBig::ONE,
+    };
+    let right = match hi {
+        Some(h) => simplest_between(sample, h, false, false),
+        None => sample + RBig::ONE,
+    };
+    let mid_left = simplest_between(&left, sample, false, false);
+    let mid_right = simplest_between(sample, &right, false, false);
+    let far_left = match lo {
+        Some(l) => simplest_between(l, &left, false, false),
+        None => &left - RBig::ONE,
+    };
+    let far_right = match hi {
+        Some(h) => simplest_between(&right, h, false, false),
+        None => &right + RBig::ONE,
+    };
+    vec![left, right, mid_left, mid_right, far_left, far_right]
+}
+
+/// The Sturm chain of `s` over ℚ(√δ): `s, s′, −rem, …`.
+fn sturm_chain(s: &Poly<Quadratic>) -> Vec<Poly<Quadratic>> {
+    let mut chain = vec![s.clone(), s.derivative()];
+    while let Some(last) = chain.last().filter(|p| !p.is_zero()) {
+        let prev = &chain[chain.len() - 2];
+        let r = prev.rem(last);
+        if r.is_zero() {
+            break;
+        }
+        chain.push(-&r);
+    }
+    chain.retain(|p| !p.is_zero());
+    chain
+}
+
+fn sign(x: &Quadratic) -> Sign {
+    x.sign().expect("real field elements")
+}
+
+fn variations(chain: &[Poly<Quadratic>], x: &RBig) -> usize {
+    let signs: Vec<Sign> = chain
+        .iter()
+        .map(|p| sign(&p.eval(&q(x))))
+        .filter(|s| *s != Sign::Zero)
+        .collect();
+    signs.windows(2).filter(|w| w[0] != w[1]).count()
+}
+
+/// The real roots of `s` (see [`DiscriminantRoots`]).
+fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
+    let rational: Option<Vec<RBig>> = s
+        .coeffs()
+        .iter()
+        .map(|c| c.as_rational().cloned())
+        .collect();
+    let (roots, squarefree) = match rational {
+        Some(c) => {
+            let p = Poly::from_rational(&Poly::new(c)).0;
+            let squarefree = p.squarefree_part().degree() == p.degree();
+            (AlgebraicReal::real_roots_of(&p), squarefree)
+        }
+        None => {
+            let conj = s.map(Quadratic::conjugate);
+            let norm: Vec<RBig> = (s * &conj)
+                .coeffs()
+                .iter()
+                .map(|c| c.as_rational().cloned().expect("a norm is rational"))
+                .collect();
+            let sf = Poly::from_rational(&Poly::new(norm)).0.squarefree_part();
+            let squarefree = s.gcd_monic(&s.derivative()).degree() == Some(0);
+            // each interval holds one root of s·s̄; a simple root of s there changes its
+            // sign, and a square-free s has no other kind (else count by Sturm)
+            let chain = (!squarefree).then(|| sturm_chain(s));
+            let sign_at = |x: &RBig| sign(&s.eval(&q(x)));
+            let roots = isolate_real_roots(&sf)
+                .into_iter()
+                .filter(|iv| match (iv, &chain) {
+                    (RootInterval::Exact(r), _) => s.eval(&q(r)).is_zero(),
+                    (RootInterval::Open(lo, hi), None) => sign_at(lo) != sign_at(hi),
+                    (RootInterval::Open(lo, hi), Some(chain)) => {
+                        variations(chain, lo) > variations(chain, hi)
+                    }
+                })
+                .filter_map(|iv| AlgebraicReal::from_isolating_interval(&sf, &iv))
+                .collect();
+            (roots, squarefree)
+        }
+    };
+    let mut samples = Vec::new();
+    match (roots.first(), roots.last()) {
+        (Some(first), Some(last)) => {
+            samples.push(RBig::from(first.interval().lo().floor()) - RBig::ONE);
+            for w in roots.windows(2) {
+                samples.push(w[0].rational_between(&w[1]));
+            }
+            samples.push(RBig::from(last.interval().hi().ceil()) + RBig::ONE);
+        }
+        _ => samples.push(RBig::ZERO),
+    }
+    let arcs = samples
+        .into_iter()
+        .map(|x| {
+            let sg = sign(&s.eval(&q(&x)));
+            (x, sg)
+        })
+        .collect();
+    DiscriminantRoots {
+        roots,
+        at_infinity: s.degree().unwrap_or(0) < 4,
+        squarefree,
+        arcs,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rq(v: i64) -> Quadratic {
+        Quadratic::rational(RBig::from(v))
+    }
+
+    #[test]
+    fn roots_of_s_over_a_quadratic_field_are_those_of_s_not_of_its_conjugate() {
+        // s = (u − √2)(u − 1 − √2)(u² + 1): the norm also vanishes at −√2 and 1 − √2
+        let r2 = Quadratic::sqrt(&IBig::from(2));
+        let lin = |c: Quadratic| Poly::new(vec![c.neg(), rq(1)]);
+        let s = &(&lin(r2.clone()) * &lin(rq(1).add(&r2))) * &Poly::new(vec![rq(1), rq(0), rq(1)]);
+        let d = discriminant_roots(&s);
+        let approx: Vec<f64> = d.roots.iter().map(AlgebraicReal::to_f64).collect();
+        assert_eq!(approx.len(), 2, "{approx:?}");
+        assert!(
+            (approx[0] - 2f64.sqrt()).abs() < 1e-6 && (approx[1] - 1.0 - 2f64.sqrt()).abs() < 1e-6
+        );
+        let signs: Vec<Sign> = d.arcs.iter().map(|(_, s)| *s).collect();
+        assert_eq!(signs, [Sign::Positive, Sign::Negative, Sign::Positive]);
+        assert!(!d.at_infinity);
+        assert!(d.squarefree);
+        // a double root: found by the Sturm chain, flagged
+        let double = &(&lin(r2.clone()) * &lin(r2.clone())) * &Poly::new(vec![rq(1), rq(0), rq(1)]);
+        let d = discriminant_roots(&double);
+        assert!(!d.squarefree && d.roots.len() == 1);
+        assert!((d.roots[0].to_f64() - 2f64.sqrt()).abs() < 1e-6);
+        // a cubic: the fourth root is u = ∞
+        let cubic = &lin(r2.clone()) * &Poly::new(vec![rq(1), rq(0), rq(1)]);
+        let d = discriminant_roots(&cubic);
+        assert!(d.at_infinity && d.roots.len() == 1);
+        // no real root, negative: the sample's sign
+        let d = discriminant_roots(&Poly::new(vec![rq(-1), rq(0), rq(0), rq(0), r2.neg()]));
+        assert!(d.roots.is_empty() && d.arcs == [(RBig::ZERO, Sign::Negative)]);
+    }
+
+    #[test]
+    fn more_samples_stay_inside_the_arc() {
+        let (lo, hi) = (RBig::from(-1), RBig::from(3));
+        for (l, h) in [(Some(&lo), Some(&hi)), (None, Some(&hi)), (Some(&lo), None)] {
+            let xs = more_samples(l, &RBig::ONE, h);
+            assert_eq!(xs.len(), 6);
+            for x in xs {
+                assert!(x != RBig::ONE);
+                assert!(l.is_none_or(|l| &x > l) && h.is_none_or(|h| &x < h), "{x}");
+            }
+        }
+    }
+}

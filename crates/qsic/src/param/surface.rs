@@ -1,0 +1,480 @@
+//! The parameterization surface (Appendix A of the enhanced-Levin paper) and its ruled
+//! parameterization `q(u, v) = b(u) + v·d(u)`.
+//!
+//! * inertia (2, 2): a rational (or ℚ(√δ)) point `P` on `S`, the two lines of `S` through `P`
+//!   (roots of the binary form `S` induces on the tangent plane `T_P`, over ℚ(√D) with
+//!   `D ≡ det S` modulo squares), then a hyperbolic basis `e₁, f₁, e₂, f₂` of `S`
+//!   (`eᵢᵀSfᵢ = 1`, all other products zero) in which `S(X) = 2(x₁y₁ + x₂y₂)`, so that
+//!   `b(u) = e₁ − u·e₂` and `d(u) = f₂ + u·f₁` are two skew lines of one regulus joined, for
+//!   each `u`, by a line of the other;
+//! * a cone (rank 3, indefinite): `b` the vertex, `d(u)` the conic cut by a plane missing the
+//!   vertex, parameterized by the lines through one of its points:
+//!   `d(u) = (YᵀSY)·P − 2(PᵀSY)·Y`, `Y = Q + u·R`.
+//!
+//! Linear algebra over ℚ(√δ) on 4-vectors lives here until `qsic_algebra::linalg` lands.
+
+use crate::error::Error;
+use qsic_algebra::conic::{find_point, ConicPoint};
+use qsic_algebra::factor::factorize;
+use qsic_algebra::field::Quadratic;
+use qsic_algebra::{Field, IBig, Poly, RBig, Ring};
+
+/// A 4-vector over ℚ(√δ).
+pub(crate) type Vec4 = [Quadratic; 4];
+/// A symmetric 4×4 matrix over ℚ(√δ).
+pub(crate) type Mat4 = [[Quadratic; 4]; 4];
+/// Four polynomials in `u` over ℚ(√δ): a point moving with `u`, in homogeneous coordinates.
+pub type PolyVector = [Poly<Quadratic>; 4];
+
+/// A ruled quadric parameterized as `q(u, v) = b(u) + v·d(u)`, `(u, v) ∈ (ℝ ∪ {∞})²`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RuledParameterization {
+    /// `b(u)`: a line of one regulus (degree 1), or the vertex of a cone (degree 0).
+    pub b: PolyVector,
+    /// `d(u)`: a skew line of the same regulus (degree 1), or a conic on the cone (degree 2).
+    pub d: PolyVector,
+    /// The radicand `δ` (square-free) when the coefficients are in ℚ(√δ), `None` over ℚ.
+    pub delta: Option<IBig>,
+}
+
+pub(crate) fn q(v: &RBig) -> Quadratic {
+    Quadratic::rational(v.clone())
+}
+
+pub(crate) fn to_quadratic(m: &[[RBig; 4]; 4]) -> Mat4 {
+    std::array::from_fn(|i| std::array::from_fn(|j| q(&m[i][j])))
+}
+
+fn mat_vec(m: &Mat4, x: &Vec4) -> Vec4 {
+    std::array::from_fn(|i| {
+        let mut acc = Quadratic::zero();
+        for j in 0..4 {
+            acc.add_mul_assign(&m[i][j], &x[j]);
+        }
+        acc
+    })
+}
+
+fn dot(x: &Vec4, y: &Vec4) -> Quadratic {
+    let mut acc = Quadratic::zero();
+    for i in 0..4 {
+        acc.add_mul_assign(&x[i], &y[i]);
+    }
+    acc
+}
+
+fn form(m: &Mat4, x: &Vec4, y: &Vec4) -> Quadratic {
+    dot(x, &mat_vec(m, y))
+}
+
+fn combine(a: &Quadratic, x: &Vec4, b: &Quadratic, y: &Vec4) -> Vec4 {
+    std::array::from_fn(|i| a.mul(&x[i]).add(&b.mul(&y[i])))
+}
+
+fn scaled(a: &Quadratic, x: &Vec4) -> Vec4 {
+    std::array::from_fn(|i| a.mul(&x[i]))
+}
+
+/// `x + u·y` as a vector of polynomials in `u`.
+fn line(x: &Vec4, y: &Vec4) -> PolyVector {
+    std::array::from_fn(|i| Poly::new(vec![x[i].clone(), y[i].clone()]))
+}
+
+/// The bilinear form `xᵀ M y` of two polynomial vectors.
+pub(crate) fn poly_form(m: &Mat4, x: &PolyVector, y: &PolyVector) -> Poly<Quadratic> {
+    let mut acc = Poly::zero();
+    for i in 0..4 {
+        let mut row = Poly::zero();
+        for j in 0..4 {
+            if !m[i][j].is_zero() && !y[j].is_zero() {
+                row = &row + &y[j].scale(&m[i][j]);
+            }
+        }
+        if !row.is_zero() && !x[i].is_zero() {
+            acc = &acc + &(&x[i] * &row);
+        }
+    }
+    acc
+}
+
+/// The radicand of a vector's coordinates, `None` if all are rational.
+fn radicand_of<'a>(xs: impl IntoIterator<Item = &'a Quadratic>) -> Option<IBig> {
+    xs.into_iter()
+        .find(|x| x.as_rational().is_none())
+        .map(|x| x.radicand().clone())
+}
+
+/// `√x` inside ℚ(√δ₀) (or ℚ if `delta0` is `None`, where any rational `x > 0` gets the
+/// field ℚ(√sqf(x))), `None` when it lies in neither: a biquadratic field would be needed.
+fn sqrt_in_field(x: &Quadratic, delta0: Option<&IBig>) -> Option<Quadratic> {
+    if let Some(r) = x.as_rational() {
+        let (n, d) = (r.numerator().clone(), IBig::from(r.denominator().clone()));
+        let nd = &n * &d; // √(n/d) = √(n·d)/d
+        let inv_d = RBig::from_parts_signed(IBig::ONE, d.clone());
+        let root = Quadratic::sqrt(&nd);
+        if root.as_rational().is_some() {
+            return Some(root.scale(&inv_d));
+        }
+        return match delta0 {
+            None => {
+                // reduce the radicand to its square-free part where factoring succeeds
+                let reduced = factorize(&nd).ok().map(|f| {
+                    let (part, k) = f.squarefree_split();
+                    Quadratic::sqrt(&part.value()).scale(&RBig::from(k))
+                });
+                Some(reduced.unwrap_or(root).scale(&inv_d))
+            }
+            Some(d0) => {
+                // √(nd) = √(nd·δ₀)/δ₀ · √δ₀
+                let t = Quadratic::sqrt(&(&nd * d0));
+                let t = t.as_rational()?;
+                let k = t / RBig::from(d0.clone()) * &inv_d;
+                Some(Quadratic::sqrt(d0).scale(&k))
+            }
+        };
+    }
+    // x = a + b√δ: (s + t√δ)² = x ⇔ s² + δt² = a, 2st = b; s² = (a ± √N(x))/2.
+    let d0 = x.radicand().clone();
+    let norm = x.norm();
+    let m = Quadratic::sqrt_rational(&norm);
+    let m = m.as_rational()?.clone();
+    let (a, b) = (x.rational_part().clone(), x.radical_part().clone());
+    for s2 in [(&a + &m) / RBig::from(2), (&a - &m) / RBig::from(2)] {
+        if s2 <= RBig::ZERO {
+            continue;
+        }
+        let s = Quadratic::sqrt_rational(&s2);
+        if let Some(s) = s.as_rational() {
+            let t = &b / (RBig::from(2) * s);
+            let root = Quadratic::new(s.clone(), t, d0.clone())?;
+            if root.mul(&root) == *x {
+                return Some(root);
+            }
+        }
+    }
+    None
+}
+
+/// Hyperplanes as three spanning vectors: `xᵢ = 0`, then `xᵢ = xⱼ`, `xᵢ = −xⱼ`.
+fn hyperplanes() -> Vec<[[RBig; 4]; 3]> {
+    let unit = |k: usize| -> [RBig; 4] {
+        std::array::from_fn(|i| if i == k { RBig::ONE } else { RBig::ZERO })
+    };
+    let mut out = Vec::new();
+    for i in 0..4 {
+        let others: Vec<usize> = (0..4).filter(|&k| k != i).collect();
+        out.push(std::array::from_fn(|t| unit(others[t])));
+    }
+    for i in 0..4 {
+        for j in i + 1..4 {
+            for sign in [1, -1] {
+                // basis: eᵢ + sign·eⱼ and the two other units
+                let mut first = unit(i);
+                first[j] = RBig::from(sign);
+                let others: Vec<usize> = (0..4).filter(|&k| k != i && k != j).collect();
+                out.push([first, unit(others[0]), unit(others[1])]);
+            }
+        }
+    }
+    out
+}
+
+/// A point of the quadric `S` found on a hyperplane section, with that hyperplane's basis.
+struct SectionPoint {
+    point: Vec4,
+    basis: [[RBig; 4]; 3],
+    coords: [Quadratic; 3],
+}
+
+/// A point of `XᵀSX = 0`, rational when one of the tried sections has one, otherwise over
+/// ℚ(√δ); sections through `avoid` are skipped. `None` if no tried section has a real point.
+fn point_on(s: &[[RBig; 4]; 4], avoid: Option<&[RBig; 4]>) -> Result<Option<SectionPoint>, Error> {
+    let mut fallback = None;
+    for basis in hyperplanes() {
+        if let Some(v) = avoid {
+            // the hyperplane contains v iff v is in the span: test by the normal vector
+            if contains(&basis, v) {
+                continue;
+            }
+        }
+        let c: [[RBig; 3]; 3] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| {
+                let mut acc = RBig::ZERO;
+                for k in 0..4 {
+                    for l in 0..4 {
+                        acc += &basis[i][k] * &s[k][l] * &basis[j][l];
+                    }
+                }
+                acc
+            })
+        });
+        if c.iter().flatten().all(|v| v.is_zero()) {
+            continue;
+        }
+        let found = find_point(&c).map_err(|e| Error::Algebra(e.to_string()))?;
+        let coords: [Quadratic; 3] = match found {
+            ConicPoint::Rational(p) => std::array::from_fn(|i| q(&p[i])),
+            ConicPoint::NoRationalPoint(p) => {
+                if fallback.is_none() {
+                    fallback = Some((basis.clone(), p.coords.clone()));
+                }
+                continue;
+            }
+            ConicPoint::NoRealPoint => continue,
+        };
+        return Ok(Some(section_point(basis, coords)));
+    }
+    Ok(fallback.map(|(basis, coords)| section_point(basis, coords)))
+}
+
+fn section_point(basis: [[RBig; 4]; 3], coords: [Quadratic; 3]) -> SectionPoint {
+    let point = std::array::from_fn(|k| {
+        let mut acc = Quadratic::zero();
+        for i in 0..3 {
+            acc = acc.add(&coords[i].scale(&basis[i][k]));
+        }
+        acc
+    });
+    SectionPoint {
+        point,
+        basis,
+        coords,
+    }
+}
+
+/// `true` if `v` lies in the span of the three basis vectors (4×4 determinant zero).
+fn contains(basis: &[[RBig; 4]; 3], v: &[RBig; 4]) -> bool {
+    let m: [[Quadratic; 4]; 4] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| q(if i < 3 { &basis[i][j] } else { &v[j] }))
+    });
+    det4(&m).is_zero()
+}
+
+fn det4(m: &Mat4) -> Quadratic {
+    // Laplace expansion along the first row of 3×3 minors
+    let mut acc = Quadratic::zero();
+    for c in 0..4 {
+        let minor = minor3(m, 0, c);
+        let term = m[0][c].mul(&minor);
+        acc = if c % 2 == 0 {
+            acc.add(&term)
+        } else {
+            acc.sub(&term)
+        };
+    }
+    acc
+}
+
+/// The 3×3 minor of `m` without row `r` and column `c`.
+fn minor3(m: &Mat4, r: usize, c: usize) -> Quadratic {
+    let rows: Vec<usize> = (0..4).filter(|&i| i != r).collect();
+    let cols: Vec<usize> = (0..4).filter(|&j| j != c).collect();
+    let e = |i: usize, j: usize| &m[rows[i]][cols[j]];
+    e(0, 0)
+        .mul(&e(1, 1).mul(e(2, 2)).sub(&e(1, 2).mul(e(2, 1))))
+        .sub(&e(0, 1).mul(&e(1, 0).mul(e(2, 2)).sub(&e(1, 2).mul(e(2, 0)))))
+        .add(&e(0, 2).mul(&e(1, 0).mul(e(2, 1)).sub(&e(1, 1).mul(e(2, 0)))))
+}
+
+/// The parameterization of a nonsingular quadric of inertia (2, 2) through a point found on
+/// a hyperplane section. `Ok(None)` if its lines need a biquadratic field (no rational point
+/// found and `det S` not a square in the point's field).
+pub(crate) fn parameterize_doubly_ruled(
+    s: &[[RBig; 4]; 4],
+) -> Result<Option<RuledParameterization>, Error> {
+    let Some(found) = point_on(s, None)? else {
+        return Ok(None);
+    };
+    let sm = to_quadratic(s);
+    let p = found.point;
+    let delta0 = radicand_of(&p);
+    let r = mat_vec(&sm, &p);
+    let j = (0..4)
+        .find(|&k| !r[k].is_zero())
+        .ok_or_else(|| Error::Algebra("a point in the kernel of a nonsingular quadric".into()))?;
+    // T_P = ker(rᵀ): Kₖ = eₖ − (rₖ/rⱼ)eⱼ, k ≠ j; drop one Kₖ with pₖ ≠ 0 (P spans it with the rest)
+    let rj_inv = r[j].inv().expect("nonzero pivot");
+    let kernel: Vec<(usize, Vec4)> = (0..4)
+        .filter(|&k| k != j)
+        .map(|k| {
+            let mut v: Vec4 = std::array::from_fn(|_| Quadratic::zero());
+            v[k] = Quadratic::one();
+            v[j] = r[k].mul(&rj_inv).neg();
+            (k, v)
+        })
+        .collect();
+    let k0 = kernel
+        .iter()
+        .find(|(k, _)| !p[*k].is_zero())
+        .map(|(k, _)| *k)
+        .ok_or_else(|| Error::Algebra("tangent plane basis".into()))?;
+    let rest: Vec<&Vec4> = kernel
+        .iter()
+        .filter(|(k, _)| *k != k0)
+        .map(|(_, v)| v)
+        .collect();
+    let (e1, e2) = (rest[0], rest[1]);
+    let (s11, s12, s22) = (form(&sm, e1, e1), form(&sm, e1, e2), form(&sm, e2, e2));
+    let two = Quadratic::from_int(&IBig::from(2));
+    // the two lines through P: P + t·E±, E± the roots of s11β² + 2s12βγ + s22γ²
+    let (plus, minus) = if s11.is_zero() {
+        (e1.clone(), combine(&s22, e1, &two.mul(&s12).neg(), e2))
+    } else {
+        let disc = s12.mul(&s12).sub(&s11.mul(&s22));
+        if disc.sign() != Some(qsic_algebra::Sign::Positive) {
+            return Err(Error::Algebra(
+                "no real lines through a point of an inertia (2, 2) member".into(),
+            ));
+        }
+        let Some(root) = sqrt_in_field(&disc, delta0.as_ref()) else {
+            return Ok(None);
+        };
+        (
+            combine(&s12.neg().add(&root), e1, &s11, e2),
+            combine(&s12.neg().sub(&root), e1, &s11, e2),
+        )
+    };
+    // hyperbolic basis: e₁ = P, e₂ = E₊, f₂ = E₋/(E₊ᵀSE₋), f₁ from the unit vector e_j
+    let c = form(&sm, &plus, &minus);
+    let c_inv = c
+        .inv()
+        .ok_or_else(|| Error::Algebra("the two lines through a point are not distinct".into()))?;
+    let f2 = scaled(&c_inv, &minus);
+    let g: Vec4 = std::array::from_fn(|i| {
+        if i == j {
+            Quadratic::one()
+        } else {
+            Quadratic::zero()
+        }
+    });
+    let g = combine(&Quadratic::one(), &g, &form(&sm, &g, &f2).neg(), &plus);
+    let g = combine(&Quadratic::one(), &g, &form(&sm, &g, &plus).neg(), &f2);
+    let g = scaled(&r[j].inv().expect("nonzero pivot"), &g);
+    let half = Quadratic::rational(RBig::from_parts_signed(IBig::ONE, IBig::from(2)));
+    let f1 = combine(
+        &Quadratic::one(),
+        &g,
+        &form(&sm, &g, &g).mul(&half).neg(),
+        &p,
+    );
+    let b = line(&p, &scaled(&Quadratic::one().neg(), &plus));
+    let d = line(&f2, &f1);
+    let delta = radicand_of(b.iter().chain(d.iter()).flat_map(|x| x.coeffs()));
+    Ok(Some(RuledParameterization { b, d, delta }))
+}
+
+/// The parameterization of a cone or cylinder `S` (rank 3, indefinite): the vertex and a
+/// conic of `S` on a hyperplane missing it.
+pub(crate) fn parameterize_cone(
+    s: &[[RBig; 4]; 4],
+) -> Result<Option<RuledParameterization>, Error> {
+    let sm = to_quadratic(s);
+    // the vertex: a nonzero column of the adjugate (rank 3 ⇒ adj S has rank 1, S·adj S = 0)
+    let vertex = (0..4)
+        .flat_map(|c| {
+            let v: Vec4 = std::array::from_fn(|r| {
+                let m = minor3(&sm, c, r);
+                if (r + c) % 2 == 0 {
+                    m
+                } else {
+                    m.neg()
+                }
+            });
+            (!v.iter().all(Quadratic::is_zero)).then_some(v)
+        })
+        .next()
+        .ok_or_else(|| Error::Algebra("a cone member of rank below 3".into()))?;
+    let vertex_rational: [RBig; 4] = std::array::from_fn(|i| {
+        vertex[i]
+            .as_rational()
+            .cloned()
+            .expect("a rational matrix has a rational kernel")
+    });
+    let Some(found) = point_on(s, Some(&vertex_rational))? else {
+        return Ok(None);
+    };
+    let k0 = (0..3)
+        .find(|&i| !found.coords[i].is_zero())
+        .expect("a nonzero point");
+    let others: Vec<Vec4> = (0..3)
+        .filter(|&i| i != k0)
+        .map(|i| std::array::from_fn(|k| q(&found.basis[i][k])))
+        .collect();
+    let p = found.point;
+    let y = line(&others[0], &others[1]);
+    let pv: PolyVector = std::array::from_fn(|i| Poly::constant(p[i].clone()));
+    let yy = poly_form(&sm, &y, &y);
+    let py = poly_form(&sm, &pv, &y);
+    let minus_two_py = py.scale(&Quadratic::from_int(&IBig::from(-2)));
+    let d: PolyVector = std::array::from_fn(|i| &(&yy * &pv[i]) + &(&minus_two_py * &y[i]));
+    let b: PolyVector = std::array::from_fn(|i| Poly::constant(vertex[i].clone()));
+    let delta = radicand_of(d.iter().flat_map(|x| x.coeffs()));
+    Ok(Some(RuledParameterization { b, d, delta }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rat(v: i64) -> RBig {
+        RBig::from(v)
+    }
+
+    fn diag(d: [i64; 4]) -> [[RBig; 4]; 4] {
+        std::array::from_fn(|i| std::array::from_fn(|j| if i == j { rat(d[i]) } else { rat(0) }))
+    }
+
+    fn assert_ruled(s: &[[RBig; 4]; 4], r: &RuledParameterization) {
+        let sm = to_quadratic(s);
+        assert!(poly_form(&sm, &r.b, &r.b).is_zero());
+        assert!(poly_form(&sm, &r.b, &r.d).is_zero());
+        assert!(poly_form(&sm, &r.d, &r.d).is_zero());
+        assert!(r.d.iter().any(|x| !x.is_constant()), "d(u) moves");
+    }
+
+    #[test]
+    fn doubly_ruled_quadrics_lie_on_their_parameterization() {
+        // x²+y²−z²−w² (rational lines), x²+2y²−z²−3w² (det 6: lines over ℚ(√6)),
+        // x²+y²−3z²−3w² (no rational point: 3 is no sum of two squares)
+        for (d, want) in [
+            ([1, 1, -1, -1], None),
+            ([1, 2, -1, -3], Some(6)),
+            ([1, 1, -3, -3], Some(3)),
+        ] {
+            let s = diag(d);
+            let r = parameterize_doubly_ruled(&s)
+                .unwrap()
+                .expect("a parameterization");
+            assert_ruled(&s, &r);
+            assert_eq!(r.delta, want.map(IBig::from), "{d:?}");
+        }
+    }
+
+    #[test]
+    fn cones_lie_on_their_parameterization() {
+        for d in [[1, 1, -1, 0], [1, 0, 2, -3], [0, 1, 1, -3]] {
+            let s = diag(d);
+            let r = parameterize_cone(&s).unwrap().expect("a parameterization");
+            assert_ruled(&s, &r);
+            assert!(r.b.iter().all(Poly::is_constant));
+        }
+    }
+
+    #[test]
+    fn square_roots_stay_in_the_field() {
+        let r = |n: i64, d: i64| Quadratic::rational(RBig::from_parts_signed(n.into(), d.into()));
+        let s = sqrt_in_field(&r(8, 9), None).unwrap();
+        assert_eq!(s.radicand(), &IBig::from(2));
+        assert_eq!(s.mul(&s), r(8, 9));
+        let s3 = Quadratic::sqrt(&IBig::from(3));
+        assert_eq!(
+            sqrt_in_field(&r(12, 1), Some(&IBig::from(3))),
+            Some(s3.scale(&rat(2)))
+        );
+        assert_eq!(sqrt_in_field(&r(2, 1), Some(&IBig::from(3))), None);
+        // (1 + √3)² = 4 + 2√3
+        let x = r(1, 1).add(&s3);
+        let sq = sqrt_in_field(&x.mul(&x), None).unwrap();
+        assert_eq!(sq.mul(&sq), x.mul(&x));
+    }
+}
