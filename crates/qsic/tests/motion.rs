@@ -3,7 +3,7 @@
 
 use qsic::io::{moving_matrix_from_polynomial, moving_matrix_from_rows, MovingMatrix};
 use qsic::motion::{InstantType, Motion, MotionType, MovingPencil};
-use qsic_algebra::{AlgebraicReal, Poly, RBig};
+use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
 use serde_json::Value;
 
 fn rational(text: &str) -> RBig {
@@ -251,4 +251,117 @@ fn sphere_through_sphere_irrational_instants() {
     for (i, r) in motion.intervals.iter().zip(&rational.intervals) {
         assert_eq!(i.classification, r.classification);
     }
+}
+
+/// The recorded instant as a real algebraic number (exact rational, or the recorded
+/// polynomial on its recorded interval).
+fn recorded_instant(v: &Value) -> AlgebraicReal {
+    if let Some(s) = v.as_str() {
+        return AlgebraicReal::from_rational(rational(s));
+    }
+    let p = poly_in_t(v["poly"].as_str().unwrap());
+    let iv = v["interval"].as_array().unwrap();
+    let (lo, hi) = (
+        rational(iv[0].as_str().unwrap()),
+        rational(iv[1].as_str().unwrap()),
+    );
+    let roots: Vec<AlgebraicReal> = AlgebraicReal::real_roots_of(&p)
+        .into_iter()
+        .filter(|r| {
+            AlgebraicReal::from_rational(lo.clone()) < *r
+                && *r < AlgebraicReal::from_rational(hi.clone())
+        })
+        .collect();
+    assert_eq!(roots.len(), 1, "{v}: the interval isolates one root");
+    roots.into_iter().next().unwrap()
+}
+
+/// `g` divided by the gcd of its coefficients in ℤ\[t\] (integer content included).
+fn primitive_over_zt(g: &Poly<Poly>) -> Poly<Poly> {
+    let c = g
+        .coeffs()
+        .iter()
+        .fold(Poly::zero(), |acc: Poly, v| acc.gcd(v));
+    let g = g.map(|v| v.div_exact(&c).expect("c divides every coefficient"));
+    let k = g.coeffs().iter().fold(IBig::ZERO, |acc, v| {
+        qsic_algebra::int_gcd(&acc, &v.content())
+    });
+    g.map(|v| v.map(|x| x / &k))
+}
+
+/// A polynomial in `t` vanishing wherever the rank of `λ₀A(t) − B(t)` at a root `λ₀` of the
+/// repeated factor `g` drops below its generic value: for the largest `k` at which it is not
+/// identically zero, the gcd over the `k × k` minors `m` of `λM_A − M_B` of `res_λ(g, m)`
+/// (minors by `linalg`, resultants over ℤ\[t\] — independent of the motion module).
+fn rank_drop_polynomial(pencil: &MovingPencil, g: &Poly<Poly>) -> Poly {
+    let (ma, mb) = (pencil.a().numerators(), pencil.b().numerators());
+    let n: [[Poly<Poly>; 4]; 4] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| Poly::new(vec![-&mb[i][j], ma[i][j].clone()]))
+    });
+    let minors = qsic_algebra::linalg::minors::SmallMinors::all(&n);
+    (1..=3)
+        .rev()
+        .map(|k| {
+            minors
+                .of_order(k)
+                .into_iter()
+                .fold(Poly::zero(), |acc: Poly, m| acc.gcd(&g.resultant(m)))
+        })
+        .find(|p| !p.is_zero())
+        .expect("some order of minors does not vanish identically at the roots of g")
+}
+
+/// Issue 7's check of the algebra layer on the corpus: the discriminant in λ of
+/// `f(λ; t) = det(λA(t) − B(t))`, computed over ℤ\[t\] by the subresultant PRS, vanishes at
+/// every recorded critical instant of a generic pencil. Where `f` has a repeated factor for
+/// every `t` (ex4.1, ex4.2) the discriminant is identically zero; then every instant is a root
+/// of the discriminant of the square-free part (by `gcd_domain` over ℤ\[t\]\[λ\]) or a rank drop
+/// at the repeated root (Jordan structure change, the paper's Algorithms 1–2).
+/// Independent route: at rational samples the discriminant of the specialised `f(λ; t₀)`
+/// equals the specialised discriminant (same degree in λ there).
+#[test]
+fn corpus_discriminants_vanish_at_the_instants() {
+    let mut generic = 0;
+    for d in corpus() {
+        let id = d["id"].as_str().unwrap();
+        let pencil = MovingPencil::new(matrix(&d["A"]), matrix(&d["B"]));
+        let f = pencil.characteristic();
+        assert_eq!(f.degree(), Some(4), "{id}");
+        let full = f.discriminant();
+        let (disc, drops) = if full.is_zero() {
+            let g = primitive_over_zt(&f.gcd_domain(&f.derivative()));
+            assert!(
+                g.degree().unwrap() > 0,
+                "{id}: zero discriminant, no repeated factor"
+            );
+            let sf = f
+                .div_exact(&g)
+                .expect("a primitive divisor over Q(t) divides over Z[t] (Gauss)");
+            let disc = sf.discriminant();
+            assert!(!disc.is_zero(), "{id}: square-free part still repeated");
+            (disc, rank_drop_polynomial(&pencil, &g))
+        } else {
+            generic += 1;
+            (full.clone(), Poly::constant(IBig::ONE))
+        };
+        for v in d["critical_instants"].as_array().unwrap() {
+            let t = recorded_instant(v);
+            assert!(
+                t.is_root_of(&disc) || t.is_root_of(&drops),
+                "{id}: neither the discriminant {disc} nor the rank drop {drops} vanishes at {t}"
+            );
+            if !full.is_zero() {
+                assert!(t.is_root_of(&full), "{id}: {full} not zero at {t}");
+            }
+        }
+        // evaluation commutes with the discriminant where the degree in λ is kept
+        for t0 in [-3i64, -1, 0, 2, 5] {
+            let t0 = IBig::from(t0);
+            let ft0: Poly = f.map(|c| c.eval(&t0));
+            if ft0.degree() == Some(4) {
+                assert_eq!(ft0.discriminant(), full.eval(&t0), "{id} at t = {t0}");
+            }
+        }
+    }
+    assert_eq!(generic, 1, "ex3.1 is the corpus' generic pencil");
 }
