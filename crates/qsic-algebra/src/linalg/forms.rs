@@ -151,7 +151,8 @@ pub fn real_point(s: &Matrix<RBig>) -> Option<Vec<Quadratic>> {
     }
     let mut best: Option<(IBig, Vec<Quadratic>)> = None;
     let mut consider = |root: Quadratic, point: &dyn Fn(&Quadratic) -> Vec<Quadratic>| {
-        let key = root.radicand().clone() * root.radicand();
+        // δ > 0 (a square root of a positive rational), or 0 for a rational root
+        let key = root.radicand().clone();
         if best.as_ref().is_none_or(|(k, _)| key < *k) {
             best = Some((key, point(&root)));
         }
@@ -285,6 +286,7 @@ mod tests {
 
     #[test]
     fn square_parts() {
+        // 1009 is above the trial limit: its square is found as a square cofactor
         for (v, m, d) in [
             (0, 1, 0),
             (1, 1, 1),
@@ -292,6 +294,7 @@ mod tests {
             (12, 2, 3),
             (98, 7, 2),
             (-1, 1, -1),
+            (4 * 1009 * 1009, 2018, 1),
         ] {
             assert_eq!(
                 split_square(&IBig::from(v)),
@@ -315,7 +318,7 @@ mod tests {
             (&[1, 1, 1, -5], 5),   // ratios 1/5 only: ℚ(√5)
             (&[2, 5, -7, -11], 0), // 2 + 5 − 7 = 0
             (&[1, 0, 5], 0),       // a zero diagonal entry
-            (&[3, -30, 1], 10),    // ratios 1/10 → √10, 30 → √30: √10 is smaller
+            (&[1, -30, 3], 10),    // the pair (0, 1) gives √30, the later pair (1, 2) √10
         ];
         for &(d, radicand) in cases {
             let s = diag(d);
@@ -333,6 +336,21 @@ mod tests {
         let s = Matrix::from_array([[1, 2], [2, 1]].map(|r| r.map(q)));
         let x = real_point(&s).unwrap();
         assert!(on_quadric(&s, &x));
+        // not diagonal, (expected radicand): x² + 10xy + y² + 7z² only has pairs with √6
+        // (t² + 10t + 1 = 0) or worse; with d = (1, 2, −8) the diagonal pair (2, −8) is rational
+        for (s, radicand) in [
+            ([[1, 5, 0], [5, 1, 0], [0, 0, 7]], 6),
+            ([[1, 1, 0], [1, 3, 0], [0, 0, -8]], 0),
+        ] {
+            let s = Matrix::from_array(s.map(|r| r.map(q)));
+            let x = real_point(&s).unwrap();
+            assert!(on_quadric(&s, &x), "{s}: {x:?}");
+            let found = x
+                .iter()
+                .map(|v| v.radicand().clone())
+                .find(|r| !r.is_zero());
+            assert_eq!(found.unwrap_or_default(), IBig::from(radicand), "{s}");
+        }
         let cone = Matrix::from_array([[1, 1, 0], [1, 1, 0], [0, 0, 2]].map(|r| r.map(q)));
         assert!(on_quadric(&cone, &real_point(&cone).unwrap()));
     }

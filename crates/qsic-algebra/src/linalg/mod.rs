@@ -1,4 +1,4 @@
-//! Exact linear algebra over a [`Ring`] or a [`Field`]: one implementation of determinants
+//! Exact linear algebra over a [`Ring`] or a [`Field`](crate::Field): one implementation of determinants
 //! and minors for every ring (ℤ as `IBig` or bounded `i128`, ℚ, ℤ\[t\], ℚ(√δ), ℚ(α), …).
 //!
 //! | entry point | over | computes |

@@ -1,7 +1,7 @@
 //! Minors of a linear pencil `λA − B` (`N × N`, `N ≤ 4`, entries in any ring `C`) as
 //! polynomials in `λ` over `C`, by evaluation and interpolation: the minors of the members at
 //! `λ = ∞` (those of `A`: the leading coefficients), `0, 1, −1`, and for the `4 × 4`
-//! determinant `2`, come from [`minors`](super::minors); a `k × k` minor has degree `≤ k`, and
+//! determinant `2`, come from [`minors`]; a `k × k` minor has degree `≤ k`, and
 //!
 //! `p(1) + p(−1) = 2(c₀ + c₂ + c₄)`, `p(1) − p(−1) = 2(c₁ + c₃)`,
 //! `p(2) − c₀ − 4c₂ − 16c₄ = 2c₁ + 8c₃`
@@ -32,15 +32,14 @@ fn member<C: Ring, const N: usize>(a: &[[C; N]; N], b: &[[C; N]; N], l: i8) -> [
     m
 }
 
-/// The coefficients `c₀…c_k` (then zeros) of the polynomial of degree `≤ k ≤ 4` with
-/// coefficient `lead` at `λᵏ` and values `p(0), p(1), p(−1)`, and `p(2)` for `k = 4`.
+/// The coefficients `c₀…c_k` (then zeros) of the polynomial of degree `≤ k`, `1 ≤ k ≤ 4`,
+/// with coefficient `lead` at `λᵏ` and values `p(0), p(1), p(−1)`, and `p(2)` for `k = 4`.
 #[inline(always)]
 fn interpolate<C: Ring>(k: usize, lead: &C, p0: &C, p1: &C, pm1: &C, p2: &C) -> [C; 5] {
     let mut c: [C; 5] = std::array::from_fn(|_| C::zero());
     let two = C::one().add(&C::one());
     let half = |v: C| v.div_exact(&two).expect("p(1) ± p(−1) is even");
     match k {
-        0 => c[0] = p0.clone(),
         1 => [c[0], c[1]] = [p0.clone(), lead.clone()],
         2 => [c[0], c[1], c[2]] = [p0.clone(), p1.sub(p0).sub(lead), lead.clone()],
         _ => {
@@ -203,6 +202,24 @@ mod tests {
             check::<4>(array(&a), array(&b))?;
             check::<4>(symmetric(&a), symmetric(&b))?;
             check::<3>(symmetric(&a), symmetric(&b))?;
+            check::<4>(symmetric(&a), array(&b))?;
         }
+    }
+
+    /// `λ·diag(0, 1, 1, 1) − diag(1, 0, 1, −1)`: the determinant `−λ(λ − 1)(λ + 1)` vanishes at
+    /// `λ = ∞, 0, 1, −1`; only `λ = 2` tells it from zero.
+    #[test]
+    fn determinant_vanishing_at_four_points() {
+        let diag = |d: [i64; 4]| {
+            std::array::from_fn(|i| std::array::from_fn(|j| if i == j { d[i] } else { 0 }))
+        };
+        let (a, b): ([[i64; 4]; 4], [[i64; 4]; 4]) = (diag([0, 1, 1, 1]), diag([1, 0, 1, -1]));
+        check::<4>(a, b).unwrap();
+        let m =
+            SmallMinors::of_pencil(&a.map(|r| r.map(IBig::from)), &b.map(|r| r.map(IBig::from)));
+        assert_eq!(
+            *m.minor(&[0, 1, 2, 3], &[0, 1, 2, 3]),
+            Poly::from_i64s(&[0, 1, 0, -1])
+        );
     }
 }
