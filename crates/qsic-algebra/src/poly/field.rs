@@ -102,29 +102,10 @@ impl<F: Field> Poly<F> {
     /// `fᵢ` of positive degree with `self = lc · ∏ fᵢ^mᵢ`, increasing `mᵢ`. Constants give
     /// an empty list.
     pub fn squarefree_decomposition_field(&self) -> Vec<(Self, usize)> {
-        let mut out = Vec::new();
         if self.degree().unwrap_or(0) == 0 {
-            return out;
+            return Vec::new();
         }
-        let f = self.monic();
-        let df = f.derivative();
-        let a0 = f.gcd_monic(&df);
-        let mut b = f.div_rem(&a0).0;
-        let c = df.div_rem(&a0).0;
-        let mut d = &c - &b.derivative();
-        let mut i = 1;
-        while b.degree().unwrap_or(0) > 0 {
-            let a = b.gcd_monic(&d);
-            let nb = b.div_rem(&a).0;
-            let nc = d.div_rem(&a).0;
-            if a.degree().unwrap_or(0) > 0 {
-                out.push((a, i));
-            }
-            d = &nc - &nb.derivative();
-            b = nb;
-            i += 1;
-        }
-        out
+        super::squarefree::yun(self.monic(), Poly::gcd_monic, |a, d| a.div_rem(d).0)
     }
 
     /// The monic square-free part (the product of the distinct irreducible factors).

@@ -1,4 +1,5 @@
-//! Square-free decomposition (Yun's algorithm) over ℤ.
+//! Square-free decomposition (Yun's algorithm): over ℤ here, over a field in [`super::field`],
+//! one implementation (`yun`).
 
 use super::Poly;
 
@@ -14,32 +15,10 @@ impl Poly {
     /// assert_eq!(d, vec![(&Poly::from_roots(&[2]) * &Poly::from_i64s(&[1, 0, 1]), 1), (Poly::from_roots(&[1]), 3)]);
     /// ```
     pub fn squarefree_decomposition(&self) -> Vec<(Poly, usize)> {
-        let mut out = Vec::new();
         if self.degree().unwrap_or(0) == 0 {
-            return out;
+            return Vec::new();
         }
-        let f = self.primitive_part();
-        let df = f.derivative();
-        let a0 = f.gcd(&df);
-        if a0.is_constant() {
-            return vec![(f, 1)];
-        }
-        let mut b = exact(&f, &a0);
-        let c = exact(&df, &a0);
-        let mut d = &c - &b.derivative();
-        let mut i = 1;
-        while b.degree().unwrap_or(0) > 0 {
-            let a = b.gcd(&d);
-            let nb = exact(&b, &a);
-            let nc = exact(&d, &a);
-            if a.degree().unwrap_or(0) > 0 {
-                out.push((a, i));
-            }
-            d = &nc - &nb.derivative();
-            b = nb;
-            i += 1;
-        }
-        out
+        yun(self.primitive_part(), Poly::gcd, exact)
     }
 
     /// The square-free part: the product of the distinct irreducible factors, primitive.
@@ -59,6 +38,38 @@ impl Poly {
     pub fn is_squarefree(&self) -> bool {
         self.gcd(&self.derivative()).degree().unwrap_or(0) == 0
     }
+}
+
+/// Yun's algorithm on `f` (degree ≥ 1) with the ring's gcd and exact division: the
+/// square-free factors `(aᵢ, i)` of positive degree, increasing `i`; `f` alone when `f` and
+/// `f′` are coprime. Shared by ℤ\[x\] (primitive gcds) and fields (monic gcds).
+pub(crate) fn yun<C: crate::ring::Ring>(
+    f: Poly<C>,
+    gcd: impl Fn(&Poly<C>, &Poly<C>) -> Poly<C>,
+    div: impl Fn(&Poly<C>, &Poly<C>) -> Poly<C>,
+) -> Vec<(Poly<C>, usize)> {
+    let df = f.derivative();
+    let a0 = gcd(&f, &df);
+    if a0.is_constant() {
+        return vec![(f, 1)];
+    }
+    let mut out = Vec::new();
+    let mut b = div(&f, &a0);
+    let c = div(&df, &a0);
+    let mut d = &c - &b.derivative();
+    let mut i = 1;
+    while b.degree().unwrap_or(0) > 0 {
+        let a = gcd(&b, &d);
+        let nb = div(&b, &a);
+        let nc = div(&d, &a);
+        if a.degree().unwrap_or(0) > 0 {
+            out.push((a, i));
+        }
+        d = &nc - &nb.derivative();
+        b = nb;
+        i += 1;
+    }
+    out
 }
 
 /// Division known to be exact in ℤ\[x\] by Gauss's lemma (the divisor is primitive).

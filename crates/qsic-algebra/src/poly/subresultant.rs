@@ -35,7 +35,7 @@ impl<C: Ring> Poly<C> {
             return C::zero();
         };
         // res(a, b) = (−1)^(mn) res(b, a)
-        let (mut a, mut b, mut negate) = if m >= n {
+        let (a, b, mut negate) = if m >= n {
             (self.clone(), other.clone(), false)
         } else {
             (other.clone(), self.clone(), m % 2 == 1 && n % 2 == 1)
@@ -44,45 +44,22 @@ impl<C: Ring> Poly<C> {
             let r = b.leading().pow(a.degree().unwrap_or(0));
             return if negate { r.neg() } else { r };
         }
-        let (mut g, mut h) = (C::one(), C::one());
+        let mut prs = Prs::new(a, b);
         loop {
-            let (da, db) = (a.degree().unwrap_or(0), b.degree().unwrap_or(0));
-            let delta = da - db;
+            let (da, db) = (prs.a.degree().unwrap_or(0), prs.b.degree().unwrap_or(0));
             if da % 2 == 1 && db % 2 == 1 {
                 negate = !negate;
             }
-            let r = a.pseudo_rem(&b);
-            let Some(dr) = r.degree() else {
-                return C::zero();
-            };
-            let divisor = g.mul(&h.pow(delta));
-            a = b;
-            b = Poly::new(
-                r.c.iter()
-                    .map(|v| {
-                        v.div_exact(&divisor)
-                            .expect("subresultant PRS divides exactly")
-                    })
-                    .collect(),
-            );
-            g = a.leading();
-            // h ← g^δ / h^(δ−1)
-            h = if delta == 0 {
-                h
-            } else {
-                g.pow(delta)
-                    .div_exact(&h.pow(delta - 1))
-                    .expect("subresultant PRS divides exactly")
-            };
-            if dr == 0 {
-                // h ← lc(b)^deg a / h^(deg a − 1)
-                let da = a.degree().unwrap_or(0);
-                let r = b
-                    .leading()
-                    .pow(da)
-                    .div_exact(&h.pow(da - 1))
-                    .expect("subresultant PRS divides exactly");
-                return if negate { r.neg() } else { r };
+            prs.step();
+            match prs.b.degree() {
+                None => return C::zero(),
+                Some(0) => {
+                    // h ← lc(b)^deg a / h^(deg a − 1)
+                    let da = prs.a.degree().unwrap_or(0);
+                    let r = exact(prs.b.leading().pow(da), &prs.h.pow(da - 1));
+                    return if negate { r.neg() } else { r };
+                }
+                Some(_) => {}
             }
         }
     }
@@ -119,39 +96,20 @@ impl<C: Ring> Poly<C> {
     /// polynomial of the subresultant PRS. It is a gcd up to a nonzero factor of `C`;
     /// `gcd_domain(0, 0) = 0`, and a constant when the two are coprime.
     pub fn gcd_domain(&self, other: &Self) -> Self {
-        let (mut a, mut b) = match (self.degree(), other.degree()) {
+        let (a, b) = match (self.degree(), other.degree()) {
             (None, _) => return other.clone(),
             (_, None) => return self.clone(),
             (Some(m), Some(n)) if m >= n => (self.clone(), other.clone()),
             _ => (other.clone(), self.clone()),
         };
-        let (mut g, mut h) = (C::one(), C::one());
-        while b.degree().unwrap_or(0) > 0 {
-            let delta = a.degree().unwrap_or(0) - b.degree().unwrap_or(0);
-            let r = a.pseudo_rem(&b);
-            if r.is_zero() {
-                return b;
+        let mut prs = Prs::new(a, b);
+        while prs.b.degree().unwrap_or(0) > 0 {
+            prs.step();
+            if prs.b.is_zero() {
+                return prs.a;
             }
-            let divisor = g.mul(&h.pow(delta));
-            a = b;
-            b = Poly::new(
-                r.c.iter()
-                    .map(|v| {
-                        v.div_exact(&divisor)
-                            .expect("subresultant PRS divides exactly")
-                    })
-                    .collect(),
-            );
-            g = a.leading();
-            h = if delta == 0 {
-                h
-            } else {
-                g.pow(delta)
-                    .div_exact(&h.pow(delta - 1))
-                    .expect("subresultant PRS divides exactly")
-            };
         }
-        b
+        prs.b
     }
 
     /// The `j`-th subresultant `S_j(self, other)` (module docs), for
@@ -214,6 +172,45 @@ impl<C: Ring> Poly<C> {
             .map(|j| self.subresultant(other, j).coeff(j))
             .collect()
     }
+}
+
+/// The subresultant pseudo-remainder sequence (Collins; Brown–Traub): the state `(a, b)` with
+/// `deg a ≥ deg b` and the running scalars `g`, `h` that keep every division exact.
+struct Prs<C> {
+    a: Poly<C>,
+    b: Poly<C>,
+    g: C,
+    h: C,
+}
+
+impl<C: Ring> Prs<C> {
+    fn new(a: Poly<C>, b: Poly<C>) -> Self {
+        Prs {
+            a,
+            b,
+            g: C::one(),
+            h: C::one(),
+        }
+    }
+
+    /// `(a, b) ← (b, prem(a, b) / (g·h^δ))`, `g ← lc(b)`, `h ← g^δ / h^(δ−1)`, with
+    /// `δ = deg a − deg b` (`b` nonzero).
+    fn step(&mut self) {
+        let delta = self.a.degree().unwrap_or(0) - self.b.degree().unwrap_or(0);
+        let r = self.a.pseudo_rem(&self.b);
+        let divisor = self.g.mul(&self.h.pow(delta));
+        let next = Poly::new(r.c.iter().map(|v| exact(v.clone(), &divisor)).collect());
+        self.a = std::mem::replace(&mut self.b, next);
+        self.g = self.a.leading();
+        if delta > 0 {
+            self.h = exact(self.g.pow(delta), &self.h.pow(delta - 1));
+        }
+    }
+}
+
+/// A division the subresultant theory proves exact.
+fn exact<C: Ring>(v: C, d: &C) -> C {
+    v.div_exact(d).expect("subresultant PRS divides exactly")
 }
 
 #[cfg(test)]
