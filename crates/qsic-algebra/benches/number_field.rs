@@ -15,22 +15,9 @@
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use qsic_algebra::field::{NumberField, NumberFieldElement};
 use qsic_algebra::roots::RootInterval;
+use qsic_algebra::testing::SplitMix;
 use qsic_algebra::{AlgebraicReal, Field, IBig, Poly, RBig, Ring};
 use std::hint::black_box;
-
-struct SplitMix(u64);
-impl SplitMix {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn int(&mut self, lo: i64, hi: i64) -> i64 {
-        lo + (self.next() % (hi - lo + 1) as u64) as i64
-    }
-}
 
 fn close_pairs_12() -> Poly {
     let (mut a, mut b) = (Poly::from_i64s(&[1]), Poly::from_i64s(&[0, 1]));

@@ -33,6 +33,7 @@
 
 use crate::factor::{factorize, jacobi, sqrt_mod_prime, FactorError, Factorization};
 use crate::field::Quadratic;
+use crate::linalg::{minors, Matrix};
 use dashu_int::IBig;
 use dashu_ratio::RBig;
 use std::fmt;
@@ -136,7 +137,11 @@ pub fn find_point(c: &[[RBig; 3]; 3]) -> Result<ConicPoint, ConicError> {
     if c.iter().flatten().all(|v| v.is_zero()) {
         return Err(ConicError::ZeroMatrix);
     }
-    let (t, d) = diagonalize(c);
+    let dg = Matrix::from_array(c.clone())
+        .diagonalize_congruent()
+        .expect("checked symmetric");
+    let t: [[RBig; 3]; 3] = dg.p.to_array().expect("a 3 × 3 transform");
+    let d = dg.d;
     if let Some(k) = d.iter().position(|v| v.is_zero()) {
         // T e_k spans (part of) the kernel: a singular point, on the conic.
         let col: Vec<RBig> = (0..3).map(|i| t[i][k].clone()).collect();
@@ -320,7 +325,7 @@ pub fn parameterize(
     if !quad_form(&matrix, &base, &base).is_zero() {
         return Err(ConicError::PointNotOnConic);
     }
-    if det3(&matrix).is_zero() {
+    if minors::det(&matrix).is_zero() {
         return Err(ConicError::Degenerate);
     }
     let normal = mat_vec(&matrix, &base);
@@ -626,55 +631,6 @@ fn lll(basis: &mut [[IBig; 3]; 3], w: &[IBig; 3]) {
     }
 }
 
-/// Congruence diagonalization: `(T, d)` with `TᵀCT = diag(d)`, `T` invertible (Lagrange:
-/// a nonzero diagonal pivot, else a swap, else `eₖ + eⱼ` to make one; then eliminate).
-fn diagonalize(c: &[[RBig; 3]; 3]) -> ([[RBig; 3]; 3], [RBig; 3]) {
-    let mut m = c.clone();
-    let mut t: [[RBig; 3]; 3] =
-        std::array::from_fn(|i| std::array::from_fn(|j| RBig::from((i == j) as i32)));
-    // Column j += f·column k, as a congruence (row j += f·row k too).
-    let add = |m: &mut [[RBig; 3]; 3], t: &mut [[RBig; 3]; 3], j: usize, k: usize, f: &RBig| {
-        for i in 0..3 {
-            let v = f * &m[i][k];
-            m[i][j] += v;
-        }
-        for i in 0..3 {
-            let v = f * &m[k][i];
-            m[j][i] += v;
-        }
-        for i in 0..3 {
-            let v = f * &t[i][k];
-            t[i][j] += v;
-        }
-    };
-    for k in 0..3 {
-        if m[k][k].is_zero() {
-            if let Some(j) = (k + 1..3).find(|&j| !m[j][j].is_zero()) {
-                m.swap(k, j);
-                for row in m.iter_mut() {
-                    row.swap(k, j);
-                }
-                for row in t.iter_mut() {
-                    row.swap(k, j);
-                }
-            } else if let Some(j) = (k + 1..3).find(|&j| !m[k][j].is_zero()) {
-                add(&mut m, &mut t, k, j, &RBig::ONE);
-            }
-        }
-        if m[k][k].is_zero() {
-            continue; // row k is zero
-        }
-        for j in k + 1..3 {
-            let f = -(&m[k][j] / &m[k][k]);
-            if !f.is_zero() {
-                add(&mut m, &mut t, j, k, &f);
-            }
-        }
-    }
-    let d = std::array::from_fn(|i| m[i][i].clone());
-    (t, d)
-}
-
 fn check_symmetric(c: &[[RBig; 3]; 3]) -> Result<(), ConicError> {
     for row in 0..3 {
         for col in row + 1..3 {
@@ -810,10 +766,6 @@ fn quad_form(m: &[[IBig; 3]; 3], u: &[IBig; 3], v: &[IBig; 3]) -> IBig {
     dot(u, &mat_vec(m, v))
 }
 
-fn det3(m: &[[IBig; 3]; 3]) -> IBig {
-    dot(&m[0], &cross(&m[1], &m[2]))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -823,47 +775,38 @@ mod tests {
     }
 
     #[test]
-    fn diagonalization_is_a_congruence() {
-        let cases: [[[i64; 3]; 3]; 5] = [
-            [[0, 1, 0], [1, 0, 0], [0, 0, 0]],
-            [[0, 1, 2], [1, 0, 3], [2, 3, 0]],
-            [[2, 1, 1], [1, 2, 1], [1, 1, 2]],
-            [[0, 0, 0], [0, 0, 5], [0, 5, 0]],
-            [[1, 2, 3], [2, 4, 6], [3, 6, 9]],
+    fn singular_conics_give_a_kernel_point() {
+        // Zero diagonals (a swap, an `e_k + e_j` step) and ranks 1 and 2: the point found is
+        // the singular point, so `Cx = 0`; the nonsingular cases have a point or none by inertia.
+        let cases: [([[i64; 3]; 3], bool); 5] = [
+            ([[0, 1, 0], [1, 0, 0], [0, 0, 0]], true),
+            ([[0, 1, 2], [1, 0, 3], [2, 3, 0]], false),
+            ([[2, 1, 1], [1, 2, 1], [1, 1, 2]], false),
+            ([[0, 0, 0], [0, 0, 5], [0, 5, 0]], true),
+            ([[1, 2, 3], [2, 4, 6], [3, 6, 9]], true),
         ];
-        for c in cases {
+        for (c, singular) in cases {
             let c = c.map(|r| r.map(rat));
-            let (t, d) = diagonalize(&c);
-            for i in 0..3 {
-                for j in 0..3 {
-                    let v: RBig = (0..3)
-                        .flat_map(|k| (0..3).map(move |l| (k, l)))
-                        .fold(RBig::ZERO, |acc, (k, l)| {
-                            acc + &t[k][i] * &c[k][l] * &t[l][j]
-                        });
-                    let want = if i == j { d[i].clone() } else { RBig::ZERO };
-                    assert_eq!(v, want, "{c:?} entry ({i}, {j})");
+            assert_eq!(minors::det(&c).is_zero(), singular, "{c:?}");
+            let indefinite = Matrix::from_array(c.clone())
+                .diagonalize_congruent()
+                .unwrap()
+                .inertia()
+                .is_indefinite();
+            match find_point(&c).unwrap() {
+                ConicPoint::Rational(x) => {
+                    assert!(x.iter().any(|v| !v.is_zero()), "{c:?}");
+                    let cx = Matrix::from_array(c.clone()).mul_vec(&x);
+                    if singular {
+                        assert!(cx.iter().all(|v| v.is_zero()), "{c:?}: {x:?} not singular");
+                    } else {
+                        let q = (0..3).fold(RBig::ZERO, |acc, i| acc + &cx[i] * &x[i]);
+                        assert!(q.is_zero(), "{c:?}: {x:?} not on the conic");
+                    }
                 }
+                ConicPoint::NoRealPoint => assert!(!singular && !indefinite, "{c:?}"),
+                ConicPoint::NoRationalPoint(_) => panic!("{c:?}: a rational point exists"),
             }
-            let det: RBig = [
-                (0, 1, 2),
-                (1, 2, 0),
-                (2, 0, 1),
-                (0, 2, 1),
-                (2, 1, 0),
-                (1, 0, 2),
-            ]
-            .iter()
-            .enumerate()
-            .fold(RBig::ZERO, |acc, (n, &(a, b, c))| {
-                let v = &t[0][a] * &t[1][b] * &t[2][c];
-                if n < 3 {
-                    acc + v
-                } else {
-                    acc - v
-                }
-            });
-            assert!(!det.is_zero(), "{c:?}: T singular");
         }
     }
 
@@ -878,7 +821,7 @@ mod tests {
             let coef = coef.map(IBig::from);
             let n = IBig::from(n);
             let b = congruence_lattice(coef.clone(), &n);
-            assert_eq!(abs(&det3(&b)), n);
+            assert_eq!(abs(&minors::det(&b)), n);
             for v in &b {
                 assert_eq!(residue(&dot(&coef, v), &n), 0);
             }

@@ -33,6 +33,7 @@ pub mod poly;
 pub mod ring;
 pub mod roots;
 pub mod sign;
+pub mod testing;
 
 pub use algebraic::AlgebraicReal;
 pub use dashu_int::IBig;

@@ -5,18 +5,16 @@
 //! - `classify_case/case_NN`: each case's disguised copies through the exact path only.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use qsic::classify;
 use qsic::test_support::classify_exact;
-use qsic::{classify, Quadric};
 use std::hint::black_box;
 
 mod inputs;
-use inputs::{corpus_pairs, random_quadric, SplitMix};
+use inputs::{corpus_pairs, random_pairs, SplitMix};
 
 fn bench(c: &mut Criterion) {
     let mut rng = SplitMix(7);
-    let random: Vec<(Quadric, Quadric)> = (0..1000)
-        .map(|_| (random_quadric(&mut rng), random_quadric(&mut rng)))
-        .collect();
+    let random = random_pairs(&mut rng, 1000);
     let mut g = c.benchmark_group("classify");
     g.throughput(Throughput::Elements(random.len() as u64));
     g.bench_function("random_small", |b| {

@@ -12,7 +12,7 @@ use qsic::{classify, Quadric};
 #[path = "../benches/inputs/mod.rs"]
 mod inputs;
 
-use inputs::{random_quadric, SplitMix};
+use inputs::{random_pairs, SplitMix};
 
 fn main() {
     let n: usize = std::env::args()
@@ -20,8 +20,8 @@ fn main() {
         .and_then(|s| s.parse().ok())
         .unwrap_or(1000);
     let mut rng = SplitMix(42);
-    let pairs: Vec<(Quadric, Quadric)> = (0..n)
-        .map(|_| (random_quadric(&mut rng), random_quadric(&mut rng)))
+    let pairs: Vec<(Quadric, Quadric)> = random_pairs(&mut rng, n)
+        .into_iter()
         .filter(|(a, b)| matches!(classify(a, b).case, Some(1..=4)))
         .collect();
     let (mut rational, mut quadratic, mut refused, mut components) = (0, 0, 0, [0usize; 3]);

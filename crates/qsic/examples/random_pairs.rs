@@ -4,12 +4,12 @@
 //! `cargo run --release -p qsic --example random_pairs -- 100000`; for instruction counts,
 //! run it under `valgrind --tool=callgrind` with N and with 0 and divide the difference by N.
 
-use qsic::{classify, Quadric};
+use qsic::classify;
 
 #[path = "../benches/inputs/mod.rs"]
 mod inputs;
 
-use inputs::{random_quadric, SplitMix};
+use inputs::{random_pairs, SplitMix};
 
 fn main() {
     let n: usize = std::env::args()
@@ -17,9 +17,7 @@ fn main() {
         .and_then(|s| s.parse().ok())
         .unwrap_or(1000);
     let mut rng = SplitMix(42);
-    let pairs: Vec<(Quadric, Quadric)> = (0..n)
-        .map(|_| (random_quadric(&mut rng), random_quadric(&mut rng)))
-        .collect();
+    let pairs = random_pairs(&mut rng, n);
     let mut hist = [0usize; 36];
     let start = std::time::Instant::now();
     for (a, b) in &pairs {

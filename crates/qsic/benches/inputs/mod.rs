@@ -6,27 +6,19 @@
 use qsic::io::quadric_from_rows;
 use qsic::Quadric;
 
-/// splitmix64: a deterministic generator, enough for benchmark inputs.
-pub struct SplitMix(pub u64);
-
-impl SplitMix {
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform in [lo, hi].
-    pub fn range(&mut self, lo: i64, hi: i64) -> i64 {
-        lo + (self.next_u64() % (hi - lo + 1) as u64) as i64
-    }
-}
+pub use qsic_algebra::testing::SplitMix;
 
 /// A random quadric whose 10 polynomial coefficients are integers in [−10, 10]
 /// (matrix: 2× the coefficient on the diagonal, the coefficient off it).
 pub fn random_quadric(rng: &mut SplitMix) -> Quadric {
     Quadric::from_integers(random_integer_matrix(rng)).expect("a nonzero symmetric matrix")
+}
+
+/// `n` pairs of [`random_quadric`]s, drawn in order.
+pub fn random_pairs(rng: &mut SplitMix, n: usize) -> Vec<(Quadric, Quadric)> {
+    (0..n)
+        .map(|_| (random_quadric(rng), random_quadric(rng)))
+        .collect()
 }
 
 /// The pairs of `cases.jsonl` whose id matches `filter`, with their labelled case.
@@ -98,7 +90,7 @@ pub fn random_rational_rows_json_in(rng: &mut SplitMix, p_max: i64, q_max: i64) 
         let mut m = [[(0i64, 1i64); 4]; 4];
         for i in 0..4 {
             for j in i..4 {
-                let v = (rng.range(-p_max, p_max), rng.range(1, q_max));
+                let v = (rng.int(-p_max, p_max), rng.int(1, q_max));
                 m[i][j] = v;
                 m[j][i] = v;
             }
@@ -141,7 +133,7 @@ pub fn random_polynomial_text_over(rng: &mut SplitMix, q_max: i64) -> String {
     loop {
         let mut text = String::new();
         for mono in MONOMIALS {
-            let c = rng.range(-10, 10);
+            let c = rng.int(-10, 10);
             if c == 0 {
                 continue;
             }
@@ -153,7 +145,7 @@ pub fn random_polynomial_text_over(rng: &mut SplitMix, q_max: i64) -> String {
             } else {
                 text.push_str(&format!(" {sign} "));
             }
-            let q = rng.range(1, q_max);
+            let q = rng.int(1, q_max);
             if q != 1 {
                 text.push_str(&format!("{}/{q}*", c.abs()));
             } else if c.abs() != 1 {
@@ -174,7 +166,7 @@ pub fn random_integer_matrix(rng: &mut SplitMix) -> [[i64; 4]; 4] {
         let mut m = [[0i64; 4]; 4];
         for i in 0..4 {
             for j in i..4 {
-                let c = rng.range(-10, 10);
+                let c = rng.int(-10, 10);
                 if i == j {
                     m[i][i] = 2 * c;
                 } else {

@@ -213,30 +213,19 @@ mod tests {
     use crate::classify::classify_exact;
     use crate::Quadric;
 
-    /// splitmix64, for reproducible random pairs.
-    struct SplitMix(u64);
+    use qsic_algebra::testing::SplitMix;
 
-    impl SplitMix {
-        fn next(&mut self) -> u64 {
-            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-            let mut z = self.0;
-            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-            z ^ (z >> 31)
-        }
-
-        /// A symmetric matrix with entries uniform in [−r, r].
-        fn matrix(&mut self, r: i64) -> [[i64; 4]; 4] {
-            let mut m = [[0i64; 4]; 4];
-            for i in 0..4 {
-                for j in i..4 {
-                    let v = (self.next() % (2 * r as u64 + 1)) as i64 - r;
-                    m[i][j] = v;
-                    m[j][i] = v;
-                }
+    /// A symmetric matrix with entries uniform in [−r, r].
+    fn random_matrix(rng: &mut SplitMix, r: i64) -> [[i64; 4]; 4] {
+        let mut m = [[0i64; 4]; 4];
+        for i in 0..4 {
+            for j in i..4 {
+                let v = rng.int(-r, r);
+                m[i][j] = v;
+                m[j][i] = v;
             }
-            m
         }
+        m
     }
 
     fn exact_case(a: [[i64; 4]; 4], b: [[i64; 4]; 4]) -> Option<u8> {
@@ -254,7 +243,10 @@ mod tests {
             let (mut total, mut decided) = (0, 0);
             let mut seen = [false; 5];
             while total < 400 {
-                let (a, b) = (rng.matrix(range), rng.matrix(range));
+                let (a, b) = (
+                    random_matrix(&mut rng, range),
+                    random_matrix(&mut rng, range),
+                );
                 if a == [[0; 4]; 4] || b == [[0; 4]; 4] {
                     continue;
                 }
@@ -331,7 +323,10 @@ mod tests {
         let mut rng = SplitMix(7);
         for range in [10, l] {
             for _ in 0..100 {
-                pairs.push((rng.matrix(range), rng.matrix(range)));
+                pairs.push((
+                    random_matrix(&mut rng, range),
+                    random_matrix(&mut rng, range),
+                ));
             }
         }
         let poly = |c: &[i128]| Poly::new(c.iter().map(|&v| IBig::from(v)).collect());

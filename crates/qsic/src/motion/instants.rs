@@ -149,25 +149,6 @@ pub(crate) fn pencil_entries(a: &[[Poly; 4]; 4], b: &[[Poly; 4]; 4]) -> [[TPoly;
     })
 }
 
-/// All `k×k` minors of a 4×4 matrix over `ℤ[t][λ]`.
-pub(crate) fn minors(m: &[[TPoly; 4]; 4], k: usize) -> Vec<TPoly> {
-    let subsets: Vec<Vec<usize>> = (0u8..16)
-        .filter(|s| s.count_ones() as usize == k)
-        .map(|s| (0..4).filter(|i| s >> i & 1 == 1).collect())
-        .collect();
-    let mut out = Vec::with_capacity(subsets.len() * subsets.len());
-    for rows in &subsets {
-        for cols in &subsets {
-            let sub: Vec<Vec<TPoly>> = rows
-                .iter()
-                .map(|&i| cols.iter().map(|&j| m[i][j].clone()).collect())
-                .collect();
-            out.push(det_bareiss(sub));
-        }
-    }
-    out
-}
-
 /// Polynomials in `t` vanishing wherever the gcd of the `k×k` minors (forms of degree `k`)
 /// specialised at `t₀` has more roots than the generic gcd `D_k` specialised: the quotients
 /// `mⱼ/D_k` then share a root at `t₀`. Two integer combinations of the quotients share it too,

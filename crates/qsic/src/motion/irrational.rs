@@ -12,7 +12,7 @@ use super::instants::TPoly;
 use crate::classify::{classify_regular_parts, Classification};
 use crate::pencil::SigItem;
 use qsic_algebra::field::number_field::{NumberField, NumberFieldElement as K};
-use qsic_algebra::linalg::minors::det_bareiss;
+use qsic_algebra::linalg::minors::SmallMinors;
 use qsic_algebra::matrix::Inertia;
 use qsic_algebra::{AlgebraicReal, Field, IBig, Poly, RBig, Ring, Sign};
 
@@ -36,12 +36,13 @@ pub(crate) fn classify_at_irrational(
     if a.iter().all(Ring::is_zero) || b.iter().all(Ring::is_zero) || proportional(&a, &b) {
         return None;
     }
-    let rows = |sel: &[usize]| -> Vec<Vec<KPoly>> {
-        sel.iter()
-            .map(|&i| sel.iter().map(|&j| e[i][j].clone()).collect())
-            .collect()
-    };
-    let f = det_bareiss(rows(&[0, 1, 2, 3]));
+    // the chart is λA − B with A, −B the coefficients of λ¹, λ⁰
+    let (ma, mb): ([[K; 4]; 4], [[K; 4]; 4]) = (
+        std::array::from_fn(|i| std::array::from_fn(|j| e[i][j].coeff(1))),
+        std::array::from_fn(|i| std::array::from_fn(|j| e[i][j].coeff(0).neg())),
+    );
+    let minors = SmallMinors::of_pencil(&ma, &mb);
+    let f = minors.minor(&[0, 1, 2, 3], &[0, 1, 2, 3]).clone();
     if f.is_zero() {
         return None;
     }
@@ -55,10 +56,10 @@ pub(crate) fn classify_at_irrational(
         for k in 1..=3 {
             let mut g = KPoly::zero();
             let mut mu = k;
-            for m in all_minors(&e, k) {
+            for m in minors.of_order(k) {
                 if !m.is_zero() {
                     mu = mu.min(k - m.degree().unwrap_or(0));
-                    g = g.gcd_monic(&m);
+                    g = g.gcd_monic(m);
                 }
             }
             d.push((g, mu));
@@ -89,7 +90,10 @@ pub(crate) fn classify_at_irrational(
         .fold(KPoly::constant(K::one()), |acc, (p, _, _)| &acc * p);
     let roots = isolate(&product)?;
     let sturms: Vec<Vec<KPoly>> = pieces.iter().map(|(p, _, _)| sturm(p, None)).collect();
-    let principal = principal_minor_sums(&e);
+    let principal: [KPoly; 4] = minors
+        .principal_minor_sums()
+        .try_into()
+        .expect("four sums of a 4×4 pencil");
 
     let mut real: Vec<(usize, Option<Inertia>)> = Vec::new(); // (piece, inertia if multiple)
     for root in &roots {
@@ -165,41 +169,6 @@ pub(crate) fn classify_at_irrational(
 /// `a ∝ b` (both nonzero vectors).
 fn proportional(a: &[K], b: &[K]) -> bool {
     (0..a.len()).all(|i| (0..a.len()).all(|j| a[i].mul(&b[j]).sub(&a[j].mul(&b[i])).is_zero()))
-}
-
-fn all_minors(e: &[[KPoly; 4]; 4], k: usize) -> Vec<KPoly> {
-    let subsets: Vec<Vec<usize>> = (0u8..16)
-        .filter(|s| s.count_ones() as usize == k)
-        .map(|s| (0..4).filter(|i| s >> i & 1 == 1).collect())
-        .collect();
-    let mut out = Vec::new();
-    for r in &subsets {
-        for c in &subsets {
-            out.push(det_bareiss(
-                r.iter()
-                    .map(|&i| c.iter().map(|&j| e[i][j].clone()).collect())
-                    .collect(),
-            ));
-        }
-    }
-    out
-}
-
-/// `E_k(λ)`, the sums of the principal `k×k` minors, `k = 1..4`.
-fn principal_minor_sums(e: &[[KPoly; 4]; 4]) -> [KPoly; 4] {
-    std::array::from_fn(|k| {
-        let mut sum = KPoly::zero();
-        for s in (0u8..16).filter(|s| s.count_ones() as usize == k + 1) {
-            let sel: Vec<usize> = (0..4).filter(|i| s >> i & 1 == 1).collect();
-            let m = det_bareiss(
-                sel.iter()
-                    .map(|&i| sel.iter().map(|&j| e[i][j].clone()).collect())
-                    .collect(),
-            );
-            sum = &sum + &m;
-        }
-        sum
-    })
 }
 
 /// Splits the square-free `p` into the parts whose roots have order `j` in `d`.

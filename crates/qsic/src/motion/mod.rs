@@ -28,10 +28,10 @@ use crate::classify::{classify_allowing_zero, Classification};
 use crate::error::Error;
 use crate::io::MovingMatrix;
 use instants::{
-    discriminant_form, minors, pencil_entries, rank_conditions, resultant_forms,
+    discriminant_form, pencil_entries, rank_conditions, resultant_forms,
     squarefree_decomposition_t, t_content, t_primitive, Form, TPoly,
 };
-use qsic_algebra::linalg::minors::det_bareiss;
+use qsic_algebra::matrix::MatrixPencil;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
 
 /// Two moving quadrics `A(t)`, `B(t)` and their characteristic polynomial
@@ -41,6 +41,8 @@ pub struct MovingPencil {
     a: MovingMatrix,
     b: MovingMatrix,
     entries: [[TPoly; 4]; 4],
+    /// `λM_A(t) − M_B(t)` over ℤ\[t\] with every minor, as polynomials in `λ`.
+    pencil: MatrixPencil<Poly>,
     f: TPoly,
 }
 
@@ -125,8 +127,15 @@ impl MovingPencil {
     /// over `ℤ[t][λ]`).
     pub fn new(a: MovingMatrix, b: MovingMatrix) -> MovingPencil {
         let entries = pencil_entries(a.numerators(), b.numerators());
-        let f = det_bareiss(entries.iter().map(|r| r.to_vec()).collect());
-        MovingPencil { a, b, entries, f }
+        let pencil = MatrixPencil::from_entries(a.numerators().clone(), b.numerators().clone());
+        let f = pencil.det_poly();
+        MovingPencil {
+            a,
+            b,
+            entries,
+            pencil,
+            f,
+        }
     }
 
     /// `A(t)`.
@@ -193,8 +202,8 @@ impl MovingPencil {
         }
         if forms.iter().any(|(_, m)| *m > 1) {
             for k in 1..=3 {
-                let conditions = rank_conditions(&minors(&self.entries, k), k)
-                    .map_err(Error::UnsupportedMotion)?;
+                let conditions =
+                    rank_conditions(&self.pencil.minors(k), k).map_err(Error::UnsupportedMotion)?;
                 out.extend(conditions);
             }
         }

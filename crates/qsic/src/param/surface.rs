@@ -17,6 +17,7 @@ use crate::error::Error;
 use qsic_algebra::conic::{find_point, ConicPoint};
 use qsic_algebra::factor::factorize;
 use qsic_algebra::field::Quadratic;
+use qsic_algebra::linalg::minors::{self, SmallMinors};
 use qsic_algebra::{Field, IBig, Poly, RBig, Ring};
 
 /// A 4-vector over ℚ(√δ).
@@ -244,36 +245,9 @@ fn section_point(basis: [[RBig; 4]; 3], coords: [Quadratic; 3]) -> SectionPoint 
 
 /// `true` if `v` lies in the span of the three basis vectors (4×4 determinant zero).
 fn contains(basis: &[[RBig; 4]; 3], v: &[RBig; 4]) -> bool {
-    let m: [[Quadratic; 4]; 4] = std::array::from_fn(|i| {
-        std::array::from_fn(|j| q(if i < 3 { &basis[i][j] } else { &v[j] }))
-    });
-    det4(&m).is_zero()
-}
-
-fn det4(m: &Mat4) -> Quadratic {
-    // Laplace expansion along the first row of 3×3 minors
-    let mut acc = Quadratic::zero();
-    for c in 0..4 {
-        let minor = minor3(m, 0, c);
-        let term = m[0][c].mul(&minor);
-        acc = if c % 2 == 0 {
-            acc.add(&term)
-        } else {
-            acc.sub(&term)
-        };
-    }
-    acc
-}
-
-/// The 3×3 minor of `m` without row `r` and column `c`.
-fn minor3(m: &Mat4, r: usize, c: usize) -> Quadratic {
-    let rows: Vec<usize> = (0..4).filter(|&i| i != r).collect();
-    let cols: Vec<usize> = (0..4).filter(|&j| j != c).collect();
-    let e = |i: usize, j: usize| &m[rows[i]][cols[j]];
-    e(0, 0)
-        .mul(&e(1, 1).mul(e(2, 2)).sub(&e(1, 2).mul(e(2, 1))))
-        .sub(&e(0, 1).mul(&e(1, 0).mul(e(2, 2)).sub(&e(1, 2).mul(e(2, 0)))))
-        .add(&e(0, 2).mul(&e(1, 0).mul(e(2, 1)).sub(&e(1, 1).mul(e(2, 0)))))
+    let m: [[RBig; 4]; 4] =
+        std::array::from_fn(|i| if i < 3 { basis[i].clone() } else { v.clone() });
+    minors::det(&m).is_zero()
 }
 
 /// The parameterization of a nonsingular quadric of inertia (2, 2) through a point found on
@@ -370,26 +344,22 @@ pub(crate) fn parameterize_cone(
 ) -> Result<Option<RuledParameterization>, Error> {
     let sm = to_quadratic(s);
     // the vertex: a nonzero column of the adjugate (rank 3 ⇒ adj S has rank 1, S·adj S = 0)
-    let vertex = (0..4)
-        .flat_map(|c| {
-            let v: Vec4 = std::array::from_fn(|r| {
-                let m = minor3(&sm, c, r);
+    let all = SmallMinors::all(s);
+    let except = |k: usize| -> Vec<usize> { (0..4).filter(|&i| i != k).collect() };
+    let vertex_rational: [RBig; 4] = (0..4)
+        .map(|c| {
+            std::array::from_fn(|r| {
+                let m = all.minor(&except(c), &except(r));
                 if (r + c) % 2 == 0 {
-                    m
+                    m.clone()
                 } else {
-                    m.neg()
+                    -m
                 }
-            });
-            (!v.iter().all(Quadratic::is_zero)).then_some(v)
+            })
         })
-        .next()
+        .find(|v: &[RBig; 4]| v.iter().any(|x| !x.is_zero()))
         .ok_or_else(|| Error::Algebra("a cone member of rank below 3".into()))?;
-    let vertex_rational: [RBig; 4] = std::array::from_fn(|i| {
-        vertex[i]
-            .as_rational()
-            .cloned()
-            .expect("a rational matrix has a rational kernel")
-    });
+    let vertex: Vec4 = std::array::from_fn(|i| q(&vertex_rational[i]));
     let Some(found) = point_on(s, Some(&vertex_rational))? else {
         return Ok(None);
     };
