@@ -33,6 +33,8 @@ pub mod poly;
 pub mod ring;
 pub mod roots;
 pub mod sign;
+// Test and bench support shared by the crates (not part of the API).
+#[doc(hidden)]
 pub mod testing;
 
 pub use algebraic::AlgebraicReal;
