@@ -94,6 +94,33 @@ pub trait RealField: Field {
     fn sign(&self) -> crate::Sign;
 }
 
+/// The arithmetic of a dashu number type through its operators, in place where it can be.
+macro_rules! big_number_ops {
+    () => {
+        fn add(&self, rhs: &Self) -> Self {
+            self + rhs
+        }
+        fn sub(&self, rhs: &Self) -> Self {
+            self - rhs
+        }
+        fn mul(&self, rhs: &Self) -> Self {
+            self * rhs
+        }
+        fn neg(&self) -> Self {
+            -self
+        }
+        fn add_assign(&mut self, rhs: &Self) {
+            *self += rhs;
+        }
+        fn sub_mul_assign(&mut self, a: &Self, b: &Self) {
+            *self -= a * b;
+        }
+        fn add_mul_assign(&mut self, a: &Self, b: &Self) {
+            *self += a * b;
+        }
+    };
+}
+
 impl Ring for IBig {
     fn zero() -> Self {
         IBig::ZERO
@@ -107,33 +134,13 @@ impl Ring for IBig {
     fn is_zero(&self) -> bool {
         IBig::is_zero(self)
     }
-    fn add(&self, rhs: &Self) -> Self {
-        self + rhs
-    }
-    fn sub(&self, rhs: &Self) -> Self {
-        self - rhs
-    }
-    fn mul(&self, rhs: &Self) -> Self {
-        self * rhs
-    }
-    fn neg(&self) -> Self {
-        -self
-    }
+    big_number_ops!();
     fn div_exact(&self, d: &Self) -> Option<Self> {
         if IBig::is_zero(d) {
             return None;
         }
         let (q, r) = dashu_int::ops::DivRem::div_rem(self, d);
         IBig::is_zero(&r).then_some(q)
-    }
-    fn add_assign(&mut self, rhs: &Self) {
-        *self += rhs;
-    }
-    fn sub_mul_assign(&mut self, a: &Self, b: &Self) {
-        *self -= a * b;
-    }
-    fn add_mul_assign(&mut self, a: &Self, b: &Self) {
-        *self += a * b;
     }
     fn is_one(&self) -> bool {
         IBig::is_one(self)
@@ -156,29 +163,9 @@ impl Ring for RBig {
     fn is_zero(&self) -> bool {
         RBig::is_zero(self)
     }
-    fn add(&self, rhs: &Self) -> Self {
-        self + rhs
-    }
-    fn sub(&self, rhs: &Self) -> Self {
-        self - rhs
-    }
-    fn mul(&self, rhs: &Self) -> Self {
-        self * rhs
-    }
-    fn neg(&self) -> Self {
-        -self
-    }
+    big_number_ops!();
     fn div_exact(&self, d: &Self) -> Option<Self> {
         (!RBig::is_zero(d)).then(|| self / d)
-    }
-    fn add_assign(&mut self, rhs: &Self) {
-        *self += rhs;
-    }
-    fn sub_mul_assign(&mut self, a: &Self, b: &Self) {
-        *self -= a * b;
-    }
-    fn add_mul_assign(&mut self, a: &Self, b: &Self) {
-        *self += a * b;
     }
     fn is_one(&self) -> bool {
         RBig::is_one(self)
