@@ -620,6 +620,25 @@ mod tests {
         }
     }
 
+    /// Row and column sets that are not increasing subsets of `0..N` of one length are refused.
+    #[test]
+    fn invalid_minor_sets_panic() {
+        let all = SmallMinors::all(&[[1i128, 2, 0, 0], [3, 4, 0, 0], [0, 0, 5, 6], [0, 0, 7, 8]]);
+        let bad: [(&[usize], &[usize]); 6] = [
+            (&[1, 0], &[0, 1]),
+            (&[1, 1], &[0, 1]),
+            (&[0, 4], &[0, 1]),
+            (&[0, 1], &[0, 1, 2]),
+            (&[], &[]),
+            (&[0, 1, 2], &[0, 1, 1]),
+        ];
+        for (rows, cols) in bad {
+            let caught = std::panic::catch_unwind(|| *all.minor(rows, cols));
+            assert!(caught.is_err(), "{rows:?} {cols:?}");
+        }
+        assert_eq!(*all.minor(&[0, 1], &[0, 1]), -2);
+    }
+
     /// Known values: the empty and 1×1 determinants, a permutation matrix, a singular matrix.
     #[test]
     fn determinants_with_known_values() {
