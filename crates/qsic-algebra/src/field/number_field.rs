@@ -457,6 +457,13 @@ impl Ring for NumberFieldElement {
     }
 }
 
+/// ℚ(α) ordered by α's place on the real line: the sign is [`NumberFieldElement::sign`].
+impl crate::ring::RealField for NumberFieldElement {
+    fn sign(&self) -> Sign {
+        NumberFieldElement::sign(self)
+    }
+}
+
 impl Field for NumberFieldElement {
     /// `None` exactly when [`Ring::is_zero`] says so (may shrink the defining polynomial).
     fn inv(&self) -> Option<Self> {
@@ -537,6 +544,69 @@ impl fmt::Debug for NumberField {
 mod tests {
     use super::*;
     use proptest::prelude::*;
+
+    /// `linalg`'s inertia over ℚ(∛2) through `RealField`: a symmetric matrix whose entries
+    /// are built from α, diagonalized by congruence (PᵀSP = D checked), against the signs of
+    /// its leading principal minors (Jacobi: all nonzero here, so the number of sign changes
+    /// in 1, D₁, D₂, D₃ is the number of negative eigenvalues).
+    #[test]
+    fn inertia_over_a_cubic_field() {
+        use crate::linalg::{minors, Matrix};
+        let alpha = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 0, 1]))
+            .pop()
+            .unwrap();
+        let a = NumberField::new(&alpha).generator();
+        let r = |n: i64| NumberFieldElement::rational(RBig::from(n));
+        // entries: α − 1, α², 1 − α, α + 2, …  (α ≈ 1.26)
+        let e = [
+            [&a - &r(1), &a * &a, r(3)],
+            [&a * &a, &r(1) - &a, &a + &r(2)],
+            [r(3), &a + &r(2), &(&a * &a) - &r(5)],
+        ];
+        let s = Matrix::from_array(e.clone());
+        let diag = s.diagonalize_congruent().expect("symmetric");
+        let back = &(&diag.p.transpose() * &s) * &diag.p;
+        let d = Matrix::from_fn(3, 3, |i, j| {
+            if i == j {
+                diag.d[i].clone()
+            } else {
+                NumberFieldElement::zero()
+            }
+        });
+        assert!(back == d, "PᵀSP = D");
+        let leading: Vec<Sign> = (1..=3)
+            .map(|k| {
+                let m: Vec<Vec<NumberFieldElement>> = (0..k).map(|i| e[i][..k].to_vec()).collect();
+                let v = minors::det_bareiss(m);
+                // an independent witness for the exact sign: the float value, far from zero
+                let f = v.to_f64();
+                assert!(
+                    f.abs() > 0.1,
+                    "minor {k} too close to zero for the witness: {f}"
+                );
+                assert_eq!(
+                    v.sign(),
+                    if f > 0.0 {
+                        Sign::Positive
+                    } else {
+                        Sign::Negative
+                    }
+                );
+                v.sign()
+            })
+            .collect();
+        assert!(leading.iter().all(|s| *s != Sign::Zero), "{leading:?}");
+        let changes = crate::sign::count_variations(
+            std::iter::once(Sign::Positive).chain(leading.iter().copied()),
+        );
+        let inertia = diag.inertia();
+        assert_eq!(
+            usize::from(inertia.negative),
+            changes,
+            "{inertia:?} {leading:?}"
+        );
+        assert_eq!(usize::from(inertia.positive), 3 - changes);
+    }
 
     type Nfe = NumberFieldElement;
 
