@@ -513,8 +513,8 @@ pub fn bits(c: &RBig) -> usize {
     c.numerator().bit_len() + c.denominator().bit_len()
 }
 
-/// `c / 2`, with shortcuts for integers.
-fn half(c: &RBig) -> RBig {
+/// `c / 2`, with shortcuts for integers (the off-diagonal entries of a form's matrix).
+pub fn half(c: &RBig) -> RBig {
     if !c.is_int() {
         c / RBig::from(2)
     } else if c.numerator().bit(0) {

@@ -7,10 +7,8 @@ use super::number::scan_numeral;
 use crate::error::Error;
 use crate::limits::MAX_INPUT_LEN;
 use crate::quadric::{Quadric, SmallRational};
-use dashu_int::ops::BitTest;
-use dashu_int::UBig;
 use dashu_ratio::RBig;
-use qsic_algebra::mpoly::MPoly;
+use qsic_algebra::mpoly::{half, MPoly};
 use std::borrow::Cow;
 
 /// Reads a quadric from a polynomial in `x, y, z, w` of degree at most 2.
@@ -426,17 +424,6 @@ fn product_index(i: usize, j: usize) -> Option<usize> {
     match PRODUCTS[i][j] {
         NO_MONOMIAL => None,
         k => Some(usize::from(k)),
-    }
-}
-
-/// `c / 2`, with shortcuts for integers.
-fn half(c: &RBig) -> RBig {
-    if !c.is_int() {
-        c / RBig::from(2)
-    } else if c.numerator().bit(0) {
-        RBig::from_parts(c.numerator().clone(), UBig::from(2u8))
-    } else {
-        RBig::from(c.numerator() >> 1)
     }
 }
 
