@@ -123,8 +123,8 @@ pub struct Motion {
 }
 
 impl MovingPencil {
-    /// The pencil of two moving quadrics; computes `f(λ; t)` (a 4×4 Bareiss determinant
-    /// over `ℤ[t][λ]`).
+    /// The pencil of two moving quadrics; computes every minor of `λM_A − M_B` over `ℤ[t]`
+    /// once (`MatrixPencil<Poly>`), `f(λ; t)` among them.
     pub fn new(a: MovingMatrix, b: MovingMatrix) -> MovingPencil {
         let entries = pencil_entries(a.numerators(), b.numerators());
         let pencil = MatrixPencil::from_entries(a.numerators().clone(), b.numerators().clone());
