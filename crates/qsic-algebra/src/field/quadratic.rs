@@ -330,6 +330,11 @@ mod tests {
         assert!(!i.is_real() && i.sign().is_none());
         assert_eq!(i.clone() * i, Quadratic::rational(r(-1, 1)));
         assert_eq!(Quadratic::sqrt(&IBig::ZERO), Quadratic::zero());
+        let x = elem((1, 2), (-3, 4), 7);
+        assert_eq!(
+            (x.rational_part(), x.radical_part(), x.radicand()),
+            (&r(1, 2), &r(-3, 4), &IBig::from(7))
+        );
     }
 
     #[test]
