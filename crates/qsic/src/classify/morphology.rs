@@ -207,6 +207,18 @@ impl ComponentKind {
             ComponentKind::Quadric => "quadric",
         }
     }
+
+    /// The degree of a curve of this kind: 0 for a point, `None` for a plane or a quadric.
+    pub fn degree(self) -> Option<u32> {
+        match self {
+            ComponentKind::Point => Some(0),
+            ComponentKind::Line => Some(1),
+            ComponentKind::Conic => Some(2),
+            ComponentKind::Cubic => Some(3),
+            ComponentKind::Quartic => Some(4),
+            ComponentKind::Plane | ComponentKind::Quadric => None,
+        }
+    }
 }
 
 /// A family of equal real components: `count` components of this kind, each of this multiplicity.

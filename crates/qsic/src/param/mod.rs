@@ -5,6 +5,7 @@
 //! |---|---|
 //! | [`parameterize_smooth_quartic`] | surface `S`, its ruling `b + v·d`, `p(u) = a(u) ± d(u)√s(u)`, the real roots of `s` |
 //! | [`LevinParameterization::real_components`] | Theorem 12: the number of real components from the roots of `s` |
+//! | [`parameterize`] | the whole curve as exact [`Curve`] components, real pieces and their connection |
 //!
 //! With `S` a real ruled member of the pencil parameterized as `q(u, v) = b(u) + v·d(u)`,
 //! substituting `q` into a second member `Q` gives `c₂v² + 2c₁v + c₀ = 0`, `c₂ = dᵀQd`,
@@ -12,11 +13,16 @@
 //! `s = c₁² − c₀c₂`; identically `aᵀQa + s·dᵀQd = 0` and `aᵀQd = 0` for every member `Q`.
 //! `u` runs over ℝ ∪ {∞}: `s` is a binary quartic, its degree drop a root at `u = ∞`.
 
+pub mod curve;
 mod surface;
 
+pub use curve::{
+    Arc, Component, ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue, Point,
+    PointPoly, RealPiece, Sheet, SingularPoint,
+};
 pub use surface::{PolyVector, RuledParameterization};
 
-use crate::classify::analyze_pencil;
+use crate::classify::{analyze_pencil, classify, Classification, ComponentKind, PencilKind};
 use crate::error::Error;
 use crate::pencil::{PencilAnalysis, PencilPoint};
 use crate::quadric::Quadric;
@@ -185,6 +191,126 @@ pub fn parameterize_smooth_quartic(
         s,
         discriminant,
         surface,
+    })
+}
+
+/// The intersection curve of `a` and `b`: every component exactly, the pieces of its real
+/// locus and how they connect.
+///
+/// # Errors
+/// [`Error::Unsupported`] for the classes not implemented yet; the errors of the class's
+/// construction (see [`parameterize_smooth_quartic`]).
+///
+/// # Examples
+/// ```
+/// use qsic::{io::parse_quadric, param::parameterize};
+/// // a sphere and an ellipsoidal cylinder: two closed real pieces, not connected
+/// let a = parse_quadric("x^2+y^2+z^2-w^2").unwrap();
+/// let b = parse_quadric("2*x^2+4*y^2-w^2").unwrap();
+/// let c = parameterize(&a, &b).unwrap();
+/// assert_eq!((c.components.len(), c.pieces.len(), c.connected.len()), (1, 2, 2));
+/// ```
+pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
+    let classification = classify(a, b);
+    match (classification.pencil, classification.case) {
+        (PencilKind::Regular, Some(1..=4)) => {
+            let levin = parameterize_smooth_quartic(a, b)?;
+            levin_curve(classification, &levin)
+        }
+        (PencilKind::Regular, Some(case)) => Err(Error::Unsupported(format!(
+            "the curve of case {case} (not yet)"
+        ))),
+        (kind, _) => Err(Error::Unsupported(format!(
+            "the curve of a {} pencil (not yet)",
+            kind.key()
+        ))),
+    }
+}
+
+/// The [`Curve`] of a nonsingular quartic from its Levin parameterization: one component,
+/// and one closed real piece per positive arc of `s` between consecutive real roots on
+/// ℝ ∪ {∞} (the sheets `+` and `−` joined at the roots), two pieces (the two sheets) when
+/// `s > 0` everywhere; the pieces are disjoint (a nonsingular curve).
+fn levin_curve(
+    classification: Classification,
+    levin: &LevinParameterization,
+) -> Result<Curve, Error> {
+    let n = levin.real_components()?;
+    let field = levin.delta.as_ref().map(curve::sqrt_field);
+    let vector = |v: &PolyVector| -> PointPoly {
+        std::array::from_fn(|i| curve::poly_from_quadratic(&v[i], field.as_ref()))
+    };
+    let param = ComponentParam::Levin {
+        a: vector(&levin.a),
+        d: vector(&levin.d),
+        s: curve::poly_from_quadratic(&levin.s, field.as_ref()),
+    };
+    let dr = &levin.discriminant;
+    let mut ends: Vec<ParamValue> = dr.roots.iter().cloned().map(ParamValue::Finite).collect();
+    // the sign of s on the arc after each end, in the same cyclic order
+    let mut after: Vec<Sign> = dr.arcs.iter().skip(1).map(|a| a.1).collect();
+    if dr.at_infinity {
+        ends.push(ParamValue::Infinity);
+        after.push(dr.arcs[0].1);
+    }
+    let mut pieces = Vec::new();
+    let loop_over = |range: ParamRange| RealPiece::Curve {
+        component: 0,
+        arcs: vec![
+            Arc {
+                range: range.clone(),
+                sheet: Sheet::Plus,
+                reversed: false,
+            },
+            Arc {
+                range,
+                sheet: Sheet::Minus,
+                reversed: true,
+            },
+        ],
+        closed: true,
+    };
+    if ends.is_empty() {
+        if dr.arcs[0].1 == Sign::Positive {
+            for sheet in [Sheet::Plus, Sheet::Minus] {
+                pieces.push(RealPiece::Curve {
+                    component: 0,
+                    arcs: vec![Arc {
+                        range: ParamRange::All,
+                        sheet,
+                        reversed: false,
+                    }],
+                    closed: true,
+                });
+            }
+        }
+    } else {
+        for i in 0..ends.len() {
+            if after[i] == Sign::Positive {
+                let next = ends[(i + 1) % ends.len()].clone();
+                pieces.push(loop_over(ParamRange::Between(ends[i].clone(), next)));
+            }
+        }
+    }
+    if pieces.len() != usize::from(n) {
+        return Err(Error::Algebra(format!(
+            "{} real pieces from the arcs of s(u), Theorem 12 says {n}",
+            pieces.len()
+        )));
+    }
+    let connected = (0..pieces.len()).map(|i| vec![i]).collect();
+    Ok(Curve {
+        classification,
+        components: vec![Component {
+            kind: ComponentKind::Quartic,
+            multiplicity: 1,
+            real: n > 0,
+            param: Some(param),
+            plane: None,
+        }],
+        singular_points: Vec::new(),
+        pieces,
+        connected,
     })
 }
 
