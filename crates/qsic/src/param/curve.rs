@@ -71,6 +71,8 @@ pub enum ParamValue {
 }
 
 /// A range of the parameter on the projective line ℝ ∪ {∞}.
+// A curve has a handful of ranges: boxing the ends would only add indirection.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug)]
 pub enum ParamRange {
     /// All of ℝ ∪ {∞} (a closed curve traced once).
