@@ -92,19 +92,19 @@ fn check(curve: &Curve, a: &Quadric, b: &Quadric) -> Result<(), String> {
     let c = &curve.classification;
     let mut degree = 0;
     for (i, comp) in curve.components.iter().enumerate() {
+        let on_both =
+            |p: &qsic::param::ComponentParam| p.lies_on(a.matrix()) && p.lies_on(b.matrix());
         match &comp.param {
-            Some(p) => {
-                if !p.lies_on(a.matrix()) || !p.lies_on(b.matrix()) {
-                    return Err(format!(
-                        "component {i} ({}) is not on both quadrics",
-                        comp.kind.key()
-                    ));
-                }
+            Some(p) if !on_both(p) => {
+                return Err(format!(
+                    "component {i} ({}) is not on both quadrics",
+                    comp.kind.key()
+                ));
             }
             None if comp.real => {
                 return Err(format!("real component {i} without parameterization"))
             }
-            None => {}
+            _ => {}
         }
         degree += comp.kind.degree().unwrap_or(0) * comp.multiplicity;
     }
