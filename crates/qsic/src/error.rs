@@ -94,6 +94,9 @@ pub enum Error {
     /// An invalid parameter of a shape constructor (e.g. a non-positive squared radius).
     #[error("invalid shape parameter: {0}")]
     InvalidShape(String),
+    /// An affine chart that is not one (e.g. the zero form as the plane at infinity).
+    #[error("invalid chart: {0}")]
+    InvalidChart(String),
     /// A moving pencil outside what the motion analysis handles (e.g. singular for every `t`).
     #[error("moving pencil not supported: {0}")]
     UnsupportedMotion(String),

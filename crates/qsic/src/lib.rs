@@ -2,6 +2,7 @@
 //!
 //! | module | owns |
 //! |---|---|
+//! | [`affine`] | the affine view: charts, affine names of quadrics |
 //! | [`quadric`] | [`Quadric`], a validated symmetric 4×4 rational matrix |
 //! | [`io`] | reading quadrics from polynomial strings and matrices, rational functions and moving quadrics, exactly |
 //! | [`shapes`] | constructors for spheres, cylinders, cones, … from rational parameters |
@@ -22,6 +23,7 @@
 // Index loops read as the matrix formulas they implement.
 #![allow(clippy::needless_range_loop)]
 
+pub mod affine;
 pub mod classify;
 pub mod error;
 pub mod io;
