@@ -1,5 +1,5 @@
 //! The vocabulary of the classification: pencil kinds, complex and real types, and
-//! the structured description of the real components (see `shared/corpus/taxonomy.md`).
+//! the structured description of the real components (see `docs/taxonomy.md`).
 
 use std::fmt;
 
