@@ -15,7 +15,7 @@
 
 use crate::error::Error;
 use crate::quadric::Quadric;
-use qsic_algebra::linalg::minors::{det, principal_minor_sums};
+use qsic_algebra::linalg::minors::principal_minor_sums;
 use qsic_algebra::linalg::{Inertia, Matrix};
 use qsic_algebra::{RBig, Sign};
 
