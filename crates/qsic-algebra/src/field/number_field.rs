@@ -30,6 +30,7 @@
 use crate::algebraic::AlgebraicReal;
 use crate::poly::Poly;
 use crate::ring::{Field, Ring};
+use crate::roots::RootInterval;
 use crate::sign::Sign;
 use dashu_int::IBig;
 use dashu_ratio::RBig;
@@ -540,8 +541,115 @@ impl fmt::Debug for NumberField {
     }
 }
 
+impl Poly<NumberFieldElement> {
+    /// The distinct real roots of a nonzero polynomial with coefficients in one real number
+    /// field ℚ(α), increasing, as real algebraic numbers over ℚ.
+    ///
+    /// Every root is a root of the norm `N(u) = Res_α(m(α), P(α, u)) ∈ ℤ[u]` (`m` the defining
+    /// polynomial, `P` the integer numerator); of the real roots of `N`'s square-free part,
+    /// isolated, the roots of `p` are those where the square-free part of `p` (over the field)
+    /// changes sign across the isolating interval — a simple root of it does, and no other
+    /// root of `N` lies in the interval. Signs at rational ends are exact field signs.
+    ///
+    /// ```
+    /// # use qsic_algebra::{field::NumberField, AlgebraicReal, Poly, Ring};
+    /// // (u − √2)²(u + 1) over ℚ(√2): roots √2 and −1, not −√2
+    /// let k = NumberField::new(&AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 1]))[1]);
+    /// let r2 = k.generator();
+    /// let lin = Poly::new(vec![r2.neg(), Ring::one()]);
+    /// let p = &(&lin * &lin) * &Poly::new(vec![Ring::one(), Ring::one()]);
+    /// let roots: Vec<f64> = p.real_roots().iter().map(AlgebraicReal::to_f64).collect();
+    /// assert_eq!(roots.len(), 2);
+    /// assert!((roots[0] + 1.0).abs() < 1e-12 && (roots[1] - 2f64.sqrt()).abs() < 1e-9);
+    /// ```
+    pub fn real_roots(&self) -> Vec<AlgebraicReal> {
+        if self.is_zero() {
+            return Vec::new();
+        }
+        let field = self
+            .coeffs()
+            .iter()
+            .find_map(|c| c.field_if_irrational())
+            .cloned();
+        let Some(field) = field else {
+            // rational coefficients
+            let q: Poly<RBig> = self.map(|c| c.representative().coeff(0));
+            return AlgebraicReal::real_roots_of(&Poly::from_rational(&q).0);
+        };
+        let sf = self.squarefree_part_field();
+        // P(α, u) with integer coefficients: the numerators over a common denominator
+        let lcm = sf
+            .coeffs()
+            .iter()
+            .fold(IBig::ONE, |l, c| &l / crate::int_gcd(&l, &c.den) * &c.den);
+        let width = sf
+            .coeffs()
+            .iter()
+            .map(|c| c.num.coeffs().len())
+            .max()
+            .unwrap_or(0);
+        let in_alpha: Poly<Poly> = Poly::new(
+            (0..width)
+                .map(|j| {
+                    Poly::new(
+                        sf.coeffs()
+                            .iter()
+                            .map(|c| c.num.coeff(j) * (&lcm / &c.den))
+                            .collect(),
+                    )
+                })
+                .collect(),
+        );
+        let m: Poly<Poly> = field.modulus().map(|v| Poly::constant(v.clone()));
+        let norm = m.resultant(&in_alpha).squarefree_part();
+        let sign_at = |x: &RBig| sf.eval(&NumberFieldElement::rational(x.clone())).sign();
+        crate::roots::isolate_squarefree_real_roots(&norm)
+            .into_iter()
+            .filter(|iv| match iv {
+                RootInterval::Exact(v) => sign_at(v) == Sign::Zero,
+                RootInterval::Open(lo, hi) => sign_at(lo) != sign_at(hi),
+            })
+            .filter_map(|iv| match iv {
+                RootInterval::Exact(v) => Some(AlgebraicReal::from_rational(v)),
+                iv => AlgebraicReal::from_isolating_interval(&norm, &iv),
+            })
+            .collect()
+    }
+}
+
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn real_roots_over_a_cubic_field_are_the_roots_not_their_conjugates() {
+        // α the real root of x³ − 2; p = (u − α)(u − α² + 1)(u² + α) has the real roots
+        // α² − 1 < α (u² + α > 0); the norm's other real roots (of u² + α's conjugates) are not
+        let alpha = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 0, 1]))[0].clone();
+        let k = NumberField::new(&alpha);
+        let a = k.generator();
+        let one = NumberFieldElement::one();
+        let lin = |r: NumberFieldElement| Poly::new(vec![r.neg(), one.clone()]);
+        let p = &(&lin(a.clone()) * &lin(a.mul(&a).sub(&one)))
+            * &Poly::new(vec![a.clone(), NumberFieldElement::zero(), one.clone()]);
+        let roots: Vec<f64> = p.real_roots().iter().map(AlgebraicReal::to_f64).collect();
+        let c = 2f64.cbrt();
+        assert_eq!(roots.len(), 2, "{roots:?}");
+        assert!(
+            (roots[0] - (c * c - 1.0)).abs() < 1e-9 && (roots[1] - c).abs() < 1e-9,
+            "{roots:?}"
+        );
+        // a double root counts once; rational coefficients take the integer route
+        let double = &lin(a.clone()) * &lin(a.clone());
+        assert_eq!(double.real_roots().len(), 1);
+        let q = Poly::new(vec![
+            NumberFieldElement::rational(RBig::from(-4)),
+            NumberFieldElement::zero(),
+            one,
+        ]);
+        let r: Vec<f64> = q.real_roots().iter().map(AlgebraicReal::to_f64).collect();
+        assert_eq!(r, [-2.0, 2.0]);
+        assert!(Poly::<NumberFieldElement>::zero().real_roots().is_empty());
+    }
+
     use super::*;
     use proptest::prelude::*;
 
