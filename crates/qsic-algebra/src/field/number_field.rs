@@ -131,7 +131,8 @@ impl NumberField {
         self.lock().clone()
     }
 
-    fn same_as(&self, other: &NumberField) -> bool {
+    /// Whether `self` and `other` are the same field context (elements of both combine).
+    pub fn same_as(&self, other: &NumberField) -> bool {
         Arc::ptr_eq(&self.state, &other.state)
     }
 
@@ -389,6 +390,15 @@ impl NumberFieldElement {
             .value()
     }
 
+    /// Whether `self` and `other` can be combined: one is rational, or both belong to the
+    /// same field context.
+    pub fn compatible_with(&self, other: &NumberFieldElement) -> bool {
+        match (self.field_if_irrational(), other.field_if_irrational()) {
+            (Some(a), Some(b)) => a.same_as(b),
+            _ => true,
+        }
+    }
+
     /// The common field of two operands.
     ///
     /// # Panics
@@ -562,6 +572,71 @@ impl Poly<NumberFieldElement> {
     /// assert_eq!(roots.len(), 2);
     /// assert!((roots[0] + 1.0).abs() < 1e-12 && (roots[1] - 2f64.sqrt()).abs() < 1e-9);
     /// ```
+    /// The exact sign of `p(t)` at a real algebraic number `t`.
+    ///
+    /// Zero iff `t` is one of [`Self::real_roots`] (exact comparison); otherwise the value is
+    /// enclosed by rational interval arithmetic over the boxes of `α` and `t`, both refined
+    /// (their shared states) until the enclosure excludes zero, which it does for a nonzero
+    /// value once the boxes are small enough.
+    ///
+    /// ```
+    /// # use qsic_algebra::{field::NumberField, AlgebraicReal, Poly, Ring, Sign};
+    /// let k = NumberField::new(&AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 1]))[1]);
+    /// let p = Poly::new(vec![k.generator().neg(), Ring::one()]); // u − √2
+    /// let t = |c: &[i64]| AlgebraicReal::real_roots_of(&Poly::from_i64s(c)).pop().unwrap();
+    /// assert_eq!(p.sign_at(&t(&[-2, 0, 1])), Sign::Zero); // t = √2
+    /// assert_eq!(p.sign_at(&t(&[-3, 0, 1])), Sign::Positive); // t = √3
+    /// assert_eq!(p.sign_at(&t(&[-199, 0, 100])), Sign::Negative); // t = √1.99
+    /// ```
+    pub fn sign_at(&self, t: &AlgebraicReal) -> Sign {
+        if let Some(v) = t.as_rational() {
+            return self.eval(&NumberFieldElement::rational(v.clone())).sign();
+        }
+        if self.real_roots().iter().any(|r| r == t) {
+            return Sign::Zero;
+        }
+        let field = self
+            .coeffs()
+            .iter()
+            .find_map(|c| c.field_if_irrational())
+            .cloned();
+        let mut width = RBig::from_parts(IBig::ONE, dashu_int::UBig::ONE << 16);
+        loop {
+            let alpha = field
+                .as_ref()
+                .map(|k| k.snapshot().alpha.refined_interval(&width));
+            let tv = t.refined_interval(&width);
+            let t_box = (tv.lo().clone(), tv.hi().clone());
+            // the coefficients' enclosures, then Horner in t
+            let mut acc = (RBig::ZERO, RBig::ZERO);
+            for c in self.coeffs().iter().rev() {
+                let cv = match (&alpha, c.field_if_irrational()) {
+                    (Some(a), Some(_)) => {
+                        let b = interval_horner(
+                            c.num.coeffs().iter().map(|v| RBig::from(v.clone())),
+                            &(a.lo().clone(), a.hi().clone()),
+                        );
+                        let d = RBig::from(c.den.clone());
+                        (b.0 / &d, b.1 / &d)
+                    }
+                    _ => {
+                        let v = c.representative().coeff(0);
+                        (v.clone(), v)
+                    }
+                };
+                let m = interval_mul(&acc, &t_box);
+                acc = (m.0 + &cv.0, m.1 + &cv.1);
+            }
+            if acc.0 > RBig::ZERO {
+                return Sign::Positive;
+            }
+            if acc.1 < RBig::ZERO {
+                return Sign::Negative;
+            }
+            width = &width * &width;
+        }
+    }
+
     pub fn real_roots(&self) -> Vec<AlgebraicReal> {
         if self.is_zero() {
             return Vec::new();
@@ -615,6 +690,27 @@ impl Poly<NumberFieldElement> {
             })
             .collect()
     }
+}
+
+/// The product of two rational intervals `[a₀, a₁]·[b₀, b₁]`.
+fn interval_mul(a: &(RBig, RBig), b: &(RBig, RBig)) -> (RBig, RBig) {
+    let p = [&a.0 * &b.0, &a.0 * &b.1, &a.1 * &b.0, &a.1 * &b.1];
+    let lo = p.iter().min().cloned().unwrap_or(RBig::ZERO);
+    let hi = p.iter().max().cloned().unwrap_or(RBig::ZERO);
+    (lo, hi)
+}
+
+/// An enclosure of `Σ cᵢ xⁱ` (coefficients in increasing degree) over `x ∈ [x₀, x₁]`.
+fn interval_horner(
+    coeffs: impl DoubleEndedIterator<Item = RBig>,
+    x: &(RBig, RBig),
+) -> (RBig, RBig) {
+    let mut acc = (RBig::ZERO, RBig::ZERO);
+    for c in coeffs.rev() {
+        let m = interval_mul(&acc, x);
+        acc = (m.0 + &c, m.1 + &c);
+    }
+    acc
 }
 
 #[cfg(test)]
