@@ -240,10 +240,24 @@ fn levin_curve(
     let vector = |v: &PolyVector| -> PointPoly {
         std::array::from_fn(|i| curve::poly_from_quadratic(&v[i], field.as_ref()))
     };
-    let param = ComponentParam::Levin {
-        a: vector(&levin.a),
-        d: vector(&levin.d),
-        s: curve::poly_from_quadratic(&levin.s, field.as_ref()),
+    let (a, d) = (vector(&levin.a), vector(&levin.d));
+    let s = curve::poly_from_quadratic(&levin.s, field.as_ref());
+    // `s | a`: `a ± d√s = √s·(d ± (a/s)√s)` vanishes at the roots of `s`; the second
+    // factor is a Levin form without that base point (same identities, same sheets)
+    let quotients: Option<Vec<NumberPoly>> = a
+        .iter()
+        .map(|c| {
+            let (q, r) = c.div_rem(&s);
+            r.is_zero().then_some(q)
+        })
+        .collect();
+    let param = match quotients {
+        Some(q) => ComponentParam::Levin {
+            a: d,
+            d: std::array::from_fn(|i| q[i].clone()),
+            s,
+        },
+        None => ComponentParam::Levin { a, d, s },
     };
     let dr = &levin.discriminant;
     let mut ends: Vec<ParamValue> = dr.roots.iter().cloned().map(ParamValue::Finite).collect();

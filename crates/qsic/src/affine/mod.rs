@@ -4,6 +4,7 @@
 //! |---|---|
 //! | [`Chart`] | the plane at infinity `ℓ(X) = 0` (default `w = 0`) and the change of coordinates making it `w = 0` |
 //! | [`AffineSurface`], [`surface_name`] | the affine name of a quadric (sphere, elliptic cylinder, …), exactly |
+//! | [`affine_curve`] | the curve in ℝ³: bounded and unbounded pieces, points and singular points at infinity, conic names |
 //!
 //! With `M` the 4×4 matrix in coordinates where the plane at infinity is `w = 0` and `Q` its
 //! upper-left 3×3 block (the quadratic part), the affine type is decided by the inertias of
@@ -13,10 +14,17 @@
 //! has `Q`'s characteristic polynomial `x(x² − E₁x + E₂)` with `E₁² = 4E₂`; a circular cone has
 //! a cubic characteristic polynomial with zero discriminant.
 
+mod curve;
+
+pub use curve::{affine_curve, AffineComponent, AffineCurve, AffineSingularPoint};
+
 use crate::error::Error;
+use crate::param::{Number, Point};
 use crate::quadric::Quadric;
+use qsic_algebra::field::NumberFieldElement;
 use qsic_algebra::linalg::minors::principal_minor_sums;
 use qsic_algebra::linalg::{Inertia, Matrix};
+use qsic_algebra::Ring;
 use qsic_algebra::{RBig, Sign};
 
 /// The plane at infinity of an affine chart, `a·x + b·y + c·z + d·w = 0`.
@@ -97,6 +105,26 @@ impl Chart {
                 }
                 acc
             })
+        })
+    }
+
+    /// Row `i` of the change of coordinates: the chart's `i`-th coordinate as a form in
+    /// `(x, y, z, w)` (row 3 is the plane at infinity).
+    pub fn basis_row(&self, i: usize) -> &[RBig; 4] {
+        &self.basis[i]
+    }
+
+    /// [`Chart::to_chart`] for a point with algebraic coordinates.
+    pub fn to_chart_number(&self, p: &Point) -> Point {
+        std::array::from_fn(|i| {
+            let mut acc = Number::zero();
+            for j in 0..4 {
+                if self.basis[i][j] != RBig::ZERO {
+                    acc =
+                        acc.add(&p[j].mul(&NumberFieldElement::rational(self.basis[i][j].clone())));
+                }
+            }
+            acc
         })
     }
 

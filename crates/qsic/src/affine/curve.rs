@@ -1,0 +1,770 @@
+//! The intersection curve in ℝ³: which pieces are bounded, where the curve meets the plane at
+//! infinity, which singular points are finite — from the exact [`Curve`].
+//!
+//! The real curve in ℝP³ is a graph: its vertices are the real singular points and the real
+//! points at infinity, its edges the arcs of the real pieces between consecutive vertices
+//! (a piece with no vertex is a closed edge of its own). The curve in ℝ³ is that graph minus
+//! the vertices at infinity: its connected components are the classes of edges joined at
+//! finite vertices, bounded iff no edge ends at infinity. Every position is exact:
+//!
+//! * the points at infinity of a piece `X(u)` are the real roots of `w(u) = ℓ·X(u)` (and
+//!   `u = ∞` when `deg w` drops), of Levin's `a ± d√s` those of `(ℓ·a)² − s·(ℓ·d)²` with
+//!   `s ≥ 0` on the sheet `σ = −sign(ℓ·a)·sign(ℓ·d)` (both sheets where `s = 0`) —
+//!   roots over ℚ(α) by the norm, signs at algebraic `u` exact
+//!   ([`Poly::sign_at`](qsic_algebra::Poly)), never floats;
+//! * a singular point `P` lies on a rational piece at the real roots of the gcd of the minors
+//!   `xᵢ(u)Pⱼ − xⱼ(u)Pᵢ`;
+//! * the order of the vertices along a piece follows its arcs (cyclically through `u = ∞`).
+
+use super::Chart;
+use crate::classify::{ComponentKind, SingularPointKind};
+use crate::error::Error;
+use crate::param::{
+    ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue, Point, PointPoly, RealPiece,
+    Sheet,
+};
+use crate::quadric::Quadric;
+use qsic_algebra::field::NumberFieldElement;
+use qsic_algebra::{AlgebraicReal, Field, Poly, RBig, Ring, Sign};
+use std::cmp::Ordering;
+
+/// One component of the curve seen in the chart.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct AffineComponent {
+    /// Its kind.
+    pub kind: ComponentKind,
+    /// The affine name of a real component: `ellipse`, `circle`, `parabola`, `hyperbola`,
+    /// `conic_at_infinity`, `line`, `line_at_infinity`, `cubic`, `quartic`, `point`,
+    /// `point_at_infinity`; `None` for a non-real component.
+    pub name: Option<&'static str>,
+    /// It lies in the plane at infinity.
+    pub at_infinity: bool,
+    /// Its real points in ℝ³ form a bounded set (`None` for a non-real component or one at
+    /// infinity).
+    pub bounded: Option<bool>,
+    /// Its distinct real points at infinity (0 for a component at infinity).
+    pub points_at_infinity: usize,
+}
+
+/// A real singular point of the curve seen in the chart.
+#[derive(Clone, Debug)]
+pub struct AffineSingularPoint {
+    /// Its kind.
+    pub kind: SingularPointKind,
+    /// It lies on the plane at infinity.
+    pub at_infinity: bool,
+    /// Its affine coordinates in the chart, `None` at infinity.
+    pub point: Option<[Number; 3]>,
+}
+
+/// The curve in ℝ³ (see the module documentation).
+#[derive(Clone, Debug)]
+pub struct AffineCurve {
+    /// Connected components of the real curve in ℝ³ that are bounded.
+    pub curves_bounded: usize,
+    /// … and unbounded.
+    pub curves_unbounded: usize,
+    /// Isolated real points in ℝ³.
+    pub isolated_points: usize,
+    /// Distinct real points of the curve on the plane at infinity (components lying in it
+    /// excluded).
+    pub points_at_infinity: usize,
+    /// Real singular points in ℝ³.
+    pub singular_finite: usize,
+    /// Real singular points at infinity.
+    pub singular_at_infinity: usize,
+    /// Per component of the curve, in [`Curve::components`] order.
+    pub components: Vec<AffineComponent>,
+    /// Per real singular point, in [`Curve::singular_points`] order.
+    pub singular_points: Vec<AffineSingularPoint>,
+}
+
+/// A vertex of the curve graph.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Vertex {
+    /// A singular point (index into [`Curve::singular_points`]).
+    Singular(usize),
+    /// A point at infinity of one piece that is not a singular point.
+    Local(usize),
+}
+
+/// A vertex met along a piece at a parameter value, on one sheet or both.
+#[derive(Clone, Debug)]
+struct Event {
+    at: ParamValue,
+    sheet: Option<Sheet>,
+    vertex: Vertex,
+}
+
+fn rational(v: &RBig) -> Number {
+    NumberFieldElement::rational(v.clone())
+}
+
+/// `ℓ·X(u)`.
+fn chart_form(l: &[RBig; 4], x: &PointPoly) -> NumberPoly {
+    let mut acc = NumberPoly::zero();
+    for i in 0..4 {
+        if l[i] != RBig::ZERO {
+            acc = &acc + &x[i].scale(&rational(&l[i]));
+        }
+    }
+    acc
+}
+
+/// `ℓ·P`.
+fn chart_value(l: &[RBig; 4], p: &Point) -> Number {
+    let mut acc = Number::zero();
+    for i in 0..4 {
+        if l[i] != RBig::ZERO {
+            acc = acc.add(&p[i].mul(&rational(&l[i])));
+        }
+    }
+    acc
+}
+
+/// `v^k p(1/v)`: the polynomial in the chart at `u = ∞` (`v = 1/u`) of a form of degree `k`.
+fn at_infinity_chart(p: &NumberPoly, k: usize) -> NumberPoly {
+    let mut c: Vec<Number> = (0..=k).map(|i| p.coeff(i)).collect();
+    c.reverse();
+    Poly::new(c)
+}
+
+fn degree(p: &NumberPoly) -> usize {
+    p.degree().unwrap_or(0)
+}
+
+/// Whether the elements can be combined (one rational, or one field).
+fn compatible(items: &[&Number]) -> bool {
+    items
+        .iter()
+        .all(|a| items.iter().all(|b| a.compatible_with(b)))
+}
+
+/// Whether `t` lies in `range` (closed) and its position there: a key increasing along the
+/// range from its start.
+fn position(range: &ParamRange, t: &ParamValue) -> Option<(u8, Option<AlgebraicReal>)> {
+    use ParamValue::{Finite, Infinity};
+    let finite = |t: &ParamValue| match t {
+        Finite(v) => Some(v.clone()),
+        Infinity => None,
+    };
+    let Some((lo, hi)) = (match range {
+        ParamRange::All => None,
+        ParamRange::Between(lo, hi) => Some((lo, hi)),
+    }) else {
+        return Some(match t {
+            Finite(v) => (0, Some(v.clone())),
+            Infinity => (1, None),
+        });
+    };
+    match (lo, hi) {
+        (Finite(lo), Finite(hi)) if lo < hi => match t {
+            Finite(v) => (lo <= v && v <= hi).then(|| (0, Some(v.clone()))),
+            Infinity => None,
+        },
+        // through ∞: [lo, ∞) then ∞ then (−∞, hi]
+        (Finite(lo), Finite(hi)) => match t {
+            Finite(v) if v >= lo => Some((0, Some(v.clone()))),
+            Finite(v) if v <= hi => Some((2, Some(v.clone()))),
+            Finite(_) => None,
+            Infinity => Some((1, None)),
+        },
+        (Finite(lo), Infinity) => match finite(t) {
+            Some(v) => (&v >= lo).then_some((0, Some(v))),
+            None => Some((1, None)),
+        },
+        (Infinity, Finite(hi)) => match finite(t) {
+            Some(v) => (&v <= hi).then_some((1, Some(v))),
+            None => Some((0, None)),
+        },
+        (Infinity, Infinity) => Some(match finite(t) {
+            Some(v) => (1, Some(v)),
+            None => (0, None),
+        }),
+    }
+}
+
+fn same_value(a: &ParamValue, b: &ParamValue) -> bool {
+    match (a, b) {
+        (ParamValue::Finite(x), ParamValue::Finite(y)) => x == y,
+        (ParamValue::Infinity, ParamValue::Infinity) => true,
+        _ => false,
+    }
+}
+
+/// The parameter values at which the rational `X(u)` (degree `k`) passes through `p`.
+fn params_of_point(x: &PointPoly, k: usize, p: &Point) -> Result<Vec<ParamValue>, Error> {
+    let mut items: Vec<&Number> = p.iter().collect();
+    let coeffs: Vec<Number> = x.iter().flat_map(|c| c.coeffs().to_vec()).collect();
+    items.extend(coeffs.iter());
+    if !compatible(&items) {
+        return Err(Error::Unsupported(
+            "affine view: a singular point and a component in different number fields".into(),
+        ));
+    }
+    let mut g = NumberPoly::zero();
+    for i in 0..4 {
+        for j in i + 1..4 {
+            let m = &x[i].scale(&p[j]) - &x[j].scale(&p[i]);
+            if !m.is_zero() {
+                g = if g.is_zero() { m } else { g.gcd_monic(&m) };
+            }
+        }
+    }
+    if g.is_zero() {
+        return Err(Error::Algebra(
+            "a rational component is a single point".into(),
+        ));
+    }
+    let mut out: Vec<ParamValue> = g.real_roots().into_iter().map(ParamValue::Finite).collect();
+    let lead: Vec<Number> = x.iter().map(|c| c.coeff(k)).collect();
+    let proportional = (0..4).all(|i| (i + 1..4).all(|j| lead[i].mul(&p[j]) == lead[j].mul(&p[i])));
+    if proportional && lead.iter().any(|c| !c.is_zero()) {
+        out.push(ParamValue::Infinity);
+    }
+    Ok(out)
+}
+
+/// The points at infinity of one piece's component parameterization, as events (vertices
+/// `Local(next…)` unless they are singular points already met at the same parameter).
+struct InfinityEvents<'a> {
+    l: &'a [RBig; 4],
+    next_local: &'a mut usize,
+}
+
+impl InfinityEvents<'_> {
+    fn local(&mut self) -> Vertex {
+        *self.next_local += 1;
+        Vertex::Local(*self.next_local - 1)
+    }
+
+    /// Events of a rational parameterization; `None` if it lies at infinity.
+    fn rational(&mut self, x: &PointPoly, k: usize, singular: &[Event]) -> Option<Vec<Event>> {
+        let w = chart_form(self.l, x);
+        if w.is_zero() {
+            return None;
+        }
+        let mut at: Vec<ParamValue> = w.real_roots().into_iter().map(ParamValue::Finite).collect();
+        if degree(&w) < k {
+            at.push(ParamValue::Infinity);
+        }
+        Some(
+            at.into_iter()
+                .map(|t| {
+                    let vertex = singular
+                        .iter()
+                        .find(|e| same_value(&e.at, &t))
+                        .map(|e| e.vertex)
+                        .unwrap_or_else(|| self.local());
+                    Event {
+                        at: t,
+                        sheet: None,
+                        vertex,
+                    }
+                })
+                .collect(),
+        )
+    }
+
+    /// Events of Levin's `a ± d√s` (`s` of degree 4, `a` of degree `k`, `d` of `k − 2`).
+    fn levin(&mut self, a: &PointPoly, d: &PointPoly, s: &NumberPoly) -> Vec<Event> {
+        let k = a
+            .iter()
+            .map(degree)
+            .chain(d.iter().map(|p| degree(p) + 2))
+            .max()
+            .unwrap_or(2)
+            .max(2);
+        let (wa, wd) = (chart_form(self.l, a), chart_form(self.l, d));
+        let mut events = Vec::new();
+        // finite u, then u = ∞ through v = 1/u
+        let charts = [
+            (wa.clone(), wd.clone(), s.clone(), false),
+            (
+                at_infinity_chart(&wa, k),
+                at_infinity_chart(&wd, k - 2),
+                at_infinity_chart(s, 4),
+                true,
+            ),
+        ];
+        for (wa, wd, s, infinite) in charts {
+            let r = &(&wa * &wa) - &(&s * &(&wd * &wd));
+            let roots: Vec<AlgebraicReal> = if infinite {
+                // only v = 0 is new
+                let zero = AlgebraicReal::from_rational(RBig::ZERO);
+                if r.coeff(0).is_zero() {
+                    vec![zero]
+                } else {
+                    vec![]
+                }
+            } else {
+                r.real_roots()
+            };
+            for t in roots {
+                let at = if infinite {
+                    ParamValue::Infinity
+                } else {
+                    ParamValue::Finite(t.clone())
+                };
+                match s.sign_at(&t) {
+                    Sign::Negative => {}
+                    Sign::Zero => events.push(Event {
+                        at,
+                        sheet: None,
+                        vertex: self.local(),
+                    }),
+                    Sign::Positive => {
+                        let (sa, sd) = (wa.sign_at(&t), wd.sign_at(&t));
+                        let sheets: Vec<Sheet> = match (sa, sd) {
+                            (Sign::Zero, Sign::Zero) => vec![Sheet::Plus, Sheet::Minus],
+                            (Sign::Zero, _) | (_, Sign::Zero) => vec![],
+                            (x, y) if x == y => vec![Sheet::Minus],
+                            _ => vec![Sheet::Plus],
+                        };
+                        for sheet in sheets {
+                            events.push(Event {
+                                at: at.clone(),
+                                sheet: Some(sheet),
+                                vertex: self.local(),
+                            });
+                        }
+                    }
+                }
+            }
+        }
+        events
+    }
+}
+
+/// The vertices met along a closed piece, in order (consecutive repeats merged).
+fn ordered_vertices(arcs: &[crate::param::Arc], events: &[Event]) -> Vec<Vertex> {
+    let mut out: Vec<Vertex> = Vec::new();
+    for arc in arcs {
+        let mut here: Vec<((u8, Option<AlgebraicReal>), Vertex)> = events
+            .iter()
+            .filter(|e| match (e.sheet, arc.sheet) {
+                (None, _) | (_, Sheet::Only) => true,
+                (Some(a), b) => a == b,
+            })
+            .filter_map(|e| position(&arc.range, &e.at).map(|k| (k, e.vertex)))
+            .collect();
+        here.sort_by(|a, b| cmp_key(&a.0, &b.0));
+        if arc.reversed {
+            here.reverse();
+        }
+        for (_, v) in here {
+            if out.last() != Some(&v) {
+                out.push(v);
+            }
+        }
+    }
+    while out.len() > 1 && out.first() == out.last() {
+        out.pop();
+    }
+    out
+}
+
+fn cmp_key(a: &(u8, Option<AlgebraicReal>), b: &(u8, Option<AlgebraicReal>)) -> Ordering {
+    a.0.cmp(&b.0).then_with(|| match (&a.1, &b.1) {
+        (Some(x), Some(y)) => x.cmp(y),
+        _ => Ordering::Equal,
+    })
+}
+
+/// A tiny union–find.
+struct Classes(Vec<usize>);
+
+impl Classes {
+    fn find(&mut self, mut i: usize) -> usize {
+        while self.0[i] != i {
+            self.0[i] = self.0[self.0[i]];
+            i = self.0[i];
+        }
+        i
+    }
+    fn union(&mut self, a: usize, b: usize) {
+        let (a, b) = (self.find(a), self.find(b));
+        self.0[a] = b;
+    }
+}
+
+/// The curve of `a` and `b` in the chart (see the module documentation).
+///
+/// # Errors
+/// [`Error::Unsupported`] when a singular point and a component live in number fields that
+/// were made separately (the position of the point on the component is then not computed);
+/// [`Error::Algebra`] for an inconsistent curve (a piece that is not closed, a constant
+/// parameterization).
+pub fn affine_curve(
+    curve: &Curve,
+    a: &Quadric,
+    b: &Quadric,
+    chart: &Chart,
+) -> Result<AffineCurve, Error> {
+    let l = chart.form();
+    let singular_at_infinity: Vec<bool> = curve
+        .singular_points
+        .iter()
+        .map(|s| chart_value(l, &s.point).is_zero())
+        .collect();
+    let mut next_local = 0;
+    // per piece: its vertices in order, or None at infinity
+    let mut piece_vertices: Vec<Option<Vec<Vertex>>> = Vec::new();
+    for piece in &curve.pieces {
+        let RealPiece::Curve {
+            component,
+            arcs,
+            closed,
+        } = piece
+        else {
+            piece_vertices.push(Some(Vec::new()));
+            continue;
+        };
+        if !closed {
+            return Err(Error::Algebra("a real piece that is not closed".into()));
+        }
+        let param = curve.components[*component].param.as_ref().ok_or_else(|| {
+            Error::Algebra("a real piece of a component without parameterization".into())
+        })?;
+        let mut inf = InfinityEvents {
+            l,
+            next_local: &mut next_local,
+        };
+        let events = match param {
+            ComponentParam::Rational { x, degree } => {
+                let mut singular = Vec::new();
+                for (j, s) in curve.singular_points.iter().enumerate() {
+                    for at in params_of_point(x, *degree, &s.point)? {
+                        singular.push(Event {
+                            at,
+                            sheet: None,
+                            vertex: Vertex::Singular(j),
+                        });
+                    }
+                }
+                match inf.rational(x, *degree, &singular) {
+                    None => {
+                        piece_vertices.push(None);
+                        continue;
+                    }
+                    Some(mut e) => {
+                        e.retain(|e| !matches!(e.vertex, Vertex::Singular(_)));
+                        e.extend(singular);
+                        e
+                    }
+                }
+            }
+            ComponentParam::Levin { a, d, s } => inf.levin(a, d, s),
+            ComponentParam::Point(_) => Vec::new(),
+        };
+        piece_vertices.push(Some(ordered_vertices(arcs, &events)));
+    }
+    let at_infinity = |v: &Vertex| match v {
+        Vertex::Singular(j) => singular_at_infinity[*j],
+        Vertex::Local(_) => true,
+    };
+    // edges: (piece, from, to); classes over edges and finite singular vertices
+    let mut edges: Vec<(usize, Option<Vertex>, Option<Vertex>)> = Vec::new();
+    for (i, vs) in piece_vertices.iter().enumerate() {
+        let Some(vs) = vs else { continue };
+        if !matches!(curve.pieces[i], RealPiece::Curve { .. }) {
+            continue;
+        }
+        if vs.is_empty() {
+            edges.push((i, None, None));
+        }
+        for k in 0..vs.len() {
+            edges.push((i, Some(vs[k]), Some(vs[(k + 1) % vs.len()])));
+        }
+    }
+    let ns = curve.singular_points.len();
+    let mut classes = Classes((0..edges.len() + ns).collect());
+    for (e, (_, from, to)) in edges.iter().enumerate() {
+        for v in [from, to].into_iter().flatten() {
+            if let Vertex::Singular(j) = v {
+                if !singular_at_infinity[*j] {
+                    classes.union(e, edges.len() + j);
+                }
+            }
+        }
+    }
+    let mut unbounded_class = vec![false; edges.len() + ns];
+    let mut has_edge = vec![false; edges.len() + ns];
+    for (e, (_, from, to)) in edges.iter().enumerate() {
+        let c = classes.find(e);
+        has_edge[c] = true;
+        if [from, to].into_iter().flatten().any(at_infinity) {
+            unbounded_class[c] = true;
+        }
+    }
+    let (mut bounded, mut unbounded) = (0, 0);
+    for c in 0..edges.len() + ns {
+        if classes.find(c) == c && has_edge[c] {
+            if unbounded_class[c] {
+                unbounded += 1;
+            } else {
+                bounded += 1;
+            }
+        }
+    }
+    // points at infinity: singular ones, local ones, isolated points there
+    let mut locals = std::collections::BTreeSet::new();
+    for vs in piece_vertices.iter().flatten() {
+        for v in vs {
+            if let Vertex::Local(id) = v {
+                locals.insert(*id);
+            }
+        }
+    }
+    let mut isolated = 0;
+    let mut isolated_at_infinity = 0;
+    for piece in &curve.pieces {
+        if let RealPiece::Point { point, .. } = piece {
+            if !chart_value(l, point).is_zero() {
+                isolated += 1;
+            } else if !curve
+                .singular_points
+                .iter()
+                .any(|s| same_point(&s.point, point))
+            {
+                isolated_at_infinity += 1;
+            }
+        }
+    }
+    let singular_inf = singular_at_infinity.iter().filter(|&&x| x).count();
+    let components = components_view(curve, &piece_vertices, &singular_at_infinity, a, b, chart);
+    let singular_points = curve
+        .singular_points
+        .iter()
+        .zip(&singular_at_infinity)
+        .map(|(s, &inf)| AffineSingularPoint {
+            kind: s.kind,
+            at_infinity: inf,
+            point: (!inf).then(|| affine_point(chart, &s.point)),
+        })
+        .collect();
+    Ok(AffineCurve {
+        curves_bounded: bounded,
+        curves_unbounded: unbounded,
+        isolated_points: isolated,
+        points_at_infinity: singular_inf + locals.len() + isolated_at_infinity,
+        singular_finite: ns - singular_inf,
+        singular_at_infinity: singular_inf,
+        components,
+        singular_points,
+    })
+}
+
+/// Whether two points are the same projective point (exactly; points in fields made
+/// separately are taken as distinct).
+fn same_point(p: &Point, q: &Point) -> bool {
+    let items: Vec<&Number> = p.iter().chain(q.iter()).collect();
+    compatible(&items) && (0..4).all(|i| (i + 1..4).all(|j| p[i].mul(&q[j]) == p[j].mul(&q[i])))
+}
+
+/// The chart's affine coordinates of a finite point.
+fn affine_point(chart: &Chart, p: &Point) -> [Number; 3] {
+    // the chart's coordinates are rational combinations of the input ones
+    let row = |i: usize| -> Number {
+        let r = chart.basis_row(i);
+        let mut acc = Number::zero();
+        for j in 0..4 {
+            if r[j] != RBig::ZERO {
+                acc = acc.add(&p[j].mul(&rational(&r[j])));
+            }
+        }
+        acc
+    };
+    let w = row(3);
+    std::array::from_fn(|i| row(i).mul(&w.inv().unwrap_or_else(Number::zero)))
+}
+
+/// Per component: name, at infinity, bounded, points at infinity.
+fn components_view(
+    curve: &Curve,
+    piece_vertices: &[Option<Vec<Vertex>>],
+    singular_at_infinity: &[bool],
+    a: &Quadric,
+    b: &Quadric,
+    chart: &Chart,
+) -> Vec<AffineComponent> {
+    let l = chart.form();
+    curve
+        .components
+        .iter()
+        .enumerate()
+        .map(|(ci, comp)| {
+            let pieces: Vec<usize> = (0..curve.pieces.len())
+                .filter(|&i| curve.pieces[i].component() == ci)
+                .collect();
+            let at_inf = match &comp.param {
+                Some(ComponentParam::Rational { x, .. }) => chart_form(l, x).is_zero(),
+                Some(ComponentParam::Point(p)) => chart_value(l, p).is_zero(),
+                _ => false,
+            } && comp.param.is_some();
+            let mut infinite = std::collections::BTreeSet::new();
+            for &i in &pieces {
+                for v in piece_vertices[i].iter().flatten() {
+                    let inf = match v {
+                        Vertex::Singular(j) => singular_at_infinity[*j],
+                        Vertex::Local(_) => true,
+                    };
+                    if inf {
+                        infinite.insert(match v {
+                            Vertex::Singular(j) => (0, *j),
+                            Vertex::Local(id) => (1, *id),
+                        });
+                    }
+                }
+            }
+            let n = if at_inf { 0 } else { infinite.len() };
+            let real = comp.real && !pieces.is_empty();
+            let name = real.then(|| match (comp.kind, at_inf) {
+                (ComponentKind::Conic, true) => "conic_at_infinity",
+                (ComponentKind::Conic, false) => match n {
+                    0 if is_circle(comp, a, b, chart) => "circle",
+                    0 => "ellipse",
+                    1 => "parabola",
+                    _ => "hyperbola",
+                },
+                (ComponentKind::Line, true) => "line_at_infinity",
+                (ComponentKind::Line, false) => "line",
+                (ComponentKind::Point, true) => "point_at_infinity",
+                (ComponentKind::Point, false) => "point",
+                (k, _) => k.key(),
+            });
+            AffineComponent {
+                kind: comp.kind,
+                name,
+                at_infinity: at_inf,
+                bounded: (real && !at_inf).then_some(n == 0),
+                points_at_infinity: n,
+            }
+        })
+        .collect()
+}
+
+/// Whether a real conic component with no real point at infinity is a circle: its plane's
+/// direction space carries, from `A` (or `B` when `A` contains the plane), a quadratic part
+/// proportional to the Euclidean one of the chart.
+fn is_circle(comp: &crate::param::Component, a: &Quadric, b: &Quadric, chart: &Chart) -> bool {
+    let Some(ComponentParam::Rational { x, .. }) = &comp.param else {
+        return false;
+    };
+    // three points of the conic in chart coordinates span its plane
+    let pts: Vec<[Number; 4]> = [0i64, 1, -1]
+        .iter()
+        .map(|&u| {
+            let u = Number::from_int(&u.into());
+            let p: [Number; 4] = std::array::from_fn(|i| x[i].eval(&u));
+            chart.to_chart_number(&p)
+        })
+        .collect();
+    let items: Vec<&Number> = pts.iter().flatten().collect();
+    if !compatible(&items) {
+        return false;
+    }
+    // the plane's normal (n₀, n₁, n₂): 3×3 minors of the three points, columns without k
+    let minor = |cols: [usize; 3]| -> Number {
+        let m = |r: usize, c: usize| pts[r][cols[c]].clone();
+        let mut acc = Number::zero();
+        for (perm, sign) in [
+            ([0, 1, 2], 1),
+            ([1, 2, 0], 1),
+            ([2, 0, 1], 1),
+            ([0, 2, 1], -1),
+            ([2, 1, 0], -1),
+            ([1, 0, 2], -1),
+        ] {
+            let t = m(0, perm[0]).mul(&m(1, perm[1])).mul(&m(2, perm[2]));
+            acc = if sign > 0 { acc.add(&t) } else { acc.sub(&t) };
+        }
+        acc
+    };
+    // plane coefficient of coordinate i: ± the minor without column i
+    let n: [Number; 3] = [minor([1, 2, 3]), minor([0, 2, 3]).neg(), minor([0, 1, 3])];
+    let Some(k) = (0..3).find(|&k| !n[k].is_zero()) else {
+        return false;
+    };
+    // a basis of the directions n⊥
+    let (i, j) = match k {
+        0 => (1, 2),
+        1 => (0, 2),
+        _ => (0, 1),
+    };
+    let mut v1 = [Number::zero(), Number::zero(), Number::zero()];
+    let mut v2 = v1.clone();
+    v1[i] = n[k].clone();
+    v1[k] = n[i].neg();
+    v2[j] = n[k].clone();
+    v2[k] = n[j].neg();
+    let gram = |m: &dyn Fn(usize, usize) -> Number| -> [Number; 3] {
+        let f = |x: &[Number; 3], y: &[Number; 3]| {
+            let mut acc = Number::zero();
+            for r in 0..3 {
+                for c in 0..3 {
+                    acc = acc.add(&x[r].mul(&m(r, c)).mul(&y[c]));
+                }
+            }
+            acc
+        };
+        [f(&v1, &v1), f(&v1, &v2), f(&v2, &v2)]
+    };
+    let euclid = gram(&|r, c| Number::from_int(&i64::from(r == c).into()));
+    for q in [a, b] {
+        let m = chart.matrix_in_chart(q.matrix());
+        let g = gram(&|r, c| rational(&m[r][c]));
+        if g.iter().all(Number::is_zero) {
+            continue;
+        }
+        let cross = |p: usize, r: usize| g[p].mul(&euclid[r]) == g[r].mul(&euclid[p]);
+        return cross(0, 1) && cross(0, 2) && cross(1, 2);
+    }
+    false
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::parse_quadric;
+    use crate::param::parameterize;
+
+    fn view(a: &str, b: &str, chart: [i64; 4]) -> AffineCurve {
+        let (a, b) = (parse_quadric(a).unwrap(), parse_quadric(b).unwrap());
+        let curve = parameterize(&a, &b).unwrap();
+        affine_curve(&curve, &a, &b, &Chart::new(chart.map(RBig::from)).unwrap()).unwrap()
+    }
+
+    fn counts(v: &AffineCurve) -> [usize; 4] {
+        [
+            v.curves_bounded,
+            v.curves_unbounded,
+            v.isolated_points,
+            v.points_at_infinity,
+        ]
+    }
+
+    /// The cylinders x² + y² = 1 and y² + z² = 4 meet in two loops, z ≥ √3 and z ≤ −√3,
+    /// each `(cos θ, sin θ, ±√(4 − sin²θ))`. Seen with various planes at infinity: `w = 0`
+    /// and `z = 0` miss them (two bounded curves); `x = 0` and `y = 0` cut each loop twice
+    /// (four unbounded arcs, four points at infinity); `x = w` touches each loop once, at
+    /// `(1, 0, ±2)` (two unbounded curves, two points at infinity).
+    #[test]
+    fn two_loops_seen_from_five_planes_at_infinity() {
+        let (a, b) = ("x^2+y^2-1", "y^2+z^2-4");
+        assert_eq!(counts(&view(a, b, [0, 0, 0, 1])), [2, 0, 0, 0]);
+        assert_eq!(counts(&view(a, b, [0, 0, 1, 0])), [2, 0, 0, 0]);
+        assert_eq!(counts(&view(a, b, [1, 0, 0, 0])), [0, 4, 0, 4]);
+        assert_eq!(counts(&view(a, b, [0, 1, 0, 0])), [0, 4, 0, 4]);
+        assert_eq!(counts(&view(a, b, [1, 0, 0, -1])), [0, 2, 0, 2]);
+        let v = view(a, b, [1, 0, 0, 0]);
+        assert_eq!(v.components.len(), 1);
+        let c = &v.components[0];
+        assert_eq!(
+            (c.name, c.at_infinity, c.bounded, c.points_at_infinity),
+            (Some("quartic"), false, Some(false), 4)
+        );
+        assert_eq!(view(a, b, [0, 0, 0, 1]).components[0].bounded, Some(true));
+        assert_eq!((v.singular_finite, v.singular_at_infinity), (0, 0));
+    }
+}
