@@ -29,7 +29,7 @@ pub use expression::{parse_rational_function, RationalFunction, Variable, VARIAB
 pub use moving::{moving_matrix_from_polynomial, moving_matrix_from_rows, MovingMatrix};
 pub use number::parse_number;
 use number::parse_number_small;
-pub use polynomial::{parse_quadric, parse_quadric_big_route};
+pub use polynomial::{parse_plane, parse_quadric, parse_quadric_big_route, plane_as_quadric};
 
 use crate::error::Error;
 use crate::quadric::{Quadric, SmallRational};

@@ -105,6 +105,58 @@ pub fn parse_quadric_big_route(text: &str) -> Result<Quadric, Error> {
     quadric_from_poly(read(text, &grammar)?.numerator())
 }
 
+/// Reads a plane `a·x + b·y + c·z + d·w = 0` from a polynomial of degree exactly 1: affine
+/// in `x, y, z` (`x + 2*y - 3`, the constant is `d`) or a linear form using `w`. `None` for
+/// a polynomial of degree 2 (a quadric: [`parse_quadric`] reads it) or 0.
+///
+/// A plane is not a quadric; [`plane_as_quadric`] gives the double plane `P²`, whose
+/// pencil with a quadric `Q` meets it in the section `Q ∩ P` counted twice. (Read by
+/// [`parse_quadric`], an affine degree-1 polynomial `ℓ` would be the plane pair `ℓ·w`, the
+/// plane at infinity included.)
+///
+/// ```
+/// use qsic::io::{parse_plane, plane_as_quadric};
+/// let p = parse_plane("z - 1").unwrap().unwrap();
+/// assert_eq!(p, [0, 0, 1, -1].map(Into::into));
+/// assert_eq!(plane_as_quadric(&p).unwrap().to_polynomial_string(), "z^2 - 2*z*w + w^2");
+/// assert_eq!(parse_plane("x^2 - 1").unwrap(), None);
+/// ```
+///
+/// # Errors
+/// As [`parse_quadric`] for text that is not a polynomial of degree at most 2.
+pub fn parse_plane(text: &str) -> Result<Option<[RBig; 4]>, Error> {
+    let grammar = Grammar {
+        variables: &[Variable::X, Variable::Y, Variable::Z, Variable::W],
+        denominator_variables: &[],
+        quadric: true,
+    };
+    let poly = read(text, &grammar)?.numerator().clone();
+    if poly.total_degree() != 1 || poly.is_zero() {
+        return Ok(None);
+    }
+    let homogeneous = poly.uses(Variable::W.index());
+    let mut plane: [RBig; 4] = Default::default();
+    for (monomial, c) in poly.terms() {
+        let e = monomial.exponents();
+        match (0..4).find(|&v| e[v] == 1) {
+            Some(v) => plane[v] = c.clone(),
+            None if homogeneous => return Ok(None),
+            None => plane[3] = c.clone(),
+        }
+    }
+    Ok(Some(plane))
+}
+
+/// The double plane `P²` of the plane `p = [a, b, c, d]`.
+///
+/// # Errors
+/// [`Error::ZeroQuadric`] for the zero form.
+pub fn plane_as_quadric(p: &[RBig; 4]) -> Result<Quadric, Error> {
+    Quadric::from_matrix(std::array::from_fn(|i| {
+        std::array::from_fn(|j| &p[i] * &p[j])
+    }))
+}
+
 /// Longest text the machine reader takes (bytes). Its numbers have at most 128 bits, so
 /// within this length the general reader's size limits cannot be reached.
 const MACHINE_READER_MAX_LEN: usize = 10_000;
@@ -520,6 +572,22 @@ mod tests {
 
     fn parse(text: &str) -> Quadric {
         parse_quadric(text).unwrap_or_else(|e| panic!("{text:?} should parse: {e}"))
+    }
+
+    #[test]
+    fn planes_are_read_from_degree_one_polynomials_only() {
+        let plane = |t: &str| parse_plane(t).unwrap().map(|p| p.map(|c| c.to_string()));
+        let s = |v: [&str; 4]| Some(v.map(str::to_owned));
+        assert_eq!(plane("2x - 3y + z + 5"), s(["2", "-3", "1", "5"]));
+        assert_eq!(plane("x/2 + w"), s(["1/2", "0", "0", "1"]));
+        assert_eq!(plane("(x+1)^2 - x^2"), s(["2", "0", "0", "1"]));
+        for not_a_plane in ["3", "x^2 - 1", "x*w", "x + w + 1", "x - x"] {
+            assert_eq!(plane(not_a_plane), None, "{not_a_plane}");
+        }
+        assert!(parse_plane("x +").is_err());
+        // the double plane's zero set is the plane: P² = (z − 1)²
+        let p = parse_plane("z - 1").unwrap().unwrap();
+        assert_eq!(plane_as_quadric(&p).unwrap(), parse("(z-1)^2"));
     }
 
     #[test]
