@@ -4,10 +4,13 @@
 //! regular pencil, and the connected real components (curves, isolated points) are those
 //! the class has (the table of issue 8 / `check_sample.py`).
 
+use qsic::affine::{affine_curve, surface_name, AffineCurve, Chart};
 use qsic::classify::PencilKind;
 use qsic::io::{parse_quadric, quadric_from_rows};
 use qsic::param::{parameterize, Curve, RealPiece};
 use qsic::{Error, Quadric};
+use qsic_algebra::testing::SplitMix;
+use qsic_algebra::RBig;
 use serde_json::Value;
 
 fn read_form(v: &Value) -> Quadric {
@@ -177,4 +180,137 @@ fn every_curve_of_the_corpora_lies_on_both_quadrics_and_has_the_class_topology()
     );
     // the supported classes grow: this bound only ever rises
     assert!(done >= 37, "{done} curves checked");
+}
+
+/// `TᵀQT` for the affine map `T = [[M, t], [0, 1]]`.
+fn moved(q: &Quadric, t: &[[RBig; 4]; 4]) -> Quadric {
+    let m = q.matrix();
+    Quadric::from_matrix(std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            let mut acc = RBig::ZERO;
+            for k in 0..4 {
+                for l in 0..4 {
+                    acc += &t[k][i] * &m[k][l] * &t[l][j];
+                }
+            }
+            acc
+        })
+    }))
+    .unwrap()
+}
+
+/// A random invertible affine map: small integer `M` with `det M = ±1` (a product of
+/// elementary shears), translation `t`; with `similar`, a signed permutation instead of the
+/// shears (a Euclidean motion: circles stay circles, spheres spheres).
+fn affine_map(rng: &mut SplitMix, similar: bool) -> [[RBig; 4]; 4] {
+    let mut m = [[0i64; 4]; 4];
+    m[3][3] = 1;
+    if similar {
+        let mut perm = [0usize, 1, 2];
+        for i in (1..3).rev() {
+            perm.swap(i, rng.int(0, i as i64) as usize);
+        }
+        for i in 0..3 {
+            m[i][perm[i]] = if rng.int(0, 1) == 0 { 1 } else { -1 };
+        }
+    } else {
+        for i in 0..3 {
+            m[i][i] = 1;
+        }
+        for _ in 0..4 {
+            let (i, j) = (rng.int(0, 2) as usize, rng.int(0, 2) as usize);
+            if i != j {
+                let k = rng.int(-2, 2);
+                for c in 0..3 {
+                    m[i][c] += k * m[j][c];
+                }
+            }
+        }
+    }
+    for i in 0..3 {
+        m[i][3] = rng.int(-3, 3);
+    }
+    m.map(|r| r.map(RBig::from))
+}
+
+fn summary(v: &AffineCurve) -> Vec<String> {
+    let mut out = vec![format!(
+        "{} {} {} {} {} {}",
+        v.curves_bounded,
+        v.curves_unbounded,
+        v.isolated_points,
+        v.points_at_infinity,
+        v.singular_finite,
+        v.singular_at_infinity
+    )];
+    out.extend(v.components.iter().map(|c| {
+        format!(
+            "{:?} {} {:?} {}",
+            c.name, c.at_infinity, c.bounded, c.points_at_infinity
+        )
+    }));
+    out
+}
+
+/// [`summary`] with the Euclidean words (circle) replaced by the affine ones (ellipse).
+fn affine_summary(v: &AffineCurve) -> Vec<String> {
+    summary(v)
+        .into_iter()
+        .map(|s| s.replace("circle", "ellipse"))
+        .collect()
+}
+
+/// An affine map (fixing the plane at infinity) changes no affine answer, on every corpus
+/// line whose curve is available.
+#[test]
+fn affine_answers_are_invariant_under_affine_maps() {
+    let mut rng = SplitMix(0x5eed_affe);
+    let (mut checked, mut failures) = (0, Vec::new());
+    let chart = Chart::default();
+    for name in ["cases.jsonl", "seed_examples.jsonl", "qi-quadrics.jsonl"] {
+        let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
+        let text = std::fs::read_to_string(&path).unwrap();
+        for (i, raw) in text.lines().enumerate() {
+            let line: Value = serde_json::from_str(raw).unwrap();
+            if line.get("A").is_none()
+                || !matches!(line["pencil"].as_str(), Some("regular" | "singular"))
+            {
+                continue;
+            }
+            let (a, b) = (read_form(&line["A"]), read_form(&line["B"]));
+            let Ok(curve) = parameterize(&a, &b) else {
+                continue;
+            };
+            let Ok(before) = affine_curve(&curve, &a, &b, &chart) else {
+                continue;
+            };
+            for similar in [false, true] {
+                let t = affine_map(&mut rng, similar);
+                let (a2, b2) = (moved(&a, &t), moved(&b, &t));
+                let after = parameterize(&a2, &b2).and_then(|c| affine_curve(&c, &a2, &b2, &chart));
+                let names =
+                    |a: &Quadric, b: &Quadric| [surface_name(a, &chart), surface_name(b, &chart)];
+                let same = |after: &AffineCurve| {
+                    if similar {
+                        summary(after) == summary(&before) && names(&a, &b) == names(&a2, &b2)
+                    } else {
+                        affine_summary(after) == affine_summary(&before)
+                    }
+                };
+                match after {
+                    Ok(after) if same(&after) => checked += 1,
+                    Ok(after) => failures.push(format!(
+                        "{name}:{} ({}): {:?} became {:?}",
+                        i + 1,
+                        if similar { "similarity" } else { "affine" },
+                        summary(&before),
+                        summary(&after)
+                    )),
+                    Err(e) => failures.push(format!("{name}:{}: after the map: {e}", i + 1)),
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(checked >= 30, "{checked} checked");
 }

@@ -589,6 +589,9 @@ impl Poly<NumberFieldElement> {
     /// assert_eq!(p.sign_at(&t(&[-199, 0, 100])), Sign::Negative); // t = √1.99
     /// ```
     pub fn sign_at(&self, t: &AlgebraicReal) -> Sign {
+        if self.is_zero() {
+            return Sign::Zero;
+        }
         if let Some(v) = t.as_rational() {
             return self.eval(&NumberFieldElement::rational(v.clone())).sign();
         }
@@ -744,6 +747,11 @@ mod tests {
         let r: Vec<f64> = q.real_roots().iter().map(AlgebraicReal::to_f64).collect();
         assert_eq!(r, [-2.0, 2.0]);
         assert!(Poly::<NumberFieldElement>::zero().real_roots().is_empty());
+        let sqrt2 = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 1]))[1].clone();
+        assert_eq!(
+            Poly::<NumberFieldElement>::zero().sign_at(&sqrt2),
+            Sign::Zero
+        );
     }
 
     use super::*;

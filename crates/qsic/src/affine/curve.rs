@@ -267,27 +267,23 @@ impl InfinityEvents<'_> {
     }
 
     /// Events of Levin's `a ± d√s` (`s` of degree 4, `a` of degree `k`, `d` of `k − 2`).
-    fn levin(&mut self, a: &PointPoly, d: &PointPoly, s: &NumberPoly) -> Vec<Event> {
-        let k = a
-            .iter()
-            .map(degree)
-            .chain(d.iter().map(|p| degree(p) + 2))
-            .max()
-            .unwrap_or(2)
-            .max(2);
+    /// At a root of `s` where `a` vanishes the point is `d`'s (the limit).
+    fn levin(&mut self, a: &PointPoly, d: &PointPoly, s: &NumberPoly, k: usize) -> Vec<Event> {
         let (wa, wd) = (chart_form(self.l, a), chart_form(self.l, d));
+        let a_inf: PointPoly = std::array::from_fn(|i| at_infinity_chart(&a[i], k));
         let mut events = Vec::new();
         // finite u, then u = ∞ through v = 1/u
         let charts = [
             (wa.clone(), wd.clone(), s.clone(), false),
             (
                 at_infinity_chart(&wa, k),
-                at_infinity_chart(&wd, k - 2),
+                at_infinity_chart(&wd, k.saturating_sub(2)),
                 at_infinity_chart(s, 4),
                 true,
             ),
         ];
         for (wa, wd, s, infinite) in charts {
+            let a_here: &PointPoly = if infinite { &a_inf } else { a };
             let r = &(&wa * &wa) - &(&s * &(&wd * &wd));
             let roots: Vec<AlgebraicReal> = if infinite {
                 // only v = 0 is new
@@ -308,11 +304,18 @@ impl InfinityEvents<'_> {
                 };
                 match s.sign_at(&t) {
                     Sign::Negative => {}
-                    Sign::Zero => events.push(Event {
-                        at,
-                        sheet: None,
-                        vertex: self.local(),
-                    }),
+                    Sign::Zero => {
+                        // the point is a(t), or d(t) where a(t) = 0
+                        let base = a_here.iter().all(|c| c.sign_at(&t) == Sign::Zero);
+                        let w = if base { &wd } else { &wa };
+                        if w.sign_at(&t) == Sign::Zero {
+                            events.push(Event {
+                                at,
+                                sheet: None,
+                                vertex: self.local(),
+                            });
+                        }
+                    }
                     Sign::Positive => {
                         let (sa, sd) = (wa.sign_at(&t), wd.sign_at(&t));
                         let sheets: Vec<Sheet> = match (sa, sd) {
@@ -454,7 +457,7 @@ pub fn affine_curve(
                     }
                 }
             }
-            ComponentParam::Levin { a, d, s } => inf.levin(a, d, s),
+            ComponentParam::Levin { a, d, s, degree } => inf.levin(a, d, s, *degree),
             ComponentParam::Point(_) => Vec::new(),
         };
         piece_vertices.push(Some(ordered_vertices(arcs, &events)));

@@ -35,12 +35,15 @@ pub enum ComponentParam {
         /// The homogeneous degree (at least the degree of every coordinate).
         degree: usize,
     },
-    /// Levin's form `X(u) = a(u) ± d(u)√s(u)`: real where `s(u) ≥ 0`.
+    /// Levin's form `X(u) = a(u) ± d(u)√s(u)`: real where `s(u) ≥ 0`. At a root `u₀` of
+    /// `s` where `a(u₀) = 0` the point is the limit, `d(u₀)`.
     Levin {
-        /// `a(u)`.
+        /// `a(u)`, of homogeneous degree `degree`.
         a: PointPoly,
-        /// `d(u)`.
+        /// `d(u)`, of homogeneous degree `degree − 2`.
         d: PointPoly,
+        /// The homogeneous degree of `a` (the point at `u = ∞` is `a_k ± d_{k−2}√s₄`).
+        degree: usize,
         /// `s(u)`, a binary form of homogeneous degree 4 (degree drop: root at `u = ∞`).
         s: NumberPoly,
     },
@@ -216,7 +219,7 @@ impl ComponentParam {
                 poly_form(m, &x, &x).is_zero()
             }
             ComponentParam::Rational { x, .. } => poly_form(m, x, x).is_zero(),
-            ComponentParam::Levin { a, d, s } => {
+            ComponentParam::Levin { a, d, s, .. } => {
                 (&poly_form(m, a, a) + &(s * &poly_form(m, d, d))).is_zero()
                     && poly_form(m, a, d).is_zero()
             }

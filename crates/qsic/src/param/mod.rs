@@ -251,13 +251,19 @@ fn levin_curve(
             r.is_zero().then_some(q)
         })
         .collect();
+    // homogeneous degree of a: 3 on a doubly ruled surface (b, d lines), 4 on a cone
+    let degree = match levin.surface.kind {
+        SurfaceKind::DoublyRuled => 3,
+        SurfaceKind::Cone => 4,
+    };
     let param = match quotients {
         Some(q) => ComponentParam::Levin {
             a: d,
             d: std::array::from_fn(|i| q[i].clone()),
+            degree: degree - 2,
             s,
         },
-        None => ComponentParam::Levin { a, d, s },
+        None => ComponentParam::Levin { a, d, degree, s },
     };
     let dr = &levin.discriminant;
     let mut ends: Vec<ParamValue> = dr.roots.iter().cloned().map(ParamValue::Finite).collect();
