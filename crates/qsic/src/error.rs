@@ -97,6 +97,9 @@ pub enum Error {
     /// A moving pencil outside what the motion analysis handles (e.g. singular for every `t`).
     #[error("moving pencil not supported: {0}")]
     UnsupportedMotion(String),
+    /// A time range `[t0, t1]` with `t0 > t1`; the message gives both.
+    #[error("invalid time range: {0}")]
+    InvalidRange(String),
     /// A parameterization this version cannot give: the class is not covered yet, or the
     /// sub-case needs an algebraic parameterization surface or a biquadratic field. Says which.
     #[error("parameterization not available: {0}")]
