@@ -277,8 +277,10 @@ impl MovingPencil {
         out.push(self.a.denominator().clone());
         out.push(self.b.denominator().clone());
         // M_A ∝ M_B where every 2×2 minor of the pair of coefficient vectors vanishes.
-        let (va, vb): (Vec<&Poly>, Vec<&Poly>) =
-            (self.ma.iter().flatten().collect(), self.mb.iter().flatten().collect());
+        let (va, vb): (Vec<&Poly>, Vec<&Poly>) = (
+            self.ma.iter().flatten().collect(),
+            self.mb.iter().flatten().collect(),
+        );
         let mut prop = Poly::zero();
         'pairs: for i in 0..16 {
             for j in i + 1..16 {
@@ -512,11 +514,7 @@ fn without_common_factor(m: &[[Poly; 4]; 4]) -> [[Poly; 4]; 4] {
         g = -&g;
     }
     std::array::from_fn(|i| {
-        std::array::from_fn(|j| {
-            m[i][j]
-                .div_exact(&g)
-                .expect("the gcd divides every entry")
-        })
+        std::array::from_fn(|j| m[i][j].div_exact(&g).expect("the gcd divides every entry"))
     })
 }
 
