@@ -233,6 +233,10 @@ impl MovingPencil {
             .rev()
             .find(|&k| self.pencil.minors(k).iter().any(|m| !m.is_zero()))
             .unwrap_or(0);
+        if rank == 0 {
+            // both zero matrices: refused by the readers, named here for completeness
+            return Err(Error::ZeroQuadric);
+        }
         let mut out = Vec::new();
         // The characteristic form (chart, formal degree): `f`, or `D_r` for a singular pencil.
         let (chi, degree) = if rank == 4 {
