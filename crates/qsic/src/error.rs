@@ -94,7 +94,8 @@ pub enum Error {
     /// An invalid parameter of a shape constructor (e.g. a non-positive squared radius).
     #[error("invalid shape parameter: {0}")]
     InvalidShape(String),
-    /// A moving pencil outside what the motion analysis handles (e.g. singular for every `t`).
+    /// A moving pencil outside what the motion analysis handles (no combination of minors
+    /// separates the rank conditions; not expected).
     #[error("moving pencil not supported: {0}")]
     UnsupportedMotion(String),
     /// A time range `[t0, t1]` with `t0 > t1`; the message gives both.

@@ -2,7 +2,8 @@
 //! and the type on every interval between them and at every instant, exactly.
 //!
 //! The pencil is `λM_A(t) − μM_B(t)` with the numerator matrices of the two
-//! [`MovingMatrix`] values (denominators cleared, so the quadric at a pole is the limit),
+//! [`MovingMatrix`] values, denominators cleared and the gcd of all entries divided out (so
+//! the quadric at a pole, or at a common root of all entries, is the limit),
 //! and `f(λ; t) = det(λM_A − M_B) ∈ ℤ[t][λ]`. Following Jia, Wang, Choi, Mourrain, Tu
 //! (Theorems 3.2–3.12, Algorithms 1–3), the class of a regular pencil is constant wherever
 //! the Segre characteristic is, and that changes only at the real roots of
@@ -13,8 +14,10 @@
 //! - when `f` has a repeated factor for all `t`: for `k = 1, 2, 3`, where the `k×k` minors
 //!   of `λM_A − μM_B` divided by their generic gcd `D_k` share a root (a Jordan structure
 //!   change: the rank conditions of Algorithms 1–2, without case analysis);
-//! - the denominators, the common roots of all entries of `M_A` (or `M_B`) and of all
-//!   `2×2` minors of the pair (`M_A ∝ M_B`).
+//! - the denominators, and the common roots of all `2×2` minors of the pair (`M_A ∝ M_B`);
+//! - for a pencil singular for every `t`, the same with the generic gcd `D_r` of the `r×r`
+//!   minors in place of `f` (`r` the generic rank), the rank conditions always, and where
+//!   `[M_A; M_B]` loses rank (a new common singular point).
 //!
 //! [`MovingPencil::variations`] classifies at a rational sample of every open interval and at
 //! every candidate — exactly, by [`classify()`](crate::classify()) at rational instants and by
