@@ -17,7 +17,7 @@
 //! straight into one string ([`crate::output::write_classification_fields`]).
 
 use crate::input::{quadric_from_form, JsonForm};
-use crate::line::read_line;
+use crate::line::{read_line, Line};
 use crate::output::{write_classification_fields, write_json_string};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use qsic::classify_allowing_zero;
@@ -191,13 +191,13 @@ fn find_newline(b: &[u8]) -> Option<usize> {
 }
 
 /// Why a line failed, with its `id` as written once it is known.
-struct LineFailure<'a> {
-    id: Option<&'a str>,
-    message: String,
+pub(crate) struct LineFailure<'a> {
+    pub(crate) id: Option<&'a str>,
+    pub(crate) message: String,
 }
 
 impl LineFailure<'_> {
-    fn without_id(message: impl Into<String>) -> Self {
+    pub(crate) fn without_id(message: impl Into<String>) -> Self {
         LineFailure {
             id: None,
             message: message.into(),
@@ -206,7 +206,7 @@ impl LineFailure<'_> {
 }
 
 /// `{"id":` and the id as written (`null` if none), then `,`.
-fn open_record(id: Option<&str>) -> String {
+pub(crate) fn open_record(id: Option<&str>) -> String {
     let mut out = String::with_capacity(512);
     out.push_str("{\"id\":");
     out.push_str(id.unwrap_or("null"));
@@ -217,7 +217,15 @@ fn open_record(id: Option<&str>) -> String {
 /// The output line for one input line (without newline) and whether it succeeded.
 /// Never panics: a panic inside the classifier becomes an error line.
 pub fn answer_line(line: &RawLine) -> (String, bool) {
-    match classify_line(line) {
+    answer_with(line, classify_line)
+}
+
+/// The output line of `work` on `line`: its text, or the error record of its failure.
+pub(crate) fn answer_with<'a>(
+    line: &'a RawLine,
+    work: impl FnOnce(&'a RawLine) -> Result<String, LineFailure<'a>>,
+) -> (String, bool) {
+    match work(line) {
         Ok(text) => (text, true),
         Err(failure) => {
             let mut out = open_record(failure.id);
@@ -231,6 +239,17 @@ pub fn answer_line(line: &RawLine) -> (String, bool) {
     }
 }
 
+/// `f()`, or the message of its panic (a bug, reported on the line instead of aborting).
+pub(crate) fn catch_panic<T>(f: impl FnOnce() -> T) -> Result<T, String> {
+    panic::catch_unwind(AssertUnwindSafe(f)).map_err(|payload| {
+        payload
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_default()
+    })
+}
+
 /// Reads a line that does not start with `{` into a [`Value`], for the error message.
 fn not_an_object(text: &str) -> LineFailure<'static> {
     match serde_json::from_str::<Value>(text) {
@@ -242,7 +261,9 @@ fn not_an_object(text: &str) -> LineFailure<'static> {
     }
 }
 
-fn classify_line(line: &RawLine) -> Result<String, LineFailure<'_>> {
+/// The fields of a line: errors for an over-long line, invalid UTF-8, a value that is not
+/// an object, invalid JSON.
+pub(crate) fn read_record(line: &RawLine) -> Result<Line<'_>, LineFailure<'_>> {
     let bytes = match &line.content {
         Content::Text(bytes) => bytes,
         Content::TooLong { bytes } => {
@@ -263,8 +284,11 @@ fn classify_line(line: &RawLine) -> Result<String, LineFailure<'_>> {
     {
         return Err(not_an_object(text));
     }
-    let record =
-        read_line(text).map_err(|e| LineFailure::without_id(format!("invalid JSON: {e}")))?;
+    read_line(text).map_err(|e| LineFailure::without_id(format!("invalid JSON: {e}")))
+}
+
+fn classify_line(line: &RawLine) -> Result<String, LineFailure<'_>> {
+    let record = read_record(line)?;
     let id = record.id;
     let fail = |message: String| LineFailure { id, message };
     let quadric = |name: &str, form: &Option<JsonForm<'_>>| match form {
@@ -273,21 +297,13 @@ fn classify_line(line: &RawLine) -> Result<String, LineFailure<'_>> {
     };
     let a = quadric("A", &record.a)?;
     let b = quadric("B", &record.b)?;
-    let outcome = panic::catch_unwind(AssertUnwindSafe(|| {
-        classify_allowing_zero(a.as_ref(), b.as_ref())
-    }));
-    let classification = match outcome {
+    let classification = match catch_panic(|| classify_allowing_zero(a.as_ref(), b.as_ref())) {
         Ok(Ok(c)) => c,
         Ok(Err(e)) => return Err(fail(format!("A and B: both are zero: {e}"))),
-        Err(payload) => {
-            let what = payload
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| payload.downcast_ref::<String>().cloned())
-                .unwrap_or_default();
+        Err(what) => {
             return Err(fail(format!(
                 "internal error in the classifier (a bug): {what}"
-            )));
+            )))
         }
     };
     let mut out = open_record(id);
@@ -324,10 +340,20 @@ pub enum BatchError {
 ///
 /// # Errors
 /// [`BatchError`] if reading or writing fails; every chunk read before is answered.
-pub fn run<R: Read, W: Write>(
+pub fn run<R: Read, W: Write>(input: R, output: W, progress: bool) -> Result<Summary, BatchError> {
+    run_with(input, output, progress, answer_line)
+}
+
+/// [`run`] with another answer for each line (`qsic motion --batch`): `answer` gives the
+/// output line (without newline) and whether it succeeded, and must not panic.
+///
+/// # Errors
+/// As [`run`].
+pub fn run_with<R: Read, W: Write, F: Fn(&RawLine) -> (String, bool) + Sync>(
     input: R,
     mut output: W,
     progress: bool,
+    answer: F,
 ) -> Result<Summary, BatchError> {
     let mut reader = LineReader::new(input, MAX_LINE_BYTES);
     let bar = progress_bar(progress);
@@ -358,7 +384,7 @@ pub fn run<R: Read, W: Write>(
                 break;
             }
         }
-        let answers: Vec<(String, bool)> = chunk.par_iter().map(answer_line).collect();
+        let answers: Vec<(String, bool)> = chunk.par_iter().map(&answer).collect();
         for (text, ok) in &answers {
             output
                 .write_all(text.as_bytes())

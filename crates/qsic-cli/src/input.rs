@@ -334,6 +334,15 @@ pub fn quadric_from_form(form: &JsonForm<'_>) -> Result<Option<Quadric>, InputEr
             )))
         }
     };
+    allow_zero(quadric_from_array(&matrix_texts(m)?))
+}
+
+/// The entry texts of a 4×4 [`JsonMatrix`] (checked for its shape), as
+/// [`quadric_from_json`] reads them: numbers as written, strings unescaped.
+///
+/// # Errors
+/// As [`quadric_from_json`] for the shape and the entry types.
+pub(crate) fn matrix_texts<'a>(m: &JsonMatrix<'a>) -> Result<[[Cow<'a, str>; 4]; 4], InputError> {
     if let Some((i, kind)) = m.not_array {
         return Err(InputError::Type(format!(
             "row {i} of the matrix must be an array, found {kind}"
@@ -346,7 +355,7 @@ pub fn quadric_from_form(form: &JsonForm<'_>) -> Result<Option<Quadric>, InputEr
         }
         .into());
     }
-    let mut texts: [[Cow<'_, str>; 4]; 4] = Default::default();
+    let mut texts: [[Cow<'a, str>; 4]; 4] = Default::default();
     for (i, (row, raw_row)) in texts.iter_mut().zip(&m.entries).enumerate() {
         for (j, (text, raw)) in row.iter_mut().zip(raw_row).enumerate() {
             // The shape is 4×4, so every entry was read.
@@ -355,7 +364,7 @@ pub fn quadric_from_form(form: &JsonForm<'_>) -> Result<Option<Quadric>, InputEr
             }
         }
     }
-    allow_zero(quadric_from_array(&texts))
+    Ok(texts)
 }
 
 /// The JSON type of a value, for messages: "null", "a boolean", "a number", ….

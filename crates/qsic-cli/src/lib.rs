@@ -7,8 +7,10 @@
 //! | [`output`] | the JSON result object ([`output::classification_to_json`]) and the text report |
 //! | [`mod@line`] | the fields of one batch line, borrowed from its text (a strict fast reader, then `serde_json`) |
 //! | [`batch`] | `--batch`: bounded, ordered, parallel JSON Lines processing |
+//! | [`motion`] | `qsic motion`: moving quadrics in, their timeline out (text, JSON, batch lines) |
 
 pub mod batch;
 pub mod input;
 pub mod line;
+pub mod motion;
 pub mod output;

@@ -5,6 +5,7 @@
 //! 2 usage error, unreadable input file or an I/O error.
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
+use qsic_cli::motion::{self, TimeRange};
 use qsic_cli::{batch, input, output};
 use std::fs::File;
 use std::io::{self, IsTerminal, Write};
@@ -68,6 +69,9 @@ enum Command {
     /// characteristic, the signature and index sequences, the complex and real type, a
     /// one-line summary, and the real components and singular points of the curve.
     Classify(ClassifyArgs),
+    /// The instants where the intersection of two moving quadrics A(t), B(t) changes type,
+    /// and the type on every interval between them, exactly.
+    Motion(MotionArgs),
 }
 
 /// Arguments of `qsic classify`.
@@ -99,11 +103,84 @@ struct ClassifyArgs {
     json: bool,
 }
 
+const MOTION_HELP: &str = "\
+MOVING QUADRICS:
+  A(t), B(t): a quadratic form in x, y, z, w (or affine in x, y, z) whose coefficients are
+  rational functions of t, e.g. \"(x - t)^2 + y^2 + z^2 - 1\" or \"x^2 + (1-t^2)/(1+t^2)*y*w\";
+  or a symmetric 4x4 JSON array of numbers and strings of rational functions of t, e.g.
+  '[[\"1\",0,0,\"-t\"],[0,1,0,0],[0,0,1,0],[\"-t\",0,0,\"t^2-1\"]]'. Denominators are
+  cleared (at a pole the quadric is the limit), and so is a factor common to all entries.
+  Bounds (qsic::limits): entries of degree <= 16 in t once denominators are cleared,
+  coefficients of <= 512 bits; each number <= 10000 digits.
+
+OUTPUT:
+  A timeline: the open intervals of t with a rational sample and their type, and the
+  instants between them where the type differs from a neighbour's. An instant is exact:
+  a rational, or a root of a square-free integer polynomial in an isolating interval.
+  --json: {\"instants\": [{\"t\", \"pencil\", \"case\", \"complex_type\", \"real_type\"}],
+  \"intervals\": [{\"from\", \"to\", \"sample_t\", \"pencil\", \"case\", \"complex_type\",
+  \"real_type\"}]}; t is \"p/q\" or {\"poly\", \"interval\": [\"a\", \"b\"], \"approx\"}; from/to
+  null for -oo/+oo.
+
+RANGE (--range T0 T1):
+  Analyse the closed range [T0, T1] only (exact numbers; -oo or oo for an open side).
+  The intervals cover (T0, T1): the first starts at T0, the last ends at T1. The instants
+  strictly inside are reported as without a range; T0 (T1) is reported as a first (last)
+  instant only if its type differs from that of the interval beside it. T0 = T1 gives no
+  interval and the one instant.
+
+BATCH (--batch FILE, or - for standard input):
+  JSON Lines {\"id\", \"A\", \"B\"} in; one JSON line out per non-blank line, in order:
+  {\"id\", \"instants\", \"intervals\"} or {\"id\", \"error\": {\"line\", \"message\"}}, as for
+  'qsic classify --batch'. --range applies to every line.
+
+EXIT STATUS:
+  0  success; 1 bad input (or a batch line failed); 2 usage or I/O error
+
+EXAMPLES:
+  qsic motion \"x^2+y^2+z^2-4\" \"(x-t)^2+y^2+z^2-1\"
+  qsic motion --json --range 0 2 \"x^2+y^2-z^2-w^2\" \"(x^2+y^2+(z+t*w)^2)/2-w^2\"
+  qsic motion --batch moving.jsonl";
+
+/// Arguments of `qsic motion`.
+#[derive(Args, Debug)]
+#[command(after_long_help = MOTION_HELP, after_help = "See 'qsic motion --help' for input forms, output, range and batch.")]
+struct MotionArgs {
+    /// First moving quadric: a form in x, y, z, w with coefficients in t, or a 4x4 JSON matrix.
+    #[arg(
+        value_name = "A",
+        allow_hyphen_values = true,
+        required_unless_present = "batch"
+    )]
+    a: Option<String>,
+
+    /// Second moving quadric, as A.
+    #[arg(
+        value_name = "B",
+        allow_hyphen_values = true,
+        required_unless_present = "batch"
+    )]
+    b: Option<String>,
+
+    /// Analyse the JSON Lines of FILE ('-' for standard input) and write JSON Lines.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["a", "b"])]
+    batch: Option<PathBuf>,
+
+    /// Restrict t to the closed range [T0, T1] (exact numbers, -oo/oo for an open side).
+    #[arg(long, num_args = 2, value_names = ["T0", "T1"], allow_hyphen_values = true)]
+    range: Option<Vec<String>>,
+
+    /// Print one JSON object instead of the text timeline (batch output is always JSON).
+    #[arg(long)]
+    json: bool,
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
+        Command::Motion(args) => run_motion(&args),
         Command::Classify(args) => match (&args.batch, &args.a, &args.b) {
-            (Some(path), _, _) => run_batch(path),
+            (Some(path), _, _) => run_batch(path, batch::answer_line),
             (None, Some(a), Some(b)) => run_single(a, b, args.json),
             _ => {
                 // clap's `required_unless_present` makes this unreachable; answer as a usage error.
@@ -149,15 +226,69 @@ fn run_single(a: &str, b: &str, json: bool) -> ExitCode {
     }
 }
 
-/// `qsic classify --batch FILE`: exit 0 if every line succeeded, 1 if any failed, 2 on I/O errors.
-fn run_batch(path: &std::path::Path) -> ExitCode {
+/// `qsic motion`: a single pair (exit 0, or 1 with `error: …`) or a batch.
+fn run_motion(args: &MotionArgs) -> ExitCode {
+    let range = match args.range.as_deref() {
+        Some([t0, t1]) => match TimeRange::parse(t0, t1) {
+            Ok(r) => r,
+            Err(message) => {
+                let mut cmd = Cli::command();
+                cmd.error(clap::error::ErrorKind::ValueValidation, message)
+                    .exit()
+            }
+        },
+        _ => TimeRange::default(),
+    };
+    if let Some(path) = &args.batch {
+        return run_batch(path, |line: &batch::RawLine| {
+            motion::answer_motion_line(line, &range)
+        });
+    }
+    let (Some(a), Some(b)) = (&args.a, &args.b) else {
+        let mut cmd = Cli::command();
+        cmd.error(
+            clap::error::ErrorKind::MissingRequiredArgument,
+            "two moving quadrics A and B, or --batch FILE, are required",
+        )
+        .exit()
+    };
+    let read =
+        |name: &str, text: &str| motion::moving_from_arg(text).map_err(|e| format!("{name}: {e}"));
+    let result = read("A", a).and_then(|ma| {
+        let mb = read("B", b)?;
+        motion::analyze(ma, mb, &range).map_err(|e| format!("A and B: {e}"))
+    });
+    let text = match result {
+        Ok(m) if args.json => motion::motion_to_json_line(&m) + "\n",
+        Ok(m) => motion::human_timeline(&m),
+        Err(message) => {
+            eprintln!("error: {message}");
+            return ExitCode::from(1);
+        }
+    };
+    let mut stdout = io::stdout().lock();
+    match stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => io_failure("writing the output", &e),
+    }
+}
+
+/// `qsic classify --batch FILE` (or `motion`, with its `answer`): exit 0 if every line
+/// succeeded, 1 if any failed, 2 on I/O errors.
+fn run_batch<F: Fn(&batch::RawLine) -> (String, bool) + Sync>(
+    path: &std::path::Path,
+    answer: F,
+) -> ExitCode {
     let progress = io::stderr().is_terminal();
     let stdout = io::BufWriter::with_capacity(1 << 20, io::stdout().lock());
     let result = if path.as_os_str() == "-" {
-        batch::run(io::stdin().lock(), stdout, progress)
+        batch::run_with(io::stdin().lock(), stdout, progress, answer)
     } else {
         match File::open(path) {
-            Ok(file) => batch::run(file, stdout, progress),
+            Ok(file) => batch::run_with(file, stdout, progress, answer),
             Err(e) => {
                 eprintln!("error: cannot open {}: {e}", path.display());
                 return ExitCode::from(2);
@@ -193,7 +324,9 @@ mod tests {
     fn hyphen_polynomials_and_batch_conflicts() {
         let cli = Cli::try_parse_from(["qsic", "classify", "-x^2+y^2-w^2", "x^2", "--json"])
             .expect("a leading '-' is a polynomial");
-        let Command::Classify(args) = cli.command;
+        let Command::Classify(args) = cli.command else {
+            panic!("classify parsed as another command");
+        };
         assert_eq!(args.a.as_deref(), Some("-x^2+y^2-w^2"));
         assert!(args.json);
         assert!(Cli::try_parse_from(["qsic", "classify", "--batch", "f", "x^2", "y^2"]).is_err());

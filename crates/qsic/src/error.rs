@@ -97,9 +97,13 @@ pub enum Error {
     /// An affine chart that is not one (e.g. the zero form as the plane at infinity).
     #[error("invalid chart: {0}")]
     InvalidChart(String),
-    /// A moving pencil outside what the motion analysis handles (e.g. singular for every `t`).
+    /// A moving pencil outside what the motion analysis handles (no combination of minors
+    /// separates the rank conditions; not expected).
     #[error("moving pencil not supported: {0}")]
     UnsupportedMotion(String),
+    /// A time range `[t0, t1]` with `t0 > t1`; the message gives both.
+    #[error("invalid time range: {0}")]
+    InvalidRange(String),
     /// A parameterization this version cannot give: the class is not covered yet, or the
     /// sub-case needs an algebraic parameterization surface or a biquadratic field. Says which.
     #[error("parameterization not available: {0}")]

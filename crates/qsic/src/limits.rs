@@ -19,6 +19,8 @@
 //! | [`MAX_COEFFICIENT_BITS`] | bits of every coefficient met while expanding a polynomial |
 //! | [`MAX_EXPANSION_BITS`] | bits of all numbers computed while reading one polynomial, added up |
 //! | [`MAX_MOVING_MATRIX_BITS`] | bits of all coefficients of the entries of a moving matrix |
+//! | [`MAX_MOTION_DEGREE`] | the degree in `t` of every entry of a moving pencil, denominators cleared |
+//! | [`MAX_MOTION_COEFFICIENT_BITS`] | bits of every coefficient of those entries |
 
 /// Largest polynomial string accepted by [`crate::io::parse_quadric`], in bytes (100 kB).
 ///
@@ -102,3 +104,16 @@ pub const OVERHEAD_BITS: usize = 32;
 /// square of the degree times the cost of products of numbers of this size: this keeps it
 /// around a second at worst. The moving quadrics of the literature have a few hundred bits.
 pub const MAX_MOVING_MATRIX_BITS: usize = 1 << 18;
+
+/// Largest degree in `t` of an entry of the matrices `M_A`, `M_B` of a
+/// [`MovingPencil`](crate::motion::MovingPencil) (denominators cleared, common factor divided
+/// out).
+///
+/// `f(λ; t)` then has degree up to `4·16` in `t` and its discriminant up to `6·64`; the
+/// analysis of such a pencil takes seconds, the motions of the literature (rational
+/// rotations, screw motions, translations along curves of low degree) have degree 2 to 8.
+pub const MAX_MOTION_DEGREE: usize = 16;
+
+/// Largest bit length of a coefficient of an entry of `M_A`, `M_B` (see
+/// [`MAX_MOTION_DEGREE`]): about 150 decimal digits.
+pub const MAX_MOTION_COEFFICIENT_BITS: usize = 512;

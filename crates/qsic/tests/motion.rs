@@ -90,7 +90,7 @@ fn corpus() -> Vec<Value> {
 fn corpus_instants_and_types() {
     for d in corpus() {
         let id = d["id"].as_str().unwrap();
-        let pencil = MovingPencil::new(matrix(&d["A"]), matrix(&d["B"]));
+        let pencil = MovingPencil::new(matrix(&d["A"]), matrix(&d["B"])).unwrap();
         let motion = pencil.variations().unwrap();
         let want_instants = d["instants"].as_array().unwrap();
         assert_eq!(
@@ -164,7 +164,7 @@ fn collision_polynomial(p: &MovingPencil) -> Poly {
 fn sphere_through_sphere() {
     let a = moving_matrix_from_polynomial("x^2 + y^2 + z^2 - 4").unwrap();
     let b = moving_matrix_from_polynomial("(x - t)^2 + y^2 + z^2 - 1").unwrap();
-    let pencil = MovingPencil::new(a, b);
+    let pencil = MovingPencil::new(a, b).unwrap();
     let motion = pencil.variations().unwrap();
     let ts: Vec<RBig> = motion
         .instants
@@ -215,12 +215,14 @@ fn sphere_through_sphere_irrational_instants() {
         moving_matrix_from_polynomial("x^2 + y^2 + z^2 - 4").unwrap(),
         moving_matrix_from_polynomial("(x - t)^2 + y^2 + z^2 - 1").unwrap(),
     )
+    .unwrap()
     .variations()
     .unwrap();
     let pencil = MovingPencil::new(
         moving_matrix_from_polynomial("x^2 + y^2 + z^2 - 2").unwrap(),
         moving_matrix_from_polynomial("(x - t)^2 + y^2 + z^2 - 1").unwrap(),
-    );
+    )
+    .unwrap();
     let motion = pencil.variations().unwrap();
     assert_eq!(motion.instants.len(), 5);
     let quartic = Poly::from_i64s(&[1, 0, -6, 0, 1]);
@@ -324,7 +326,7 @@ fn corpus_discriminants_vanish_at_the_instants() {
     let mut generic = 0;
     for d in corpus() {
         let id = d["id"].as_str().unwrap();
-        let pencil = MovingPencil::new(matrix(&d["A"]), matrix(&d["B"]));
+        let pencil = MovingPencil::new(matrix(&d["A"]), matrix(&d["B"])).unwrap();
         let f = pencil.characteristic();
         assert_eq!(f.degree(), Some(4), "{id}");
         let full = f.discriminant();
@@ -364,4 +366,385 @@ fn corpus_discriminants_vanish_at_the_instants() {
         }
     }
     assert_eq!(generic, 1, "ex3.1 is the corpus' generic pencil");
+}
+
+/// `text` with every `t` replaced by `(value)`.
+fn substitute(text: &str, value: &str) -> String {
+    text.replace('t', &format!("({value})"))
+}
+
+/// The type of the motion at a rational `t`: of the instant there, else of the interval
+/// containing it.
+fn type_at(m: &Motion, t: &RBig) -> MotionType {
+    let x = AlgebraicReal::from_rational(t.clone());
+    if let Some(i) = m.instants.iter().find(|i| i.t == x) {
+        return MotionType::of(i.class.classification().expect("classified"));
+    }
+    let v = m
+        .intervals
+        .iter()
+        .find(|v| v.from.as_ref().is_none_or(|a| *a < x) && v.to.as_ref().is_none_or(|b| x < *b))
+        .expect("every t off the instants lies in an interval");
+    MotionType::of(&v.classification)
+}
+
+/// Independent route: the static pair `A(t₀)`, `B(t₀)` read from the strings with `t₀`
+/// substituted, classified by [`qsic::classify_allowing_zero`], has the motion's type at
+/// `t₀`, for `t₀ = k/4`, `|k| ≤ 16` (poles, where the strings cannot be evaluated, skipped).
+fn assert_matches_static(m: &Motion, a: &str, b: &str) -> usize {
+    let mut checked = 0;
+    for k in -16..=16i64 {
+        let t0 = RBig::from_parts_signed(k.into(), 4u8.into());
+        let value = format!("{k}/4");
+        let (Ok(qa), Ok(qb)) = (
+            optional_quadric(&substitute(a, &value)),
+            optional_quadric(&substitute(b, &value)),
+        ) else {
+            continue;
+        };
+        let c = qsic::classify_allowing_zero(qa.as_ref(), qb.as_ref()).unwrap();
+        assert_eq!(type_at(m, &t0), MotionType::of(&c), "{a}, {b} at t = {t0}");
+        checked += 1;
+    }
+    checked
+}
+
+fn optional_quadric(text: &str) -> Result<Option<qsic::Quadric>, qsic::Error> {
+    match qsic::io::parse_quadric(text) {
+        Ok(q) => Ok(Some(q)),
+        Err(qsic::Error::ZeroQuadric) => Ok(None),
+        Err(e) => Err(e),
+    }
+}
+
+fn motion_of(a: &str, b: &str) -> Motion {
+    MovingPencil::new(
+        moving_matrix_from_polynomial(a).unwrap(),
+        moving_matrix_from_polynomial(b).unwrap(),
+    )
+    .unwrap()
+    .variations()
+    .unwrap()
+}
+
+/// Motions with known behaviour, in the quadratic-form syntax.
+const MOTIONS: [(&str, &str); 5] = [
+    ("x^2 + y^2 + z^2 - 4", "(x - t)^2 + y^2 + z^2 - 1"),
+    ("x^2 + y^2 + z^2 - 2", "(x - t)^2 + y^2 + z^2 - 1"),
+    ("x^2 + y^2 - 1", "(x - t)^2 + (y - t^2/2)^2 + z^2 - 1/4"),
+    (
+        "x^2 + y^2 - z^2 - w^2",
+        "x^2/2 + y^2/2 + (z + t*w)^2/2 - w^2",
+    ),
+    // singular for every t (common vertex (0,0,0,1)): instants where the base lines meet
+    ("x^2 + y^2 - z^2", "x^2 + t*y^2 - 2*z^2"),
+];
+
+/// Reparameterizing `t = (a·s + b)/(c·s + d)` moves every instant `τ` to `s = (dτ − b)/(a −
+/// cτ)` with the same type (the image `τ = a/c` of `s = ∞` excepted), adds at most the
+/// image `s = −d/c` of `t = ∞`, and every type agrees with the static classification.
+#[test]
+fn mobius_reparameterization_moves_instants_and_keeps_types() {
+    let maps: [(i64, i64, i64, i64); 4] =
+        [(2, 1, 1, 3), (-1, 0, 0, 1), (1, 2, 0, 1), (1, -1, 2, 1)];
+    for (a_text, b_text) in MOTIONS {
+        let original = motion_of(a_text, b_text);
+        assert!(assert_matches_static(&original, a_text, b_text) > 20);
+        for (a, b, c, d) in maps {
+            let sub = format!("({a}*t + {b})/({c}*t + {d})");
+            let (a2, b2) = (substitute(a_text, &sub), substitute(b_text, &sub));
+            let moved = motion_of(&a2, &b2);
+            assert!(assert_matches_static(&moved, &a2, &b2) > 20, "{a2}, {b2}");
+            let mut expected: Vec<(f64, MotionType)> = original
+                .instants
+                .iter()
+                .filter(|i| c == 0 || i.t.to_f64() * c as f64 != a as f64)
+                .map(|i| {
+                    let tau = i.t.to_f64();
+                    let s = (d as f64 * tau - b as f64) / (a as f64 - c as f64 * tau);
+                    (s, MotionType::of(i.class.classification().unwrap()))
+                })
+                .collect();
+            expected.sort_by(|x, y| x.0.total_cmp(&y.0));
+            let pole = (c != 0).then(|| -(d as f64) / c as f64);
+            let got: Vec<(f64, MotionType)> = moved
+                .instants
+                .iter()
+                .map(|i| {
+                    (
+                        i.t.to_f64(),
+                        MotionType::of(i.class.classification().unwrap()),
+                    )
+                })
+                .filter(|(s, _)| pole.is_none_or(|p| (s - p).abs() > 1e-12))
+                .collect();
+            assert_eq!(got.len(), expected.len(), "{a2}, {b2}: {got:?}");
+            for ((s, t1), (s2, t2)) in got.iter().zip(&expected) {
+                assert!((s - s2).abs() < 1e-9 * s.abs().max(1.0), "{s} vs {s2}");
+                assert_eq!(t1, t2, "{a2}, {b2} at s = {s}");
+            }
+        }
+    }
+}
+
+/// A matrix of entry strings.
+type Rows = Vec<Vec<String>>;
+
+/// `PᵀM(t)P` for an integer matrix `P`, as entry strings.
+fn transformed(rows: &[Vec<String>], p: [[i64; 4]; 4]) -> Vec<Vec<String>> {
+    (0..4)
+        .map(|i| {
+            (0..4)
+                .map(|j| {
+                    let mut terms = vec!["0".to_string()];
+                    for k in 0..4 {
+                        for l in 0..4 {
+                            let w = p[k][i] * p[l][j];
+                            if w != 0 {
+                                terms.push(format!("({w})*({})", rows[k][l]));
+                            }
+                        }
+                    }
+                    terms.join(" + ")
+                })
+                .collect()
+        })
+        .collect()
+}
+
+fn rows_of(v: &Value) -> Vec<Vec<String>> {
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|r| {
+            r.as_array()
+                .unwrap()
+                .iter()
+                .map(|e| e.as_str().unwrap().to_string())
+                .collect()
+        })
+        .collect()
+}
+
+/// A projective map `X ↦ PX` applied to both `A(t)` and `B(t)` changes nothing: the same
+/// instants (exactly) with the same types, the same interval types.
+#[test]
+fn projective_map_changes_nothing() {
+    let maps = [
+        [[1, 2, 0, 0], [0, 1, 0, 3], [1, 0, 1, 0], [0, 0, -2, 1]],
+        [[0, 1, 0, 0], [1, 0, 0, 0], [0, 0, 0, 1], [2, 0, 1, 0]], // det < 0
+    ];
+    let mut pairs: Vec<(String, Rows, Rows)> = corpus()
+        .iter()
+        .map(|d| {
+            (
+                d["id"].as_str().unwrap().to_string(),
+                rows_of(&d["A"]),
+                rows_of(&d["B"]),
+            )
+        })
+        .collect();
+    let sphere = |r: &str| {
+        vec![
+            vec!["1".into(), "0".into(), "0".into(), "0".into()],
+            vec!["0".into(), "1".into(), "0".into(), "0".into()],
+            vec!["0".into(), "0".into(), "1".into(), "0".into()],
+            vec!["0".into(), "0".into(), "0".into(), format!("-{r}")],
+        ]
+    };
+    let mut moving = sphere("1");
+    moving[0][3] = "-t".into();
+    moving[3][0] = "-t".into();
+    moving[3][3] = "t^2 - 1".into();
+    pairs.push(("spheres".into(), sphere("2"), moving));
+    for (id, a, b) in pairs {
+        let original = MovingPencil::new(
+            moving_matrix_from_rows(&a).unwrap(),
+            moving_matrix_from_rows(&b).unwrap(),
+        )
+        .unwrap()
+        .variations()
+        .unwrap();
+        for p in maps {
+            let m = MovingPencil::new(
+                moving_matrix_from_rows(&transformed(&a, p)).unwrap(),
+                moving_matrix_from_rows(&transformed(&b, p)).unwrap(),
+            )
+            .unwrap()
+            .variations()
+            .unwrap();
+            assert_eq!(m.instants.len(), original.instants.len(), "{id}");
+            for (x, y) in m.instants.iter().zip(&original.instants) {
+                assert!(x.t == y.t, "{id}: {} vs {}", x.t, y.t);
+                assert_eq!(x.class, y.class, "{id} at {}", x.t);
+            }
+            let types = |m: &Motion| -> Vec<MotionType> {
+                m.intervals
+                    .iter()
+                    .map(|v| MotionType::of(&v.classification))
+                    .collect()
+            };
+            assert_eq!(types(&m), types(&original), "{id}");
+        }
+    }
+}
+
+/// A pencil singular for every `t` (two cones with the common vertex `(0,0,0,1)`): the
+/// projected conics `x² + y² = z²`, `x² + t·y² = 2z²` have 4 real base points for `t > 2`,
+/// none for `t < 2` (`t ≠ 1`): instants exactly 1 and 2.
+#[test]
+fn pencil_singular_for_every_t() {
+    let (a, b) = MOTIONS[4];
+    let m = motion_of(a, b);
+    let ts: Vec<Option<&RBig>> = m.instants.iter().map(|i| i.t.as_rational()).collect();
+    assert_eq!(ts, [Some(&RBig::ONE), Some(&RBig::from(2))], "{m:?}");
+    assert!(m
+        .intervals
+        .iter()
+        .all(|v| v.classification.pencil.key() == "singular"));
+    // four real lines through the vertex for t > 2: the real type is the complex one
+    let c = &m.intervals[2].classification;
+    assert_eq!(c.complex_type(), Some("four_concurrent_lines"));
+    assert_eq!(c.real_type(), c.complex_type());
+    assert_eq!(m.intervals[1].classification.real_type(), Some("point"));
+    assert!(assert_matches_static(&m, a, b) > 30);
+}
+
+/// A factor common to every entry of `A(t)` is divided out: the quadric at its root is the
+/// limit, and the motion is the one without the factor.
+#[test]
+fn common_factor_of_all_entries_is_divided_out() {
+    let (a, b) = MOTIONS[0];
+    let plain = motion_of(a, b);
+    for factor in ["(t - 1)", "(t^2 - 2)*(3*t + 1)", "(t^2 + 1)"] {
+        let m = motion_of(&format!("{factor}*({a})"), b);
+        assert_eq!(m.instants.len(), plain.instants.len(), "{factor}");
+        for (x, y) in m.instants.iter().zip(&plain.instants) {
+            assert!(x.t == y.t && x.class == y.class, "{factor}: {}", x.t);
+        }
+    }
+}
+
+/// `A(t) ∝ B(t)` at the irrational `t = ±√2` (concentric spheres of radii 1 and
+/// `√(3 − t²)`): a single quadric, typed in ℚ(√2) as the unit sphere alone.
+#[test]
+fn single_quadric_at_irrational_instants() {
+    let m = motion_of("x^2 + y^2 + z^2 - w^2", "x^2 + y^2 + z^2 + (t^2 - 3)*w^2");
+    let sphere = qsic::io::parse_quadric("x^2 + y^2 + z^2 - w^2").unwrap();
+    let want = MotionType::of(&qsic::classify_single(&sphere));
+    let two = Poly::from_i64s(&[-2, 0, 1]);
+    let singles: Vec<&qsic::motion::MotionInstant> =
+        m.instants.iter().filter(|i| i.t.is_root_of(&two)).collect();
+    assert_eq!(singles.len(), 2, "{m:?}");
+    for i in singles {
+        let InstantType::Exact(c) = &i.class else {
+            panic!("unclassified at {}", i.t)
+        };
+        assert_eq!(MotionType::of(c), want);
+    }
+}
+
+/// Bad input gets errors naming it; a reversed range is refused; the bounds of
+/// `qsic::limits` are enforced.
+#[test]
+fn bad_moving_input_is_an_error() {
+    use qsic::Error;
+    let read = moving_matrix_from_polynomial;
+    assert!(matches!(
+        read("sqrt(t)*x^2"),
+        Err(Error::UnknownVariable { .. } | Error::Syntax { .. })
+    ));
+    assert!(read("t^(1/2)*x^2").is_err());
+    assert!(matches!(read("x^2/(x + t)"), Err(Error::Syntax { .. })));
+    assert_eq!(read("(t - t)*x^2"), Err(Error::ZeroQuadric));
+    let sphere = || read("x^2 + y^2 + z^2 - 1").unwrap();
+    let over = format!("t^{}*x^2 + y^2", qsic::limits::MAX_MOTION_DEGREE + 1);
+    assert!(matches!(
+        MovingPencil::new(read(&over).unwrap(), sphere()),
+        Err(Error::Limit { .. })
+    ));
+    assert!(matches!(
+        MovingPencil::new(
+            read(&format!("1{}*t*x^2 + y^2", "0".repeat(160))).unwrap(),
+            sphere()
+        ),
+        Err(Error::Limit { .. })
+    ));
+    let within = format!("t^{}*x^2 + y^2 - z^2", qsic::limits::MAX_MOTION_DEGREE);
+    assert!(MovingPencil::new(read(&within).unwrap(), sphere()).is_ok());
+    let mut rows = vec![vec!["0".to_string(); 4]; 4];
+    rows[0][1] = "t".into();
+    rows[1][0] = "t^2".into();
+    assert!(matches!(
+        moving_matrix_from_rows(&rows),
+        Err(Error::NotSymmetric { row: 0, col: 1, .. })
+    ));
+    let pencil = MovingPencil::new(sphere(), read("(x-t)^2 + y^2 + z^2 - 1").unwrap()).unwrap();
+    assert!(matches!(
+        pencil.variations_in(Some(&RBig::ONE), Some(&RBig::ZERO)),
+        Err(Error::InvalidRange(_))
+    ));
+}
+
+/// On a range: the instants strictly inside as on the whole line, the ends reported where
+/// their type differs from the interval beside them, intervals clipped to the range.
+#[test]
+fn ranges_clip_the_timeline() {
+    let (a, b) = MOTIONS[0];
+    let pencil = MovingPencil::new(
+        moving_matrix_from_polynomial(a).unwrap(),
+        moving_matrix_from_polynomial(b).unwrap(),
+    )
+    .unwrap();
+    let whole = pencil.variations().unwrap();
+    let q = |n: i64, d: u8| RBig::from_parts_signed(n.into(), d.into());
+    for (lo, hi) in [
+        (-5, 5),
+        (-1, 1),
+        (-2, 2),
+        (1, 3),
+        (-7, -5),
+        (0, 0),
+        (3, 3),
+        (1, 2),
+    ] {
+        let (lo, hi) = (q(lo, 2), q(hi, 2));
+        let m = pencil.variations_in(Some(&lo), Some(&hi)).unwrap();
+        let (l, h) = (
+            AlgebraicReal::from_rational(lo.clone()),
+            AlgebraicReal::from_rational(hi.clone()),
+        );
+        let inside: Vec<&AlgebraicReal> = whole
+            .instants
+            .iter()
+            .map(|i| &i.t)
+            .filter(|t| l < **t && **t < h)
+            .collect();
+        let got: Vec<&AlgebraicReal> = m
+            .instants
+            .iter()
+            .map(|i| &i.t)
+            .filter(|t| l < **t && **t < h)
+            .collect();
+        assert_eq!(got, inside, "[{lo}, {hi}]");
+        // the ends appear exactly where their type differs from the neighbouring interval
+        for (end, v) in [(&lo, m.intervals.first()), (&hi, m.intervals.last())] {
+            let reported = m.instants.iter().any(|i| i.t.as_rational() == Some(end));
+            let differs =
+                v.is_none_or(|v| type_at(&whole, end) != MotionType::of(&v.classification));
+            assert_eq!(reported, differs, "[{lo}, {hi}] at {end}");
+        }
+        if lo == hi {
+            assert!(m.intervals.is_empty());
+            continue;
+        }
+        assert_eq!(m.intervals.first().unwrap().from.as_ref(), Some(&l));
+        assert_eq!(m.intervals.last().unwrap().to.as_ref(), Some(&h));
+        for v in &m.intervals {
+            assert_eq!(
+                MotionType::of(&v.classification),
+                type_at(&whole, &v.sample)
+            );
+        }
+    }
 }

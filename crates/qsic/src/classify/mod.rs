@@ -156,6 +156,7 @@ pub fn analyze_pencil(a: &Quadric, b: &Quadric) -> Option<PencilAnalysis> {
 }
 
 pub use single::classify_single;
+pub(crate) use single::classify_single_inertia;
 
 /// Key of a class: the Segre characteristic (block structures of all roots, number of
 /// distinct real roots) and the canonical signature sequence.

@@ -5,11 +5,17 @@ use super::morphology::{
 };
 use super::Classification;
 use crate::quadric::Quadric;
+use qsic_algebra::matrix::Inertia;
 
 /// Classifies the single quadric `q` (taxonomy.md, "Single quadric"): by rank and by its
 /// inertia up to sign.
 pub fn classify_single(q: &Quadric) -> Classification {
-    let inertia = q.integer_matrix().inertia();
+    classify_single_inertia(q.integer_matrix().inertia())
+}
+
+/// [`classify_single`] from the inertia of the quadric's matrix (for a matrix over a real
+/// field other than ℚ).
+pub(crate) fn classify_single_inertia(inertia: Inertia) -> Classification {
     let (hi, lo) = if inertia.positive >= inertia.negative {
         (inertia.positive, inertia.negative)
     } else {

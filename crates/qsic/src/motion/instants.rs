@@ -149,6 +149,53 @@ pub(crate) fn pencil_entries(a: &[[Poly; 4]; 4], b: &[[Poly; 4]; 4]) -> [[TPoly;
     })
 }
 
+/// The gcd over `ℚ(t)` of the nonzero forms of degree `k` among `minors` (`D_k`, generic):
+/// its chart, `ℤ[t]`-primitive, and its multiplicity at `λ = ∞`. Zero (and `k`) if all
+/// vanish.
+pub(crate) fn generic_gcd(minors: &[TPoly], k: usize) -> (TPoly, usize) {
+    let mut g = TPoly::zero();
+    let mut mu = k;
+    for m in minors.iter().filter(|m| !m.is_zero()) {
+        g = g.gcd_domain(m);
+        mu = mu.min(k - m.degree().unwrap_or(0));
+    }
+    (t_primitive(&g), mu)
+}
+
+/// A polynomial in `t` vanishing where the stacked `8×4` matrix `[M_A; M_B]` has a rank
+/// below its generic rank `r` (where `A(t)` and `B(t)` gain a common singular point): the
+/// gcd of its `r×r` minors. Constant if the rank never drops.
+pub(crate) fn common_kernel_condition(a: &[[Poly; 4]; 4], b: &[[Poly; 4]; 4]) -> Poly {
+    let rows: Vec<&[Poly; 4]> = a.iter().chain(b.iter()).collect();
+    for r in (1..=4).rev() {
+        let mut g = Poly::zero();
+        for row_set in subsets(8, r) {
+            for col_set in subsets(4, r) {
+                let m: Vec<Vec<Poly>> = row_set
+                    .iter()
+                    .map(|&i| col_set.iter().map(|&j| rows[i][j].clone()).collect())
+                    .collect();
+                g = g.gcd(&det_bareiss(m));
+                if g.degree() == Some(0) {
+                    return g;
+                }
+            }
+        }
+        if !g.is_zero() {
+            return g;
+        }
+    }
+    Poly::constant(IBig::ONE)
+}
+
+/// The `r`-element subsets of `0..n`, increasing, each increasing.
+fn subsets(n: usize, r: usize) -> Vec<Vec<usize>> {
+    (0u32..1 << n)
+        .filter(|m| m.count_ones() as usize == r)
+        .map(|m| (0..n).filter(|i| m >> i & 1 == 1).collect())
+        .collect()
+}
+
 /// Polynomials in `t` vanishing wherever the gcd of the `k×k` minors (forms of degree `k`)
 /// specialised at `t₀` has more roots than the generic gcd `D_k` specialised: the quotients
 /// `mⱼ/D_k` then share a root at `t₀`. Two integer combinations of the quotients share it too,
@@ -159,13 +206,7 @@ pub(crate) fn rank_conditions(minors: &[TPoly], k: usize) -> Result<Vec<Poly>, S
     if nonzero.is_empty() {
         return Ok(Vec::new());
     }
-    let mut g = TPoly::zero();
-    let mut mu = k;
-    for m in &nonzero {
-        g = g.gcd_domain(m);
-        mu = mu.min(k - m.degree().unwrap_or(0));
-    }
-    let g = t_primitive(&g);
+    let (g, mu) = generic_gcd(minors, k);
     let e = k - g.degree().unwrap_or(0) - mu;
     let quotients: Vec<TPoly> = nonzero
         .iter()

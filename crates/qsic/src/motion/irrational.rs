@@ -5,11 +5,12 @@
 //! orders in `D₁, D₂, D₃` (gcds over `K[λ]` of the minors); the real roots of their product
 //! isolated by Sturm sequences over `K` and bisection; the inertia at multiple roots from the
 //! signs of the principal-minor sums `E_k` there (Sturm–Tarski queries over `K`), on arcs at
-//! rational samples, at simple roots from the neighbouring arcs. Singular and single pencils
-//! at `α` are not handled here (`None`).
+//! rational samples, at simple roots from the neighbouring arcs. A single quadric at `α`
+//! (`A(α) ∝ B(α)` or one of them zero) is typed by its inertia, read from the signs of its
+//! principal-minor sums in `K`; singular pencils at `α` are not handled here (`None`).
 
 use super::instants::TPoly;
-use crate::classify::{classify_regular_parts, Classification};
+use crate::classify::{classify_regular_parts, classify_single_inertia, Classification};
 use crate::pencil::SigItem;
 use qsic_algebra::field::number_field::{NumberField, NumberFieldElement as K};
 use qsic_algebra::linalg::minors::SmallMinors;
@@ -21,8 +22,8 @@ const MAX_STEPS: usize = 20_000;
 
 type KPoly = Poly<K>;
 
-/// The classification of `λA(α) − B(α)` for a regular pencil at `α`; `None` when the pencil
-/// at `α` is singular or a single quadric, or the isolation exceeds its budget.
+/// The classification of `λA(α) − B(α)` for a regular pencil or a single quadric at `α`;
+/// `None` when the pencil at `α` is singular or the isolation exceeds its budget.
 pub(crate) fn classify_at_irrational(
     entries: &[[TPoly; 4]; 4],
     alpha: &AlgebraicReal,
@@ -33,15 +34,26 @@ pub(crate) fn classify_at_irrational(
     });
     let a: Vec<K> = e.iter().flatten().map(|p| p.coeff(1)).collect();
     let b: Vec<K> = e.iter().flatten().map(|p| p.coeff(0)).collect();
-    if a.iter().all(Ring::is_zero) || b.iter().all(Ring::is_zero) || proportional(&a, &b) {
-        return None;
-    }
     // the chart is λA − B with A, −B the coefficients of λ¹, λ⁰
     let (ma, mb): ([[K; 4]; 4], [[K; 4]; 4]) = (
         std::array::from_fn(|i| std::array::from_fn(|j| e[i][j].coeff(1))),
         std::array::from_fn(|i| std::array::from_fn(|j| e[i][j].coeff(0).neg())),
     );
     let minors = SmallMinors::of_pencil(&ma, &mb);
+    let principal: [KPoly; 4] = minors
+        .principal_minor_sums()
+        .try_into()
+        .expect("four sums of a 4×4 pencil");
+    let a_zero = a.iter().all(Ring::is_zero);
+    if a_zero || b.iter().all(Ring::is_zero) || proportional(&a, &b) {
+        // A single quadric: `A(α)`, or `−B(α)` if `A(α) = 0`; `E_k(λA − B)` has the sum
+        // of the principal `k`-minors of `A` as its `λᵏ` coefficient, of `−B` as its constant.
+        let power = |k: usize| if a_zero { 0 } else { k + 1 };
+        let signs: [Sign; 4] = std::array::from_fn(|k| principal[k].coeff(power(k)).sign());
+        return Some(classify_single_inertia(Inertia::from_minor_sum_signs(
+            signs,
+        )));
+    }
     let f = minors.minor(&[0, 1, 2, 3], &[0, 1, 2, 3]).clone();
     if f.is_zero() {
         return None;
@@ -90,10 +102,6 @@ pub(crate) fn classify_at_irrational(
         .fold(KPoly::constant(K::one()), |acc, (p, _, _)| &acc * p);
     let roots = isolate(&product)?;
     let sturms: Vec<Vec<KPoly>> = pieces.iter().map(|(p, _, _)| sturm(p, None)).collect();
-    let principal: [KPoly; 4] = minors
-        .principal_minor_sums()
-        .try_into()
-        .expect("four sums of a 4×4 pencil");
 
     let mut real: Vec<(usize, Option<Inertia>)> = Vec::new(); // (piece, inertia if multiple)
     for root in &roots {

@@ -1,0 +1,419 @@
+//! `qsic motion`: two moving quadrics `A(t)`, `B(t)`, the instants where their intersection
+//! changes type and the type between them ([`qsic::motion::MovingPencil`]), as a text
+//! timeline or as the JSON object of the README.
+//!
+//! | entry point | does |
+//! |---|---|
+//! | [`TimeRange::parse`] | `--range T0 T1`: exact rationals, `-oo`/`oo` for an open side |
+//! | [`moving_from_arg`], [`moving_from_form`] | a moving quadric from an argument or a batch field |
+//! | [`analyze`] | the variations of the pair on the range |
+//! | [`motion_to_json_line`], [`write_motion_fields`] | the JSON result (keys `instants`, `intervals`) |
+//! | [`human_timeline`] | the text timeline of `qsic motion A B` |
+//! | [`answer_motion_line`] | one batch line to one output line |
+//!
+//! An instant `t` is written `"p/q"` when rational, otherwise
+//! `{"poly": "t^2 - 2", "interval": ["7/5", "3/2"], "approx": "1.4142135623730951"}`: a
+//! square-free integer polynomial and an interval with rational ends isolating its root.
+
+use crate::batch::{answer_with, catch_panic, open_record, read_record, LineFailure, RawLine};
+use crate::input::{matrix_texts, InputError, JsonForm};
+use crate::output::write_json_string;
+use qsic::io::{
+    moving_matrix_from_polynomial, moving_matrix_from_rows, parse_number, MovingMatrix,
+};
+use qsic::motion::{Motion, MovingPencil};
+use qsic::{Classification, Error};
+use qsic_algebra::{AlgebraicReal, RBig};
+use serde_json::Value;
+use std::fmt::Write as _;
+
+/// The closed range `[from, to]` of `t` analyzed; `None` for an unbounded side.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct TimeRange {
+    /// Lower end, `None` for `−∞`.
+    pub from: Option<RBig>,
+    /// Upper end, `None` for `+∞`.
+    pub to: Option<RBig>,
+}
+
+impl TimeRange {
+    /// Reads `--range T0 T1`: each an exact number (`1/3`, `0.25`, `-2`) or `-oo` / `oo`
+    /// (`+oo`, `inf`, `-inf`) for an unbounded side.
+    ///
+    /// # Errors
+    /// A message naming the end that cannot be read, or `T0 > T1`.
+    pub fn parse(t0: &str, t1: &str) -> Result<TimeRange, String> {
+        let end = |name: &str, text: &str, infinite: &[&str]| {
+            if infinite.contains(&text.trim()) {
+                return Ok(None);
+            }
+            parse_number(text)
+                .map(Some)
+                .map_err(|e| format!("--range {name}: {e}"))
+        };
+        let range = TimeRange {
+            from: end("T0", t0, &["-oo", "-inf"])?,
+            to: end("T1", t1, &["oo", "+oo", "inf", "+inf"])?,
+        };
+        if let (Some(a), Some(b)) = (&range.from, &range.to) {
+            if a > b {
+                return Err(format!("--range: T0 = {a} is above T1 = {b}"));
+            }
+        }
+        Ok(range)
+    }
+}
+
+/// Reads a moving quadric from a command-line argument: a JSON array of 4 rows of 4 entries
+/// (numbers or strings of rational functions of `t`) if it starts with `[`, otherwise a
+/// quadratic form in `x, y, z, w` (or affine in `x, y, z`) with coefficients rational in `t`.
+///
+/// # Errors
+/// [`InputError::Json`] or [`InputError::Type`] for a bad JSON matrix, otherwise the
+/// reader's error (syntax, symmetry, zero quadric, limits).
+pub fn moving_from_arg(text: &str) -> Result<MovingMatrix, InputError> {
+    if !text.trim_start().starts_with('[') {
+        return Ok(moving_matrix_from_polynomial(text)?);
+    }
+    if text.len() > crate::input::MAX_MATRIX_ARG_BYTES {
+        return Err(InputError::TooLong(text.len()));
+    }
+    let value: Value = serde_json::from_str(text).map_err(InputError::Json)?;
+    let Value::Array(rows) = &value else {
+        return Err(InputError::Type(format!(
+            "expected a 4x4 array, found {}",
+            crate::input::json_kind(&value)
+        )));
+    };
+    let mut texts = Vec::with_capacity(rows.len());
+    for (i, row) in rows.iter().enumerate() {
+        let Value::Array(entries) = row else {
+            return Err(InputError::Type(format!(
+                "row {i} of the matrix must be an array, found {}",
+                crate::input::json_kind(row)
+            )));
+        };
+        let mut out = Vec::with_capacity(entries.len());
+        for (j, e) in entries.iter().enumerate() {
+            out.push(match e {
+                Value::Number(n) => n.to_string(),
+                Value::String(s) => s.clone(),
+                other => {
+                    return Err(InputError::Type(format!(
+                        "entry ({i},{j}) must be a number or a string, found {}",
+                        crate::input::json_kind(other)
+                    )))
+                }
+            });
+        }
+        texts.push(out);
+    }
+    Ok(moving_matrix_from_rows(&texts)?)
+}
+
+/// Reads a moving quadric from a batch field: a string as in [`moving_from_arg`], or a 4×4
+/// array of numbers and strings.
+///
+/// # Errors
+/// As [`moving_from_arg`]; [`InputError::Type`] for a value of another JSON type.
+pub fn moving_from_form(form: &JsonForm<'_>) -> Result<MovingMatrix, InputError> {
+    let rows: Vec<Vec<&str>> = match form {
+        JsonForm::Text(text) => return Ok(moving_matrix_from_polynomial(text)?),
+        JsonForm::Array4(texts) => texts.iter().map(|r| r.to_vec()).collect(),
+        JsonForm::Matrix(m) => {
+            let texts = matrix_texts(m)?;
+            let rows: Vec<Vec<&str>> = texts
+                .iter()
+                .map(|r| r.iter().map(|c| c.as_ref()).collect())
+                .collect();
+            return Ok(moving_matrix_from_rows(&rows)?);
+        }
+        JsonForm::Other(kind) => {
+            return Err(InputError::Type(format!(
+                "expected a polynomial string or a 4x4 array, found {kind}"
+            )))
+        }
+    };
+    Ok(moving_matrix_from_rows(&rows)?)
+}
+
+/// The variations of the pencil of `a` and `b` on `range`.
+///
+/// # Errors
+/// As [`MovingPencil::new`] and [`MovingPencil::variations_in`].
+pub fn analyze(a: MovingMatrix, b: MovingMatrix, range: &TimeRange) -> Result<Motion, Error> {
+    MovingPencil::new(a, b)?.variations_in(range.from.as_ref(), range.to.as_ref())
+}
+
+/// Appends an instant as JSON: `"p/q"`, or `{"poly", "interval", "approx"}`.
+fn write_instant(out: &mut String, t: &AlgebraicReal) {
+    if let Some(v) = t.as_rational() {
+        write_json_string(out, &v.to_string());
+        return;
+    }
+    let approx = t.to_f64();
+    out.push_str("{\"poly\":");
+    write_json_string(out, &poly_in_t(t));
+    let iv = t.interval();
+    out.push_str(",\"interval\":[");
+    write_json_string(out, &iv.lo().to_string());
+    out.push(',');
+    write_json_string(out, &iv.hi().to_string());
+    out.push_str("],\"approx\":");
+    write_json_string(out, &approx.to_string());
+    out.push('}');
+}
+
+/// The defining polynomial of an instant, written in `t`.
+fn poly_in_t(t: &AlgebraicReal) -> String {
+    // `Poly` writes its variable as `x`; the coefficients are integers.
+    t.poly().to_string().replace('x', "t")
+}
+
+/// Appends `"pencil","case","complex_type","real_type"` (all `null` if unclassified).
+fn write_type(out: &mut String, c: Option<&Classification>) {
+    let text = |out: &mut String, v: Option<&str>| match v {
+        Some(s) => write_json_string(out, s),
+        None => out.push_str("null"),
+    };
+    out.push_str("\"pencil\":");
+    text(out, c.map(|c| c.pencil.key()));
+    out.push_str(",\"case\":");
+    match c.and_then(|c| c.case) {
+        Some(k) => out.push_str(&k.to_string()),
+        None => out.push_str("null"),
+    }
+    out.push_str(",\"complex_type\":");
+    text(out, c.and_then(Classification::complex_type));
+    out.push_str(",\"real_type\":");
+    text(out, c.and_then(Classification::real_type));
+}
+
+/// Appends the fields `"instants":[…],"intervals":[…]` of the JSON result (README), without
+/// braces: instants `{"t", "pencil", "case", "complex_type", "real_type"}`, intervals
+/// `{"from", "to", "sample_t", "pencil", "case", "complex_type", "real_type"}` with `null`
+/// ends for `∓∞`.
+pub fn write_motion_fields(out: &mut String, m: &Motion) {
+    out.push_str("\"instants\":[");
+    for (k, i) in m.instants.iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        out.push_str("{\"t\":");
+        write_instant(out, &i.t);
+        out.push(',');
+        write_type(out, i.class.classification());
+        out.push('}');
+    }
+    out.push_str("],\"intervals\":[");
+    for (k, v) in m.intervals.iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        for (key, end) in [("{\"from\":", &v.from), (",\"to\":", &v.to)] {
+            out.push_str(key);
+            match end {
+                Some(t) => write_instant(out, t),
+                None => out.push_str("null"),
+            }
+        }
+        out.push_str(",\"sample_t\":");
+        write_json_string(out, &v.sample.to_string());
+        out.push(',');
+        write_type(out, Some(&v.classification));
+        out.push('}');
+    }
+    out.push(']');
+}
+
+/// The JSON result of a single query, one line: `{"instants": […], "intervals": […]}`.
+pub fn motion_to_json_line(m: &Motion) -> String {
+    let mut out = String::with_capacity(1024);
+    out.push('{');
+    write_motion_fields(&mut out, m);
+    out.push('}');
+    out
+}
+
+/// An instant for people: `t = 2/3`, or `t ≈ 1.4142135623730951 (root of t^2 - 2 in
+/// [7/5, 3/2])`.
+fn instant_text(t: &AlgebraicReal) -> String {
+    match t.as_rational() {
+        Some(v) => format!("t = {v}"),
+        None => {
+            let approx = t.to_f64();
+            let iv = t.interval();
+            format!(
+                "t ≈ {approx} (root of {} in [{}, {}])",
+                poly_in_t(t),
+                iv.lo(),
+                iv.hi()
+            )
+        }
+    }
+}
+
+/// A type for people: `regular, case 24 [2(11)]_2 <1~~-1||3>: conic_and_two_lines_not_crossing
+/// / conic_and_point — a real conic and …`.
+fn type_text(c: Option<&Classification>) -> String {
+    let Some(c) = c else {
+        return "not classified (a singular pencil at an irrational instant)".into();
+    };
+    let mut s = c.pencil.key().to_string();
+    if let Some(k) = c.case {
+        let _ = write!(s, ", case {k}");
+    }
+    for part in [c.segre, c.index_sequence].into_iter().flatten() {
+        let _ = write!(s, " {part}");
+    }
+    let _ = write!(
+        s,
+        ": {} / {}",
+        c.complex_type().unwrap_or("?"),
+        c.real_type().unwrap_or("?")
+    );
+    if let Some(d) = &c.description {
+        let _ = write!(s, " — {}", d.summary);
+    }
+    s
+}
+
+/// The text timeline of `qsic motion A B`: the intervals and the instants between them in
+/// increasing `t`, each with its type.
+pub fn human_timeline(m: &Motion) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{} instant(s) where the type changes, {} interval(s):",
+        m.instants.len(),
+        m.intervals.len()
+    );
+    let end = |t: &Option<AlgebraicReal>, infinity: &str| match t {
+        None => infinity.to_string(),
+        Some(t) => match t.as_rational() {
+            Some(v) => v.to_string(),
+            None => format!("{:.12}", t.to_f64()),
+        },
+    };
+    // The instants before the first interval (the start of a range), then each interval
+    // followed by the instants up to the next one.
+    let mut next = 0;
+    let mut instants_up_to = |out: &mut String, limit: Option<&AlgebraicReal>| {
+        while let Some(i) = m.instants.get(next) {
+            if limit.is_some_and(|l| i.t > *l) {
+                break;
+            }
+            let _ = writeln!(
+                out,
+                "  {}: {}",
+                instant_text(&i.t),
+                type_text(i.class.classification())
+            );
+            next += 1;
+        }
+    };
+    for v in &m.intervals {
+        if let Some(from) = &v.from {
+            instants_up_to(&mut out, Some(from));
+        }
+        let _ = writeln!(
+            out,
+            "  t in ({}, {}), sample t = {}: {}",
+            end(&v.from, "-oo"),
+            end(&v.to, "+oo"),
+            v.sample,
+            type_text(Some(&v.classification))
+        );
+    }
+    instants_up_to(&mut out, None);
+    out
+}
+
+/// The output line for one line of `qsic motion --batch` and whether it succeeded: `{"id",
+/// "instants", "intervals"}` or the error record of the batch conventions.
+pub fn answer_motion_line(line: &RawLine, range: &TimeRange) -> (String, bool) {
+    answer_with(line, |line| motion_line(line, range))
+}
+
+fn motion_line<'a>(line: &'a RawLine, range: &TimeRange) -> Result<String, LineFailure<'a>> {
+    let record = read_record(line)?;
+    let id = record.id;
+    let fail = |message: String| LineFailure { id, message };
+    let read = |name: &str, form: &Option<JsonForm<'_>>| match form {
+        None => Err(fail(format!("missing field \"{name}\""))),
+        Some(form) => moving_from_form(form).map_err(|e| fail(format!("{name}: {e}"))),
+    };
+    let a = read("A", &record.a)?;
+    let b = read("B", &record.b)?;
+    let motion = match catch_panic(|| analyze(a, b, range)) {
+        Ok(Ok(m)) => m,
+        Ok(Err(e)) => return Err(fail(format!("A and B: {e}"))),
+        Err(what) => {
+            return Err(fail(format!(
+                "internal error in the motion analysis (a bug): {what}"
+            )))
+        }
+    };
+    let mut out = open_record(id);
+    write_motion_fields(&mut out, &motion);
+    out.push('}');
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges_read_exactly_and_refuse_reversed_ends() {
+        let r = TimeRange::parse("-1/3", "0.25").expect("a range");
+        assert_eq!(
+            r.from,
+            Some(RBig::from_parts_signed((-1).into(), 3u8.into()))
+        );
+        assert_eq!(r.to, Some(RBig::from_parts_signed(1.into(), 4u8.into())));
+        assert_eq!(
+            TimeRange::parse("-oo", "oo").expect("unbounded"),
+            TimeRange::default()
+        );
+        let e = TimeRange::parse("2", "1").expect_err("reversed");
+        assert!(e.contains("above"), "{e}");
+        let e = TimeRange::parse("x", "1").expect_err("not a number");
+        assert!(e.starts_with("--range T0"), "{e}");
+    }
+
+    #[test]
+    fn json_fields_follow_the_schema() {
+        let a = moving_from_arg("x^2 + y^2 + z^2 - 2").expect("a moving quadric");
+        let b = moving_from_arg("[[1,0,0,\"-t\"],[0,1,0,0],[0,0,1,0],[\"-t\",0,0,\"t^2-1\"]]")
+            .expect("a JSON matrix");
+        let m = analyze(a, b, &TimeRange::default()).expect("analyzed");
+        let v: Value = serde_json::from_str(&motion_to_json_line(&m)).expect("JSON");
+        let instants = v["instants"].as_array().expect("instants");
+        let intervals = v["intervals"].as_array().expect("intervals");
+        assert_eq!(intervals.len(), instants.len() + 1);
+        assert!(intervals[0]["from"].is_null() && intervals.last().unwrap()["to"].is_null());
+        for (k, i) in instants.iter().enumerate() {
+            // each instant is the end of the interval before it and the start of the next
+            assert_eq!(i["t"], intervals[k]["to"]);
+            assert_eq!(i["t"], intervals[k + 1]["from"]);
+            if let Some(obj) = i["t"].as_object() {
+                let approx: f64 = obj["approx"].as_str().unwrap().parse().unwrap();
+                let x = i["t"]["interval"][0].as_str().unwrap();
+                let lo = parse_number(x).unwrap().to_f64().value();
+                assert!(lo <= approx, "{i}");
+                assert!(obj["poly"].as_str().unwrap().contains('t'));
+            }
+            for key in ["pencil", "case", "complex_type", "real_type"] {
+                assert!(i.get(key).is_some(), "{key}");
+            }
+        }
+        // ±(√2 ± 1) and 0: irrational instants, classified
+        assert_eq!(instants.len(), 5);
+        assert!(instants.iter().all(|i| i["pencil"] == "regular"));
+        assert_eq!(instants.iter().filter(|i| i["t"].is_object()).count(), 4);
+        let text = human_timeline(&m);
+        assert_eq!(text.lines().count(), 1 + 5 + 6, "{text}");
+        assert!(text.contains("t ≈ 2.414213562"), "{text}");
+    }
+}
