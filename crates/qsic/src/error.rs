@@ -97,6 +97,10 @@ pub enum Error {
     /// A moving pencil outside what the motion analysis handles (e.g. singular for every `t`).
     #[error("moving pencil not supported: {0}")]
     UnsupportedMotion(String),
+    /// A quadric that does not bound a solid ellipsoid where one is needed
+    /// ([`crate::solids`]): says which and what it is instead.
+    #[error("not a solid ellipsoid: {0}")]
+    NotEllipsoid(String),
     /// A parameterization this version cannot give: the class is not covered yet, or the
     /// sub-case needs an algebraic parameterization surface or a biquadratic field. Says which.
     #[error("parameterization not available: {0}")]

@@ -21,12 +21,30 @@ const MAX_STEPS: usize = 20_000;
 
 type KPoly = Poly<K>;
 
-/// The classification of `λA(α) − B(α)` for a regular pencil at `α`; `None` when the pencil
-/// at `α` is singular or a single quadric, or the isolation exceeds its budget.
-pub(crate) fn classify_at_irrational(
-    entries: &[[TPoly; 4]; 4],
-    alpha: &AlgebraicReal,
-) -> Option<Classification> {
+/// The exact analysis of `λA(α) − B(α)` over `K = ℚ(α)` for a regular pencil.
+struct Analysis {
+    /// Square-free pieces: (chart, multiplicity, orders in `D₁..D₃`).
+    pieces: Vec<(KPoly, usize, [usize; 3])>,
+    /// The real finite roots of their product, increasing.
+    roots: Vec<Root>,
+    /// The product of the pieces (square-free).
+    product: KPoly,
+    /// For each real finite root: its piece and the inertia of its member.
+    real: Vec<(usize, Inertia)>,
+    /// A rational sample of each arc between consecutive real roots and the inertia there.
+    arcs: Vec<(RBig, Inertia)>,
+    /// The multiplicity of the root at `λ = ∞`.
+    m_inf: usize,
+    /// `D_k` (monic chart) and its multiplicity at ∞, `k = 1, 2, 3` (empty for four simple
+    /// roots).
+    d: Vec<(KPoly, usize)>,
+    /// `E₁…E₄(λ)`, the sums of the principal minors of `λA − B`.
+    principal: [KPoly; 4],
+}
+
+/// The analysis at `α`; `None` when the pencil at `α` is singular or a single quadric, or
+/// the isolation exceeds its budget.
+fn analyze(entries: &[[TPoly; 4]; 4], alpha: &AlgebraicReal) -> Option<Analysis> {
     let field = NumberField::new(alpha);
     let e: [[KPoly; 4]; 4] = std::array::from_fn(|i| {
         std::array::from_fn(|j| entries[i][j].map(|c| field.integer_element(c)))
@@ -95,7 +113,7 @@ pub(crate) fn classify_at_irrational(
         .try_into()
         .expect("four sums of a 4×4 pencil");
 
-    let mut real: Vec<(usize, Option<Inertia>)> = Vec::new(); // (piece, inertia if multiple)
+    let mut found: Vec<(usize, Option<Inertia>)> = Vec::new(); // (piece, inertia if multiple)
     for root in &roots {
         let piece = (0..pieces.len()).find(|&i| match root {
             Root::Exact(x) => pieces[i].0.eval(&K::rational(x.clone())).is_zero(),
@@ -107,63 +125,143 @@ pub(crate) fn classify_at_irrational(
                 .map(|q| sign_at_root(&product, q, root));
             Inertia::from_minor_sum_signs(signs)
         });
-        real.push((piece, inertia));
+        found.push((piece, inertia));
     }
     let samples = arc_samples(&product, &roots)?;
-    let arcs: Vec<Inertia> = samples
-        .iter()
+    let arcs: Vec<(RBig, Inertia)> = samples
+        .into_iter()
         .map(|x| {
-            let x = K::rational(x.clone());
-            Inertia::from_minor_sum_signs(principal.each_ref().map(|q| q.eval(&x).sign()))
+            let k = K::rational(x.clone());
+            let signs = principal.each_ref().map(|q| q.eval(&k).sign());
+            (x, Inertia::from_minor_sum_signs(signs))
         })
         .collect();
+    // At a simple root exactly one eigenvalue crosses zero: the smaller count of its arcs.
+    let real = found
+        .into_iter()
+        .enumerate()
+        .map(|(i, (piece, inertia))| {
+            let (l, h) = (&arcs[i].1, &arcs[i + 1].1);
+            let simple = Inertia {
+                positive: l.positive.min(h.positive),
+                negative: l.negative.min(h.negative),
+                zero: 1,
+            };
+            (piece, inertia.unwrap_or(simple))
+        })
+        .collect();
+    Some(Analysis {
+        pieces,
+        roots,
+        product,
+        real,
+        arcs,
+        m_inf,
+        d,
+        principal,
+    })
+}
 
+/// The classification of `λA(α) − B(α)` for a regular pencil at `α`; `None` when the pencil
+/// at `α` is singular or a single quadric, or the isolation exceeds its budget.
+pub(crate) fn classify_at_irrational(
+    entries: &[[TPoly; 4]; 4],
+    alpha: &AlgebraicReal,
+) -> Option<Classification> {
+    let an = analyze(entries, alpha)?;
     let mut real_blocks: Vec<Vec<u8>> = Vec::new();
     let mut complex_blocks: Vec<Vec<u8>> = Vec::new();
-    let mut seq = vec![SigItem::Interval(arcs[0].positive)];
-    for (i, (piece, inertia)) in real.iter().enumerate() {
-        let (_, m, o) = &pieces[*piece];
+    let mut seq = vec![SigItem::Interval(an.arcs[0].1.positive)];
+    for (i, (piece, inertia)) in an.real.iter().enumerate() {
+        let (_, m, o) = &an.pieces[*piece];
         real_blocks.push(blocks_from_orders(*m, *o));
-        let inertia = inertia.unwrap_or(Inertia {
-            positive: arcs[i].positive.min(arcs[i + 1].positive),
-            negative: arcs[i].negative.min(arcs[i + 1].negative),
-            zero: 1,
-        });
         seq.push(SigItem::Root {
             p: inertia.positive,
             n: inertia.negative,
             mult: *m as u8,
         });
-        seq.push(SigItem::Interval(arcs[i + 1].positive));
+        seq.push(SigItem::Interval(an.arcs[i + 1].1.positive));
     }
-    for (i, (p, m, o)) in pieces.iter().enumerate() {
-        let nreal = real.iter().filter(|(j, _)| *j == i).count();
+    for (i, (p, m, o)) in an.pieces.iter().enumerate() {
+        let nreal = an.real.iter().filter(|(j, _)| *j == i).count();
         for _ in nreal..p.degree().unwrap_or(0) {
             complex_blocks.push(blocks_from_orders(*m, *o));
         }
     }
-    if m_inf > 0 {
-        let ords = if d.is_empty() {
+    if an.m_inf > 0 {
+        let ords = if an.d.is_empty() {
             [0; 3]
         } else {
-            [d[0].1, d[1].1, d[2].1]
+            [an.d[0].1, an.d[1].1, an.d[2].1]
         };
-        real_blocks.push(blocks_from_orders(m_inf, ords));
+        real_blocks.push(blocks_from_orders(an.m_inf, ords));
         // the member A(α): the signs of E_k(A) are the λ^k coefficients of E_k(λ)
-        let signs: [Sign; 4] = std::array::from_fn(|k| principal[k].coeff(k + 1).sign());
+        let signs: [Sign; 4] = std::array::from_fn(|k| an.principal[k].coeff(k + 1).sign());
         let inertia = Inertia::from_minor_sum_signs(signs);
         seq.push(SigItem::Root {
             p: inertia.positive,
             n: inertia.negative,
-            mult: m_inf as u8,
+            mult: an.m_inf as u8,
         });
-        seq.push(SigItem::Interval(4 - arcs[0].positive));
+        seq.push(SigItem::Interval(4 - an.arcs[0].1.positive));
     }
     let structures = real_blocks
         .iter()
         .map(Vec::as_slice)
         .chain(complex_blocks.iter().map(Vec::as_slice));
     Some(classify_regular_parts(structures, real_blocks.len(), seq))
+}
+
+/// The signs and inertias along the real λ-line of `λA(α) − B(α)` for a regular pencil
+/// with `A(α)` and `B(α)` nonsingular (no root at `0` or `∞`): for each arc between
+/// consecutive real roots, the side of `0` of its rational sample and the inertia there;
+/// for each real root, its sign and the inertia of its member. `None` as [`analyze`], or
+/// when `A(α)` or `B(α)` is singular.
+pub(crate) fn pencil_signs_at_irrational(
+    entries: &[[TPoly; 4]; 4],
+    alpha: &AlgebraicReal,
+) -> Option<crate::solids::PencilSigns> {
+    let an = analyze(entries, alpha)?;
+    let zero = RBig::ZERO;
+    if an.m_inf > 0 || an.product.eval(&K::rational(zero.clone())).is_zero() {
+        return None;
+    }
+    let seq = sturm(&an.product, None);
+    let at_zero = variations(&seq, &zero);
+    let roots = an
+        .roots
+        .iter()
+        .zip(&an.real)
+        .map(|(root, (_, inertia))| {
+            let sign = match root {
+                Root::Exact(x) => rational_sign(x),
+                // V(lo) − V(0) roots in (lo, 0]: the root is negative iff it is there
+                Root::Open(lo, _) if *lo < zero => {
+                    if variations(&seq, lo) > at_zero {
+                        Sign::Negative
+                    } else {
+                        Sign::Positive
+                    }
+                }
+                Root::Open(..) => Sign::Positive,
+            };
+            (sign, *inertia)
+        })
+        .collect();
+    let arcs = an
+        .arcs
+        .iter()
+        .map(|(x, inertia)| (rational_sign(x), *inertia))
+        .collect();
+    Some(crate::solids::PencilSigns { arcs, roots })
+}
+
+fn rational_sign(x: &RBig) -> Sign {
+    match x.cmp(&RBig::ZERO) {
+        std::cmp::Ordering::Less => Sign::Negative,
+        std::cmp::Ordering::Equal => Sign::Zero,
+        std::cmp::Ordering::Greater => Sign::Positive,
+    }
 }
 
 /// `a ∝ b` (both nonzero vectors).
