@@ -20,6 +20,9 @@
 //! every candidate — exactly, by [`classify()`](crate::classify()) at rational instants and by
 //! arithmetic in `ℚ(α)` at irrational ones (module `irrational`) — then drops the candidates
 //! whose type equals that of both neighbours and merges the intervals around them.
+//!
+//! [`contact`]: the first contact of the two quadrics in a range, and the relation of two
+//! moving solid ellipsoids along the motion.
 
 pub mod contact;
 mod instants;
