@@ -4,7 +4,7 @@
 
 use qsic::io::{moving_matrix_from_polynomial, quadric_from_rows, MovingMatrix};
 use qsic::motion::contact::{
-    first_contact, has_real_points, solid_motion, FirstContact, SolidMotion, TimeRange,
+    first_contact, has_real_points, solid_motion, FirstContact, SolidMotion, SolidState, TimeRange,
 };
 use qsic::solids::{Solid, SolidRelation};
 use qsic::{classify_allowing_zero, Error, Quadric};
@@ -289,6 +289,17 @@ fn equal_solids_degenerate_spheres_and_non_solids() {
         .iter()
         .all(|i| i.state.key() == "not_ellipsoids"));
     assert!(TimeRange::new(Some(RBig::ONE), Some(RBig::ZERO)).is_err());
+
+    // B(t) = t·(sphere) vanishes at t = 0: named there, ellipsoids on both sides
+    let m = solid_motion(&a, &moving("t*(x^2 + y^2 + z^2 - 4)")).unwrap();
+    let zero = m.instants.iter().find(|i| i.t.to_string() == "0").unwrap();
+    assert_eq!(
+        zero.state,
+        SolidState::NotEllipsoids("B is the zero form".into())
+    );
+    let got: Vec<Option<R>> = m.intervals.iter().map(|i| i.state.relation()).collect();
+    let in_a = R::Inside { inner: Solid::A };
+    assert_eq!(got, [Some(in_a), Some(in_a)]);
 }
 
 fn read_form(v: &Value) -> Option<Quadric> {

@@ -375,8 +375,12 @@ pub fn solid_motion_of(pencil: &MovingPencil) -> Result<SolidMotion, Error> {
 
 fn state_at_rational(pencil: &MovingPencil, t: &RBig) -> SolidState {
     let quadric = |m: &MovingMatrix, name: &str| {
-        m.quadric_at(t)
-            .map_err(|e| SolidState::NotEllipsoids(format!("{name} is {e}")))
+        m.quadric_at(t).map_err(|e| {
+            SolidState::NotEllipsoids(match e {
+                Error::ZeroQuadric => format!("{name} is the zero form"),
+                e => format!("{name}: {e}"),
+            })
+        })
     };
     let pair = quadric(pencil.a(), "A").and_then(|a| Ok((a, quadric(pencil.b(), "B")?)));
     match pair {
@@ -417,4 +421,44 @@ fn state_at_irrational(pencil: &MovingPencil, alpha: &AlgebraicReal) -> SolidSta
     irrational::pencil_signs_at_irrational(&entries, alpha).map_or(SolidState::Undetermined, |s| {
         SolidState::Relation(relation_from_signs(&s))
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::moving_matrix_from_polynomial as moving;
+
+    /// The `ℚ(α)` route given a rational `α` agrees with the rational route (the static
+    /// [`solid_relation`]) at every sample of several motions, every relation occurring.
+    #[test]
+    fn number_field_route_agrees_with_the_rational_route() {
+        let motions = [
+            ("x^2 + y^2 + z^2 - 4", "(x - t)^2 + (y - 1/2)^2 + z^2 - 1"),
+            ("x^2/4 + y^2 + z^2 - 1", "(x - t)^2 + 4*y^2 + 4*z^2 - 1"),
+            ("x^2 + y^2 + z^2 - 1", "x^2 + 2*y^2 + 3*z^2 - t^2"),
+            ("x^2 + y^2 + z^2 - 1", "-(x - t)^2 - y^2/t - z^2 + 1"),
+            ("2*x^2 + y^2 + z^2 - 1", "(x - t)^2 + y^2 + z^2 - t*y - 1"),
+            ("x^2 + y^2 + z^2 - 1", "t*(x^2 + y^2 + z^2) - 1"),
+        ];
+        let mut seen = std::collections::HashSet::new();
+        let mut compared = 0;
+        for (a, b) in motions {
+            let p = MovingPencil::new(moving(a).unwrap(), moving(b).unwrap());
+            for n in -16..=16 {
+                let t = RBig::from_parts_signed(n.into(), 4u8.into());
+                let rational = state_at_rational(&p, &t);
+                let via_field = state_at_irrational(&p, &AlgebraicReal::from_rational(t.clone()));
+                match (&rational, &via_field) {
+                    // the messages name the same quadric and kind
+                    (SolidState::NotEllipsoids(x), SolidState::NotEllipsoids(y)) => {
+                        assert_eq!(x.get(..1), y.get(..1), "{a} | {b} at {t}: {x} / {y}")
+                    }
+                    _ => assert_eq!(rational, via_field, "{a} | {b} at {t}"),
+                }
+                seen.insert(rational.key());
+                compared += 1;
+            }
+        }
+        assert!(compared > 150 && seen.len() >= 7, "{compared} {seen:?}");
+    }
 }
