@@ -6,10 +6,12 @@
 //! | [`input`] | reading a quadric from an argument or a JSON value, exactly |
 //! | [`output`] | the JSON result object ([`output::classification_to_json`]) and the text report |
 //! | [`mod@line`] | the fields of one batch line, borrowed from its text (a strict fast reader, then `serde_json`) |
+//! | [`contact`] | `qsic contact`: first contact of two moving quadrics and the relation of moving solid ellipsoids |
 //! | [`batch`] | `--batch`: bounded, ordered, parallel JSON Lines processing |
 //! | [`motion`] | `qsic motion`: moving quadrics in, their timeline out (text, JSON, batch lines) |
 
 pub mod batch;
+pub mod contact;
 pub mod input;
 pub mod line;
 pub mod motion;

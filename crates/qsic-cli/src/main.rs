@@ -6,7 +6,7 @@
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use qsic_cli::motion::{self, TimeRange};
-use qsic_cli::{batch, input, output};
+use qsic_cli::{batch, contact, input, output};
 use std::fs::File;
 use std::io::{self, IsTerminal, Write};
 use std::path::PathBuf;
@@ -72,6 +72,32 @@ enum Command {
     /// The instants where the intersection of two moving quadrics A(t), B(t) changes type,
     /// and the type on every interval between them, exactly.
     Motion(MotionArgs),
+    /// First contact of two moving quadrics A(t), B(t), and the relation of the solids
+    /// (separated, touching, overlapping, inside) along the motion when both are ellipsoids.
+    Contact(ContactArgs),
+}
+
+/// Arguments of `qsic contact`.
+#[derive(Args, Debug)]
+#[command(
+    after_help = "A and B: quadratic forms in x, y, z, w (or affine x, y, z) whose \
+coefficients are rational functions of t, e.g. \"(x - t)^2 + y^2 + z^2 - 1\", or 4x4 JSON \
+arrays of such functions as strings. Instants are exact: rationals, or roots of a polynomial in t.\n\
+Example: qsic contact \"x^2+y^2+z^2-4\" \"(x-t)^2+y^2+z^2-1\" --range -10 10"
+)]
+struct ContactArgs {
+    /// First moving quadric.
+    #[arg(value_name = "A", allow_hyphen_values = true)]
+    a: String,
+    /// Second moving quadric.
+    #[arg(value_name = "B", allow_hyphen_values = true)]
+    b: String,
+    /// Search the first contact in [T0, T1] (rationals, or -inf / inf); default all t.
+    #[arg(long, num_args = 2, value_names = ["T0", "T1"], allow_hyphen_values = true)]
+    range: Option<Vec<String>>,
+    /// Print one JSON object instead of the text report.
+    #[arg(long)]
+    json: bool,
 }
 
 /// Arguments of `qsic classify`.
@@ -192,6 +218,44 @@ fn main() -> ExitCode {
                 .exit()
             }
         },
+        Command::Contact(args) => run_contact(&args),
+    }
+}
+
+/// `qsic contact A B`: exit 0 with the report, or 1 with the error on stderr.
+fn run_contact(args: &ContactArgs) -> ExitCode {
+    let result = (|| {
+        let a = contact::moving_from_arg(&args.a).map_err(|e| format!("A: {e}"))?;
+        let b = contact::moving_from_arg(&args.b).map_err(|e| format!("B: {e}"))?;
+        let range = match &args.range {
+            Some(ends) => {
+                let end = |t: &str| contact::range_end(t).map_err(|e| format!("--range: {e}"));
+                qsic::motion::TimeRange::new(end(&ends[0])?, end(&ends[1])?)
+                    .map_err(|e| format!("--range: {e}"))?
+            }
+            None => qsic::motion::TimeRange::all(),
+        };
+        contact::contact(a, b, range).map_err(|e| format!("A and B: {e}"))
+    })();
+    let report = match result {
+        Ok(r) => r,
+        Err(message) => {
+            eprintln!("error: {message}");
+            return ExitCode::from(1);
+        }
+    };
+    let text = if args.json {
+        contact::report_to_json(&report).to_string() + "\n"
+    } else {
+        contact::human_report(&report)
+    };
+    let mut stdout = io::stdout().lock();
+    match stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => io_failure("writing the output", &e),
     }
 }
 
@@ -332,5 +396,17 @@ mod tests {
         assert!(Cli::try_parse_from(["qsic", "classify", "--batch", "f", "x^2", "y^2"]).is_err());
         assert!(Cli::try_parse_from(["qsic", "classify", "x^2"]).is_err());
         assert!(Cli::try_parse_from(["qsic", "classify", "--batch", "-"]).is_ok());
+    }
+
+    #[test]
+    fn contact_arguments() {
+        let cli = Cli::try_parse_from(["qsic", "contact", "-x^2", "y^2", "--range", "-3", "1/2"])
+            .expect("negative range ends");
+        let Command::Contact(args) = cli.command else {
+            panic!("contact parsed as another command")
+        };
+        assert_eq!(args.a, "-x^2");
+        assert_eq!(args.range, Some(vec!["-3".to_string(), "1/2".to_string()]));
+        assert!(Cli::try_parse_from(["qsic", "contact", "x^2", "y^2", "--range", "1"]).is_err());
     }
 }

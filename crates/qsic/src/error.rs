@@ -104,6 +104,10 @@ pub enum Error {
     /// A time range `[t0, t1]` with `t0 > t1`; the message gives both.
     #[error("invalid time range: {0}")]
     InvalidRange(String),
+    /// A quadric that does not bound a solid ellipsoid where one is needed
+    /// ([`crate::solids`]): says which and what it is instead.
+    #[error("not a solid ellipsoid: {0}")]
+    NotEllipsoid(String),
     /// A parameterization this version cannot give: the class is not covered yet, or the
     /// sub-case needs an algebraic parameterization surface or a biquadratic field. Says which.
     #[error("parameterization not available: {0}")]

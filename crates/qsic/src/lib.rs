@@ -9,6 +9,7 @@
 //! | [`pencil`] | the pencil `λA − μB`: characteristic form, real roots, Segre structure, inertia |
 //! | [`mod@classify`] | [`classify()`]: regular (35 cases), singular and single pencils |
 //! | [`motion`] | moving quadrics: critical instants and the type between them, exactly |
+//! | [`solids`] | [`solids::solid_relation`]: separated, touching, overlapping or nested solid ellipsoids, exactly |
 //! | [`param`] | Levin's parameterization `a(u) ± d(u)√s(u)` of a nonsingular quartic, exactly; Theorem 12 |
 //! | [`limits`] | documented bounds on untrusted input |
 //!
@@ -33,6 +34,7 @@ pub mod param;
 pub mod pencil;
 pub mod quadric;
 pub mod shapes;
+pub mod solids;
 
 pub use classify::{classify, classify_allowing_zero, classify_single, Classification};
 pub use error::Error;

@@ -4,6 +4,9 @@
 //! regular pencil, and the connected real components (curves, isolated points) are those
 //! the class has (the table of issue 8 / `check_sample.py`).
 
+// Index loops read as the matrix formulas they implement.
+#![allow(clippy::needless_range_loop)]
+
 use qsic::affine::{affine_curve, surface_name, AffineCurve, Chart};
 use qsic::classify::PencilKind;
 use qsic::io::{parse_quadric, quadric_from_rows};

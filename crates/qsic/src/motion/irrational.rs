@@ -5,9 +5,8 @@
 //! orders in `D₁, D₂, D₃` (gcds over `K[λ]` of the minors); the real roots of their product
 //! isolated by Sturm sequences over `K` and bisection; the inertia at multiple roots from the
 //! signs of the principal-minor sums `E_k` there (Sturm–Tarski queries over `K`), on arcs at
-//! rational samples, at simple roots from the neighbouring arcs. A single quadric at `α`
-//! (`A(α) ∝ B(α)` or one of them zero) is typed by its inertia, read from the signs of its
-//! principal-minor sums in `K`; singular pencils at `α` are not handled here (`None`).
+//! rational samples, at simple roots from the neighbouring arcs. Singular and single pencils
+//! at `α` are not handled here (`None`).
 
 use super::instants::TPoly;
 use crate::classify::{classify_regular_parts, classify_single_inertia, Classification};
@@ -22,38 +21,45 @@ const MAX_STEPS: usize = 20_000;
 
 type KPoly = Poly<K>;
 
-/// The classification of `λA(α) − B(α)` for a regular pencil or a single quadric at `α`;
-/// `None` when the pencil at `α` is singular or the isolation exceeds its budget.
-pub(crate) fn classify_at_irrational(
-    entries: &[[TPoly; 4]; 4],
-    alpha: &AlgebraicReal,
-) -> Option<Classification> {
+/// The exact analysis of `λA(α) − B(α)` over `K = ℚ(α)` for a regular pencil.
+struct Analysis {
+    /// Square-free pieces: (chart, multiplicity, orders in `D₁..D₃`).
+    pieces: Vec<(KPoly, usize, [usize; 3])>,
+    /// The real finite roots of their product, increasing.
+    roots: Vec<Root>,
+    /// The product of the pieces (square-free).
+    product: KPoly,
+    /// For each real finite root: its piece and the inertia of its member.
+    real: Vec<(usize, Inertia)>,
+    /// A rational sample of each arc between consecutive real roots and the inertia there.
+    arcs: Vec<(RBig, Inertia)>,
+    /// The multiplicity of the root at `λ = ∞`.
+    m_inf: usize,
+    /// `D_k` (monic chart) and its multiplicity at ∞, `k = 1, 2, 3` (empty for four simple
+    /// roots).
+    d: Vec<(KPoly, usize)>,
+    /// `E₁…E₄(λ)`, the sums of the principal minors of `λA − B`.
+    principal: [KPoly; 4],
+}
+
+/// The analysis at `α`; `None` when the pencil at `α` is singular or a single quadric, or
+/// the isolation exceeds its budget.
+fn analyze(entries: &[[TPoly; 4]; 4], alpha: &AlgebraicReal) -> Option<Analysis> {
     let field = NumberField::new(alpha);
     let e: [[KPoly; 4]; 4] = std::array::from_fn(|i| {
         std::array::from_fn(|j| entries[i][j].map(|c| field.integer_element(c)))
     });
     let a: Vec<K> = e.iter().flatten().map(|p| p.coeff(1)).collect();
     let b: Vec<K> = e.iter().flatten().map(|p| p.coeff(0)).collect();
+    if a.iter().all(Ring::is_zero) || b.iter().all(Ring::is_zero) || proportional(&a, &b) {
+        return None;
+    }
     // the chart is λA − B with A, −B the coefficients of λ¹, λ⁰
     let (ma, mb): ([[K; 4]; 4], [[K; 4]; 4]) = (
         std::array::from_fn(|i| std::array::from_fn(|j| e[i][j].coeff(1))),
         std::array::from_fn(|i| std::array::from_fn(|j| e[i][j].coeff(0).neg())),
     );
     let minors = SmallMinors::of_pencil(&ma, &mb);
-    let principal: [KPoly; 4] = minors
-        .principal_minor_sums()
-        .try_into()
-        .expect("four sums of a 4×4 pencil");
-    let a_zero = a.iter().all(Ring::is_zero);
-    if a_zero || b.iter().all(Ring::is_zero) || proportional(&a, &b) {
-        // A single quadric: `A(α)`, or `−B(α)` if `A(α) = 0`; `E_k(λA − B)` has the sum
-        // of the principal `k`-minors of `A` as its `λᵏ` coefficient, of `−B` as its constant.
-        let power = |k: usize| if a_zero { 0 } else { k + 1 };
-        let signs: [Sign; 4] = std::array::from_fn(|k| principal[k].coeff(power(k)).sign());
-        return Some(classify_single_inertia(Inertia::from_minor_sum_signs(
-            signs,
-        )));
-    }
     let f = minors.minor(&[0, 1, 2, 3], &[0, 1, 2, 3]).clone();
     if f.is_zero() {
         return None;
@@ -102,8 +108,12 @@ pub(crate) fn classify_at_irrational(
         .fold(KPoly::constant(K::one()), |acc, (p, _, _)| &acc * p);
     let roots = isolate(&product)?;
     let sturms: Vec<Vec<KPoly>> = pieces.iter().map(|(p, _, _)| sturm(p, None)).collect();
+    let principal: [KPoly; 4] = minors
+        .principal_minor_sums()
+        .try_into()
+        .expect("four sums of a 4×4 pencil");
 
-    let mut real: Vec<(usize, Option<Inertia>)> = Vec::new(); // (piece, inertia if multiple)
+    let mut found: Vec<(usize, Option<Inertia>)> = Vec::new(); // (piece, inertia if multiple)
     for root in &roots {
         let piece = (0..pieces.len()).find(|&i| match root {
             Root::Exact(x) => pieces[i].0.eval(&K::rational(x.clone())).is_zero(),
@@ -115,63 +125,179 @@ pub(crate) fn classify_at_irrational(
                 .map(|q| sign_at_root(&product, q, root));
             Inertia::from_minor_sum_signs(signs)
         });
-        real.push((piece, inertia));
+        found.push((piece, inertia));
     }
     let samples = arc_samples(&product, &roots)?;
-    let arcs: Vec<Inertia> = samples
-        .iter()
+    let arcs: Vec<(RBig, Inertia)> = samples
+        .into_iter()
         .map(|x| {
-            let x = K::rational(x.clone());
-            Inertia::from_minor_sum_signs(principal.each_ref().map(|q| q.eval(&x).sign()))
+            let k = K::rational(x.clone());
+            let signs = principal.each_ref().map(|q| q.eval(&k).sign());
+            (x, Inertia::from_minor_sum_signs(signs))
         })
         .collect();
+    // At a simple root exactly one eigenvalue crosses zero: the smaller count of its arcs.
+    let real = found
+        .into_iter()
+        .enumerate()
+        .map(|(i, (piece, inertia))| {
+            let (l, h) = (&arcs[i].1, &arcs[i + 1].1);
+            let simple = Inertia {
+                positive: l.positive.min(h.positive),
+                negative: l.negative.min(h.negative),
+                zero: 1,
+            };
+            (piece, inertia.unwrap_or(simple))
+        })
+        .collect();
+    Some(Analysis {
+        pieces,
+        roots,
+        product,
+        real,
+        arcs,
+        m_inf,
+        d,
+        principal,
+    })
+}
 
+/// A single quadric at `α` (`A(α) ∝ B(α)`, or one of them zero) typed by its inertia, read
+/// from the signs of its principal-minor sums in `K`: `E_k(λA − B)` has the sum of the
+/// principal `k`-minors of `A` as its `λᵏ` coefficient, of `−B` as its constant. `None` when
+/// the pencil at `α` is not a single quadric.
+fn single_at_irrational(
+    entries: &[[TPoly; 4]; 4],
+    alpha: &AlgebraicReal,
+) -> Option<Classification> {
+    let field = NumberField::new(alpha);
+    let e: [[KPoly; 4]; 4] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| entries[i][j].map(|c| field.integer_element(c)))
+    });
+    let a: Vec<K> = e.iter().flatten().map(|p| p.coeff(1)).collect();
+    let b: Vec<K> = e.iter().flatten().map(|p| p.coeff(0)).collect();
+    let a_zero = a.iter().all(Ring::is_zero);
+    if !(a_zero || b.iter().all(Ring::is_zero) || proportional(&a, &b)) {
+        return None;
+    }
+    let (ma, mb): ([[K; 4]; 4], [[K; 4]; 4]) = (
+        std::array::from_fn(|i| std::array::from_fn(|j| e[i][j].coeff(1))),
+        std::array::from_fn(|i| std::array::from_fn(|j| e[i][j].coeff(0).neg())),
+    );
+    let principal: [KPoly; 4] = SmallMinors::of_pencil(&ma, &mb)
+        .principal_minor_sums()
+        .try_into()
+        .ok()?;
+    let power = |k: usize| if a_zero { 0 } else { k + 1 };
+    let signs: [Sign; 4] = std::array::from_fn(|k| principal[k].coeff(power(k)).sign());
+    Some(classify_single_inertia(Inertia::from_minor_sum_signs(
+        signs,
+    )))
+}
+
+/// The classification of `λA(α) − B(α)` for a regular pencil at `α`; `None` when the pencil
+/// at `α` is singular or a single quadric, or the isolation exceeds its budget.
+pub(crate) fn classify_at_irrational(
+    entries: &[[TPoly; 4]; 4],
+    alpha: &AlgebraicReal,
+) -> Option<Classification> {
+    if let Some(single) = single_at_irrational(entries, alpha) {
+        return Some(single);
+    }
+    let an = analyze(entries, alpha)?;
     let mut real_blocks: Vec<Vec<u8>> = Vec::new();
     let mut complex_blocks: Vec<Vec<u8>> = Vec::new();
-    let mut seq = vec![SigItem::Interval(arcs[0].positive)];
-    for (i, (piece, inertia)) in real.iter().enumerate() {
-        let (_, m, o) = &pieces[*piece];
+    let mut seq = vec![SigItem::Interval(an.arcs[0].1.positive)];
+    for (i, (piece, inertia)) in an.real.iter().enumerate() {
+        let (_, m, o) = &an.pieces[*piece];
         real_blocks.push(blocks_from_orders(*m, *o));
-        let inertia = inertia.unwrap_or(Inertia {
-            positive: arcs[i].positive.min(arcs[i + 1].positive),
-            negative: arcs[i].negative.min(arcs[i + 1].negative),
-            zero: 1,
-        });
         seq.push(SigItem::Root {
             p: inertia.positive,
             n: inertia.negative,
             mult: *m as u8,
         });
-        seq.push(SigItem::Interval(arcs[i + 1].positive));
+        seq.push(SigItem::Interval(an.arcs[i + 1].1.positive));
     }
-    for (i, (p, m, o)) in pieces.iter().enumerate() {
-        let nreal = real.iter().filter(|(j, _)| *j == i).count();
+    for (i, (p, m, o)) in an.pieces.iter().enumerate() {
+        let nreal = an.real.iter().filter(|(j, _)| *j == i).count();
         for _ in nreal..p.degree().unwrap_or(0) {
             complex_blocks.push(blocks_from_orders(*m, *o));
         }
     }
-    if m_inf > 0 {
-        let ords = if d.is_empty() {
+    if an.m_inf > 0 {
+        let ords = if an.d.is_empty() {
             [0; 3]
         } else {
-            [d[0].1, d[1].1, d[2].1]
+            [an.d[0].1, an.d[1].1, an.d[2].1]
         };
-        real_blocks.push(blocks_from_orders(m_inf, ords));
+        real_blocks.push(blocks_from_orders(an.m_inf, ords));
         // the member A(α): the signs of E_k(A) are the λ^k coefficients of E_k(λ)
-        let signs: [Sign; 4] = std::array::from_fn(|k| principal[k].coeff(k + 1).sign());
+        let signs: [Sign; 4] = std::array::from_fn(|k| an.principal[k].coeff(k + 1).sign());
         let inertia = Inertia::from_minor_sum_signs(signs);
         seq.push(SigItem::Root {
             p: inertia.positive,
             n: inertia.negative,
-            mult: m_inf as u8,
+            mult: an.m_inf as u8,
         });
-        seq.push(SigItem::Interval(4 - arcs[0].positive));
+        seq.push(SigItem::Interval(4 - an.arcs[0].1.positive));
     }
     let structures = real_blocks
         .iter()
         .map(Vec::as_slice)
         .chain(complex_blocks.iter().map(Vec::as_slice));
     Some(classify_regular_parts(structures, real_blocks.len(), seq))
+}
+
+/// The signs and inertias along the real λ-line of `λA(α) − B(α)` for a regular pencil
+/// with `A(α)` and `B(α)` nonsingular (no root at `0` or `∞`): for each arc between
+/// consecutive real roots, the side of `0` of its rational sample and the inertia there;
+/// for each real root, its sign and the inertia of its member. `None` as [`analyze`], or
+/// when `A(α)` or `B(α)` is singular.
+pub(crate) fn pencil_signs_at_irrational(
+    entries: &[[TPoly; 4]; 4],
+    alpha: &AlgebraicReal,
+) -> Option<crate::solids::PencilSigns> {
+    let an = analyze(entries, alpha)?;
+    let zero = RBig::ZERO;
+    if an.m_inf > 0 || an.product.eval(&K::rational(zero.clone())).is_zero() {
+        return None;
+    }
+    let seq = sturm(&an.product, None);
+    let at_zero = variations(&seq, &zero);
+    let roots = an
+        .roots
+        .iter()
+        .zip(&an.real)
+        .map(|(root, (_, inertia))| {
+            let sign = match root {
+                Root::Exact(x) => rational_sign(x),
+                // V(lo) − V(0) roots in (lo, 0]: the root is negative iff it is there
+                Root::Open(lo, _) if *lo < zero => {
+                    if variations(&seq, lo) > at_zero {
+                        Sign::Negative
+                    } else {
+                        Sign::Positive
+                    }
+                }
+                Root::Open(..) => Sign::Positive,
+            };
+            (sign, *inertia)
+        })
+        .collect();
+    let arcs = an
+        .arcs
+        .iter()
+        .map(|(x, inertia)| (rational_sign(x), *inertia))
+        .collect();
+    Some(crate::solids::PencilSigns { arcs, roots })
+}
+
+fn rational_sign(x: &RBig) -> Sign {
+    match x.cmp(&RBig::ZERO) {
+        std::cmp::Ordering::Less => Sign::Negative,
+        std::cmp::Ordering::Equal => Sign::Zero,
+        std::cmp::Ordering::Greater => Sign::Positive,
+    }
 }
 
 /// `a ∝ b` (both nonzero vectors).

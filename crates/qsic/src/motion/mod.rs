@@ -23,9 +23,15 @@
 //! every candidate — exactly, by [`classify()`](crate::classify()) at rational instants and by
 //! arithmetic in `ℚ(α)` at irrational ones (module `irrational`) — then drops the candidates
 //! whose type equals that of both neighbours and merges the intervals around them.
+//!
+//! [`contact`]: the first contact of the two quadrics in a range, and the relation of two
+//! moving solid ellipsoids along the motion.
 
+pub mod contact;
 mod instants;
 mod irrational;
+
+pub use contact::{first_contact, solid_motion, FirstContact, SolidMotion, SolidState, TimeRange};
 
 use crate::classify::{classify_allowing_zero, Classification};
 use crate::error::Error;
@@ -310,30 +316,7 @@ impl MovingPencil {
     /// # Errors
     /// As [`Self::candidate_polynomials`].
     pub fn candidate_instants(&self) -> Result<Vec<AlgebraicReal>, Error> {
-        let polys = self.candidate_polynomials()?;
-        let mut roots = Vec::new();
-        for p in gcd_free_basis(&polys) {
-            let all = AlgebraicReal::real_roots_of(&p);
-            let mut rest = p.clone();
-            for r in &all {
-                if let Some(v) = r.as_rational() {
-                    rest = rest
-                        .div_exact(&Poly::vanishing_at(v))
-                        .expect("a rational root's linear factor divides");
-                }
-            }
-            for r in all {
-                if r.as_rational().is_some() {
-                    roots.push(r);
-                } else {
-                    let reduced = AlgebraicReal::from_isolating_interval(&rest, r.interval());
-                    roots.push(reduced.unwrap_or(r));
-                }
-            }
-        }
-        roots.sort();
-        roots.dedup();
-        Ok(roots)
+        Ok(real_roots_of_all(&self.candidate_polynomials()?))
     }
 
     /// The type on every interval between consecutive instants and at every instant, with
@@ -545,6 +528,35 @@ fn check_motion_size(m: &[[Poly; 4]; 4]) -> Result<(), Error> {
         }
     }
     Ok(())
+}
+
+/// The distinct real roots of the nonzero `polys`, increasing: each given by a square-free
+/// primitive polynomial (an element of their gcd-free basis without its rational roots) and
+/// an isolating interval; rational ones exact.
+fn real_roots_of_all(polys: &[Poly]) -> Vec<AlgebraicReal> {
+    let mut roots = Vec::new();
+    for p in gcd_free_basis(polys) {
+        let all = AlgebraicReal::real_roots_of(&p);
+        let mut rest = p.clone();
+        for r in &all {
+            if let Some(v) = r.as_rational() {
+                rest = rest
+                    .div_exact(&Poly::vanishing_at(v))
+                    .expect("a rational root's linear factor divides");
+            }
+        }
+        for r in all {
+            if r.as_rational().is_some() {
+                roots.push(r);
+            } else {
+                let reduced = AlgebraicReal::from_isolating_interval(&rest, r.interval());
+                roots.push(reduced.unwrap_or(r));
+            }
+        }
+    }
+    roots.sort();
+    roots.dedup();
+    roots
 }
 
 /// A gcd-free basis of the square-free parts of `polys`: pairwise coprime, square-free,

@@ -1,0 +1,355 @@
+//! `qsic contact A B`: the first contact of two moving quadrics and, where both are solid
+//! ellipsoids, the relation of the solids along the motion, as JSON or text.
+//!
+//! JSON (one object):
+//! `{"range": [from|null, to|null], "first_contact": null | "-inf" | instant,
+//! "solids": null | {"first_meeting": null | "-inf" | instant | {"error": "..."},
+//! "intervals": [{"from", "to", "sample_t", "relation", "inner", "note"}],
+//! "instants": [{"t", "relation", "inner", "note"}]}}` with an instant `"p/q"` or
+//! `{"poly": "t^2 - 8", "interval": ["a", "b"], "approx": "-2.828…"}`, `from`/`to` null for
+//! `∓∞`; `relation` a [`SolidRelation`](qsic::solids::SolidRelation) key, `not_ellipsoids`
+//! or `undetermined`; `inner` `"A"`/`"B"` for `inside` and `touching_internally`.
+//! `solids` is null when the two are never both solid ellipsoids.
+
+use qsic::io::{
+    moving_matrix_from_polynomial, moving_matrix_from_rows, parse_number, MovingMatrix,
+};
+use qsic::motion::contact::{
+    first_contact_in, solid_motion_of, FirstContact, SolidMotion, SolidState, TimeRange,
+};
+use qsic::motion::MovingPencil;
+use qsic::Error;
+use qsic_algebra::{AlgebraicReal, RBig};
+use serde_json::{json, Value};
+use std::fmt::Write as _;
+
+/// What `qsic contact` reports.
+#[derive(Clone, Debug)]
+pub struct ContactReport {
+    /// The range of `t` searched for the first contact.
+    pub range: TimeRange,
+    /// The first `t` with a real common point (real projective space).
+    pub first_contact: Option<FirstContact>,
+    /// The relation of the solids along the whole motion; `None` if they are never both
+    /// solid ellipsoids.
+    pub solids: Option<SolidMotion>,
+    /// The affine first contact in the range (solids no longer separated), or why not.
+    pub first_meeting: Option<Result<Option<FirstContact>, Error>>,
+}
+
+/// Reads a moving quadric: a JSON 4×4 array of numbers or strings (rational functions of
+/// `t`), or a quadratic form in `x, y, z, w` with coefficients rational in `t`.
+///
+/// # Errors
+/// The reader's error, or a JSON syntax error as [`Error::Syntax`].
+pub fn moving_from_arg(text: &str) -> Result<MovingMatrix, Error> {
+    if !text.trim_start().starts_with('[') {
+        return moving_matrix_from_polynomial(text);
+    }
+    let value: Value = serde_json::from_str(text).map_err(|e| Error::Syntax {
+        column: e.column(),
+        message: format!("bad JSON matrix: {e}"),
+    })?;
+    let rows: Vec<Vec<String>> = value
+        .as_array()
+        .map(|rows| {
+            rows.iter()
+                .map(|r| {
+                    r.as_array()
+                        .map(|r| {
+                            r.iter()
+                                .map(|x| x.as_str().map_or_else(|| x.to_string(), str::to_owned))
+                                .collect()
+                        })
+                        .unwrap_or_default()
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    moving_matrix_from_rows(&rows)
+}
+
+/// A range end: a rational number, or `inf`/`-inf` (also `none`) for an open end.
+///
+/// # Errors
+/// As [`parse_number`].
+pub fn range_end(text: &str) -> Result<Option<RBig>, Error> {
+    match text.trim() {
+        "inf" | "+inf" | "-inf" | "none" => Ok(None),
+        t => parse_number(t).map(Some),
+    }
+}
+
+/// First contact in `range` and the relation of the solids.
+///
+/// # Errors
+/// As [`qsic::motion::contact::first_contact`] and
+/// [`qsic::motion::contact::solid_motion`].
+pub fn contact(a: MovingMatrix, b: MovingMatrix, range: TimeRange) -> Result<ContactReport, Error> {
+    let pencil = MovingPencil::new(a, b)?;
+    let motion = pencil.variations()?;
+    let first = first_contact_in(&pencil, &motion, &range)?;
+    let solids = solid_motion_of(&pencil)?;
+    let any_relation = solids
+        .intervals
+        .iter()
+        .map(|i| &i.state)
+        .chain(solids.instants.iter().map(|i| &i.state))
+        .any(|s| s.relation().is_some());
+    let (solids, first_meeting) = if any_relation {
+        let meeting = solids.first_meeting(&range);
+        (Some(solids), Some(meeting))
+    } else {
+        (None, None)
+    };
+    Ok(ContactReport {
+        range,
+        first_contact: first,
+        solids,
+        first_meeting,
+    })
+}
+
+fn rational(v: &RBig) -> String {
+    v.to_string()
+}
+
+/// An instant as JSON: `"p/q"` or `{"poly", "interval", "approx"}`.
+pub fn instant_json(t: &AlgebraicReal) -> Value {
+    match t.as_rational() {
+        Some(v) => Value::String(rational(v)),
+        None => {
+            let iv = t.refined_interval(&RBig::from_parts(1u8.into(), (1u64 << 40).into()));
+            json!({
+                "poly": t.poly().to_string().replace('x', "t"),
+                "interval": [rational(iv.lo()), rational(iv.hi())],
+                "approx": format!("{:.15}", t.to_f64()),
+            })
+        }
+    }
+}
+
+fn contact_json(c: &Option<FirstContact>) -> Value {
+    match c {
+        None => Value::Null,
+        Some(FirstContact::FromMinusInfinity) => Value::String("-inf".into()),
+        Some(FirstContact::At(t)) => instant_json(t),
+    }
+}
+
+fn state_fields(s: &SolidState, out: &mut serde_json::Map<String, Value>) {
+    out.insert("relation".into(), s.key().into());
+    let inner = s.relation().and_then(|r| r.inner()).map(|i| i.key());
+    out.insert("inner".into(), inner.map_or(Value::Null, Value::from));
+    let note = match s {
+        SolidState::NotEllipsoids(why) => Value::String(why.clone()),
+        _ => Value::Null,
+    };
+    out.insert("note".into(), note);
+}
+
+/// The report as one JSON object (module docs).
+pub fn report_to_json(r: &ContactReport) -> Value {
+    let end = |v: Option<&RBig>| v.map_or(Value::Null, |v| Value::String(rational(v)));
+    let solids = r.solids.as_ref().map_or(Value::Null, |m| {
+        let t_or_null = |t: &Option<AlgebraicReal>| t.as_ref().map_or(Value::Null, instant_json);
+        let intervals: Vec<Value> = m
+            .intervals
+            .iter()
+            .map(|i| {
+                let mut o = serde_json::Map::new();
+                o.insert("from".into(), t_or_null(&i.from));
+                o.insert("to".into(), t_or_null(&i.to));
+                o.insert("sample_t".into(), rational(&i.sample).into());
+                state_fields(&i.state, &mut o);
+                Value::Object(o)
+            })
+            .collect();
+        let instants: Vec<Value> = m
+            .instants
+            .iter()
+            .map(|i| {
+                let mut o = serde_json::Map::new();
+                o.insert("t".into(), instant_json(&i.t));
+                state_fields(&i.state, &mut o);
+                Value::Object(o)
+            })
+            .collect();
+        let meeting = match &r.first_meeting {
+            Some(Ok(c)) => contact_json(c),
+            Some(Err(e)) => json!({ "error": e.to_string() }),
+            None => Value::Null,
+        };
+        json!({ "first_meeting": meeting, "intervals": intervals, "instants": instants })
+    });
+    json!({
+        "range": [end(r.range.from()), end(r.range.to())],
+        "first_contact": contact_json(&r.first_contact),
+        "solids": solids,
+    })
+}
+
+fn instant_text(t: &AlgebraicReal) -> String {
+    match t.as_rational() {
+        Some(v) => rational(v),
+        None => format!(
+            "root of {} ≈ {:.12}",
+            t.poly().to_string().replace('x', "t"),
+            t.to_f64()
+        ),
+    }
+}
+
+fn contact_text(c: &Option<FirstContact>, none: &str) -> String {
+    match c {
+        None => none.to_string(),
+        Some(FirstContact::FromMinusInfinity) => "from t = -inf".to_string(),
+        Some(FirstContact::At(t)) => format!("t = {}", instant_text(t)),
+    }
+}
+
+fn state_text(s: &SolidState) -> String {
+    match s {
+        SolidState::Relation(r) => match r.inner() {
+            Some(i) => format!("{} ({} inside the other)", r.key(), i.key()),
+            None => r.key().to_string(),
+        },
+        SolidState::NotEllipsoids(why) => format!("not ellipsoids: {why}"),
+        SolidState::Undetermined => "undetermined (irrational instant)".to_string(),
+    }
+}
+
+/// The text report: first contact, then the timeline of the solids.
+pub fn human_report(r: &ContactReport) -> String {
+    let end = |v: Option<&RBig>, inf: &str| v.map_or(inf.to_string(), rational);
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "range: [{}, {}]",
+        end(r.range.from(), "-inf"),
+        end(r.range.to(), "+inf")
+    );
+    let _ = writeln!(
+        s,
+        "first contact (real common point): {}",
+        contact_text(&r.first_contact, "none in the range")
+    );
+    let Some(m) = &r.solids else {
+        let _ = writeln!(s, "solids: not both solid ellipsoids at any t");
+        return s;
+    };
+    match &r.first_meeting {
+        Some(Ok(c)) => {
+            let _ = writeln!(
+                s,
+                "first contact of the solids: {}",
+                contact_text(c, "none in the range")
+            );
+        }
+        Some(Err(e)) => {
+            let _ = writeln!(s, "first contact of the solids: not decided ({e})");
+        }
+        None => {}
+    }
+    let _ = writeln!(s, "solids along the motion:");
+    let t_or =
+        |t: &Option<AlgebraicReal>, inf: &str| t.as_ref().map_or(inf.to_string(), instant_text);
+    for (k, i) in m.intervals.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "  ({}, {}): {}",
+            t_or(&i.from, "-inf"),
+            t_or(&i.to, "+inf"),
+            state_text(&i.state)
+        );
+        if let Some(at) = m.instants.get(k) {
+            let _ = writeln!(
+                s,
+                "  t = {}: {}",
+                instant_text(&at.t),
+                state_text(&at.state)
+            );
+        }
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The report of the sphere through a sphere, as JSON: every instant and relation.
+    #[test]
+    fn spheres_report() {
+        let a = moving_from_arg("x^2 + y^2 + z^2 - 4").unwrap();
+        let rows =
+            r#"[["1","0","0","-t"],["0","1","0","0"],["0","0","1","0"],["-t","0","0","t^2-1"]]"#;
+        let b = moving_from_arg(rows).unwrap();
+        assert_eq!(b, moving_from_arg("(x - t)^2 + y^2 + z^2 - 1").unwrap());
+        let r = contact(a, b, TimeRange::all()).unwrap();
+        let v = report_to_json(&r);
+        assert_eq!(v["first_contact"], "-3");
+        assert_eq!(v["range"], json!([null, null]));
+        let solids = &v["solids"];
+        assert_eq!(solids["first_meeting"], "-3");
+        let rel: Vec<&str> = solids["instants"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|i| i["relation"].as_str().unwrap())
+            .collect();
+        assert_eq!(
+            rel,
+            [
+                "touching_externally",
+                "touching_internally",
+                "touching_internally",
+                "touching_externally"
+            ]
+        );
+        assert_eq!(solids["instants"][1]["inner"], "B");
+        assert_eq!(solids["intervals"][2]["relation"], "inside");
+        assert_eq!(solids["intervals"][0]["from"], Value::Null);
+        let text = human_report(&r);
+        assert!(
+            text.contains("first contact (real common point): t = -3"),
+            "{text}"
+        );
+        assert!(
+            text.contains("(-1, 1): inside (B inside the other)"),
+            "{text}"
+        );
+    }
+
+    /// An irrational instant is written with its polynomial, an interval holding it and a
+    /// decimal; ranges read `inf`.
+    #[test]
+    fn irrational_instant_and_ranges() {
+        let a = moving_from_arg("x^2 + y^2 + z^2 - 4").unwrap();
+        let b = moving_from_arg("(x - t)^2 + (y - 1)^2 + z^2 - 1").unwrap();
+        let range = TimeRange::new(range_end("-inf").unwrap(), range_end("10").unwrap()).unwrap();
+        let v = report_to_json(&contact(a, b, range).unwrap());
+        let t = &v["first_contact"];
+        assert_eq!(t["poly"], "t^2 - 8");
+        let approx: f64 = t["approx"].as_str().unwrap().parse().unwrap();
+        assert!((approx + 8f64.sqrt()).abs() < 1e-12);
+        let lo = parse_number(t["interval"][0].as_str().unwrap()).unwrap();
+        let hi = parse_number(t["interval"][1].as_str().unwrap()).unwrap();
+        assert!(lo < hi && &lo * &lo > RBig::from(8) && &hi * &hi < RBig::from(8));
+        assert_eq!(v["range"], json!([null, "10"]));
+        assert!(range_end("1/0").is_err());
+    }
+
+    /// Cylinders are not solids: the first contact only, `solids` null.
+    #[test]
+    fn non_solids_report_first_contact_only() {
+        let a = moving_from_arg("x^2 + y^2 - 1").unwrap();
+        let b = moving_from_arg("(x - t)^2 + z^2 - 1").unwrap();
+        let r = contact(a, b, TimeRange::all()).unwrap();
+        let v = report_to_json(&r);
+        assert_eq!(v["solids"], Value::Null);
+        // perpendicular unit cylinders, axes at distance |t|: they meet from t = −2
+        assert_eq!(v["first_contact"], "-2");
+        assert!(human_report(&r).contains("not both solid ellipsoids"));
+    }
+}

@@ -1,0 +1,464 @@
+//! First contact of two moving quadrics, and the relation of two moving solid ellipsoids
+//! along the motion, exactly.
+//!
+//! - [`first_contact`]: the least `t` of a range where the real intersection of `A(t)` and
+//!   `B(t)` in real projective space is not empty. Having a real common point is a closed
+//!   condition in `t` (the numerator matrices are continuous and `ℝℙ³` is compact), so the
+//!   set of such `t` has a least element; it is the range's start or an instant of
+//!   [`MovingPencil::variations`], where the class — hence the emptiness of the real
+//!   intersection, read from the real components of the class — changes.
+//! - [`solid_motion`]: the relation ([`SolidRelation`]) of the solids on every interval
+//!   between the instants where it can change and at those instants: the candidate
+//!   instants of the pencil (a relation changes only where the Segre characteristic or the
+//!   inertias of the pencil change) and the real roots of the leading principal minors of
+//!   `M_A(t)` and `M_B(t)` (where a quadric can stop being an ellipsoid). Rational instants
+//!   and interval samples go through [`solid_relation`]; irrational ones through the same
+//!   decision over `ℚ(α)` (minor signs at `α`, the pencil's roots and inertias over `ℚ(α)`).
+//!   [`SolidMotion::first_meeting`] is the affine first contact: the least `t` where the
+//!   solids are no longer separated.
+
+use super::instants::pencil_entries;
+use super::{irrational, InstantType, Motion, MovingPencil};
+use crate::classify::Classification;
+use crate::error::Error;
+use crate::io::MovingMatrix;
+use crate::solids::{
+    ellipsoid_orientation, leading_minors, relation_from_signs, solid_relation, SolidRelation,
+};
+use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring};
+
+/// A closed range `[from, to]` of `t` with rational ends; `None` for `∓∞`.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct TimeRange {
+    from: Option<RBig>,
+    to: Option<RBig>,
+}
+
+impl TimeRange {
+    /// The whole real line.
+    pub fn all() -> TimeRange {
+        TimeRange::default()
+    }
+
+    /// `[from, to]`.
+    ///
+    /// # Errors
+    /// [`Error::UnsupportedMotion`] if `from > to`.
+    pub fn new(from: Option<RBig>, to: Option<RBig>) -> Result<TimeRange, Error> {
+        if let (Some(a), Some(b)) = (&from, &to) {
+            if a > b {
+                return Err(Error::UnsupportedMotion(format!(
+                    "the range [{a}, {b}] is empty"
+                )));
+            }
+        }
+        Ok(TimeRange { from, to })
+    }
+
+    /// The start, `None` for `−∞`.
+    pub fn from(&self) -> Option<&RBig> {
+        self.from.as_ref()
+    }
+
+    /// The end, `None` for `+∞`.
+    pub fn to(&self) -> Option<&RBig> {
+        self.to.as_ref()
+    }
+
+    fn after_start(&self, t: &AlgebraicReal) -> bool {
+        self.from
+            .as_ref()
+            .is_none_or(|a| *t > AlgebraicReal::from_rational(a.clone()))
+    }
+
+    fn not_after_end(&self, t: &AlgebraicReal) -> bool {
+        self.to
+            .as_ref()
+            .is_none_or(|b| *t <= AlgebraicReal::from_rational(b.clone()))
+    }
+}
+
+/// The least `t` of a range where a closed condition holds.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum FirstContact {
+    /// It holds on a whole interval `(−∞, …)` of an unbounded range: there is no first `t`.
+    FromMinusInfinity,
+    /// The least `t` (the range's start if it holds there).
+    At(AlgebraicReal),
+}
+
+/// Whether the real intersection of a class has a real point (in real projective space).
+///
+/// # Errors
+/// [`Error::Algebra`] for a classification without description (no case matched).
+pub fn has_real_points(c: &Classification) -> Result<bool, Error> {
+    c.description
+        .as_ref()
+        .map(|d| !d.components.is_empty())
+        .ok_or_else(|| Error::Algebra("a classification without a description".into()))
+}
+
+/// The least `t` of `range` where `A(t)` and `B(t)` have a real common point (in real
+/// projective space), exactly; `None` if there is none in the range.
+///
+/// # Errors
+/// As [`MovingPencil::variations`]; [`Error::UnsupportedMotion`] when the answer would be an
+/// irrational instant whose class the `ℚ(α)` route does not give (a singular or single
+/// pencil there) and whose right neighbour has no real point: it is never guessed.
+///
+/// # Examples
+/// ```
+/// use qsic::io::moving_matrix_from_polynomial as moving;
+/// use qsic::motion::contact::{first_contact, FirstContact, TimeRange};
+/// use qsic_algebra::RBig;
+/// // a unit sphere coming from x = −∞ towards a sphere of radius 2: contact at t = −3
+/// let a = moving("x^2 + y^2 + z^2 - 4")?;
+/// let b = moving("(x - t)^2 + y^2 + z^2 - 1")?;
+/// let t = first_contact(&a, &b, &TimeRange::all())?;
+/// assert_eq!(t, Some(FirstContact::At(qsic_algebra::AlgebraicReal::from_rational(RBig::from(-3)))));
+/// # Ok::<(), qsic::Error>(())
+/// ```
+pub fn first_contact(
+    a: &MovingMatrix,
+    b: &MovingMatrix,
+    range: &TimeRange,
+) -> Result<Option<FirstContact>, Error> {
+    let pencil = MovingPencil::new(a.clone(), b.clone())?;
+    first_contact_in(&pencil, &pencil.variations()?, range)
+}
+
+/// [`first_contact`] from a pencil and its variations, computed once.
+///
+/// # Errors
+/// As [`first_contact`].
+pub fn first_contact_in(
+    pencil: &MovingPencil,
+    motion: &Motion,
+    range: &TimeRange,
+) -> Result<Option<FirstContact>, Error> {
+    let interval_meets = |i: usize| has_real_points(&motion.intervals[i].classification);
+    let instant_meets = |i: usize| -> Result<Option<bool>, Error> {
+        match &motion.instants[i].class {
+            InstantType::Exact(c) => has_real_points(c).map(Some),
+            InstantType::IrrationalUnclassified => Ok(None),
+        }
+    };
+    first_in_range(
+        range,
+        motion.instants.iter().map(|m| &m.t),
+        interval_meets,
+        instant_meets,
+        |t| has_real_points(&pencil.classify_at(t)?),
+    )
+}
+
+/// The least `t` of `range` where a closed condition holds, on a timeline of
+/// `instants.len() + 1` intervals (interval `i` ends at instant `i`); `at_start` decides it at
+/// a finite start. An undecided instant counts by closedness when its right interval holds,
+/// and is an error when that does not hold either.
+fn first_in_range<'a>(
+    range: &TimeRange,
+    instants: impl Iterator<Item = &'a AlgebraicReal>,
+    interval_holds: impl Fn(usize) -> Result<bool, Error>,
+    instant_holds: impl Fn(usize) -> Result<Option<bool>, Error>,
+    at_start: impl Fn(&RBig) -> Result<bool, Error>,
+) -> Result<Option<FirstContact>, Error> {
+    match range.from() {
+        Some(t0) if at_start(t0)? => {
+            return Ok(Some(FirstContact::At(AlgebraicReal::from_rational(
+                t0.clone(),
+            ))))
+        }
+        None if interval_holds(0)? => return Ok(Some(FirstContact::FromMinusInfinity)),
+        _ => {}
+    }
+    for (i, t) in instants.enumerate() {
+        if !range.after_start(t) {
+            continue;
+        }
+        if !range.not_after_end(t) {
+            break;
+        }
+        let holds = match instant_holds(i)? {
+            Some(h) => h || interval_holds(i + 1)?,
+            None if interval_holds(i + 1)? => true,
+            None => {
+                return Err(Error::UnsupportedMotion(format!(
+                    "the class at the irrational instant {t} (≈ {:.12}) is not computed \
+                     exactly, and the answer may be there",
+                    t.to_f64()
+                )))
+            }
+        };
+        if holds {
+            return Ok(Some(FirstContact::At(t.clone())));
+        }
+    }
+    Ok(None)
+}
+
+/// The relation of two moving solids at an instant or on an interval.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum SolidState {
+    /// Both are solid ellipsoids: their relation.
+    Relation(SolidRelation),
+    /// One is not a solid ellipsoid there: which, and what it is.
+    NotEllipsoids(String),
+    /// An irrational instant where the `ℚ(α)` route gave no answer (kept, never guessed).
+    Undetermined,
+}
+
+impl SolidState {
+    /// The stable key: the relation's, `not_ellipsoids` or `undetermined`.
+    pub fn key(&self) -> &'static str {
+        match self {
+            SolidState::Relation(r) => r.key(),
+            SolidState::NotEllipsoids(_) => "not_ellipsoids",
+            SolidState::Undetermined => "undetermined",
+        }
+    }
+
+    /// The relation, if both are ellipsoids and it was decided.
+    pub fn relation(&self) -> Option<SolidRelation> {
+        match self {
+            SolidState::Relation(r) => Some(*r),
+            _ => None,
+        }
+    }
+}
+
+/// An open interval of `t` with one relation.
+#[derive(Clone, Debug)]
+pub struct SolidInterval {
+    /// Left end, `None` for `−∞`.
+    pub from: Option<AlgebraicReal>,
+    /// Right end, `None` for `+∞`.
+    pub to: Option<AlgebraicReal>,
+    /// The rational `t` where it was decided.
+    pub sample: RBig,
+    /// The relation on the interval.
+    pub state: SolidState,
+}
+
+/// An instant whose relation differs from that just before or just after it.
+#[derive(Clone, Debug)]
+pub struct SolidInstant {
+    /// The instant.
+    pub t: AlgebraicReal,
+    /// The relation there.
+    pub state: SolidState,
+}
+
+/// The relation of two moving solids along the whole line: `intervals[i]` ends at
+/// `instants[i]`, `intervals[i + 1]` starts there.
+#[derive(Clone, Debug)]
+pub struct SolidMotion {
+    /// The intervals, increasing.
+    pub intervals: Vec<SolidInterval>,
+    /// The instants, increasing.
+    pub instants: Vec<SolidInstant>,
+}
+
+impl SolidMotion {
+    /// Whether both quadrics are solid ellipsoids at every `t` (every state is a relation
+    /// or undetermined).
+    pub fn ellipsoids_throughout(&self) -> bool {
+        let states = self.intervals.iter().map(|i| &i.state);
+        states
+            .chain(self.instants.iter().map(|i| &i.state))
+            .all(|s| !matches!(s, SolidState::NotEllipsoids(_)))
+    }
+
+    /// The affine first contact: the least `t` of `range` where the closed solids share a
+    /// point (the relation is not [`SolidRelation::Separated`]).
+    ///
+    /// # Errors
+    /// [`Error::NotEllipsoid`] if a quadric stops being an ellipsoid in the range before
+    /// the answer; [`Error::UnsupportedMotion`] if it hinges on an undetermined instant.
+    pub fn first_meeting(&self, range: &TimeRange) -> Result<Option<FirstContact>, Error> {
+        let meets = |s: &SolidState| match s {
+            SolidState::Relation(r) => Ok(Some(r.solids_meet())),
+            SolidState::NotEllipsoids(why) => Err(Error::NotEllipsoid(why.clone())),
+            SolidState::Undetermined => Ok(None),
+        };
+        let instants: Vec<AlgebraicReal> = self.instants.iter().map(|i| i.t.clone()).collect();
+        first_in_range(
+            range,
+            instants.iter(),
+            |i| meets(&self.intervals[i].state).map(|m| m.unwrap_or(false)),
+            |i| meets(&self.instants[i].state),
+            |t0| {
+                let at = AlgebraicReal::from_rational(t0.clone());
+                let state = match self.instants.iter().position(|i| i.t == at) {
+                    Some(k) => &self.instants[k].state,
+                    None => {
+                        let k = self.instants.iter().take_while(|i| i.t < at).count();
+                        &self.intervals[k].state
+                    }
+                };
+                meets(state).map(|m| m.unwrap_or(false))
+            },
+        )
+    }
+}
+
+/// The relation of two moving solid ellipsoids along the motion (module docs), with the
+/// instants where it changes, exactly.
+///
+/// # Errors
+/// As [`MovingPencil::candidate_instants`].
+///
+/// # Examples
+/// ```
+/// use qsic::io::moving_matrix_from_polynomial as moving;
+/// use qsic::motion::contact::solid_motion;
+/// let a = moving("x^2 + y^2 + z^2 - 4")?;
+/// let b = moving("(x - t)^2 + y^2 + z^2 - 1")?;
+/// let m = solid_motion(&a, &b)?;
+/// let keys: Vec<&str> = m.intervals.iter().map(|i| i.state.key()).collect();
+/// assert_eq!(keys, ["separated", "overlapping", "inside", "overlapping", "separated"]);
+/// let at: Vec<String> = m.instants.iter().map(|i| i.t.to_string()).collect();
+/// assert_eq!(at, ["-3", "-1", "1", "3"]);
+/// # Ok::<(), qsic::Error>(())
+/// ```
+pub fn solid_motion(a: &MovingMatrix, b: &MovingMatrix) -> Result<SolidMotion, Error> {
+    solid_motion_of(&MovingPencil::new(a.clone(), b.clone())?)
+}
+
+/// [`solid_motion`] of a pencil already built.
+///
+/// # Errors
+/// As [`solid_motion`].
+pub fn solid_motion_of(pencil: &MovingPencil) -> Result<SolidMotion, Error> {
+    let mut polys = pencil.candidate_polynomials()?;
+    for m in [pencil.a(), pencil.b()] {
+        polys.extend(leading_minors(m.numerators()));
+    }
+    polys.retain(|p| !p.is_zero());
+    let candidates = super::real_roots_of_all(&polys);
+    let samples = super::samples_between(&candidates, None, None);
+    let mut interval_states = Vec::with_capacity(samples.len());
+    for s in &samples {
+        interval_states.push(state_at_rational(pencil, s));
+    }
+    let mut intervals = vec![SolidInterval {
+        from: None,
+        to: None,
+        sample: samples[0].clone(),
+        state: interval_states[0].clone(),
+    }];
+    let mut instants = Vec::new();
+    for (j, t) in candidates.into_iter().enumerate() {
+        let state = match t.as_rational() {
+            Some(v) => state_at_rational(pencil, v),
+            None => state_at_irrational(pencil, &t),
+        };
+        let right = &interval_states[j + 1];
+        let left = &intervals.last().expect("one interval at least").state;
+        if state == *left && state == *right {
+            continue;
+        }
+        intervals.last_mut().expect("one interval at least").to = Some(t.clone());
+        intervals.push(SolidInterval {
+            from: Some(t.clone()),
+            to: None,
+            sample: samples[j + 1].clone(),
+            state: right.clone(),
+        });
+        instants.push(SolidInstant { t, state });
+    }
+    Ok(SolidMotion {
+        intervals,
+        instants,
+    })
+}
+
+fn state_at_rational(pencil: &MovingPencil, t: &RBig) -> SolidState {
+    let quadric = |m: &MovingMatrix, name: &str| {
+        m.quadric_at(t).map_err(|e| {
+            SolidState::NotEllipsoids(match e {
+                Error::ZeroQuadric => format!("{name} is the zero form"),
+                e => format!("{name}: {e}"),
+            })
+        })
+    };
+    let pair = quadric(pencil.a(), "A").and_then(|a| Ok((a, quadric(pencil.b(), "B")?)));
+    match pair {
+        Ok((a, b)) => match solid_relation(&a, &b) {
+            Ok(r) => SolidState::Relation(r),
+            Err(Error::NotEllipsoid(why)) => SolidState::NotEllipsoids(why),
+            Err(_) => SolidState::Undetermined,
+        },
+        Err(s) => s,
+    }
+}
+
+/// The relation at an irrational `α`: the minors' signs at `α` decide ellipsoids and their
+/// orientation, the 2×2 minors of the pair `A ∝ B`, then the pencil over `ℚ(α)`.
+fn state_at_irrational(pencil: &MovingPencil, alpha: &AlgebraicReal) -> SolidState {
+    let (ma, mb) = (pencil.a().numerators(), pencil.b().numerators());
+    let orientation = |m: &[[Poly; 4]; 4], name: &str| {
+        let signs = leading_minors(m).map(|p| alpha.sign_of(&p));
+        ellipsoid_orientation(signs)
+            .map_err(|e| SolidState::NotEllipsoids(format!("{name} is {e}")))
+    };
+    let (negate_a, negate_b) = match (orientation(ma, "A"), orientation(mb, "B")) {
+        (Ok(a), Ok(b)) => (a, b),
+        (Err(s), _) | (_, Err(s)) => return s,
+    };
+    let (va, vb): (Vec<&Poly>, Vec<&Poly>) =
+        (ma.iter().flatten().collect(), mb.iter().flatten().collect());
+    let proportional = (0..16)
+        .all(|i| (i + 1..16).all(|j| alpha.is_root_of(&(&(va[i] * vb[j]) - &(va[j] * vb[i])))));
+    if proportional {
+        return SolidState::Relation(SolidRelation::Equal);
+    }
+    let oriented = |m: &[[Poly; 4]; 4], negate: bool| -> [[Poly; 4]; 4] {
+        let k = Poly::constant(if negate { -IBig::ONE } else { IBig::ONE });
+        m.clone().map(|row| row.map(|p| p.mul(&k)))
+    };
+    let entries = pencil_entries(&oriented(ma, negate_a), &oriented(mb, negate_b));
+    irrational::pencil_signs_at_irrational(&entries, alpha).map_or(SolidState::Undetermined, |s| {
+        SolidState::Relation(relation_from_signs(&s))
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::moving_matrix_from_polynomial as moving;
+
+    /// The `ℚ(α)` route given a rational `α` agrees with the rational route (the static
+    /// [`solid_relation`]) at every sample of several motions, every relation occurring.
+    #[test]
+    fn number_field_route_agrees_with_the_rational_route() {
+        let motions = [
+            ("x^2 + y^2 + z^2 - 4", "(x - t)^2 + (y - 1/2)^2 + z^2 - 1"),
+            ("x^2/4 + y^2 + z^2 - 1", "(x - t)^2 + 4*y^2 + 4*z^2 - 1"),
+            ("x^2 + y^2 + z^2 - 1", "x^2 + 2*y^2 + 3*z^2 - t^2"),
+            ("x^2 + y^2 + z^2 - 1", "-(x - t)^2 - y^2/t - z^2 + 1"),
+            ("2*x^2 + y^2 + z^2 - 1", "(x - t)^2 + y^2 + z^2 - t*y - 1"),
+            ("x^2 + y^2 + z^2 - 1", "t*(x^2 + y^2 + z^2) - 1"),
+        ];
+        let mut seen = std::collections::HashSet::new();
+        let mut compared = 0;
+        for (a, b) in motions {
+            let p = MovingPencil::new(moving(a).unwrap(), moving(b).unwrap()).unwrap();
+            for n in -16..=16 {
+                let t = RBig::from_parts_signed(n.into(), 4u8.into());
+                let rational = state_at_rational(&p, &t);
+                let via_field = state_at_irrational(&p, &AlgebraicReal::from_rational(t.clone()));
+                match (&rational, &via_field) {
+                    // the messages name the same quadric and kind
+                    (SolidState::NotEllipsoids(x), SolidState::NotEllipsoids(y)) => {
+                        assert_eq!(x.get(..1), y.get(..1), "{a} | {b} at {t}: {x} / {y}")
+                    }
+                    _ => assert_eq!(rational, via_field, "{a} | {b} at {t}"),
+                }
+                seen.insert(rational.key());
+                compared += 1;
+            }
+        }
+        assert!(compared > 150 && seen.len() >= 7, "{compared} {seen:?}");
+    }
+}
