@@ -349,3 +349,125 @@ pub(super) fn line_and_cubic_curve(
         connected,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::classify::classify;
+    use crate::io::parse_quadric;
+    use crate::param::nodal::tests::{disguise, mapped};
+    use crate::param::parameterize;
+    use qsic_algebra::testing::SplitMix;
+
+    fn pair(a: &str, b: &str) -> (Quadric, Quadric) {
+        (parse_quadric(a).unwrap(), parse_quadric(b).unwrap())
+    }
+
+    /// `p` lies on the line spanned by `line` (all 3×3 minors of the three rows vanish).
+    fn on_line(line: &[[RBig; 4]; 2], p: &[RBig; 4]) -> bool {
+        let rows = [&line[0], &line[1], p];
+        let cols = |skip: usize| -> Vec<usize> { (0..4).filter(|&c| c != skip).collect() };
+        (0..4).all(|skip| {
+            let c = cols(skip);
+            let m: [[RBig; 3]; 3] =
+                std::array::from_fn(|i| std::array::from_fn(|j| rows[i][c[j]].clone()));
+            minors::det(&m).is_zero()
+        })
+    }
+
+    /// `X(t)`, the cubic, and the line lie on both quadrics, identically in `t`.
+    fn assert_on_both(c: &LineAndCubic, a: &Quadric, b: &Quadric) {
+        for m in [a.matrix(), b.matrix()] {
+            let mut acc = Poly::zero();
+            for i in 0..4 {
+                for j in 0..4 {
+                    acc = &acc + &(&c.cubic[i] * &c.cubic[j]).scale(&m[i][j]);
+                }
+            }
+            assert!(acc.is_zero(), "the cubic is off a quadric");
+            let [e1, e2] = &c.line;
+            assert!(
+                form(m, e1, e1).is_zero() && form(m, e1, e2).is_zero() && form(m, e2, e2).is_zero()
+            );
+        }
+    }
+
+    /// A cone `xz = y²` and a cylinder `(x−1)² + (y−1)² = 2` share the z-axis, with
+    /// different tangent planes along it. In the plane `y = mx` the residual lines give the
+    /// cubic `(2(1+m), 2m(1+m), 2m²(1+m), 1+m²)`: on the axis at `m = −1` (the apex) and
+    /// `m = ∞` (the axis' point at infinity).
+    #[test]
+    fn a_cone_and_a_cylinder_sharing_a_ruling_meet_in_it_and_a_cubic() {
+        let (a, b) = pair("x*z-y^2", "x^2-2*x+y^2-2*y");
+        let c = parameterize_line_and_cubic(&a, &b).unwrap();
+        assert_on_both(&c, &a, &b);
+        let axis = [[0, 0, 1, 0].map(RBig::from), [0, 0, 0, 1].map(RBig::from)];
+        assert!(c.line.iter().all(|p| on_line(&axis, p)));
+        let Meeting::TwoReal(points) = &c.meeting else {
+            panic!("{:?}", c.meeting)
+        };
+        let rational: Vec<[RBig; 4]> = points
+            .iter()
+            .map(|p| primitive(&p.clone().map(|x| x.as_rational().unwrap().clone())))
+            .collect();
+        assert!(
+            rational.contains(&axis[0]) && rational.contains(&axis[1]),
+            "{rational:?}"
+        );
+        let curve = parameterize(&a, &b).unwrap();
+        assert_eq!(curve.classification.case, Some(9));
+        assert_eq!(curve.connected, [vec![0, 1]]);
+    }
+
+    /// `xz = y²` and `x(x + w) + yz = 0`: both contain the z-axis; the cubic is
+    /// `(−n³, −mn², −m²n, m³ + n³)`, on the axis only at `n = 0` — twice: tangent at the apex.
+    #[test]
+    fn a_cubic_tangent_to_the_shared_ruling_at_the_apex() {
+        let (a, b) = pair("x*z-y^2", "x^2+x*w+y*z");
+        let c = parameterize_line_and_cubic(&a, &b).unwrap();
+        assert_on_both(&c, &a, &b);
+        assert_eq!(c.meeting, Meeting::Tangent([0, 0, 0, 1].map(RBig::from)));
+        let curve = parameterize(&a, &b).unwrap();
+        assert_eq!(curve.classification.case, Some(12));
+        assert_eq!(curve.singular_points.len(), 1);
+    }
+
+    /// The representatives of cases 9, 10 (ERRATA 1) and 12, disguised: the line and the
+    /// meeting points move with the map.
+    #[test]
+    fn disguised_lines_and_cubics_keep_their_line_and_meeting_points() {
+        let representatives = [
+            (9, "x*y+z*w", "y^2+2*z*w+w^2"),
+            (10, "x*w+y*z", "x*z-y*w+z*w"),
+            (12, "x*w+y*z", "z^2+2*y*w"),
+        ];
+        let mut rng = SplitMix(0x11_4e_c0_b1c);
+        for (case, a, b) in representatives {
+            let (a, b) = pair(a, b);
+            assert_eq!(classify(&a, &b).case, Some(case));
+            let original = parameterize_line_and_cubic(&a, &b).unwrap();
+            assert_on_both(&original, &a, &b);
+            for k in 0..3 {
+                let (da, db, inverse) = disguise(&a, &b, &mut rng);
+                let tag = format!("case {case}, disguise {k}");
+                assert_eq!(classify(&da, &db).case, Some(case), "{tag}");
+                let c = parameterize_line_and_cubic(&da, &db).unwrap();
+                assert_on_both(&c, &da, &db);
+                for p in &original.line {
+                    assert!(on_line(&c.line, &mapped(&inverse, p)), "{tag}: line");
+                }
+                match (&original.meeting, &c.meeting) {
+                    (Meeting::Tangent(p), Meeting::Tangent(q)) => {
+                        assert_eq!(&mapped(&inverse, p), q, "{tag}");
+                    }
+                    (Meeting::TwoReal(_), Meeting::TwoReal(_)) => assert_eq!(case, 9),
+                    (Meeting::Conjugate, Meeting::Conjugate) => assert_eq!(case, 10),
+                    (x, y) => panic!("{tag}: {x:?} became {y:?}"),
+                }
+                let curve = parameterize(&da, &db).unwrap();
+                let groups = if case == 10 { 2 } else { 1 };
+                assert_eq!(curve.connected.len(), groups, "{tag}");
+            }
+        }
+    }
+}

@@ -328,3 +328,167 @@ pub(super) fn singular_quartic_curve(
         connected,
     })
 }
+
+#[cfg(test)]
+pub(super) mod tests {
+    use super::*;
+    use crate::classify::classify;
+    use crate::io::parse_quadric;
+    use crate::param::parameterize;
+    use qsic_algebra::testing::SplitMix;
+
+    /// `Mᵀ(αA + βB)M`, `Mᵀ(γA + δB)M` for a random invertible `M` with entries in `[−3, 3]`
+    /// and `αδ ≠ βγ`, and `M⁻¹`: a point `X` of the curve of `A`, `B` is `M⁻¹X` on the new one.
+    pub(crate) fn disguise(
+        a: &Quadric,
+        b: &Quadric,
+        rng: &mut SplitMix,
+    ) -> (Quadric, Quadric, Matrix<RBig>) {
+        let mut small = || RBig::from(rng.int(-3, 3));
+        let (m, inverse) = loop {
+            let m = Matrix::from_fn(4, 4, |_, _| small());
+            if let Some(inv) = m.inverse() {
+                break (m, inv);
+            }
+        };
+        let [al, be, ga, de] = loop {
+            let c = [small(), small(), small(), small()];
+            if &c[0] * &c[3] != &c[1] * &c[2] {
+                break c;
+            }
+        };
+        let congruent = |x: &RBig, y: &RBig| {
+            let n = |k: usize, l: usize| x * &a.matrix()[k][l] + y * &b.matrix()[k][l];
+            let out: [[RBig; 4]; 4] = std::array::from_fn(|i| {
+                std::array::from_fn(|j| {
+                    let mut acc = RBig::ZERO;
+                    for k in 0..4 {
+                        for l in 0..4 {
+                            acc += &m[(k, i)] * n(k, l) * &m[(l, j)];
+                        }
+                    }
+                    acc
+                })
+            });
+            Quadric::from_matrix(out).unwrap()
+        };
+        (congruent(&al, &be), congruent(&ga, &de), inverse)
+    }
+
+    /// `M·p` as a primitive integer vector.
+    pub(crate) fn mapped(m: &Matrix<RBig>, p: &[RBig; 4]) -> [RBig; 4] {
+        primitive(&m.mul_vec(p))
+    }
+
+    /// `P` is on both quadrics and singular there: `AP` and `BP` proportional.
+    fn assert_singular_point(a: &Quadric, b: &Quadric, p: &[RBig; 4]) {
+        let (am, bm) = (a.matrix(), b.matrix());
+        assert!(
+            form(am, p, p).is_zero() && form(bm, p, p).is_zero(),
+            "{p:?} off the curve"
+        );
+        let grad = |m: &[[RBig; 4]; 4]| -> Vec<RBig> {
+            (0..4)
+                .map(|i| (0..4).fold(RBig::ZERO, |acc, j| acc + &m[i][j] * &p[j]))
+                .collect()
+        };
+        let (ga, gb) = (grad(am), grad(bm));
+        for i in 0..4 {
+            for j in 0..4 {
+                assert!(
+                    (&ga[i] * &gb[j] - &ga[j] * &gb[i]).is_zero(),
+                    "gradients at {p:?}"
+                );
+            }
+        }
+    }
+
+    fn pair(a: &str, b: &str) -> (Quadric, Quadric) {
+        (parse_quadric(a).unwrap(), parse_quadric(b).unwrap())
+    }
+
+    #[test]
+    fn vivianis_curve_crosses_itself_where_sphere_and_cylinder_touch() {
+        let (a, b) = pair("x^2+y^2+z^2-4", "(x-1)^2+y^2-1");
+        let sq = parameterize_singular_quartic(&a, &b).unwrap();
+        assert_eq!(sq.point, [2, 0, 0, 1].map(RBig::from));
+        assert_eq!(sq.kind, SingularPointKind::Crunode);
+        assert_singular_point(&a, &b, &sq.point);
+        let c = parameterize(&a, &b).unwrap();
+        assert_eq!(c.classification.case, Some(5));
+        let param = c.components[0].param.as_ref().unwrap();
+        assert!(param.lies_on(a.matrix()) && param.lies_on(b.matrix()));
+        assert_eq!((c.pieces.len(), c.connected.len()), (1, 1));
+    }
+
+    /// A cone `x² + y² = z²` and the sphere through its apex with centre `(s, 0, 1)`: the
+    /// sphere's tangent plane at the apex, `z = −s·x`, cuts the cone in `y² = (s² − 1)x²`,
+    /// the tangent lines of the curve there: two real lines for `s² > 1` (crunode), a
+    /// double line for `s² = 1` (cusp), none for `s² < 1` (acnode, plus a real loop).
+    #[test]
+    fn a_sphere_through_the_apex_of_a_cone_meets_it_in_a_node_or_a_cusp() {
+        let cone = parse_quadric("x^2+y^2-z^2").unwrap();
+        let cases = [
+            ("2", SingularPointKind::Crunode, 5, 1),
+            ("1", SingularPointKind::Cusp, 11, 1),
+            ("1/2", SingularPointKind::Acnode, 6, 2),
+            ("-3/2", SingularPointKind::Crunode, 5, 1),
+        ];
+        for (s, kind, case, pieces) in cases {
+            let sphere = parse_quadric(&format!("x^2+y^2+z^2-2*({s})*x-2*z")).unwrap();
+            let sq = parameterize_singular_quartic(&cone, &sphere).unwrap();
+            assert_eq!(sq.point, [0, 0, 0, 1].map(RBig::from), "s = {s}");
+            assert_eq!(sq.kind, kind, "s = {s}");
+            assert_singular_point(&cone, &sphere, &sq.point);
+            let c = parameterize(&cone, &sphere).unwrap();
+            assert_eq!(c.classification.case, Some(case), "s = {s}");
+            assert_eq!(c.pieces.len(), pieces, "s = {s}");
+            assert_eq!(c.singular_points[0].kind, kind);
+        }
+    }
+
+    /// The representatives of cases 5–8 and 11 (cases.md), disguised by random projective
+    /// maps and pencil bases: the singular point moves with the map, its kind stays, and
+    /// the quartic's parameterization lies on the disguised quadrics.
+    #[test]
+    fn disguised_singular_quartics_keep_their_singular_point() {
+        let representatives = [
+            (5, "x^2-y^2+z^2+4*y*w", "-3*x^2+y^2+z^2"),
+            (6, "-x^2-z^2+2*y*w", "-3*x^2+y^2-z^2"),
+            (7, "x^2+z^2+2*y*w", "3*x^2+y^2+z^2"),
+            (8, "x*y+z*w", "2*x*y+y^2-z^2+w^2"),
+            (11, "y^2+2*x*z+w^2", "2*y*z+w^2"),
+        ];
+        let mut rng = SplitMix(0x51_6e_67_75_6c_61_72);
+        for (case, a, b) in representatives {
+            let (a, b) = pair(a, b);
+            assert_eq!(classify(&a, &b).case, Some(case));
+            let original = parameterize_singular_quartic(&a, &b).unwrap();
+            assert_singular_point(&a, &b, &original.point);
+            assert_eq!(original.x.is_none(), case == 7);
+            for k in 0..3 {
+                let (da, db, inverse) = disguise(&a, &b, &mut rng);
+                let tag = format!("case {case}, disguise {k}");
+                assert_eq!(classify(&da, &db).case, Some(case), "{tag}");
+                let sq = parameterize_singular_quartic(&da, &db).unwrap();
+                assert_eq!(sq.point, mapped(&inverse, &original.point), "{tag}");
+                assert_eq!(sq.kind, original.kind, "{tag}");
+                let c = parameterize(&da, &db).unwrap();
+                if let Some(p) = &c.components[0].param {
+                    assert!(p.lies_on(da.matrix()) && p.lies_on(db.matrix()), "{tag}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn primitive_vectors_are_integral_coprime_and_positive_first() {
+        let r = |n: i64, d: i64| RBig::from(n) / RBig::from(d);
+        let v = primitive(&[r(0, 1), r(-2, 3), r(4, 9), r(0, 1)]);
+        assert_eq!(v, [0, 3, -2, 0].map(RBig::from));
+        assert_eq!(
+            primitive(&[r(5, 1), r(0, 1), r(0, 1), r(10, 1)]),
+            [1, 0, 0, 2].map(RBig::from)
+        );
+    }
+}
