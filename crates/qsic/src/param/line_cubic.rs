@@ -19,7 +19,8 @@
 
 use super::curve::{self, Arc, Component, ComponentParam, Curve, ParamRange, RealPiece, Sheet};
 use super::nodal::{
-    check_against_class, form, primitive, rational_point, vertex, without_common_factor,
+    check_against_class, form, primitive, rational_point, segre_blocks, vertex,
+    without_common_factor,
 };
 use super::{integer_matrix, member, Point};
 use crate::classify::{analyze_pencil, Classification, ComponentKind, SingularPointKind};
@@ -147,8 +148,7 @@ fn form_along(m: &[[RBig; 4]; 4], x: &[RBig; 4], y0: &[RBig; 4], y1: &[RBig; 4])
 /// Segre `[22]` or `[4]`), with their meeting points.
 ///
 /// # Errors
-/// [`Error::Unsupported`] when `det(λA − B)` is not of the form `c·g²` with `g` square-free
-/// quadratic (`[22]`) or `c·(λ − λ₀)⁴` (`[4]`); [`Error::Algebra`] for an internal
+/// [`Error::Unsupported`] for Segre types other than `[22]` and `[4]`; [`Error::Algebra`] for an internal
 /// inconsistency (the line or the cubic off a quadric, the two routes to the meeting points
 /// disagreeing).
 ///
@@ -167,6 +167,12 @@ fn form_along(m: &[[RBig; 4]; 4], x: &[RBig; 4], y0: &[RBig; 4], y1: &[RBig; 4])
 pub fn parameterize_line_and_cubic(a: &Quadric, b: &Quadric) -> Result<LineAndCubic, Error> {
     let analysis = analyze_pencil(a, b)
         .ok_or_else(|| Error::Unsupported("a line and a cubic need a regular pencil".into()))?;
+    let blocks = segre_blocks(&analysis);
+    if blocks != [vec![2], vec![2]] && blocks != [vec![4]] {
+        return Err(Error::Unsupported(format!(
+            "Segre blocks {blocks:?}: not a line and a cubic ([22] or [4])"
+        )));
+    }
     let f = &analysis.characteristic;
     let (am, bm) = (integer_matrix(a), integer_matrix(b));
     let g = f.squarefree_part();
@@ -436,6 +442,26 @@ mod tests {
         let curve = parameterize(&a, &b).unwrap();
         assert_eq!(curve.classification.case, Some(12));
         assert_eq!(curve.singular_points.len(), 1);
+    }
+
+    /// Other Segre types are refused, not misread: a nodal quartic ([211]), two conics
+    /// ([(11)(11)], the printed case-10 pair of ERRATA 1), a smooth quartic.
+    #[test]
+    fn other_classes_are_not_lines_and_cubics() {
+        for (a, b) in [
+            ("x^2+y^2+z^2-4", "(x-1)^2+y^2-1"),
+            ("x*w+y*z", "x*z-y*w"),
+            ("x^2+y^2+z^2-w^2", "2*x^2+4*y^2-w^2"),
+        ] {
+            let (a, b) = pair(a, b);
+            let r = parameterize_line_and_cubic(&a, &b);
+            assert!(matches!(r, Err(Error::Unsupported(_))), "{r:?}");
+            let r = crate::param::parameterize_singular_quartic(&a, &b);
+            assert_eq!(
+                matches!(r, Err(Error::Unsupported(_))),
+                classify(&a, &b).case != Some(5)
+            );
+        }
     }
 
     /// The representatives of cases 9, 10 (ERRATA 1) and 12, disguised: the line and the

@@ -154,14 +154,22 @@ fn node_kind(c: &Poly<Quadratic>) -> Result<SingularPointKind, Error> {
     })
 }
 
-/// The multiple root of a regular pencil whose member there has rank 3.
-fn multiple_root(analysis: &PencilAnalysis) -> Result<&PencilRoot, Error> {
-    analysis
-        .real_roots
-        .iter()
-        .find(|r| r.multiplicity >= 2)
-        .filter(|r| r.blocks.len() == 1)
-        .ok_or_else(|| Error::Algebra("no multiple real root with a cone member".into()))
+/// The Segre structure of every root of the pencil, real and complex: block sizes,
+/// largest first.
+pub(super) fn segre_blocks(analysis: &PencilAnalysis) -> Vec<Vec<u8>> {
+    let real = analysis.real_roots.iter().map(|r| r.blocks.clone());
+    let mut all: Vec<Vec<u8>> = real.chain(analysis.complex_roots.iter().cloned()).collect();
+    all.sort();
+    all
+}
+
+/// The multiple root of a pencil of Segre type `[211]` or `[31]` (one multiple root, one
+/// Jordan block there: its member has rank 3).
+fn multiple_root(analysis: &PencilAnalysis) -> Option<&PencilRoot> {
+    let blocks = segre_blocks(analysis);
+    let shape_ok = blocks == [vec![1], vec![1], vec![2]] || blocks == [vec![1], vec![3]];
+    let root = analysis.real_roots.iter().find(|r| r.multiplicity >= 2)?;
+    shape_ok.then_some(root)
 }
 
 /// The singular point of the intersection of `a` and `b` and the rational parameterization
@@ -169,7 +177,7 @@ fn multiple_root(analysis: &PencilAnalysis) -> Result<&PencilRoot, Error> {
 /// 11: `det(λA − B)` has one multiple root, with one Jordan block).
 ///
 /// # Errors
-/// [`Error::Unsupported`] for other classes; [`Error::Algebra`] for an internal
+/// [`Error::Unsupported`] for other Segre types; [`Error::Algebra`] for an internal
 /// inconsistency (a vertex off the curve, a ruling on both quadrics) or when a conic's
 /// rational point cannot be found within the factoring bounds.
 ///
@@ -188,8 +196,9 @@ fn multiple_root(analysis: &PencilAnalysis) -> Result<&PencilRoot, Error> {
 pub fn parameterize_singular_quartic(a: &Quadric, b: &Quadric) -> Result<SingularQuartic, Error> {
     let analysis = analyze_pencil(a, b)
         .ok_or_else(|| Error::Unsupported("a singular quartic needs a regular pencil".into()))?;
-    let root = multiple_root(&analysis)
-        .map_err(|_| Error::Unsupported("not a singular irreducible quartic".into()))?;
+    let root = multiple_root(&analysis).ok_or_else(|| {
+        Error::Unsupported("not a singular irreducible quartic (Segre [211] or [31])".into())
+    })?;
     let lambda = rational_root(root)?;
     let (am, bm) = (integer_matrix(a), integer_matrix(b));
     let s0 = member(&am, &bm, lambda.as_ref());
@@ -478,6 +487,69 @@ pub(super) mod tests {
                     assert!(p.lies_on(da.matrix()) && p.lies_on(db.matrix()), "{tag}");
                 }
             }
+        }
+    }
+
+    /// The binary quadratic `c(u)` (a degree drop is a root at ∞): two real roots, a double
+    /// one, a conjugate pair; zero is a ruling on the curve.
+    #[test]
+    fn node_kinds_from_the_parameters_of_the_node() {
+        let c = |v: &[i64]| {
+            Poly::new(
+                v.iter()
+                    .map(|&x| Quadratic::from_int(&IBig::from(x)))
+                    .collect(),
+            )
+        };
+        let r2 = Quadratic::sqrt(&IBig::from(2));
+        use SingularPointKind::*;
+        for (poly, kind) in [
+            (c(&[-1, 0, 1]), Crunode),
+            (c(&[0, 1]), Crunode), // u = 0 and u = ∞
+            (c(&[1, 2, 1]), Cusp),
+            (c(&[1]), Cusp), // a double root at ∞
+            (c(&[1, 0, 1]), Acnode),
+            (
+                Poly::new(vec![
+                    Quadratic::rational(RBig::ONE),
+                    r2.clone(),
+                    Quadratic::rational(RBig::ONE),
+                ]),
+                Acnode,
+            ),
+            (
+                Poly::new(vec![
+                    Quadratic::rational(RBig::ONE),
+                    r2.scale(&RBig::from(2)),
+                    Quadratic::rational(RBig::from(2)),
+                ]),
+                Cusp,
+            ),
+        ] {
+            assert_eq!(node_kind(&poly).unwrap(), kind, "{poly}");
+        }
+        assert!(node_kind(&Poly::zero()).is_err());
+    }
+
+    /// The class's singular points must be found, with their kinds and counts.
+    #[test]
+    fn singular_points_are_checked_against_the_class() {
+        let (a, b) = pair("x^2+y^2+z^2-4", "(x-1)^2+y^2-1");
+        let class = classify(&a, &b);
+        let at = |kind| curve::SingularPoint {
+            kind,
+            point: rational_point(&[2, 0, 0, 1].map(RBig::from)),
+        };
+        assert!(check_against_class(&class, &[at(SingularPointKind::Crunode)]).is_ok());
+        for wrong in [
+            vec![],
+            vec![at(SingularPointKind::Acnode)],
+            vec![
+                at(SingularPointKind::Crunode),
+                at(SingularPointKind::Crunode),
+            ],
+        ] {
+            assert!(check_against_class(&class, &wrong).is_err());
         }
     }
 
