@@ -22,7 +22,7 @@ use super::nodal::{
     check_against_class, form, primitive, rational_point, segre_blocks, vertex,
     without_common_factor,
 };
-use super::{integer_matrix, member, Point};
+use super::{integer_matrix, member};
 use crate::classify::{analyze_pencil, Classification, ComponentKind, SingularPointKind};
 use crate::error::Error;
 use crate::quadric::Quadric;
@@ -327,8 +327,7 @@ pub(super) fn line_and_cubic_curve(
                 .iter()
                 .map(|p| curve::SingularPoint {
                     kind: SingularPointKind::Crunode,
-                    point: std::array::from_fn(|i| curve::from_quadratic(&p[i], field.as_ref()))
-                        as Point,
+                    point: std::array::from_fn(|i| curve::from_quadratic(&p[i], field.as_ref())),
                 })
                 .collect()
         }
