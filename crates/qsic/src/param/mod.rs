@@ -14,12 +14,16 @@
 //! `u` runs over ℝ ∪ {∞}: `s` is a binary quartic, its degree drop a root at `u = ∞`.
 
 pub mod curve;
+mod line_cubic;
+mod nodal;
 mod surface;
 
 pub use curve::{
     Arc, Component, ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue, Point,
     PointPoly, RealPiece, Sheet, SingularPoint,
 };
+pub use line_cubic::{parameterize_line_and_cubic, LineAndCubic, Meeting};
+pub use nodal::{parameterize_singular_quartic, SingularQuartic};
 pub use surface::{PolyVector, RuledParameterization};
 
 use crate::classify::{analyze_pencil, classify, Classification, ComponentKind, PencilKind};
@@ -217,6 +221,12 @@ pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
             let levin = parameterize_smooth_quartic(a, b)?;
             levin_curve(classification, &levin)
         }
+        (PencilKind::Regular, Some(5..=8 | 11)) => {
+            nodal::singular_quartic_curve(classification, a, b)
+        }
+        (PencilKind::Regular, Some(9 | 10 | 12)) => {
+            line_cubic::line_and_cubic_curve(classification, a, b)
+        }
         (PencilKind::Regular, Some(case)) => Err(Error::Unsupported(format!(
             "the curve of case {case} (not yet)"
         ))),
@@ -335,13 +345,17 @@ fn levin_curve(
 }
 
 /// The primitive integer matrix of `q` (a positive multiple of its matrix), as rationals.
-fn integer_matrix(q: &Quadric) -> [[RBig; 4]; 4] {
+pub(super) fn integer_matrix(q: &Quadric) -> [[RBig; 4]; 4] {
     let m = q.integer_matrix().entries();
     std::array::from_fn(|i| std::array::from_fn(|j| RBig::from(m[i][j].clone())))
 }
 
 /// The member `λA − B` (`A` for `None`).
-fn member(a: &[[RBig; 4]; 4], b: &[[RBig; 4]; 4], lambda: Option<&RBig>) -> [[RBig; 4]; 4] {
+pub(super) fn member(
+    a: &[[RBig; 4]; 4],
+    b: &[[RBig; 4]; 4],
+    lambda: Option<&RBig>,
+) -> [[RBig; 4]; 4] {
     std::array::from_fn(|i| {
         std::array::from_fn(|j| match lambda {
             Some(l) => l * &a[i][j] - &b[i][j],
