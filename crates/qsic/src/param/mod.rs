@@ -14,6 +14,7 @@
 //! `u` runs over ℝ ∪ {∞}: `s` is a binary quartic, its degree drop a root at `u = ∞`.
 
 pub mod curve;
+mod planar;
 mod surface;
 
 pub use curve::{
@@ -217,6 +218,10 @@ pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
             let levin = parameterize_smooth_quartic(a, b)?;
             levin_curve(classification, &levin)
         }
+        (PencilKind::Regular, Some(13..=35)) | (PencilKind::Singular, _) => {
+            planar::plane_pair_curve(classification, a, b)
+        }
+        (PencilKind::Single, _) => Ok(planar::single_curve(classification, a)),
         (PencilKind::Regular, Some(case)) => Err(Error::Unsupported(format!(
             "the curve of case {case} (not yet)"
         ))),
