@@ -448,7 +448,6 @@ pub(crate) fn plane_pair_curve(
             qv.as_ref(),
             v_in_q,
             v_component,
-            delta.as_ref(),
         );
     }
     Ok(curve)
@@ -699,7 +698,6 @@ fn meet(
     qv: Option<&[Quadratic; 3]>,
     v_in_q: bool,
     v_component: Option<usize>,
-    delta: Option<&IBig>,
 ) {
     let mut points: Vec<Meeting> = Vec::new();
     let add = |points: &mut Vec<Meeting>, m: Meeting| {
