@@ -225,3 +225,31 @@ fn single_quadric_is_one_surface_component() {
     let c = curve("x^2+y^2+z^2+1", "x^2+y^2+z^2+1");
     assert!(!c.components[0].real);
 }
+
+/// Singular pencils with multiple components (QI's examples): the multiplicities add up to
+/// four, and a common plane absorbs the lines inside it.
+#[test]
+fn singular_pencils_count_multiple_lines_and_common_planes() {
+    let cases: [(&str, &str, &[(&str, u32, bool)]); 6] = [
+        ("x*z+y^2", "y*z", &[("line", 1, true), ("line", 3, true)]),
+        ("y^2", "x*y+z^2", &[("line", 4, true)]),
+        ("x^2", "y^2", &[("line", 4, true)]),
+        ("x*y", "x^2-y^2", &[("line", 4, true)]),
+        ("x*y", "x*z", &[("line", 1, true), ("plane", 1, true)]),
+        ("x*y", "y^2", &[("plane", 1, true)]),
+    ];
+    for (a, b, want) in cases {
+        let c = curve(a, b);
+        assert_eq!(components(&c), want, "{a} ∩ {b}");
+        let lines = want.iter().filter(|k| k.0 == "line").count();
+        assert_eq!(c.pieces.len(), lines, "{a} ∩ {b}");
+    }
+    // the plane x = 0 of x·y and x·z
+    let c = curve("x*y", "x*z");
+    let plane = c
+        .components
+        .iter()
+        .find(|k| k.kind == ComponentKind::Plane)
+        .unwrap();
+    assert!(is_point(plane.plane.as_ref().unwrap(), [1, 0, 0, 0]));
+}

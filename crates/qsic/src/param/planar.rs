@@ -416,6 +416,11 @@ pub(crate) fn plane_pair_curve(
     let has_plane = planes.iter().any(|p| p.rank == 0);
     let mut components: Vec<Component> = Vec::new();
     let mut v_component: Option<usize> = None;
+    let mut v_line = if v_in_q && has_plane {
+        VLine::InPlane
+    } else {
+        VLine::Apart
+    };
     if v_in_q && !has_plane {
         let v = v.as_ref().expect("two planes");
         let ext = Ext::new(None, None);
@@ -427,11 +432,12 @@ pub(crate) fn plane_pair_curve(
             plane: None,
         });
         v_component = Some(0);
+        v_line = VLine::Component(0);
     }
     let other_planes: Vec<Vq> = planes.iter().map(|p| p.l.clone()).collect();
     for (index, plane) in planes.iter_mut().enumerate() {
         let other = (other_planes.len() == 2).then(|| &other_planes[1 - index]);
-        build_plane(plane, other, v_component, delta.as_ref(), &mut components)?;
+        build_plane(plane, other, v_line, delta.as_ref(), &mut components)?;
     }
     let mut curve = Curve {
         classification,
@@ -440,17 +446,29 @@ pub(crate) fn plane_pair_curve(
         pieces: Vec::new(),
         connected: Vec::new(),
     };
-    if !has_plane {
-        meet(
-            &mut curve,
-            &planes,
-            v.as_ref(),
-            qv.as_ref(),
-            v_in_q,
-            v_component,
-        );
-    }
+    // a plane component is a surface: its meeting points are not curve singularities
+    let v = if has_plane { None } else { v.as_ref() };
+    meet(
+        &mut curve,
+        &planes,
+        v,
+        qv.as_ref(),
+        v_in_q,
+        v_component,
+        has_plane,
+    );
     Ok(curve)
+}
+
+/// The line `V = l₁ ∩ l₂` when `Q` vanishes on it.
+#[derive(Clone, Copy)]
+enum VLine {
+    /// Not on `Q`, or a double plane.
+    Apart,
+    /// A component of the curve.
+    Component(usize),
+    /// Inside a plane component.
+    InPlane,
 }
 
 fn push(components: &mut Vec<Component>, c: Component) -> usize {
@@ -472,7 +490,7 @@ fn non_real(kind: ComponentKind, multiplicity: u32) -> Component {
 fn build_plane(
     plane: &mut Plane,
     other: Option<&Vq>,
-    v_component: Option<usize>,
+    v_line: VLine,
     delta: Option<&IBig>,
     components: &mut Vec<Component>,
 ) -> Result<(), Error> {
@@ -491,10 +509,14 @@ fn build_plane(
             plane.comps.push(push(components, c));
         }
         1 => {
-            if let Some(iv) = v_component {
-                components[iv].multiplicity += 2 * m;
-                plane.comps.push(iv);
-                return Ok(());
+            match v_line {
+                VLine::Component(iv) => {
+                    components[iv].multiplicity += 2 * m;
+                    plane.comps.push(iv);
+                    return Ok(());
+                }
+                VLine::InPlane => return Ok(()),
+                VLine::Apart => {}
             }
             let ker = plane.c.kernel();
             let c = if plane.real {
@@ -517,10 +539,12 @@ fn build_plane(
             let kernel_local = dg.p.column(z);
             let kernel = e_cols(&kernel_local);
             plane.kernel = Some(kernel.clone());
-            if let Some(iv) = v_component {
-                // C = V·M: M through the kernel and the point y/v(y)-corrected (module docs)
-                components[iv].multiplicity += m;
-                plane.comps.push(iv);
+            if !matches!(v_line, VLine::Apart) {
+                // C = V·M: m = (2Cy − m(y)·v)/v(y), m(y) = yᵀCy/v(y), for v(y) ≠ 0
+                if let VLine::Component(iv) = v_line {
+                    components[iv].multiplicity += m;
+                    plane.comps.push(iv);
+                }
                 let l2 = other.expect("V lies on two planes");
                 let vform: Vq = (0..3).map(|j| dot(&plane.e.column(j), l2)).collect();
                 let y = (0..3)
@@ -698,6 +722,7 @@ fn meet(
     qv: Option<&[Quadratic; 3]>,
     v_in_q: bool,
     v_component: Option<usize>,
+    has_plane: bool,
 ) {
     let mut points: Vec<Meeting> = Vec::new();
     let add = |points: &mut Vec<Meeting>, m: Meeting| {
@@ -714,7 +739,7 @@ fn meet(
         on_v,
         in_planes_field,
     };
-    for plane in planes {
+    for plane in planes.iter().filter(|_| !has_plane) {
         if let Some(k) = &plane.kernel {
             add(&mut points, at(k.clone(), false, false, true));
         }
@@ -925,5 +950,36 @@ pub(crate) fn single_curve(classification: Classification, q: &Quadric) -> Curve
         singular_points: Vec::new(),
         pieces: Vec::new(),
         connected: Vec::new(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rational_roots_are_found_exactly_among_irrational_ones() {
+        let p = &(&Poly::from_i64s(&[-2, 3]) * &Poly::from_i64s(&[-2, 0, 1]))
+            * &Poly::from_i64s(&[5, 7]);
+        let roots = rational_roots(&p.to_rational());
+        let frac = |n: i64, d: i64| RBig::from_parts_signed(IBig::from(n), IBig::from(d));
+        assert_eq!(roots, [frac(-5, 7), frac(2, 3)]);
+        assert!(rational_roots(&Poly::from_i64s(&[-3, 0, 1]).to_rational()).is_empty());
+    }
+
+    /// The primitive elements of ℚ(√δ, √r): the images of √δ and √r square to δ and r and
+    /// are positive, for a rational `r`, for `r = a + b√δ` with `b > 0` and with `b < 0`
+    /// (where the conjugate `r̄ > r` is positive too).
+    #[test]
+    fn biquadratic_fields_hold_the_positive_square_roots() {
+        let two = IBig::from(2);
+        let r = |a: i64, b: i64| Quadratic::new(RBig::from(a), RBig::from(b), two.clone()).unwrap();
+        for radicand in [r(3, 0), r(1, 1), r(3, -1), r(5, 3)] {
+            let ext = Ext::new(Some(&two), Some(&radicand));
+            let (sd, root) = (ext.sqrt_delta.clone().unwrap(), ext.root.clone().unwrap());
+            assert_eq!(sd.mul(&sd), Number::from_int(&two));
+            assert_eq!(root.mul(&root), ext.embed(&radicand), "{radicand}");
+            assert_eq!((sd.sign(), root.sign()), (Sign::Positive, Sign::Positive));
+        }
     }
 }
