@@ -20,8 +20,11 @@ fn curve(a: &str, b: &str) -> Curve {
     c
 }
 
+/// `(kind, multiplicity, real)` of a component.
+type Kind = (&'static str, u32, bool);
+
 /// `(kind, multiplicity, real)` of every component, sorted.
-fn components(c: &Curve) -> Vec<(&'static str, u32, bool)> {
+fn components(c: &Curve) -> Vec<Kind> {
     let mut v: Vec<_> = c
         .components
         .iter()
@@ -230,7 +233,7 @@ fn single_quadric_is_one_surface_component() {
 /// four, and a common plane absorbs the lines inside it.
 #[test]
 fn singular_pencils_count_multiple_lines_and_common_planes() {
-    let cases: [(&str, &str, &[(&str, u32, bool)]); 6] = [
+    let cases: [(&str, &str, &[Kind]); 6] = [
         ("x*z+y^2", "y*z", &[("line", 1, true), ("line", 3, true)]),
         ("y^2", "x*y+z^2", &[("line", 4, true)]),
         ("x^2", "y^2", &[("line", 4, true)]),
