@@ -107,7 +107,8 @@ fn check(curve: &Curve, a: &Quadric, b: &Quadric) -> Result<(), String> {
                     comp.kind.key()
                 ));
             }
-            None if comp.real => {
+            // a plane or a whole quadric is a surface: no curve parameterization
+            None if comp.real && comp.kind.degree().is_some() => {
                 return Err(format!("real component {i} without parameterization"))
             }
             _ => {}
@@ -182,7 +183,7 @@ fn every_curve_of_the_corpora_lies_on_both_quadrics_and_has_the_class_topology()
         unsupported.len()
     );
     // the supported classes grow: this bound only ever rises
-    assert!(done >= 99, "{done} curves checked");
+    assert!(done >= 262, "{done} curves checked");
 }
 
 /// `TᵀQT` for the affine map `T = [[M, t], [0, 1]]`.

@@ -1,11 +1,13 @@
 //! Levin's parameterization of the intersection curve, exactly (enhanced-Levin paper, §1.3,
-//! Appendix A, Theorem 12). First slice: nonsingular quartics (cases 1–4).
+//! Appendix A, Theorem 12): nonsingular quartics (cases 1–4) here, curves on a plane pair
+//! of the pencil (cases 13–35, singular pencils) and the single quadric in `planar`.
 //!
 //! | entry point | what |
 //! |---|---|
 //! | [`parameterize_smooth_quartic`] | surface `S`, its ruling `b + v·d`, `p(u) = a(u) ± d(u)√s(u)`, the real roots of `s` |
 //! | [`LevinParameterization::real_components`] | Theorem 12: the number of real components from the roots of `s` |
 //! | [`parameterize`] | the whole curve as exact [`Curve`] components, real pieces and their connection |
+//! | `planar::plane_pair_curve` | conics and lines: a member of rank ≤ 2 split into its planes, each cut by another member |
 //!
 //! With `S` a real ruled member of the pencil parameterized as `q(u, v) = b(u) + v·d(u)`,
 //! substituting `q` into a second member `Q` gives `c₂v² + 2c₁v + c₀ = 0`, `c₂ = dᵀQd`,
@@ -16,6 +18,7 @@
 pub mod curve;
 mod line_cubic;
 mod nodal;
+mod planar;
 mod surface;
 
 pub use curve::{
@@ -227,6 +230,10 @@ pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
         (PencilKind::Regular, Some(9 | 10 | 12)) => {
             line_cubic::line_and_cubic_curve(classification, a, b)
         }
+        (PencilKind::Regular, Some(13..=35)) | (PencilKind::Singular, _) => {
+            planar::plane_pair_curve(classification, a, b)
+        }
+        (PencilKind::Single, _) => Ok(planar::single_curve(classification, a)),
         (PencilKind::Regular, Some(case)) => Err(Error::Unsupported(format!(
             "the curve of case {case} (not yet)"
         ))),

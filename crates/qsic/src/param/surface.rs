@@ -107,7 +107,7 @@ fn radicand_of<'a>(xs: impl IntoIterator<Item = &'a Quadratic>) -> Option<IBig> 
 
 /// `√x` inside ℚ(√δ₀) (or ℚ if `delta0` is `None`, where any rational `x > 0` gets the
 /// field ℚ(√sqf(x))), `None` when it lies in neither: a biquadratic field would be needed.
-fn sqrt_in_field(x: &Quadratic, delta0: Option<&IBig>) -> Option<Quadratic> {
+pub(crate) fn sqrt_in_field(x: &Quadratic, delta0: Option<&IBig>) -> Option<Quadratic> {
     if let Some(r) = x.as_rational() {
         let (n, d) = (r.numerator().clone(), IBig::from(r.denominator().clone()));
         let nd = &n * &d; // √(n/d) = √(n·d)/d
