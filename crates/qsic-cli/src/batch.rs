@@ -20,7 +20,7 @@ use crate::input::{quadric_from_form, JsonForm};
 use crate::line::read_line;
 use crate::output::{write_classification_fields, write_json_string};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use qsic::classify_allowing_zero;
+use qsic::{classify_allowing_zero, Quadric};
 use rayon::prelude::*;
 use serde_json::Value;
 use std::io::{self, BufRead, BufReader, Read, Write};
@@ -214,10 +214,35 @@ fn open_record(id: Option<&str>) -> String {
     out
 }
 
+/// What a batch computes for one pair of quadrics (`None`: the zero form): the fields of
+/// the result object, without braces and `id` (written after `"id":…,`), or the message of
+/// an error line.
+pub trait Answer: Sync {
+    /// The fields or the error message.
+    fn answer(&self, a: Option<&Quadric>, b: Option<&Quadric>) -> Result<String, String>;
+}
+
+/// `qsic classify`: the classification's fields.
+pub struct Classify;
+
+impl Answer for Classify {
+    fn answer(&self, a: Option<&Quadric>, b: Option<&Quadric>) -> Result<String, String> {
+        let c = classify_allowing_zero(a, b).map_err(|e| format!("A and B: both are zero: {e}"))?;
+        let mut out = String::with_capacity(512);
+        write_classification_fields(&mut out, &c);
+        Ok(out)
+    }
+}
+
 /// The output line for one input line (without newline) and whether it succeeded.
 /// Never panics: a panic inside the classifier becomes an error line.
 pub fn answer_line(line: &RawLine) -> (String, bool) {
-    match classify_line(line) {
+    answer_line_with(line, &Classify)
+}
+
+/// [`answer_line`] for any [`Answer`].
+pub fn answer_line_with<A: Answer + ?Sized>(line: &RawLine, answer: &A) -> (String, bool) {
+    match classify_line(line, answer) {
         Ok(text) => (text, true),
         Err(failure) => {
             let mut out = open_record(failure.id);
@@ -242,7 +267,10 @@ fn not_an_object(text: &str) -> LineFailure<'static> {
     }
 }
 
-fn classify_line(line: &RawLine) -> Result<String, LineFailure<'_>> {
+fn classify_line<'a, A: Answer + ?Sized>(
+    line: &'a RawLine,
+    answer: &A,
+) -> Result<String, LineFailure<'a>> {
     let bytes = match &line.content {
         Content::Text(bytes) => bytes,
         Content::TooLong { bytes } => {
@@ -273,12 +301,10 @@ fn classify_line(line: &RawLine) -> Result<String, LineFailure<'_>> {
     };
     let a = quadric("A", &record.a)?;
     let b = quadric("B", &record.b)?;
-    let outcome = panic::catch_unwind(AssertUnwindSafe(|| {
-        classify_allowing_zero(a.as_ref(), b.as_ref())
-    }));
-    let classification = match outcome {
-        Ok(Ok(c)) => c,
-        Ok(Err(e)) => return Err(fail(format!("A and B: both are zero: {e}"))),
+    let outcome = panic::catch_unwind(AssertUnwindSafe(|| answer.answer(a.as_ref(), b.as_ref())));
+    let fields = match outcome {
+        Ok(Ok(fields)) => fields,
+        Ok(Err(message)) => return Err(fail(message)),
         Err(payload) => {
             let what = payload
                 .downcast_ref::<&str>()
@@ -286,12 +312,12 @@ fn classify_line(line: &RawLine) -> Result<String, LineFailure<'_>> {
                 .or_else(|| payload.downcast_ref::<String>().cloned())
                 .unwrap_or_default();
             return Err(fail(format!(
-                "internal error in the classifier (a bug): {what}"
+                "internal error (a bug): {what}"
             )));
         }
     };
     let mut out = open_record(id);
-    write_classification_fields(&mut out, &classification);
+    out.push_str(&fields);
     out.push('}');
     Ok(out)
 }
@@ -324,10 +350,19 @@ pub enum BatchError {
 ///
 /// # Errors
 /// [`BatchError`] if reading or writing fails; every chunk read before is answered.
-pub fn run<R: Read, W: Write>(
+pub fn run<R: Read, W: Write>(input: R, output: W, progress: bool) -> Result<Summary, BatchError> {
+    run_with(input, output, progress, &Classify)
+}
+
+/// [`run`] for any [`Answer`] (`qsic param`, `qsic sample`): the same lines, order, errors.
+///
+/// # Errors
+/// As [`run`].
+pub fn run_with<R: Read, W: Write, A: Answer + ?Sized>(
     input: R,
     mut output: W,
     progress: bool,
+    answer: &A,
 ) -> Result<Summary, BatchError> {
     let mut reader = LineReader::new(input, MAX_LINE_BYTES);
     let bar = progress_bar(progress);
@@ -358,7 +393,10 @@ pub fn run<R: Read, W: Write>(
                 break;
             }
         }
-        let answers: Vec<(String, bool)> = chunk.par_iter().map(answer_line).collect();
+        let answers: Vec<(String, bool)> = chunk
+            .par_iter()
+            .map(|line| answer_line_with(line, answer))
+            .collect();
         for (text, ok) in &answers {
             output
                 .write_all(text.as_bytes())

@@ -6,9 +6,13 @@
 //! | [`input`] | reading a quadric from an argument or a JSON value, exactly |
 //! | [`output`] | the JSON result object ([`output::classification_to_json`]) and the text report |
 //! | [`mod@line`] | the fields of one batch line, borrowed from its text (a strict fast reader, then `serde_json`) |
-//! | [`batch`] | `--batch`: bounded, ordered, parallel JSON Lines processing |
+//! | [`batch`] | `--batch`: bounded, ordered, parallel JSON Lines processing, for any [`batch::Answer`] |
+//! | [`param`] | `qsic param`: the exact curve as JSON and text |
+//! | [`mod@sample`] | `qsic sample`: real points as JSON, CSV, OBJ |
 
 pub mod batch;
 pub mod input;
 pub mod line;
 pub mod output;
+pub mod param;
+pub mod sample;

@@ -14,6 +14,7 @@
 //! `u` runs over ℝ ∪ {∞}: `s` is a binary quartic, its degree drop a root at `u = ∞`.
 
 pub mod curve;
+pub mod expr;
 pub mod sample;
 mod surface;
 

@@ -72,6 +72,34 @@ impl Default for SampleOptions {
     }
 }
 
+impl SampleOptions {
+    /// The chart, checked.
+    fn chart(&self) -> Result<Chart, Error> {
+        let drop = self
+            .chart
+            .iter()
+            .rposition(|c| *c != RBig::ZERO)
+            .ok_or_else(|| Error::InvalidShape("the chart plane is zero".into()))?;
+        Ok(Chart {
+            exact: self.chart.clone(),
+            h: self.chart.clone().map(|c| c.to_f64().value()),
+            drop,
+        })
+    }
+
+    /// The affine coordinates of `x` in the chart (module docs), `None` at infinity or for
+    /// a zero chart.
+    ///
+    /// ```
+    /// use qsic::param::sample::SampleOptions;
+    /// assert_eq!(SampleOptions::default().affine_coordinates(&[1.0, 2.0, 3.0, 2.0]), Some([0.5, 1.0, 1.5]));
+    /// assert_eq!(SampleOptions::default().affine_coordinates(&[1.0, 2.0, 3.0, 0.0]), None);
+    /// ```
+    pub fn affine_coordinates(&self, x: &[f64; 4]) -> Option<[f64; 3]> {
+        self.chart().ok()?.affine(x)
+    }
+}
+
 /// A piece in the affine chart.
 #[derive(Clone, Debug, PartialEq)]
 pub struct AffinePiece {
@@ -139,16 +167,7 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
     if options.tolerance.is_some_and(|t| t.is_nan() || t <= 0.0) {
         return Err(Error::InvalidShape("the tolerance must be positive".into()));
     }
-    let drop = options
-        .chart
-        .iter()
-        .rposition(|c| *c != RBig::ZERO)
-        .ok_or_else(|| Error::InvalidShape("the chart plane is zero".into()))?;
-    let chart = Chart {
-        exact: options.chart.clone(),
-        h: options.chart.clone().map(|c| c.to_f64().value()),
-        drop,
-    };
+    let chart = options.chart()?;
     let mut budget = MAX_POINTS;
     let mut pieces = Vec::with_capacity(curve.pieces.len());
     for piece in &curve.pieces {
