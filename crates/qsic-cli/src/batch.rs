@@ -311,9 +311,7 @@ fn classify_line<'a, A: Answer + ?Sized>(
                 .map(|s| s.to_string())
                 .or_else(|| payload.downcast_ref::<String>().cloned())
                 .unwrap_or_default();
-            return Err(fail(format!(
-                "internal error (a bug): {what}"
-            )));
+            return Err(fail(format!("internal error (a bug): {what}")));
         }
     };
     let mut out = open_record(id);

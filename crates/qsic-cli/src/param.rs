@@ -247,7 +247,11 @@ pub fn human_report(json: &ParamJson) -> String {
         }
     }
     for p in &json.singular_points {
-        out.push_str(&format!("singular point ({}): ({})\n", p.kind, p.point.join(", ")));
+        out.push_str(&format!(
+            "singular point ({}): ({})\n",
+            p.kind,
+            p.point.join(", ")
+        ));
     }
     out
 }

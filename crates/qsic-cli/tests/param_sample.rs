@@ -39,11 +39,44 @@ fn matrix(text: &str) -> [[RBig; 4]; 4] {
     q.matrix().clone()
 }
 
+/// Reads a polynomial in `u` whose coefficients may hold `sqrt(n)`, read as the variable `t`.
 fn read_u(text: &str) -> MPoly {
-    let f = parse_rational_function(text, &[Variable::U]).unwrap_or_else(|e| panic!("{text}: {e}"));
+    let replaced = match radicand(text) {
+        Some(n) => text.replace(&format!("sqrt({n})"), "t"),
+        None => text.to_string(),
+    };
+    let f = parse_rational_function(&replaced, &[Variable::U, Variable::T])
+        .unwrap_or_else(|e| panic!("{text}: {e}"));
     assert!(f.is_polynomial(), "{text}");
-    let den = f.denominator().as_constant().expect("a constant denominator");
+    let den = f
+        .denominator()
+        .as_constant()
+        .expect("a constant denominator");
     f.numerator().scale(&(RBig::ONE / den))
+}
+
+/// The `n` of the first `sqrt(n)` in `text`.
+fn radicand(text: &str) -> Option<String> {
+    let start = text.find("sqrt(")? + 5;
+    let end = start + text[start..].find(')')?;
+    Some(text[start..end].to_string())
+}
+
+/// Whether `p(u, t)` vanishes when `t = √n`: its even and odd parts in `t` modulo `t² − n`.
+fn vanishes_at_sqrt(p: &MPoly, n: &RBig) -> bool {
+    let parts = p.coefficients_in(Variable::T.index());
+    let mut even = MPoly::constant(RBig::ZERO);
+    let mut odd = MPoly::constant(RBig::ZERO);
+    let mut power = RBig::ONE;
+    for (j, c) in parts.iter().enumerate() {
+        if j % 2 == 0 {
+            even = &even + &c.scale(&power);
+        } else {
+            odd = &odd + &c.scale(&power);
+            power = &power * n;
+        }
+    }
+    even.is_zero() && odd.is_zero()
 }
 
 /// `xᵀMy` for vectors of polynomials in `u`.
@@ -79,11 +112,18 @@ fn param_json_reads_back_to_identities_on_both_quadrics() {
         let (x, d) = (strings(&p["X"]), strings(&p["d"]));
         let s = read_u(p["s"].as_str().expect("s"));
         assert!(d.iter().any(|c| !c.is_zero()) && !s.is_zero());
+        let n = radicand(&p.to_string()).map_or(RBig::ONE, |n| n.parse().expect("an integer"));
         for m in [matrix(a), matrix(b)] {
             let xx = form(&m, &x, &x);
             let dd = form(&m, &d, &d);
-            assert!((&xx + &(&s * &dd)).is_zero(), "{a}, {b}");
-            assert!(form(&m, &x, &d).is_zero(), "{a}, {b}");
+            assert!(vanishes_at_sqrt(&(&xx + &(&s * &dd)), &n), "{a}, {b}");
+            assert!(vanishes_at_sqrt(&form(&m, &x, &d), &n), "{a}, {b}");
+            // not trivially: the identity fails for another radicand
+            let other = &n + RBig::ONE;
+            assert!(
+                radicand(&p.to_string()).is_none()
+                    || !vanishes_at_sqrt(&(&xx + &(&s * &dd)), &other)
+            );
         }
         let text = qsic(&["param", a, b], "");
         assert!(stdout(&text).contains("s(u) = "), "{}", stdout(&text));
@@ -91,7 +131,12 @@ fn param_json_reads_back_to_identities_on_both_quadrics() {
 }
 
 fn unit(p: &Value) -> [f64; 4] {
-    let x: Vec<f64> = p.as_array().expect("a point").iter().map(|c| c.as_f64().expect("a number")).collect();
+    let x: Vec<f64> = p
+        .as_array()
+        .expect("a point")
+        .iter()
+        .map(|c| c.as_f64().expect("a number"))
+        .collect();
     let n = x.iter().map(|c| c * c).sum::<f64>().sqrt();
     [x[0] / n, x[1] / n, x[2] / n, x[3] / n]
 }
@@ -114,7 +159,12 @@ fn residual(text: &str, x: &[f64; 4]) -> f64 {
 fn sample_json_points_lie_on_both_quadrics() {
     for ((a, b), unbounded) in [((SPHERE, CYLINDER), false), ((CASE_4[0], CASE_4[1]), true)] {
         let out = qsic(&["sample", "--points", "40", a, b], "");
-        assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let v: Value = serde_json::from_str(&stdout(&out)).expect("JSON");
         let comps = v["components"].as_array().expect("components");
         assert_eq!(comps.len(), 2);
@@ -127,7 +177,9 @@ fn sample_json_points_lie_on_both_quadrics() {
                 assert!(residual(a, &x) < 1e-9 && residual(b, &x) < 1e-9, "{p}");
             }
             assert_eq!(c["affine"]["bounded"], !unbounded);
-            let at_infinity = c["affine"]["points_at_infinity"].as_array().expect("points");
+            let at_infinity = c["affine"]["points_at_infinity"]
+                .as_array()
+                .expect("points");
             assert_eq!(at_infinity.is_empty(), !unbounded);
             for p in at_infinity {
                 assert!(unit(p)[3].abs() < 1e-12, "{p}");
@@ -138,26 +190,45 @@ fn sample_json_points_lie_on_both_quadrics() {
 
 #[test]
 fn csv_and_obj_hold_every_point() {
-    let json: Value =
-        serde_json::from_str(&stdout(&qsic(&["sample", "--points", "10", SPHERE, CYLINDER], ""))).expect("JSON");
+    let json: Value = serde_json::from_str(&stdout(&qsic(
+        &["sample", "--points", "10", SPHERE, CYLINDER],
+        "",
+    )))
+    .expect("JSON");
     let points: usize = json["components"]
         .as_array()
         .expect("components")
         .iter()
         .map(|c| c["branches"][0].as_array().expect("branch").len())
         .sum();
-    let csv = stdout(&qsic(&["sample", "--points", "10", "--format", "csv", SPHERE, CYLINDER], ""));
+    let csv = stdout(&qsic(
+        &[
+            "sample", "--points", "10", "--format", "csv", SPHERE, CYLINDER,
+        ],
+        "",
+    ));
     let rows: Vec<&str> = csv.lines().collect();
     assert_eq!(rows[0], "piece,branch,index,x,y,z,w,ax,ay,az");
     assert_eq!(rows.len(), points + 1);
     for row in &rows[1..] {
-        let cells: Vec<f64> = row.split(',').map(|c| c.parse().expect("a number")).collect();
+        let cells: Vec<f64> = row
+            .split(',')
+            .map(|c| c.parse().expect("a number"))
+            .collect();
         // affine = (x, y, z) / w
         for i in 0..3 {
-            assert!((cells[7 + i] - cells[3 + i] / cells[6]).abs() < 1e-12, "{row}");
+            assert!(
+                (cells[7 + i] - cells[3 + i] / cells[6]).abs() < 1e-12,
+                "{row}"
+            );
         }
     }
-    let obj = stdout(&qsic(&["sample", "--points", "10", "--format", "obj", SPHERE, CYLINDER], ""));
+    let obj = stdout(&qsic(
+        &[
+            "sample", "--points", "10", "--format", "obj", SPHERE, CYLINDER,
+        ],
+        "",
+    ));
     let vertices = obj.lines().filter(|l| l.starts_with("v ")).count();
     let lines: Vec<&str> = obj.lines().filter(|l| l.starts_with("l ")).collect();
     assert_eq!(vertices, points);
@@ -170,7 +241,9 @@ fn csv_and_obj_hold_every_point() {
     }
     // a chart through the ovals: x = w/2 cuts each twice, so four affine branches
     let cut = stdout(&qsic(
-        &["sample", "--points", "10", "--format", "obj", "--chart", "2*x-w", SPHERE, CYLINDER],
+        &[
+            "sample", "--points", "10", "--format", "obj", "--chart", "2*x-w", SPHERE, CYLINDER,
+        ],
         "",
     ));
     assert_eq!(cut.lines().filter(|l| l.starts_with("l ")).count(), 4);
@@ -212,9 +285,29 @@ fn batches_keep_order_and_answer_unsupported_classes_with_error_lines() {
         }
     }
     // batch output is JSON Lines only; a bad chart or tolerance is an error
-    assert_eq!(qsic(&["sample", "--batch", "-", "--format", "csv"], "").status.code(), Some(2));
-    assert_eq!(qsic(&["sample", "--chart", "x*y", SPHERE, CYLINDER], "").status.code(), Some(2));
-    assert_eq!(qsic(&["sample", "--chart", "0", SPHERE, CYLINDER], "").status.code(), Some(2));
-    assert_eq!(qsic(&["sample", "--tolerance", "-1", SPHERE, CYLINDER], "").status.code(), Some(1));
+    assert_eq!(
+        qsic(&["sample", "--batch", "-", "--format", "csv"], "")
+            .status
+            .code(),
+        Some(2)
+    );
+    assert_eq!(
+        qsic(&["sample", "--chart", "x*y", SPHERE, CYLINDER], "")
+            .status
+            .code(),
+        Some(2)
+    );
+    assert_eq!(
+        qsic(&["sample", "--chart", "0", SPHERE, CYLINDER], "")
+            .status
+            .code(),
+        Some(2)
+    );
+    assert_eq!(
+        qsic(&["sample", "--tolerance", "-1", SPHERE, CYLINDER], "")
+            .status
+            .code(),
+        Some(1)
+    );
     assert_eq!(qsic(&["param", "x^2"], "").status.code(), Some(2));
 }

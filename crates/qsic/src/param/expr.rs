@@ -272,7 +272,12 @@ mod tests {
         p.coefficient(&m).cloned().unwrap_or(RBig::ZERO)
     }
 
-    fn random_poly(rng: &mut SplitMix, field: &NumberField, degree: usize, coeffs: usize) -> NumberPoly {
+    fn random_poly(
+        rng: &mut SplitMix,
+        field: &NumberField,
+        degree: usize,
+        coeffs: usize,
+    ) -> NumberPoly {
         Poly::new(
             (0..=degree)
                 .map(|_| {
@@ -336,14 +341,18 @@ mod tests {
             }
         }
         // a square discriminant: α = 1/2 exactly
-        let half = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-1, 2])).pop().unwrap();
+        let half = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-1, 2]))
+            .pop()
+            .unwrap();
         let reducible = NumberField::new(&half);
         assert_eq!(Names::new().number(&reducible.generator()), "1/2");
     }
 
     #[test]
     fn cubic_numbers_are_named_once_and_read_back() {
-        let alpha = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 0, 1])).pop().unwrap();
+        let alpha = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 0, 1]))
+            .pop()
+            .unwrap();
         let k = NumberField::new(&alpha);
         let mut rng = SplitMix(3);
         let mut names = Names::new();
@@ -365,7 +374,11 @@ mod tests {
         let numbers = names.numbers();
         assert_eq!(numbers.len(), 1);
         assert_eq!(numbers[0].poly, "x^3 - 2");
-        let lo: f64 = numbers[0].interval[0].parse::<RBig>().unwrap().to_f64().value();
+        let lo: f64 = numbers[0].interval[0]
+            .parse::<RBig>()
+            .unwrap()
+            .to_f64()
+            .value();
         assert!(lo <= 2f64.cbrt() && (numbers[0].approx - 2f64.cbrt()).abs() < 1e-12);
     }
 }

@@ -944,9 +944,7 @@ impl Sampler<'_> {
                 }
             }
         }
-        *budget = budget
-            .checked_sub(grid.len())
-            .ok_or_else(too_many_points)?;
+        *budget = budget.checked_sub(grid.len()).ok_or_else(too_many_points)?;
         let mut out = vec![grid[0]];
         let mut stack: Vec<(Sample, u32)> = grid[1..].iter().rev().map(|s| (*s, 0)).collect();
         while let Some((q, depth)) = stack.pop() {
