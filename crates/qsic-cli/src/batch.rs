@@ -20,7 +20,7 @@ use crate::input::{quadric_from_form, JsonForm};
 use crate::line::{read_line, Line};
 use crate::output::{write_classification_fields, write_json_string};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use qsic::classify_allowing_zero;
+use qsic::{classify_allowing_zero, Quadric};
 use rayon::prelude::*;
 use serde_json::Value;
 use std::io::{self, BufRead, BufReader, Read, Write};
@@ -214,10 +214,35 @@ pub(crate) fn open_record(id: Option<&str>) -> String {
     out
 }
 
+/// What a batch computes for one pair of quadrics (`None`: the zero form): the fields of
+/// the result object, without braces and `id` (written after `"id":…,`), or the message of
+/// an error line.
+pub trait Answer: Sync {
+    /// The fields or the error message.
+    fn answer(&self, a: Option<&Quadric>, b: Option<&Quadric>) -> Result<String, String>;
+}
+
+/// `qsic classify`: the classification's fields.
+pub struct Classify;
+
+impl Answer for Classify {
+    fn answer(&self, a: Option<&Quadric>, b: Option<&Quadric>) -> Result<String, String> {
+        let c = classify_allowing_zero(a, b).map_err(|e| format!("A and B: both are zero: {e}"))?;
+        let mut out = String::with_capacity(512);
+        write_classification_fields(&mut out, &c);
+        Ok(out)
+    }
+}
+
 /// The output line for one input line (without newline) and whether it succeeded.
 /// Never panics: a panic inside the classifier becomes an error line.
 pub fn answer_line(line: &RawLine) -> (String, bool) {
-    answer_with(line, classify_line)
+    answer_line_with(line, &Classify)
+}
+
+/// [`answer_line`] for any [`Answer`].
+pub fn answer_line_with<A: Answer + ?Sized>(line: &RawLine, answer: &A) -> (String, bool) {
+    answer_with(line, |line| quadrics_line(line, answer))
 }
 
 /// The output line of `work` on `line`: its text, or the error record of its failure.
@@ -287,7 +312,11 @@ pub(crate) fn read_record(line: &RawLine) -> Result<Line<'_>, LineFailure<'_>> {
     read_line(text).map_err(|e| LineFailure::without_id(format!("invalid JSON: {e}")))
 }
 
-fn classify_line(line: &RawLine) -> Result<String, LineFailure<'_>> {
+/// The line's quadrics `A`, `B` answered by `answer`.
+fn quadrics_line<'a, A: Answer + ?Sized>(
+    line: &'a RawLine,
+    answer: &A,
+) -> Result<String, LineFailure<'a>> {
     let record = read_record(line)?;
     let id = record.id;
     let fail = |message: String| LineFailure { id, message };
@@ -297,17 +326,13 @@ fn classify_line(line: &RawLine) -> Result<String, LineFailure<'_>> {
     };
     let a = quadric("A", &record.a)?;
     let b = quadric("B", &record.b)?;
-    let classification = match catch_panic(|| classify_allowing_zero(a.as_ref(), b.as_ref())) {
-        Ok(Ok(c)) => c,
-        Ok(Err(e)) => return Err(fail(format!("A and B: both are zero: {e}"))),
-        Err(what) => {
-            return Err(fail(format!(
-                "internal error in the classifier (a bug): {what}"
-            )))
-        }
+    let fields = match catch_panic(|| answer.answer(a.as_ref(), b.as_ref())) {
+        Ok(Ok(fields)) => fields,
+        Ok(Err(message)) => return Err(fail(message)),
+        Err(what) => return Err(fail(format!("internal error (a bug): {what}"))),
     };
     let mut out = open_record(id);
-    write_classification_fields(&mut out, &classification);
+    out.push_str(&fields);
     out.push('}');
     Ok(out)
 }
@@ -342,6 +367,21 @@ pub enum BatchError {
 /// [`BatchError`] if reading or writing fails; every chunk read before is answered.
 pub fn run<R: Read, W: Write>(input: R, output: W, progress: bool) -> Result<Summary, BatchError> {
     run_with(input, output, progress, answer_line)
+}
+
+/// [`run`] for any [`Answer`] (`qsic param`, `qsic sample`): the same lines, order, errors.
+///
+/// # Errors
+/// As [`run`].
+pub fn run_answer<R: Read, W: Write, A: Answer + ?Sized>(
+    input: R,
+    output: W,
+    progress: bool,
+    answer: &A,
+) -> Result<Summary, BatchError> {
+    run_with(input, output, progress, |line: &RawLine| {
+        answer_line_with(line, answer)
+    })
 }
 
 /// [`run`] with another answer for each line (`qsic motion --batch`): `answer` gives the

@@ -7,8 +7,10 @@
 //! | [`output`] | the JSON result object ([`output::classification_to_json`]) and the text report |
 //! | [`mod@line`] | the fields of one batch line, borrowed from its text (a strict fast reader, then `serde_json`) |
 //! | [`contact`] | `qsic contact`: first contact of two moving quadrics and the relation of moving solid ellipsoids |
-//! | [`batch`] | `--batch`: bounded, ordered, parallel JSON Lines processing |
+//! | [`batch`] | `--batch`: bounded, ordered, parallel JSON Lines processing, for any [`batch::Answer`] or line answer |
 //! | [`motion`] | `qsic motion`: moving quadrics in, their timeline out (text, JSON, batch lines) |
+//! | [`param`] | `qsic param`: the exact curve as JSON and text |
+//! | [`mod@sample`] | `qsic sample`: real points as JSON, CSV, OBJ |
 
 pub mod batch;
 pub mod contact;
@@ -16,3 +18,5 @@ pub mod input;
 pub mod line;
 pub mod motion;
 pub mod output;
+pub mod param;
+pub mod sample;

@@ -5,8 +5,10 @@
 //! 2 usage error, unreadable input file or an I/O error.
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
+use qsic::param::sample::SampleOptions;
+use qsic::Quadric;
 use qsic_cli::motion::{self, TimeRange};
-use qsic_cli::{batch, contact, input, output};
+use qsic_cli::{batch, contact, input, output, param, sample};
 use std::fs::File;
 use std::io::{self, IsTerminal, Write};
 use std::path::PathBuf;
@@ -75,6 +77,17 @@ enum Command {
     /// First contact of two moving quadrics A(t), B(t), and the relation of the solids
     /// (separated, touching, overlapping, inside) along the motion when both are ellipsoids.
     Contact(ContactArgs),
+    /// The exact curve: every component's parameterization, singular points (--json, --batch).
+    ///
+    /// Each real component is given exactly: a point, X(u) with u over the real projective
+    /// line, or Levin's X(u) ± d(u)·sqrt(s(u)); numbers are integers, fractions, square
+    /// roots, or named algebraic numbers listed under "numbers".
+    Param(ParamArgs),
+    /// Real points on every real component: polylines in projective and affine coordinates.
+    ///
+    /// Points come from the exact parameterization, ordered along each piece, consecutive
+    /// unit vectors at most 0.1 rad apart; the affine chart splits pieces at infinity.
+    Sample(SampleArgs),
 }
 
 /// Arguments of `qsic contact`.
@@ -98,6 +111,74 @@ struct ContactArgs {
     /// Print one JSON object instead of the text report.
     #[arg(long)]
     json: bool,
+}
+
+/// Arguments of `qsic param`.
+#[derive(Args, Debug)]
+#[command(after_help = "Input forms, batch format and exit codes as for 'qsic classify --help'.")]
+struct ParamArgs {
+    #[command(flatten)]
+    input: PairArgs,
+
+    /// Print one JSON object instead of the text report (batch output is always JSON).
+    #[arg(long)]
+    json: bool,
+}
+
+/// Output formats of `qsic sample`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+enum Format {
+    Json,
+    Csv,
+    Obj,
+}
+
+/// Arguments of `qsic sample`.
+#[derive(Args, Debug)]
+#[command(after_help = "Input forms, batch format and exit codes as for 'qsic classify --help'.")]
+struct SampleArgs {
+    #[command(flatten)]
+    input: PairArgs,
+
+    /// At least N points per piece.
+    #[arg(long, value_name = "N", default_value_t = 64)]
+    points: usize,
+
+    /// Largest chord deviation in the affine chart.
+    #[arg(long, value_name = "T")]
+    tolerance: Option<f64>,
+
+    /// The plane at infinity, "a*x+b*y+c*z+d*w" (default "w").
+    #[arg(long, value_name = "PLANE", allow_hyphen_values = true)]
+    chart: Option<String>,
+
+    /// Output format (batch: json only).
+    #[arg(long, value_enum, default_value_t = Format::Json)]
+    format: Format,
+}
+
+/// Two quadrics or a batch file.
+#[derive(Args, Debug)]
+struct PairArgs {
+    /// First quadric: a polynomial in x, y, z, w, or a 4x4 JSON matrix.
+    #[arg(
+        value_name = "A",
+        allow_hyphen_values = true,
+        required_unless_present = "batch"
+    )]
+    a: Option<String>,
+
+    /// Second quadric: a polynomial in x, y, z, w, or a 4x4 JSON matrix.
+    #[arg(
+        value_name = "B",
+        allow_hyphen_values = true,
+        required_unless_present = "batch"
+    )]
+    b: Option<String>,
+
+    /// Answer the JSON Lines of FILE ('-' for standard input) with JSON Lines.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["a", "b"])]
+    batch: Option<PathBuf>,
 }
 
 /// Arguments of `qsic classify`.
@@ -205,6 +286,8 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::Motion(args) => run_motion(&args),
+        Command::Param(args) => run_param(&args),
+        Command::Sample(args) => run_sample(&args),
         Command::Classify(args) => match (&args.batch, &args.a, &args.b) {
             (Some(path), _, _) => run_batch(path, batch::answer_line),
             (None, Some(a), Some(b)) => run_single(a, b, args.json),
@@ -365,6 +448,117 @@ fn run_batch<F: Fn(&batch::RawLine) -> (String, bool) + Sync>(
         Err(batch::BatchError::Read(e)) => io_failure(&format!("reading {}", path.display()), &e),
         Err(batch::BatchError::Write(e)) => io_failure("writing the output", &e),
     }
+}
+
+/// A batch of any [`batch::Answer`] on the line's quadrics (`param`, `sample`).
+fn run_batch_with<A: batch::Answer>(path: &std::path::Path, answer: &A) -> ExitCode {
+    run_batch(path, |line: &batch::RawLine| {
+        batch::answer_line_with(line, answer)
+    })
+}
+
+/// The two quadrics of a single query (`None`: the zero form), or exit 1 with the message.
+fn read_pair(a: &str, b: &str) -> Result<(Option<Quadric>, Option<Quadric>), ExitCode> {
+    let read =
+        |name: &str, text: &str| input::quadric_from_arg(text).map_err(|e| format!("{name}: {e}"));
+    match read("A", a).and_then(|qa| Ok((qa, read("B", b)?))) {
+        Ok(pair) => Ok(pair),
+        Err(message) => {
+            eprintln!("error: {message}");
+            Err(ExitCode::from(1))
+        }
+    }
+}
+
+/// Writes `text` to standard output: exit 0, or 2 on an I/O error.
+fn write_out(text: &str) -> ExitCode {
+    let mut stdout = io::stdout().lock();
+    match stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => io_failure("writing the output", &e),
+    }
+}
+
+fn usage_error(message: &str) -> ExitCode {
+    let mut cmd = Cli::command();
+    cmd.error(clap::error::ErrorKind::ArgumentConflict, message)
+        .exit()
+}
+
+/// `qsic param`.
+fn run_param(args: &ParamArgs) -> ExitCode {
+    let (a, b) = match (&args.input.batch, &args.input.a, &args.input.b) {
+        (Some(path), _, _) => return run_batch_with(path, &param::Param),
+        (None, Some(a), Some(b)) => (a, b),
+        _ => return usage_error("two quadrics A and B, or --batch FILE, are required"),
+    };
+    let (qa, qb) = match read_pair(a, b) {
+        Ok(pair) => pair,
+        Err(code) => return code,
+    };
+    let curve = match param::curve_of(qa.as_ref(), qb.as_ref()) {
+        Ok(c) => c,
+        Err(message) => {
+            eprintln!("error: {message}");
+            return ExitCode::from(1);
+        }
+    };
+    let json = param::ParamJson::from(&curve);
+    let text = if args.json {
+        format!("{{{}}}\n", param::fields_of(&json))
+    } else {
+        param::human_report(&json)
+    };
+    write_out(&text)
+}
+
+/// `qsic sample`.
+fn run_sample(args: &SampleArgs) -> ExitCode {
+    let mut options = SampleOptions {
+        points: args.points,
+        tolerance: args.tolerance,
+        ..SampleOptions::default()
+    };
+    if let Some(text) = &args.chart {
+        match sample::parse_chart(text) {
+            Ok(chart) => options.chart = chart,
+            Err(message) => {
+                eprintln!("error: {message}");
+                return ExitCode::from(2);
+            }
+        }
+    }
+    let (a, b) = match (&args.input.batch, &args.input.a, &args.input.b) {
+        (Some(_), _, _) if args.format != Format::Json => {
+            return usage_error("--batch writes JSON Lines: --format csv and obj need A and B")
+        }
+        (Some(path), _, _) => return run_batch_with(path, &sample::Sample(options)),
+        (None, Some(a), Some(b)) => (a, b),
+        _ => return usage_error("two quadrics A and B, or --batch FILE, are required"),
+    };
+    let (qa, qb) = match read_pair(a, b) {
+        Ok(pair) => pair,
+        Err(code) => return code,
+    };
+    let (curve, sampled) = match sample::sample_of(qa.as_ref(), qb.as_ref(), &options) {
+        Ok(r) => r,
+        Err(message) => {
+            eprintln!("error: {message}");
+            return ExitCode::from(1);
+        }
+    };
+    let text = match args.format {
+        Format::Json => format!(
+            "{{{}}}\n",
+            param::fields_of(&sample::SampleJson::new(&curve, &sampled))
+        ),
+        Format::Csv => sample::to_csv(&sampled, &options),
+        Format::Obj => sample::to_obj(&sampled),
+    };
+    write_out(&text)
 }
 
 /// Exit 2 after an I/O error; a closed output pipe (`| head`) ends quietly.

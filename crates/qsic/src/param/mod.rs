@@ -16,9 +16,11 @@
 //! `u` runs over ℝ ∪ {∞}: `s` is a binary quartic, its degree drop a root at `u = ∞`.
 
 pub mod curve;
+pub mod expr;
 mod line_cubic;
 mod nodal;
 mod planar;
+pub mod sample;
 mod surface;
 
 pub use curve::{

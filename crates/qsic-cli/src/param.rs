@@ -1,0 +1,257 @@
+//! `qsic param`: the exact description of the curve, as JSON (schema in the README) and as
+//! a text report.
+//!
+//! | entry point | gives |
+//! |---|---|
+//! | [`ParamJson`] | the result object: the classification's fields, `numbers`, `components`, `singular_points` |
+//! | [`curve_of`] | the curve of two quadrics, with the CLI's error messages |
+//! | [`Param`] | the batch answer |
+//! | [`human_report`] | the text of `qsic param A B` |
+
+use crate::batch::Answer;
+use crate::output::ClassificationJson;
+use qsic::param::expr::{NamedNumber, Names};
+use qsic::param::{parameterize, ComponentParam, Curve};
+use qsic::{Error, Quadric};
+use serde::Serialize;
+
+/// The curve of `a` and `b` (`None`: the zero form), or the message of an error line:
+/// `not yet: …` for a class not covered.
+///
+/// # Errors
+/// The message.
+pub fn curve_of(a: Option<&Quadric>, b: Option<&Quadric>) -> Result<Curve, String> {
+    let (Some(a), Some(b)) = (a, b) else {
+        return Err(if a.is_none() && b.is_none() {
+            "A and B: both are zero".into()
+        } else {
+            "not yet: the curve of a single quadric".into()
+        });
+    };
+    parameterize(a, b).map_err(|e| match e {
+        Error::Unsupported(m) => format!("not yet: {m}"),
+        e => e.to_string(),
+    })
+}
+
+/// One named algebraic number.
+#[derive(Clone, Debug, Serialize)]
+pub struct NumberJson {
+    /// `a1`, …
+    pub name: String,
+    /// Its polynomial in `x`.
+    pub poly: String,
+    /// `[lo, hi]`, `p/q` strings.
+    pub interval: [String; 2],
+    /// A float approximation.
+    pub approx: f64,
+}
+
+impl From<NamedNumber> for NumberJson {
+    fn from(n: NamedNumber) -> Self {
+        NumberJson {
+            name: n.name,
+            poly: n.poly,
+            interval: n.interval,
+            approx: n.approx,
+        }
+    }
+}
+
+/// A component's parameterization: one of the three forms.
+#[derive(Clone, Debug, Serialize)]
+#[serde(untagged)]
+pub enum ParamFormJson {
+    /// A point.
+    Point {
+        /// Homogeneous coordinates.
+        point: [String; 4],
+    },
+    /// `X(u)`, `u ∈ ℝ ∪ {∞}`.
+    Rational {
+        /// The coordinates, polynomials in `u`.
+        #[serde(rename = "X")]
+        x: [String; 4],
+    },
+    /// `X(u) ± d(u)·sqrt(s(u))`.
+    Levin {
+        /// `X(u)`.
+        #[serde(rename = "X")]
+        x: [String; 4],
+        /// `d(u)`.
+        d: [String; 4],
+        /// `s(u)`.
+        s: String,
+    },
+}
+
+/// One component.
+#[derive(Clone, Debug, Serialize)]
+pub struct ComponentParamJson {
+    /// `point`, `line`, `conic`, `cubic`, `quartic`, …
+    pub kind: &'static str,
+    /// Its multiplicity.
+    pub multiplicity: u32,
+    /// Real or not.
+    pub real: bool,
+    /// The parameterization, `null` for a non-real component.
+    pub param: Option<ParamFormJson>,
+}
+
+/// One real singular point.
+#[derive(Clone, Debug, Serialize)]
+pub struct SingularPointJson {
+    /// `acnode`, `crunode`, `cusp`, `tangency`, `multiple`.
+    pub kind: &'static str,
+    /// The point.
+    pub point: [String; 4],
+}
+
+/// The result object of `qsic param` (without `id`).
+#[derive(Clone, Debug, Serialize)]
+pub struct ParamJson {
+    /// `regular`, `singular` or `single`.
+    pub pencil: &'static str,
+    /// Case 1–35.
+    pub case: Option<u8>,
+    /// Segre characteristic.
+    pub segre: Option<&'static str>,
+    /// Signature sequence.
+    pub signature: Option<&'static str>,
+    /// Index sequence.
+    pub index_sequence: Option<&'static str>,
+    /// Complex type key.
+    pub complex_type: Option<&'static str>,
+    /// Real type key.
+    pub real_type: Option<&'static str>,
+    /// One-line summary.
+    pub description: Option<&'static str>,
+    /// Algebraic numbers of degree > 2 named in the expressions.
+    pub numbers: Vec<NumberJson>,
+    /// Every component over ℂ.
+    pub components: Vec<ComponentParamJson>,
+    /// The real singular points.
+    pub singular_points: Vec<SingularPointJson>,
+}
+
+impl From<&Curve> for ParamJson {
+    fn from(curve: &Curve) -> Self {
+        let c = ClassificationJson::from(&curve.classification);
+        let mut names = Names::new();
+        let components = curve
+            .components
+            .iter()
+            .map(|comp| ComponentParamJson {
+                kind: comp.kind.key(),
+                multiplicity: comp.multiplicity,
+                real: comp.real,
+                param: comp.param.as_ref().map(|p| match p {
+                    ComponentParam::Point(x) => ParamFormJson::Point {
+                        point: std::array::from_fn(|i| names.number(&x[i])),
+                    },
+                    ComponentParam::Rational { x, .. } => ParamFormJson::Rational {
+                        x: std::array::from_fn(|i| names.poly(&x[i])),
+                    },
+                    ComponentParam::Levin { a, d, s, .. } => ParamFormJson::Levin {
+                        x: std::array::from_fn(|i| names.poly(&a[i])),
+                        d: std::array::from_fn(|i| names.poly(&d[i])),
+                        s: names.poly(s),
+                    },
+                }),
+            })
+            .collect();
+        let singular_points = curve
+            .singular_points
+            .iter()
+            .map(|s| SingularPointJson {
+                kind: s.kind.key(),
+                point: std::array::from_fn(|i| names.number(&s.point[i])),
+            })
+            .collect();
+        ParamJson {
+            pencil: c.pencil,
+            case: c.case,
+            segre: c.segre,
+            signature: c.signature,
+            index_sequence: c.index_sequence,
+            complex_type: c.complex_type,
+            real_type: c.real_type,
+            description: c.description,
+            numbers: names.numbers().into_iter().map(NumberJson::from).collect(),
+            components,
+            singular_points,
+        }
+    }
+}
+
+/// The fields of a serialized object, without its braces.
+pub fn fields_of<T: Serialize>(value: &T) -> String {
+    // plain data (strings, numbers, booleans): serialization cannot fail
+    let text = serde_json::to_string(value).expect("plain data serializes");
+    text[1..text.len() - 1].to_string()
+}
+
+/// The batch answer of `qsic param`.
+pub struct Param;
+
+impl Answer for Param {
+    fn answer(&self, a: Option<&Quadric>, b: Option<&Quadric>) -> Result<String, String> {
+        curve_of(a, b).map(|c| fields_of(&ParamJson::from(&c)))
+    }
+}
+
+/// The text report of `qsic param A B`.
+pub fn human_report(json: &ParamJson) -> String {
+    let mut out = String::new();
+    let or = |v: Option<&str>| v.unwrap_or("-").to_string();
+    out.push_str(&format!(
+        "pencil: {}   case: {}   type: {} / {}\n",
+        json.pencil,
+        json.case.map_or("-".into(), |c| c.to_string()),
+        or(json.complex_type),
+        or(json.real_type)
+    ));
+    if let Some(d) = json.description {
+        out.push_str(&format!("{d}\n"));
+    }
+    for n in &json.numbers {
+        out.push_str(&format!(
+            "{} = root of {} in [{}, {}] ≈ {}\n",
+            n.name, n.poly, n.interval[0], n.interval[1], n.approx
+        ));
+    }
+    for (k, c) in json.components.iter().enumerate() {
+        out.push_str(&format!(
+            "component {k}: {} (multiplicity {}){}\n",
+            c.kind,
+            c.multiplicity,
+            if c.real { "" } else { ", not real" }
+        ));
+        match &c.param {
+            None => {}
+            Some(ParamFormJson::Point { point }) => {
+                out.push_str(&format!("  point ({})\n", point.join(", ")));
+            }
+            Some(ParamFormJson::Rational { x }) => {
+                for (name, e) in ["x", "y", "z", "w"].iter().zip(x) {
+                    out.push_str(&format!("  {name}(u) = {e}\n"));
+                }
+            }
+            Some(ParamFormJson::Levin { x, d, s }) => {
+                out.push_str("  X(u) ± d(u)·sqrt(s(u)), u ∈ ℝ ∪ {∞}, where s(u) ≥ 0\n");
+                for (i, name) in ["x", "y", "z", "w"].iter().enumerate() {
+                    out.push_str(&format!("  {name}: X = {}   d = {}\n", x[i], d[i]));
+                }
+                out.push_str(&format!("  s(u) = {s}\n"));
+            }
+        }
+    }
+    for p in &json.singular_points {
+        out.push_str(&format!(
+            "singular point ({}): ({})\n",
+            p.kind,
+            p.point.join(", ")
+        ));
+    }
+    out
+}

@@ -1,0 +1,201 @@
+//! `qsic sample`: real points of the curve as JSON (schema in the README), CSV or OBJ.
+//!
+//! | entry point | gives |
+//! |---|---|
+//! | [`parse_chart`] | the plane at infinity from `"a*x+b*y+c*z+d*w"` |
+//! | [`SampleJson`] | the result object |
+//! | [`Sample`] | the batch answer |
+//! | [`to_csv`], [`to_obj`] | the other formats |
+
+use crate::batch::Answer;
+use crate::output::ClassificationJson;
+use crate::param::{curve_of, fields_of};
+use qsic::io::{parse_rational_function, Variable};
+use qsic::param::sample::{sample, SampleOptions, Sampled};
+use qsic::param::Curve;
+use qsic::Quadric;
+use qsic_algebra::RBig;
+use serde::Serialize;
+use std::fmt::Write as _;
+
+/// The plane `a x + b y + c z + d w` as `[a, b, c, d]`; an affine constant term counts as
+/// `w` (`"x - 2"` is the plane `x = 2w`).
+///
+/// # Errors
+/// A message for text that is not a nonzero linear form.
+pub fn parse_chart(text: &str) -> Result<[RBig; 4], String> {
+    let vars = [Variable::X, Variable::Y, Variable::Z, Variable::W];
+    let f = parse_rational_function(text, &vars).map_err(|e| format!("chart: {e}"))?;
+    let linear = "chart: a linear form in x, y, z, w is required";
+    if !f.is_polynomial() {
+        return Err(linear.into());
+    }
+    let scale = f
+        .denominator()
+        .as_constant()
+        .ok_or_else(|| linear.to_string())?;
+    let mut out: [RBig; 4] = Default::default();
+    for (m, c) in f.numerator().terms() {
+        let slot = match m.degree() {
+            0 => 3,
+            1 => (0..4)
+                .find(|&v| m.degree_in_vars(&[v]) == 1)
+                .ok_or_else(|| linear.to_string())?,
+            _ => return Err(linear.into()),
+        };
+        out[slot] = &out[slot] + &(c / &scale);
+    }
+    if out.iter().all(|c| *c == RBig::ZERO) {
+        return Err("chart: the zero form is not a plane".into());
+    }
+    Ok(out)
+}
+
+/// A piece in the affine chart.
+#[derive(Clone, Debug, Serialize)]
+pub struct AffineJson {
+    /// Polylines `[[x, y, z], …]`.
+    pub branches: Vec<Vec<[f64; 3]>>,
+    /// No real point at infinity.
+    pub bounded: bool,
+    /// The real points at infinity, unit vectors `[x, y, z, w]`.
+    pub points_at_infinity: Vec<[f64; 4]>,
+}
+
+/// A real piece.
+#[derive(Clone, Debug, Serialize)]
+pub struct PieceJson {
+    /// `point` for an isolated point, else the component's kind.
+    pub kind: &'static str,
+    /// The component's multiplicity.
+    pub multiplicity: u32,
+    /// Polylines of unit vectors `[x, y, z, w]`.
+    pub branches: Vec<Vec<[f64; 4]>>,
+    /// The affine view.
+    pub affine: AffineJson,
+}
+
+/// The result object of `qsic sample` (without `id`).
+#[derive(Clone, Debug, Serialize)]
+pub struct SampleJson {
+    /// `regular`, `singular` or `single`.
+    pub pencil: &'static str,
+    /// Case 1–35.
+    pub case: Option<u8>,
+    /// Complex type key.
+    pub complex_type: Option<&'static str>,
+    /// Real type key.
+    pub real_type: Option<&'static str>,
+    /// The real pieces.
+    pub components: Vec<PieceJson>,
+    /// The connected components of the real locus in ℝP³: groups of indices into `components`.
+    pub connected_components: Vec<Vec<usize>>,
+}
+
+impl SampleJson {
+    /// The object for `curve` and its points.
+    pub fn new(curve: &Curve, sampled: &Sampled) -> SampleJson {
+        let c = ClassificationJson::from(&curve.classification);
+        let components = sampled
+            .pieces
+            .iter()
+            .map(|p| {
+                let comp = &curve.components[p.component];
+                PieceJson {
+                    kind: if p.isolated { "point" } else { comp.kind.key() },
+                    multiplicity: comp.multiplicity,
+                    branches: vec![p.points.clone()],
+                    affine: AffineJson {
+                        branches: p.affine.branches.clone(),
+                        bounded: p.affine.bounded,
+                        points_at_infinity: p.affine.points_at_infinity.clone(),
+                    },
+                }
+            })
+            .collect();
+        SampleJson {
+            pencil: c.pencil,
+            case: c.case,
+            complex_type: c.complex_type,
+            real_type: c.real_type,
+            components,
+            connected_components: curve.connected.clone(),
+        }
+    }
+}
+
+/// The curve of `a`, `b` and its points, or an error message.
+///
+/// # Errors
+/// The message (`not yet: …` for a class not covered).
+pub fn sample_of(
+    a: Option<&Quadric>,
+    b: Option<&Quadric>,
+    options: &SampleOptions,
+) -> Result<(Curve, Sampled), String> {
+    let curve = curve_of(a, b)?;
+    let sampled = sample(&curve, options).map_err(|e| e.to_string())?;
+    Ok((curve, sampled))
+}
+
+/// The batch answer of `qsic sample` (JSON).
+pub struct Sample(pub SampleOptions);
+
+impl Answer for Sample {
+    fn answer(&self, a: Option<&Quadric>, b: Option<&Quadric>) -> Result<String, String> {
+        let (curve, sampled) = sample_of(a, b, &self.0)?;
+        Ok(fields_of(&SampleJson::new(&curve, &sampled)))
+    }
+}
+
+/// One row per point: `piece,branch,index,x,y,z,w,ax,ay,az` (affine columns empty at
+/// infinity), with a header.
+pub fn to_csv(sampled: &Sampled, options: &SampleOptions) -> String {
+    let mut out = String::from("piece,branch,index,x,y,z,w,ax,ay,az\n");
+    for (k, p) in sampled.pieces.iter().enumerate() {
+        for (i, x) in p.points.iter().enumerate() {
+            let x = x.map(plus_zero);
+            let _ = write!(out, "{k},0,{i},{},{},{},{}", x[0], x[1], x[2], x[3]);
+            match options.affine_coordinates(&x) {
+                Some(a) => {
+                    let a = a.map(plus_zero);
+                    let _ = writeln!(out, ",{},{},{}", a[0], a[1], a[2]);
+                }
+                None => out.push_str(",,,\n"),
+            }
+        }
+    }
+    out
+}
+
+/// Wavefront OBJ: the affine branches as `v` lines and `l` polylines, one object per piece;
+/// an isolated point as a `v` and a `p` element.
+pub fn to_obj(sampled: &Sampled) -> String {
+    let mut out = String::from("# qsic sample: the real intersection curve, affine chart\n");
+    let mut next = 1usize;
+    for (k, p) in sampled.pieces.iter().enumerate() {
+        let _ = writeln!(out, "o piece_{k}");
+        for branch in &p.affine.branches {
+            for v in branch {
+                let v = v.map(plus_zero);
+                let _ = writeln!(out, "v {} {} {}", v[0], v[1], v[2]);
+            }
+            if p.isolated || branch.len() == 1 {
+                let _ = writeln!(out, "p {next}");
+            } else {
+                out.push('l');
+                for i in 0..branch.len() {
+                    let _ = write!(out, " {}", next + i);
+                }
+                out.push('\n');
+            }
+            next += branch.len();
+        }
+    }
+    out
+}
+
+/// `v` with `−0` written as `0`.
+fn plus_zero(v: f64) -> f64 {
+    v + 0.0
+}

@@ -1,0 +1,264 @@
+//! Real points of the whole curve ([`qsic::param::sample::sample`]) on every corpus line the
+//! parameterization covers: every point on both quadrics, consecutive points within 0.1 rad
+//! (up to sign), at least the requested count per piece, one sampled piece per real piece,
+//! and the affine view consistent with the points (crossings of the plane at infinity on
+//! it, affine points that map back to the projective ones).
+
+use qsic::io::{parse_quadric, quadric_from_rows};
+use qsic::param::sample::{sample, SampleOptions, SampledPiece, MAX_ANGLE};
+use qsic::param::{parameterize, Curve, ParamRange, ParamValue, RealPiece};
+use qsic::{Error, Quadric};
+use qsic_algebra::RBig;
+use serde_json::Value;
+
+fn read_form(v: &Value) -> Quadric {
+    match v {
+        Value::String(s) => parse_quadric(s).unwrap(),
+        Value::Array(rows) => {
+            let rows: Vec<Vec<String>> = rows
+                .iter()
+                .map(|r| {
+                    r.as_array()
+                        .unwrap()
+                        .iter()
+                        .map(|x| x.as_str().map_or_else(|| x.to_string(), str::to_owned))
+                        .collect()
+                })
+                .collect();
+            quadric_from_rows(&rows).unwrap()
+        }
+        _ => panic!("unexpected quadric value {v}"),
+    }
+}
+
+/// The corpus pairs whose curve is parameterized, with their ids.
+fn curves() -> Vec<(String, Quadric, Quadric, Curve)> {
+    let mut out = Vec::new();
+    for name in ["cases.jsonl", "seed_examples.jsonl", "qi-quadrics.jsonl"] {
+        let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
+        let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+        for (i, raw) in text.lines().enumerate() {
+            let line: Value = serde_json::from_str(raw).unwrap();
+            if line.get("A").is_none()
+                || !matches!(line["pencil"].as_str(), Some("regular" | "singular"))
+            {
+                continue;
+            }
+            let id = format!("{name}:{} {}", i + 1, line["id"].as_str().unwrap_or("?"));
+            let (a, b) = (read_form(&line["A"]), read_form(&line["B"]));
+            match parameterize(&a, &b) {
+                Ok(c) => out.push((id, a, b, c)),
+                Err(Error::Unsupported(_)) => {}
+                Err(e) => panic!("{id}: {e}"),
+            }
+        }
+    }
+    out
+}
+
+fn float_matrix(q: &Quadric) -> [[f64; 4]; 4] {
+    let m = q.matrix();
+    std::array::from_fn(|i| std::array::from_fn(|j| m[i][j].to_f64().value()))
+}
+
+/// `|XᵀMX| / ‖M‖` for a unit `X`.
+fn residual(m: &[[f64; 4]; 4], x: &[f64; 4]) -> f64 {
+    let norm = m.iter().flatten().map(|v| v * v).sum::<f64>().sqrt();
+    let mut r = 0.0;
+    for i in 0..4 {
+        for j in 0..4 {
+            r += m[i][j] * x[i] * x[j];
+        }
+    }
+    r.abs() / norm
+}
+
+fn check_piece(p: &SampledPiece, ms: &[[[f64; 4]; 4]; 2], points: usize) -> Result<(), String> {
+    if !p.isolated && p.points.len() < points {
+        return Err(format!("{} points, asked for {points}", p.points.len()));
+    }
+    for (k, x) in p.points.iter().enumerate() {
+        let n = x.iter().map(|v| v * v).sum::<f64>();
+        if (n - 1.0).abs() > 1e-12 {
+            return Err(format!("point {k} is not a unit vector"));
+        }
+        for m in ms {
+            let r = residual(m, x);
+            if r > 1e-9 {
+                return Err(format!("point {k} off a quadric by {r:e}"));
+            }
+        }
+    }
+    for (k, w) in p.points.windows(2).enumerate() {
+        let d: f64 = (0..4).map(|i| w[0][i] * w[1][i]).sum();
+        if d < 0.0 {
+            return Err(format!("points {k}, {} not oriented", k + 1));
+        }
+        if d < (MAX_ANGLE + 1e-9).cos() {
+            return Err(format!("points {k}, {} are {} rad apart", k + 1, d.acos()));
+        }
+    }
+    if p.closed {
+        let (f, l) = (p.points[0], p.points[p.points.len() - 1]);
+        if (0..4).any(|i| (f[i].abs() - l[i].abs()).abs() > 1e-12) {
+            return Err("a closed piece does not end where it starts".into());
+        }
+    }
+    // affine: the chart w; points at infinity have w = 0, affine points are on both quadrics
+    for x in &p.affine.points_at_infinity {
+        if x[3].abs() > 1e-9 {
+            return Err(format!("a point at infinity has w = {}", x[3]));
+        }
+    }
+    if p.affine.bounded != p.affine.points_at_infinity.is_empty() {
+        return Err("bounded but with points at infinity".into());
+    }
+    for branch in &p.affine.branches {
+        for a in branch {
+            let x = [a[0], a[1], a[2], 1.0];
+            let n = x.iter().map(|v| v * v).sum::<f64>().sqrt();
+            let x = x.map(|v| v / n);
+            for m in ms {
+                if residual(m, &x) > 1e-9 {
+                    return Err(format!("affine point {a:?} off a quadric"));
+                }
+            }
+        }
+    }
+    let crossings = p.affine.points_at_infinity.len();
+    let want = if p.closed {
+        crossings.max(1)
+    } else {
+        crossings + 1
+    };
+    if !p.isolated && p.affine.branches.len() != want {
+        return Err(format!(
+            "{} affine branches for {crossings} points at infinity",
+            p.affine.branches.len()
+        ));
+    }
+    Ok(())
+}
+
+#[test]
+fn every_sampled_point_is_on_both_quadrics_and_branches_are_continuous() {
+    let curves = curves();
+    assert!(curves.len() >= 37, "{} curves", curves.len());
+    let mut failures = Vec::new();
+    let (mut through_infinity, mut unbounded) = (0, 0);
+    for (id, a, b, curve) in &curves {
+        let ms = [float_matrix(a), float_matrix(b)];
+        for points in [5, 100] {
+            let options = SampleOptions {
+                points,
+                ..SampleOptions::default()
+            };
+            let s = match sample(curve, &options) {
+                Ok(s) => s,
+                Err(e) => {
+                    failures.push(format!("{id}: {e}"));
+                    continue;
+                }
+            };
+            if s.pieces.len() != curve.pieces.len() {
+                failures.push(format!("{id}: {} pieces sampled", s.pieces.len()));
+            }
+            for (k, p) in s.pieces.iter().enumerate() {
+                if let Err(why) = check_piece(p, &ms, points) {
+                    failures.push(format!("{id} piece {k} ({points} points): {why}"));
+                }
+                unbounded += usize::from(!p.affine.bounded);
+            }
+        }
+        through_infinity += curve
+            .pieces
+            .iter()
+            .filter(|p| match p {
+                RealPiece::Curve { arcs, .. } => arcs.iter().any(|a| match &a.range {
+                    ParamRange::All => true,
+                    ParamRange::Between(ParamValue::Finite(l), ParamValue::Finite(h)) => h <= l,
+                    ParamRange::Between(..) => true,
+                }),
+                RealPiece::Point { .. } => false,
+            })
+            .count();
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    // the corpus exercises ranges through u = ∞ and unbounded pieces
+    assert!(
+        through_infinity > 0 && unbounded > 0,
+        "{through_infinity} {unbounded}"
+    );
+}
+
+#[test]
+fn tolerance_bounds_the_affine_chord_deviation() {
+    // two ellipses (a sphere and an elliptic cylinder): bounded, so every chord counts
+    let a = parse_quadric("x^2+y^2+z^2-1").unwrap();
+    let b = parse_quadric("2*x^2+4*y^2-1").unwrap();
+    let curve = parameterize(&a, &b).unwrap();
+    let coarse = sample(&curve, &SampleOptions::default()).unwrap();
+    let tol = 1e-4;
+    let fine = sample(
+        &curve,
+        &SampleOptions {
+            tolerance: Some(tol),
+            ..SampleOptions::default()
+        },
+    )
+    .unwrap();
+    for (c, f) in coarse.pieces.iter().zip(&fine.pieces) {
+        assert!(f.points.len() > c.points.len());
+        // the midpoint of each chord is within about tol of the curve (a unit sphere here):
+        // |mid| ≥ 1 − tol
+        for branch in &f.affine.branches {
+            for w in branch.windows(2) {
+                let mid: Vec<f64> = (0..3).map(|i| 0.5 * (w[0][i] + w[1][i])).collect();
+                let r = mid.iter().map(|v| v * v).sum::<f64>().sqrt();
+                assert!(r >= 1.0 - 2.0 * tol, "chord midpoint at radius {r}");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_user_chart_moves_the_points_at_infinity() {
+    // the plane x = 2w (h = x − 2w) never meets the ellipses of the sphere (|x| ≤ 1), the
+    // plane x = w/2 (h = 2x − w) cuts each of them twice
+    let a = parse_quadric("x^2+y^2+z^2-1").unwrap();
+    let b = parse_quadric("2*x^2+4*y^2-1").unwrap();
+    let curve = parameterize(&a, &b).unwrap();
+    let r = |v: i64| RBig::from(v);
+    for (chart, crossings) in [
+        ([r(1), r(0), r(0), r(-2)], 0),
+        ([r(2), r(0), r(0), r(-1)], 2),
+    ] {
+        let s = sample(
+            &curve,
+            &SampleOptions {
+                chart: chart.clone(),
+                ..SampleOptions::default()
+            },
+        )
+        .unwrap();
+        for p in &s.pieces {
+            assert_eq!(p.affine.points_at_infinity.len(), crossings, "{chart:?}");
+            assert_eq!(p.affine.bounded, crossings == 0);
+            assert_eq!(p.affine.branches.len(), crossings.max(1));
+            for x in &p.affine.points_at_infinity {
+                // on the plane: x = w/2
+                assert!((2.0 * x[0] - x[3]).abs() < 1e-12, "{x:?}");
+            }
+        }
+    }
+    let zero = SampleOptions {
+        chart: [r(0), r(0), r(0), r(0)],
+        ..SampleOptions::default()
+    };
+    assert!(sample(&curve, &zero).is_err());
+    let none = SampleOptions {
+        points: 0,
+        ..SampleOptions::default()
+    };
+    assert!(sample(&curve, &none).is_err());
+}
