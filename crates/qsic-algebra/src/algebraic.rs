@@ -503,13 +503,19 @@ impl Ord for AlgebraicReal {
                 return AlgebraicReal::from_rational(v.clone()).cmp(other);
             }
         }
-        // different numbers: refinement separates them
+        // different numbers: refinement separates them; only the wider interval is refined,
+        // so that one already narrow (a shared refinement) does not grow huge ends in
+        // lockstep with the other
+        let width = |iv: &RootInterval| iv.hi() - iv.lo();
         let o = loop {
             if let Some(o) = separated(&a.interval, &b.interval) {
                 break o;
             }
-            a.step(&self.poly);
-            b.step(&other.poly);
+            if width(&a.interval) >= width(&b.interval) {
+                a.step(&self.poly);
+            } else {
+                b.step(&other.poly);
+            }
         };
         self.store(a);
         other.store(b);
@@ -535,6 +541,25 @@ impl fmt::Display for AlgebraicReal {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn comparing_a_narrow_number_with_a_wide_one_refines_only_the_wide_one() {
+        // √2 refined far, √3 not at all: the comparison must not refine √2 further
+        let sqrt2 = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 1]))
+            .pop()
+            .unwrap();
+        let fine = RBig::from_parts(IBig::ONE, dashu_int::UBig::ONE << 4000);
+        let narrow = sqrt2.refined_interval(&fine);
+        let sqrt3 = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-3, 0, 1]))
+            .pop()
+            .unwrap();
+        assert_eq!(sqrt2.cmp(&sqrt3), std::cmp::Ordering::Less);
+        assert_eq!(
+            sqrt2.refined_interval(&RBig::ONE),
+            narrow,
+            "√2 was refined again"
+        );
+    }
     use super::*;
     use crate::poly::sturm::SturmSequence;
     use proptest::prelude::*;

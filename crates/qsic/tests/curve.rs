@@ -247,12 +247,19 @@ fn summary(v: &AffineCurve) -> Vec<String> {
         v.singular_finite,
         v.singular_at_infinity
     )];
-    out.extend(v.components.iter().map(|c| {
-        format!(
-            "{:?} {} {:?} {}",
-            c.name, c.at_infinity, c.bounded, c.points_at_infinity
-        )
-    }));
+    // the components' order is not part of the answer
+    let mut components: Vec<String> = v
+        .components
+        .iter()
+        .map(|c| {
+            format!(
+                "{:?} {} {:?} {}",
+                c.name, c.at_infinity, c.bounded, c.points_at_infinity
+            )
+        })
+        .collect();
+    components.sort();
+    out.extend(components);
     out
 }
 

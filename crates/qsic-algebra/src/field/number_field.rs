@@ -603,13 +603,17 @@ impl Poly<NumberFieldElement> {
             .iter()
             .find_map(|c| c.field_if_irrational())
             .cloned();
-        let mut width = RBig::from_parts(IBig::ONE, dashu_int::UBig::ONE << 16);
+        // boxes rounded outward to dyadic ends of `bits` bits: the shared refinements may be
+        // far narrower, with ends of huge height that would make the arithmetic crawl
+        let mut bits = 16usize;
         loop {
-            let alpha = field
-                .as_ref()
-                .map(|k| k.snapshot().alpha.refined_interval(&width));
+            let width = RBig::from_parts(IBig::ONE, dashu_int::UBig::ONE << bits);
+            let alpha = field.as_ref().map(|k| {
+                let iv = k.snapshot().alpha.refined_interval(&width);
+                dyadic_outward(iv.lo(), iv.hi(), bits + 8)
+            });
             let tv = t.refined_interval(&width);
-            let t_box = (tv.lo().clone(), tv.hi().clone());
+            let t_box = dyadic_outward(tv.lo(), tv.hi(), bits + 8);
             // the coefficients' enclosures, then Horner in t
             let mut acc = (RBig::ZERO, RBig::ZERO);
             for c in self.coeffs().iter().rev() {
@@ -617,7 +621,7 @@ impl Poly<NumberFieldElement> {
                     (Some(a), Some(_)) => {
                         let b = interval_horner(
                             c.num.coeffs().iter().map(|v| RBig::from(v.clone())),
-                            &(a.lo().clone(), a.hi().clone()),
+                            a,
                         );
                         let d = RBig::from(c.den.clone());
                         (b.0 / &d, b.1 / &d)
@@ -636,7 +640,7 @@ impl Poly<NumberFieldElement> {
             if acc.1 < RBig::ZERO {
                 return Sign::Negative;
             }
-            width = &width * &width;
+            bits *= 2;
         }
     }
 
@@ -693,6 +697,14 @@ impl Poly<NumberFieldElement> {
             })
             .collect()
     }
+}
+
+/// `[⌊lo·2ᵏ⌋/2ᵏ, ⌈hi·2ᵏ⌉/2ᵏ]`: an enclosure of `[lo, hi]` with dyadic ends.
+fn dyadic_outward(lo: &RBig, hi: &RBig, k: usize) -> (RBig, RBig) {
+    let scale = RBig::from(IBig::ONE << k);
+    let down = RBig::from((lo * &scale).floor()) / &scale;
+    let up = RBig::from((hi * &scale).ceil()) / &scale;
+    (down, up)
 }
 
 /// The product of two rational intervals `[a₀, a₁]·[b₀, b₁]`.

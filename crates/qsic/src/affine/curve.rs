@@ -20,8 +20,8 @@ use super::Chart;
 use crate::classify::{ComponentKind, SingularPointKind};
 use crate::error::Error;
 use crate::param::{
-    ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue, Point, PointPoly, RealPiece,
-    Sheet,
+    ComponentParam, Curve, LevinForm, Number, NumberPoly, ParamRange, ParamValue, Point, PointPoly,
+    RealPiece, Sheet,
 };
 use crate::quadric::Quadric;
 use qsic_algebra::field::NumberFieldElement;
@@ -266,77 +266,111 @@ impl InfinityEvents<'_> {
         )
     }
 
-    /// Events of Levin's `a ± d√s` (`s` of degree 4, `a` of degree `k`, `d` of `k − 2`).
-    /// At a root of `s` where `a` vanishes the point is `d`'s (the limit).
-    fn levin(&mut self, a: &PointPoly, d: &PointPoly, s: &NumberPoly, k: usize) -> Vec<Event> {
-        let (wa, wd) = (chart_form(self.l, a), chart_form(self.l, d));
-        let a_inf: PointPoly = std::array::from_fn(|i| at_infinity_chart(&a[i], k));
+    /// Events of Levin's `a ± d√s` (`s` of degree 4, `a` of degree `k`, `d` of `k − 2`),
+    /// with `alternate` another form of the same sheets: where one form vanishes (a base
+    /// point, e.g. where the ruling is tangent), the other gives the point.
+    fn levin(
+        &mut self,
+        primary: &LevinForm,
+        s: &NumberPoly,
+        alternate: Option<&LevinForm>,
+    ) -> Result<Vec<Event>, Error> {
+        let forms: Vec<&LevinForm> = std::iter::once(primary).chain(alternate).collect();
+        let (wa, wd) = (
+            chart_form(self.l, &primary.a),
+            chart_form(self.l, &primary.d),
+        );
+        let r = &(&wa * &wa) - &(s * &(&wd * &wd));
+        // every parameter where a sheet meets the plane at infinity, or the primary form
+        // vanishes, is a root of r (finite, or v = 0 in the chart v = 1/u)
+        let mut candidates: Vec<ParamValue> =
+            r.real_roots().into_iter().map(ParamValue::Finite).collect();
+        candidates.push(ParamValue::Infinity);
         let mut events = Vec::new();
-        // finite u, then u = ∞ through v = 1/u
-        let charts = [
-            (wa.clone(), wd.clone(), s.clone(), false),
-            (
-                at_infinity_chart(&wa, k),
-                at_infinity_chart(&wd, k.saturating_sub(2)),
-                at_infinity_chart(s, 4),
-                true,
-            ),
-        ];
-        for (wa, wd, s, infinite) in charts {
-            let a_here: &PointPoly = if infinite { &a_inf } else { a };
-            let r = &(&wa * &wa) - &(&s * &(&wd * &wd));
-            let roots: Vec<AlgebraicReal> = if infinite {
-                // only v = 0 is new
-                let zero = AlgebraicReal::from_rational(RBig::ZERO);
-                if r.coeff(0).is_zero() {
-                    vec![zero]
-                } else {
-                    vec![]
-                }
-            } else {
-                r.real_roots()
-            };
-            for t in roots {
-                let at = if infinite {
-                    ParamValue::Infinity
-                } else {
-                    ParamValue::Finite(t.clone())
+        for at in candidates {
+            // the forms and s in the chart of `at`, and the parameter there
+            let (t, s_here, here): (AlgebraicReal, NumberPoly, Vec<(PointPoly, PointPoly)>) =
+                match &at {
+                    ParamValue::Finite(t) => (
+                        t.clone(),
+                        s.clone(),
+                        forms.iter().map(|f| (f.a.clone(), f.d.clone())).collect(),
+                    ),
+                    ParamValue::Infinity => (
+                        AlgebraicReal::from_rational(RBig::ZERO),
+                        at_infinity_chart(s, 4),
+                        forms
+                            .iter()
+                            .map(|f| {
+                                (
+                                    std::array::from_fn(|i| at_infinity_chart(&f.a[i], f.degree)),
+                                    std::array::from_fn(|i| {
+                                        at_infinity_chart(&f.d[i], f.degree.saturating_sub(2))
+                                    }),
+                                )
+                            })
+                            .collect(),
+                    ),
                 };
-                match s.sign_at(&t) {
-                    Sign::Negative => {}
-                    Sign::Zero => {
-                        // the point is a(t), or d(t) where a(t) = 0
-                        let base = a_here.iter().all(|c| c.sign_at(&t) == Sign::Zero);
-                        let w = if base { &wd } else { &wa };
-                        if w.sign_at(&t) == Sign::Zero {
-                            events.push(Event {
-                                at,
-                                sheet: None,
-                                vertex: self.local(),
-                            });
-                        }
+            let sheets: Vec<Option<Sheet>> = match s_here.sign_at(&t) {
+                Sign::Negative => continue,
+                Sign::Zero => vec![None],
+                Sign::Positive => vec![Some(Sheet::Plus), Some(Sheet::Minus)],
+            };
+            for sheet in sheets {
+                let sigma = if sheet == Some(Sheet::Minus) {
+                    Sign::Negative
+                } else {
+                    Sign::Positive
+                };
+                let mut at_infinity = None;
+                for (fa, fd) in &here {
+                    let vanishes =
+                        (0..4).all(|i| sheet_value_zero(&fa[i], &fd[i], &s_here, &t, sigma));
+                    if !vanishes {
+                        let (wa, wd) = (chart_form(self.l, fa), chart_form(self.l, fd));
+                        at_infinity = Some(sheet_value_zero(&wa, &wd, &s_here, &t, sigma));
+                        break;
                     }
-                    Sign::Positive => {
-                        let (sa, sd) = (wa.sign_at(&t), wd.sign_at(&t));
-                        let sheets: Vec<Sheet> = match (sa, sd) {
-                            (Sign::Zero, Sign::Zero) => vec![Sheet::Plus, Sheet::Minus],
-                            (Sign::Zero, _) | (_, Sign::Zero) => vec![],
-                            (x, y) if x == y => vec![Sheet::Minus],
-                            _ => vec![Sheet::Plus],
-                        };
-                        for sheet in sheets {
-                            events.push(Event {
-                                at: at.clone(),
-                                sheet: Some(sheet),
-                                vertex: self.local(),
-                            });
-                        }
+                }
+                match at_infinity {
+                    None => {
+                        return Err(Error::Unsupported(
+                            "affine view: both Levin forms vanish at one parameter".into(),
+                        ))
                     }
+                    Some(true) => events.push(Event {
+                        at: at.clone(),
+                        sheet,
+                        vertex: self.local(),
+                    }),
+                    Some(false) => {}
                 }
             }
         }
-        events
+        Ok(events)
     }
+}
+
+/// Whether `p(t) + σ·q(t)·√s(t) = 0` (`s(t) ≥ 0`), exactly: with `s(t)q(t) ≠ 0` it needs
+/// `p(t)² = q(t)²s(t)` and `sign p(t) = −σ·sign q(t)`.
+fn sheet_value_zero(
+    p: &NumberPoly,
+    q: &NumberPoly,
+    s: &NumberPoly,
+    t: &AlgebraicReal,
+    sigma: Sign,
+) -> bool {
+    let sp = p.sign_at(t);
+    if s.sign_at(t) == Sign::Zero || q.sign_at(t) == Sign::Zero {
+        return sp == Sign::Zero;
+    }
+    if sp == Sign::Zero {
+        return false;
+    }
+    let sq = q.sign_at(t);
+    let opposite = if sigma == Sign::Positive { -sq } else { sq };
+    sp == opposite && (&(p * p) - &(s * &(q * q))).sign_at(t) == Sign::Zero
 }
 
 /// The vertices met along a closed piece, in order (consecutive repeats merged).
@@ -457,7 +491,20 @@ pub fn affine_curve(
                     }
                 }
             }
-            ComponentParam::Levin { a, d, s, degree } => inf.levin(a, d, s, *degree),
+            ComponentParam::Levin {
+                a,
+                d,
+                s,
+                degree,
+                alternate,
+            } => {
+                let primary = LevinForm {
+                    a: a.clone(),
+                    d: d.clone(),
+                    degree: *degree,
+                };
+                inf.levin(&primary, s, alternate.as_deref())?
+            }
             ComponentParam::Point(_) => Vec::new(),
         };
         piece_vertices.push(Some(ordered_vertices(arcs, &events)));

@@ -44,9 +44,24 @@ pub enum ComponentParam {
         d: PointPoly,
         /// The homogeneous degree of `a` (the point at `u = ∞` is `a_k ± d_{k−2}√s₄`).
         degree: usize,
+        /// Another form `a′ ± d′√s` of the same curve and sheets, proportional to this one
+        /// where both are nonzero, vanishing elsewhere: where this form vanishes (a base point,
+        /// where the ruling meets the curve at its own end) the alternate gives the point.
+        alternate: Option<Box<LevinForm>>,
         /// `s(u)`, a binary form of homogeneous degree 4 (degree drop: root at `u = ∞`).
         s: NumberPoly,
     },
+}
+
+/// One Levin form `a(u) ± d(u)√s(u)` (with the `s` of its [`ComponentParam::Levin`]).
+#[derive(Clone, Debug)]
+pub struct LevinForm {
+    /// `a(u)`, of homogeneous degree `degree`.
+    pub a: PointPoly,
+    /// `d(u)`, of homogeneous degree `degree − 2`.
+    pub d: PointPoly,
+    /// The homogeneous degree of `a`.
+    pub degree: usize,
 }
 
 /// An irreducible component of the intersection over ℂ.
@@ -209,7 +224,7 @@ fn poly_form(m: &[[RBig; 4]; 4], x: &PointPoly, y: &PointPoly) -> NumberPoly {
 impl ComponentParam {
     /// Whether the parameterization lies on the quadric of matrix `m`, decided exactly as
     /// polynomial identities in `u`: `XᵀMX ≡ 0`; for Levin's form `aᵀMa + s·dᵀMd ≡ 0` and
-    /// `aᵀMd ≡ 0` (both sheets on the quadric for every `u`).
+    /// `aᵀMd ≡ 0` (both sheets on the quadric for every `u`), for the alternate form too.
     pub fn lies_on(&self, m: &[[RBig; 4]; 4]) -> bool {
         let constant =
             |p: &Point| -> PointPoly { std::array::from_fn(|i| Poly::constant(p[i].clone())) };
@@ -219,9 +234,14 @@ impl ComponentParam {
                 poly_form(m, &x, &x).is_zero()
             }
             ComponentParam::Rational { x, .. } => poly_form(m, x, x).is_zero(),
-            ComponentParam::Levin { a, d, s, .. } => {
-                (&poly_form(m, a, a) + &(s * &poly_form(m, d, d))).is_zero()
-                    && poly_form(m, a, d).is_zero()
+            ComponentParam::Levin {
+                a, d, s, alternate, ..
+            } => {
+                let on = |a: &PointPoly, d: &PointPoly| {
+                    (&poly_form(m, a, a) + &(s * &poly_form(m, d, d))).is_zero()
+                        && poly_form(m, a, d).is_zero()
+                };
+                on(a, d) && alternate.as_ref().is_none_or(|f| on(&f.a, &f.d))
             }
         }
     }

@@ -24,8 +24,8 @@ pub mod sample;
 mod surface;
 
 pub use curve::{
-    Arc, Component, ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue, Point,
-    PointPoly, RealPiece, Sheet, SingularPoint,
+    Arc, Component, ComponentParam, Curve, LevinForm, Number, NumberPoly, ParamRange, ParamValue,
+    Point, PointPoly, RealPiece, Sheet, SingularPoint,
 };
 pub use line_cubic::{parameterize_line_and_cubic, LineAndCubic, Meeting};
 pub use nodal::{parameterize_singular_quartic, SingularQuartic};
@@ -224,7 +224,7 @@ pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
     match (classification.pencil, classification.case) {
         (PencilKind::Regular, Some(1..=4)) => {
             let levin = parameterize_smooth_quartic(a, b)?;
-            levin_curve(classification, &levin)
+            levin_curve(classification, &levin, a, b)
         }
         (PencilKind::Regular, Some(5..=8 | 11)) => {
             nodal::singular_quartic_curve(classification, a, b)
@@ -253,6 +253,8 @@ pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
 fn levin_curve(
     classification: Classification,
     levin: &LevinParameterization,
+    a_quadric: &Quadric,
+    b_quadric: &Quadric,
 ) -> Result<Curve, Error> {
     let n = levin.real_components()?;
     let field = levin.delta.as_ref().map(curve::sqrt_field);
@@ -275,14 +277,38 @@ fn levin_curve(
         SurfaceKind::DoublyRuled => 3,
         SurfaceKind::Cone => 4,
     };
+    // the alternate form: v = −c₀/(c₁ ± √s) gives (c₁ ± √s)·b − c₀·d on the same sheet
+    let qm = to_quadratic(&match levin.substituted {
+        Substituted::A => integer_matrix(a_quadric),
+        Substituted::B => integer_matrix(b_quadric),
+    });
+    let (rb, rd) = (&levin.surface.ruling.b, &levin.surface.ruling.d);
+    let (c0, c1) = (poly_form(&qm, rb, rb), poly_form(&qm, rb, rd));
+    let alt_a: PolyVector = std::array::from_fn(|i| &(&c1 * &rb[i]) - &(&c0 * &rd[i]));
+    let alternate = Some(Box::new(LevinForm {
+        a: vector(&alt_a),
+        d: vector(rb),
+        // c₁·b: (2 + 1) on a doubly ruled surface, (2 + 0) on a cone
+        degree: match levin.surface.kind {
+            SurfaceKind::DoublyRuled => 3,
+            SurfaceKind::Cone => 2,
+        },
+    }));
     let param = match quotients {
         Some(q) => ComponentParam::Levin {
             a: d,
             d: std::array::from_fn(|i| q[i].clone()),
             degree: degree - 2,
             s,
+            alternate,
         },
-        None => ComponentParam::Levin { a, d, degree, s },
+        None => ComponentParam::Levin {
+            a,
+            d,
+            degree,
+            s,
+            alternate,
+        },
     };
     let dr = &levin.discriminant;
     let mut ends: Vec<ParamValue> = dr.roots.iter().cloned().map(ParamValue::Finite).collect();

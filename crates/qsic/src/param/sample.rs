@@ -393,7 +393,9 @@ impl Evaluator {
                     dd: x.iter().map(|p| dd_padded(p, len)).collect(),
                 })
             }
-            ComponentParam::Levin { a, d, s, degree } => {
+            ComponentParam::Levin {
+                a, d, s, degree, ..
+            } => {
                 if s.degree().is_some_and(|k| k > 4) {
                     return Err(Error::Algebra(format!("s(u) = {s} is not a quartic form")));
                 }
@@ -622,7 +624,9 @@ impl ExactParam {
                 let degree = x.iter().map(|p| p.degree().unwrap_or(0)).max().unwrap_or(0);
                 ExactParam::Rational { x, degree }
             }),
-            ComponentParam::Levin { a, d, s, degree } => {
+            ComponentParam::Levin {
+                a, d, s, degree, ..
+            } => {
                 let degree = a
                     .iter()
                     .map(deg)
