@@ -222,14 +222,24 @@ pub trait Answer: Sync {
     fn answer(&self, a: Option<&Quadric>, b: Option<&Quadric>) -> Result<String, String>;
 }
 
-/// `qsic classify`: the classification's fields.
-pub struct Classify;
+/// `qsic classify`: the classification's fields, then the `"affine"` object (see
+/// [`crate::affine`]) unless `projective_only`.
+pub struct Classify {
+    /// Leave out the affine view (it builds the curve: much slower than the classification).
+    pub projective_only: bool,
+}
 
 impl Answer for Classify {
     fn answer(&self, a: Option<&Quadric>, b: Option<&Quadric>) -> Result<String, String> {
         let c = classify_allowing_zero(a, b).map_err(|e| format!("A and B: both are zero: {e}"))?;
         let mut out = String::with_capacity(512);
         write_classification_fields(&mut out, &c);
+        if !self.projective_only {
+            let chart = qsic::affine::Chart::default();
+            let view = crate::affine::affine_json(a, b, &chart, "w", [false, false]);
+            out.push_str(",\"affine\":");
+            out.push_str(&view.to_string());
+        }
         Ok(out)
     }
 }
@@ -237,7 +247,12 @@ impl Answer for Classify {
 /// The output line for one input line (without newline) and whether it succeeded.
 /// Never panics: a panic inside the classifier becomes an error line.
 pub fn answer_line(line: &RawLine) -> (String, bool) {
-    answer_line_with(line, &Classify)
+    answer_line_with(
+        line,
+        &Classify {
+            projective_only: false,
+        },
+    )
 }
 
 /// [`answer_line`] for any [`Answer`].

@@ -3,6 +3,7 @@
 //!
 //! | module | owns |
 //! |---|---|
+//! | [`affine`] | the `"affine"` object of `qsic classify`: the pair in ℝ³ |
 //! | [`input`] | reading a quadric from an argument or a JSON value, exactly |
 //! | [`output`] | the JSON result object ([`output::classification_to_json`]) and the text report |
 //! | [`mod@line`] | the fields of one batch line, borrowed from its text (a strict fast reader, then `serde_json`) |
@@ -12,6 +13,7 @@
 //! | [`param`] | `qsic param`: the exact curve as JSON and text |
 //! | [`mod@sample`] | `qsic sample`: real points as JSON, CSV, OBJ |
 
+pub mod affine;
 pub mod batch;
 pub mod contact;
 pub mod input;

@@ -208,6 +208,11 @@ struct ClassifyArgs {
     /// Print one JSON object instead of the text report (batch output is always JSON).
     #[arg(long)]
     json: bool,
+
+    /// Leave out the affine view ("affine": surfaces, curves in R^3, solids), which builds
+    /// the curve and costs far more than the classification.
+    #[arg(long)]
+    projective: bool,
 }
 
 const MOTION_HELP: &str = "\
@@ -289,8 +294,13 @@ fn main() -> ExitCode {
         Command::Param(args) => run_param(&args),
         Command::Sample(args) => run_sample(&args),
         Command::Classify(args) => match (&args.batch, &args.a, &args.b) {
-            (Some(path), _, _) => run_batch(path, batch::answer_line),
-            (None, Some(a), Some(b)) => run_single(a, b, args.json),
+            (Some(path), _, _) => run_batch_with(
+                path,
+                &batch::Classify {
+                    projective_only: args.projective,
+                },
+            ),
+            (None, Some(a), Some(b)) => run_single(a, b, args.json, args.projective),
             _ => {
                 // clap's `required_unless_present` makes this unreachable; answer as a usage error.
                 let mut cmd = Cli::command();
@@ -343,15 +353,24 @@ fn run_contact(args: &ContactArgs) -> ExitCode {
 }
 
 /// `qsic classify A B`: exit 0 with the report, or 1 with `error: A: …` on stderr.
-fn run_single(a: &str, b: &str, json: bool) -> ExitCode {
+fn run_single(a: &str, b: &str, json: bool, projective: bool) -> ExitCode {
     let read =
         |name: &str, text: &str| input::quadric_from_arg(text).map_err(|e| format!("{name}: {e}"));
     let result = read("A", a).and_then(|qa| {
         let qb = read("B", b)?;
-        qsic::classify_allowing_zero(qa.as_ref(), qb.as_ref())
-            .map_err(|e| format!("A and B: both are zero: {e}"))
+        let c = qsic::classify_allowing_zero(qa.as_ref(), qb.as_ref())
+            .map_err(|e| format!("A and B: both are zero: {e}"))?;
+        let view = (!projective).then(|| {
+            qsic::affine::affine_view(
+                qa.as_ref(),
+                qb.as_ref(),
+                &qsic::affine::Chart::default(),
+                [false, false],
+            )
+        });
+        Ok((c, view))
     });
-    let classification = match result {
+    let (classification, view) = match result {
         Ok(c) => c,
         Err(message) => {
             eprintln!("error: {message}");
@@ -359,9 +378,21 @@ fn run_single(a: &str, b: &str, json: bool) -> ExitCode {
         }
     };
     let text = if json {
-        output::classification_to_json_line(&classification) + "\n"
+        let mut line = output::classification_to_json_line(&classification);
+        if let Some(view) = &view {
+            // the object's closing brace last: the affine object goes before it
+            line.pop();
+            line.push_str(",\"affine\":");
+            line.push_str(&qsic_cli::affine::to_json(view, "w").to_string());
+            line.push('}');
+        }
+        line + "\n"
     } else {
-        output::human_report(&classification)
+        let mut text = output::human_report(&classification);
+        if let Some(view) = &view {
+            text.push_str(&format!("in R^3 (w = 0 at infinity): {}\n", view.summary()));
+        }
+        text
     };
     let mut stdout = io::stdout().lock();
     match stdout

@@ -110,7 +110,7 @@ fn check_piece(p: &SampledPiece, ms: &[[[f64; 4]; 4]; 2], points: usize) -> Resu
             return Err(format!("a point at infinity has w = {}", x[3]));
         }
     }
-    if p.affine.bounded != p.affine.points_at_infinity.is_empty() {
+    if !p.affine.at_infinity && p.affine.bounded != p.affine.points_at_infinity.is_empty() {
         return Err("bounded but with points at infinity".into());
     }
     for branch in &p.affine.branches {
@@ -125,13 +125,18 @@ fn check_piece(p: &SampledPiece, ms: &[[[f64; 4]; 4]; 2], points: usize) -> Resu
             }
         }
     }
+    if p.affine.at_infinity
+        && !(p.affine.branches.is_empty() && p.affine.points_at_infinity.is_empty() || p.isolated)
+    {
+        return Err("a piece at infinity with affine points".into());
+    }
     let crossings = p.affine.points_at_infinity.len();
     let want = if p.closed {
         crossings.max(1)
     } else {
         crossings + 1
     };
-    if !p.isolated && p.affine.branches.len() != want {
+    if !p.isolated && !p.affine.at_infinity && p.affine.branches.len() != want {
         return Err(format!(
             "{} affine branches for {crossings} points at infinity",
             p.affine.branches.len()

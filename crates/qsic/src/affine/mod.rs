@@ -410,3 +410,100 @@ mod tests {
         assert!(Chart::new([0, 0, 0, 0].map(RBig::from)).is_err());
     }
 }
+
+/// Everything the affine view says about a pair: the surfaces' names, the curve in ℝ³ when
+/// its exact components are available, and the relation of two solid ellipsoids.
+#[derive(Clone, Debug)]
+pub struct AffineView {
+    /// The affine names of `A` and `B` (`None` for the zero form).
+    pub surfaces: [Option<AffineSurface>; 2],
+    /// The curve in ℝ³, or why it is not available (a class whose curve is not built yet).
+    pub curve: Result<AffineCurve, Error>,
+    /// The relation of the solids when both surfaces are ellipsoids (spheres included).
+    pub solids: Option<crate::solids::SolidRelation>,
+}
+
+impl AffineView {
+    /// A one-line summary in affine words, e.g. `"sphere and circular_cylinder: 2 bounded
+    /// curves in ℝ³; no point at infinity"`.
+    pub fn summary(&self) -> String {
+        let name = |s: &Option<AffineSurface>| s.map_or("zero form", AffineSurface::key);
+        let mut out = format!(
+            "{} and {}",
+            name(&self.surfaces[0]),
+            name(&self.surfaces[1])
+        );
+        match &self.curve {
+            Ok(c) => {
+                let mut parts = Vec::new();
+                let plural =
+                    |n: usize, what: &str| format!("{n} {what}{}", if n == 1 { "" } else { "s" });
+                if c.curves_bounded + c.curves_unbounded + c.isolated_points == 0 {
+                    parts.push("no common point in ℝ³".to_owned());
+                } else {
+                    if c.curves_bounded > 0 {
+                        parts.push(plural(c.curves_bounded, "bounded curve"));
+                    }
+                    if c.curves_unbounded > 0 {
+                        parts.push(plural(c.curves_unbounded, "unbounded curve"));
+                    }
+                    if c.isolated_points > 0 {
+                        parts.push(plural(c.isolated_points, "isolated point"));
+                    }
+                }
+                out.push_str(": ");
+                out.push_str(&parts.join(", "));
+                out.push_str(&match c.points_at_infinity {
+                    0 => "; no point at infinity".to_owned(),
+                    n => format!("; {} at infinity", plural(n, "point")),
+                });
+            }
+            Err(_) => out.push_str(": the curve in ℝ³ is not available for this class yet"),
+        }
+        if let Some(s) = self.solids {
+            out.push_str("; solids ");
+            out.push_str(s.key());
+        }
+        out
+    }
+}
+
+/// The affine view of `a` and `b` (either may be the zero form, `None`) in `chart`;
+/// `planes[i]` marks an input given as a plane (its quadric the double plane): its name is
+/// `plane`.
+pub fn affine_view(
+    a: Option<&Quadric>,
+    b: Option<&Quadric>,
+    chart: &Chart,
+    planes: [bool; 2],
+) -> AffineView {
+    let name = |q: Option<&Quadric>, plane: bool| {
+        q.map(|q| {
+            if plane {
+                AffineSurface::Plane
+            } else {
+                surface_name(q, chart)
+            }
+        })
+    };
+    let surfaces = [name(a, planes[0]), name(b, planes[1])];
+    let curve = match (a, b) {
+        (Some(a), Some(b)) => {
+            crate::param::parameterize(a, b).and_then(|c| affine_curve(&c, a, b, chart))
+        }
+        _ => Err(Error::Unsupported("a single quadric: no curve".into())),
+    };
+    let solids = match (a, b, surfaces) {
+        (Some(a), Some(b), [Some(sa), Some(sb)])
+            if sa.is_ellipsoid() && sb.is_ellipsoid() && chart.is_default() =>
+        {
+            crate::solids::solid_relation(a, b).ok()
+        }
+        _ => None,
+    };
+    AffineView {
+        surfaces,
+        curve,
+        solids,
+    }
+}

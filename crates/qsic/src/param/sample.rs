@@ -107,8 +107,11 @@ pub struct AffinePiece {
     pub branches: Vec<Vec<[f64; 3]>>,
     /// No real point at infinity.
     pub bounded: bool,
-    /// The real points at infinity (unit vectors in ℝ⁴), in order along the piece.
+    /// The real points at infinity (unit vectors in ℝ⁴), in order along the piece (none for
+    /// a piece lying in the plane at infinity).
     pub points_at_infinity: Vec<[f64; 4]>,
+    /// The piece lies in the plane at infinity: no point in the chart.
+    pub at_infinity: bool,
 }
 
 /// The points of one [`RealPiece`].
@@ -187,7 +190,11 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
                     })?;
                 let sampler = Sampler {
                     eval: Evaluator::new(param)?,
-                    crossings: exact_crossings(&ExactParam::new(param), &chart.exact),
+                    crossings: if lies_in_plane(param, &chart.exact) {
+                        Crossings::InPlane
+                    } else {
+                        exact_crossings(&ExactParam::new(param), &chart.exact)
+                    },
                     chart: &chart,
                     tolerance: options.tolerance,
                 };
@@ -267,12 +274,14 @@ fn point_piece(
             branches: Vec::new(),
             bounded: false,
             points_at_infinity: vec![x],
+            at_infinity: true,
         }
     } else {
         AffinePiece {
             branches: chart.affine(&x).into_iter().map(|p| vec![p]).collect(),
             bounded: true,
             points_at_infinity: Vec::new(),
+            at_infinity: false,
         }
     };
     Ok(SampledPiece {
@@ -700,6 +709,19 @@ enum Crossings {
     Unknown,
 }
 
+/// Whether a rational parameterization lies in the plane `h = 0` (`h·X(u) ≡ 0`, exactly, in
+/// any number field).
+fn lies_in_plane(param: &ComponentParam, h: &[RBig; 4]) -> bool {
+    let ComponentParam::Rational { x, .. } = param else {
+        return false;
+    };
+    (0..4)
+        .fold(Poly::<Number>::zero(), |acc, i| {
+            &acc + &x[i].scale(&Number::rational(h[i].clone()))
+        })
+        .is_zero()
+}
+
 /// The exact crossings of the component with the plane `h = 0`.
 fn exact_crossings(exact: &ExactParam, h: &[RBig; 4]) -> Crossings {
     match exact_crossings_of(exact, h) {
@@ -1016,7 +1038,8 @@ impl Sampler<'_> {
             AffinePiece {
                 branches: Vec::new(),
                 bounded: false,
-                points_at_infinity: line.iter().map(|s| s.x).collect(),
+                points_at_infinity: Vec::new(),
+                at_infinity: true,
             }
         } else {
             self.affine(&line, closed)
@@ -1139,6 +1162,7 @@ impl Sampler<'_> {
             bounded: points_at_infinity.is_empty() && !branches.is_empty(),
             branches,
             points_at_infinity,
+            at_infinity: false,
         }
     }
 }
