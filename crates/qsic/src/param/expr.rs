@@ -11,6 +11,7 @@
 //!   [`Names`] — listed by [`Names::numbers`] with `m` and an isolating interval.
 
 use super::curve::{Number, NumberPoly};
+use qsic_algebra::poly::sturm::SturmSequence;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring, Sign};
 
 /// An algebraic number of degree > 2 named in expressions.
@@ -220,15 +221,38 @@ impl Names {
             .enumerate()
             .map(|(k, a)| {
                 let iv = a.refined_interval(&width);
+                let (lo, hi) = short_ends(a, iv.lo(), iv.hi());
                 NamedNumber {
                     name: format!("a{}", k + 1),
                     poly: a.poly().to_string(),
-                    interval: [iv.lo().to_string(), iv.hi().to_string()],
+                    interval: [lo.to_string(), hi.to_string()],
                     approx: a.to_f64(),
                 }
             })
             .collect()
     }
+}
+
+/// Ends of few digits for an isolating interval `[lo, hi]` of `a` (the shared refinement may
+/// be far finer, with ends of thousands of digits): rounded outward to multiples of `2⁻ᵏ`,
+/// the least `k ≥ 48` for which the rounded interval still holds exactly one root of `a`'s
+/// polynomial (Sturm), else the ends as they are.
+fn short_ends(a: &AlgebraicReal, lo: &RBig, hi: &RBig) -> (RBig, RBig) {
+    if lo == hi {
+        return (lo.clone(), hi.clone());
+    }
+    let sturm = SturmSequence::new(a.poly());
+    for k in [48usize, 64, 96, 128, 192, 256] {
+        let scale = RBig::from(IBig::ONE << k);
+        let down = RBig::from((lo * &scale).floor()) / &scale;
+        let up = RBig::from((hi * &scale).ceil()) / &scale;
+        let ends_not_roots =
+            !a.poly().eval_rational(&down).is_zero() && !a.poly().eval_rational(&up).is_zero();
+        if ends_not_roots && sturm.count_roots_in(&down, &up) == 1 {
+            return (down, up);
+        }
+    }
+    (lo.clone(), hi.clone())
 }
 
 /// The rational value of an element with a constant numerator.

@@ -1,0 +1,92 @@
+//! `qsic classify --batch` on affine configurations checked by hand
+//! (`tests/data/affine.jsonl`: parallel, crossing and tangent cylinders, a hyperboloid and its
+//! asymptotic cone, spheres apart, touching, overlapping, nested): every labelled field of the
+//! `"affine"` object, as `check_affine.py` judges it, plus invariance under an affine map.
+
+use serde_json::Value;
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+fn classify_batch(input: &str) -> Vec<Value> {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_qsic"))
+        .args(["classify", "--batch", "-"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(input.as_bytes())
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
+
+const COUNTS: [&str; 6] = [
+    "curves_bounded",
+    "curves_unbounded",
+    "isolated_points",
+    "points_at_infinity",
+    "singular_finite",
+    "singular_at_infinity",
+];
+
+#[test]
+fn hand_checked_affine_answers() {
+    let text = include_str!("data/affine.jsonl");
+    let lines: Vec<Value> = text
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    let results = classify_batch(text);
+    assert_eq!(results.len(), lines.len());
+    for (want, got) in lines.iter().zip(&results) {
+        let (w, g) = (&want["affine"], &got["affine"]);
+        let id = &want["id"];
+        assert_eq!(w["surfaces"], g["surfaces"], "{id}");
+        assert_eq!(w["solids"], g["solids"], "{id}");
+        for k in COUNTS {
+            assert_eq!(w[k], g[k], "{id}: {k}");
+        }
+        assert_eq!(g["chart"], "w");
+        assert!(g["summary"].as_str().is_some_and(|s| !s.is_empty()));
+    }
+}
+
+/// Moving everything by x → x + 2y − 1, y → y + z, z → z + 3 (affine, det 1) changes no
+/// count and no solid relation (names may change: a sphere becomes an ellipsoid).
+#[test]
+fn an_affine_map_changes_no_count() {
+    let text = include_str!("data/affine.jsonl");
+    let moved: String = text
+        .lines()
+        .map(|l| {
+            let mut v: Value = serde_json::from_str(l).unwrap();
+            for q in ["A", "B"] {
+                let s = v[q].as_str().unwrap();
+                // substitute simultaneously through placeholders
+                let t = s
+                    .replace('x', "(X+2*Y-1)")
+                    .replace('y', "(Y+Z)")
+                    .replace('z', "(Z+3)")
+                    .to_lowercase();
+                v[q] = Value::from(t);
+            }
+            v.to_string() + "\n"
+        })
+        .collect();
+    let (before, after) = (classify_batch(text), classify_batch(&moved));
+    assert_eq!(before.len(), after.len());
+    for (b, a) in before.iter().zip(&after) {
+        for k in COUNTS {
+            assert_eq!(b["affine"][k], a["affine"][k], "{}: {k}", b["id"]);
+        }
+        assert_eq!(b["affine"]["solids"], a["affine"]["solids"], "{}", b["id"]);
+    }
+}
