@@ -3,7 +3,7 @@
 #
 #   scripts/ingest_instructions.sh
 #
-# Batch: `qsic classify --batch -` (JSON out) on 201 and on 1 line of each random corpus of
+# Batch: `qsic classify --projective --batch -` (JSON out) on 201 and on 1 line of each random corpus of
 # the `random_corpus` example; (Ir(201) − Ir(1)) / 200 is the cost of one pair end to end.
 # Library: inclusive Ir of `construct_and_classify` in the `ingest_cost` example (two
 # `Quadric::from_integers`, or `from_f64`, and `classify` per pair) divided by the number of pairs.
@@ -19,8 +19,8 @@ trap 'rm -rf "$tmp"' EXIT
 for family in matrix poly matrix-wide poly-fractions; do
     "$target/examples/random_corpus" 201 "$family" > "$tmp/$family.jsonl"
     head -n 1 "$tmp/$family.jsonl" > "$tmp/$family-1.jsonl"
-    many=$(valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" "$target/qsic" classify --batch - < "$tmp/$family.jsonl" 2>&1 >/dev/null | sed -n 's/.*refs: *//p' | tr -d ,)
-    one=$(valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" "$target/qsic" classify --batch - < "$tmp/$family-1.jsonl" 2>&1 >/dev/null | sed -n 's/.*refs: *//p' | tr -d ,)
+    many=$(valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" "$target/qsic" classify --projective --batch - < "$tmp/$family.jsonl" 2>&1 >/dev/null | sed -n 's/.*refs: *//p' | tr -d ,)
+    one=$(valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" "$target/qsic" classify --projective --batch - < "$tmp/$family-1.jsonl" 2>&1 >/dev/null | sed -n 's/.*refs: *//p' | tr -d ,)
     echo "batch, $family lines: $(( (many - one) / 200 )) instructions per pair"
 done
 
