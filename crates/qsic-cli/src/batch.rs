@@ -706,7 +706,13 @@ mod tests {
                 number,
                 content: Content::Text(text.as_bytes().to_vec()),
             };
-            let (answer, ok) = answer_line(&raw);
+            // the classification fields (the affine object is checked in tests/affine.rs)
+            let (answer, ok) = answer_line_with(
+                &raw,
+                &Classify {
+                    projective_only: true,
+                },
+            );
             let got: Value = serde_json::from_str(&answer)
                 .unwrap_or_else(|e| panic!("line {number}: output is not JSON ({e}): {answer}"));
             let want = reference_answer(text, number);
