@@ -16,7 +16,7 @@
 //! `serde_json::Value` tree; the `id` is copied byte for byte), and its answer is written
 //! straight into one string ([`crate::output::write_classification_fields`]).
 
-use crate::input::{quadric_from_form, JsonForm};
+use crate::input::{surface_from_form, JsonForm};
 use crate::line::{read_line, Line};
 use crate::output::{write_classification_fields, write_json_string};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -218,8 +218,14 @@ pub(crate) fn open_record(id: Option<&str>) -> String {
 /// the result object, without braces and `id` (written after `"id":…,`), or the message of
 /// an error line.
 pub trait Answer: Sync {
-    /// The fields or the error message.
-    fn answer(&self, a: Option<&Quadric>, b: Option<&Quadric>) -> Result<String, String>;
+    /// The fields or the error message; `planes[i]`: the input was a plane (its quadric the
+    /// double plane).
+    fn answer(
+        &self,
+        a: Option<&Quadric>,
+        b: Option<&Quadric>,
+        planes: [bool; 2],
+    ) -> Result<String, String>;
 }
 
 /// `qsic classify`: the classification's fields, then the `"affine"` object (see
@@ -230,13 +236,18 @@ pub struct Classify {
 }
 
 impl Answer for Classify {
-    fn answer(&self, a: Option<&Quadric>, b: Option<&Quadric>) -> Result<String, String> {
+    fn answer(
+        &self,
+        a: Option<&Quadric>,
+        b: Option<&Quadric>,
+        planes: [bool; 2],
+    ) -> Result<String, String> {
         let c = classify_allowing_zero(a, b).map_err(|e| format!("A and B: both are zero: {e}"))?;
         let mut out = String::with_capacity(512);
         write_classification_fields(&mut out, &c);
         if !self.projective_only {
             let chart = qsic::affine::Chart::default();
-            let view = crate::affine::affine_json(a, b, &chart, "w", [false, false]);
+            let view = crate::affine::affine_json(a, b, &chart, "w", planes);
             out.push_str(",\"affine\":");
             out.push_str(&view.to_string());
         }
@@ -337,11 +348,13 @@ fn quadrics_line<'a, A: Answer + ?Sized>(
     let fail = |message: String| LineFailure { id, message };
     let quadric = |name: &str, form: &Option<JsonForm<'_>>| match form {
         None => Err(fail(format!("missing field \"{name}\""))),
-        Some(form) => quadric_from_form(form).map_err(|e| fail(format!("{name}: {e}"))),
+        Some(form) => surface_from_form(form).map_err(|e| fail(format!("{name}: {e}"))),
     };
     let a = quadric("A", &record.a)?;
     let b = quadric("B", &record.b)?;
-    let fields = match catch_panic(|| answer.answer(a.as_ref(), b.as_ref())) {
+    let fields = match catch_panic(|| {
+        answer.answer(a.quadric.as_ref(), b.quadric.as_ref(), [a.plane, b.plane])
+    }) {
         Ok(Ok(fields)) => fields,
         Ok(Err(message)) => return Err(fail(message)),
         Err(what) => return Err(fail(format!("internal error (a bug): {what}"))),

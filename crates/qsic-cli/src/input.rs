@@ -65,6 +65,69 @@ fn allow_zero(result: Result<Quadric, Error>) -> Result<Option<Quadric>, InputEr
     }
 }
 
+/// A quadric as read, and whether it was written as a plane (a polynomial of degree 1, read
+/// as its double plane: see [`qsic::io::parse_plane`]).
+#[derive(Clone, Debug)]
+pub struct Surface {
+    /// The quadric, `None` for the zero form.
+    pub quadric: Option<Quadric>,
+    /// The text was a plane `a·x + b·y + c·z + d = 0` (or a linear form using `w`).
+    pub plane: bool,
+}
+
+/// A polynomial text: a quadric, or a plane (degree 1) as its double plane. Only a text whose
+/// quadric has a zero quadratic part (an affine degree-1 polynomial reads as `ℓ·w`) is read a
+/// second time for a plane.
+fn polynomial_surface(text: &str) -> Result<Surface, InputError> {
+    let quadric = allow_zero(parse_quadric(text))?;
+    if let Some(q) = &quadric {
+        let m = q.integer_matrix().entries();
+        let flat = (0..3).all(|i| (0..3).all(|j| m[i][j] == qsic_algebra::IBig::ZERO));
+        if flat {
+            if let Some(p) = qsic::io::parse_plane(text).map_err(InputError::Quadric)? {
+                return Ok(Surface {
+                    quadric: Some(qsic::io::plane_as_quadric(&p).map_err(InputError::Quadric)?),
+                    plane: true,
+                });
+            }
+        }
+    }
+    Ok(Surface {
+        quadric,
+        plane: false,
+    })
+}
+
+/// [`quadric_from_arg`] with planes: a polynomial of degree 1 is a plane, read as its double
+/// plane (never the plane pair with the plane at infinity).
+///
+/// # Errors
+/// As [`quadric_from_arg`].
+pub fn surface_from_arg(text: &str) -> Result<Surface, InputError> {
+    if text.trim_start().starts_with('[') {
+        Ok(Surface {
+            quadric: quadric_from_arg(text)?,
+            plane: false,
+        })
+    } else {
+        polynomial_surface(text)
+    }
+}
+
+/// [`quadric_from_form`] with planes (see [`surface_from_arg`]).
+///
+/// # Errors
+/// As [`quadric_from_form`].
+pub fn surface_from_form(form: &JsonForm<'_>) -> Result<Surface, InputError> {
+    match form {
+        JsonForm::Text(text) => polynomial_surface(text),
+        _ => Ok(Surface {
+            quadric: quadric_from_form(form)?,
+            plane: false,
+        }),
+    }
+}
+
 /// Reads a command-line argument: a JSON array of rows if it starts with `[` (after
 /// whitespace), a polynomial in `x, y, z, w` otherwise. `None` for the zero form.
 ///

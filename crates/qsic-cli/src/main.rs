@@ -22,6 +22,8 @@ QUADRICS:
   Or a symmetric 4x4 matrix as a JSON array of rows, e.g.
   \"[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1]]\"; entries are numbers or strings (\"3/4\").
   One of A and B may be the zero form \"0\": the pencil is then the other quadric alone.
+  A polynomial of degree 1 (\"z - 1\") is a plane, read as its double plane: the answer
+  describes the section counted twice, and \"affine\" names the surface \"plane\".
   A polynomial starting with '-' is accepted as is, or after '--'.
 
 BATCH (--batch FILE, or --batch - for standard input):
@@ -355,9 +357,11 @@ fn run_contact(args: &ContactArgs) -> ExitCode {
 /// `qsic classify A B`: exit 0 with the report, or 1 with `error: A: …` on stderr.
 fn run_single(a: &str, b: &str, json: bool, projective: bool) -> ExitCode {
     let read =
-        |name: &str, text: &str| input::quadric_from_arg(text).map_err(|e| format!("{name}: {e}"));
-    let result = read("A", a).and_then(|qa| {
-        let qb = read("B", b)?;
+        |name: &str, text: &str| input::surface_from_arg(text).map_err(|e| format!("{name}: {e}"));
+    let result = read("A", a).and_then(|sa| {
+        let sb = read("B", b)?;
+        let planes = [sa.plane, sb.plane];
+        let (qa, qb) = (sa.quadric, sb.quadric);
         let c = qsic::classify_allowing_zero(qa.as_ref(), qb.as_ref())
             .map_err(|e| format!("A and B: both are zero: {e}"))?;
         let view = (!projective).then(|| {
@@ -365,7 +369,7 @@ fn run_single(a: &str, b: &str, json: bool, projective: bool) -> ExitCode {
                 qa.as_ref(),
                 qb.as_ref(),
                 &qsic::affine::Chart::default(),
-                [false, false],
+                planes,
             )
         });
         Ok((c, view))
@@ -490,8 +494,11 @@ fn run_batch_with<A: batch::Answer>(path: &std::path::Path, answer: &A) -> ExitC
 
 /// The two quadrics of a single query (`None`: the zero form), or exit 1 with the message.
 fn read_pair(a: &str, b: &str) -> Result<(Option<Quadric>, Option<Quadric>), ExitCode> {
-    let read =
-        |name: &str, text: &str| input::quadric_from_arg(text).map_err(|e| format!("{name}: {e}"));
+    let read = |name: &str, text: &str| {
+        input::surface_from_arg(text)
+            .map(|s| s.quadric)
+            .map_err(|e| format!("{name}: {e}"))
+    };
     match read("A", a).and_then(|qa| Ok((qa, read("B", b)?))) {
         Ok(pair) => Ok(pair),
         Err(message) => {

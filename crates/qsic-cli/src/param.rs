@@ -195,7 +195,12 @@ pub fn fields_of<T: Serialize>(value: &T) -> String {
 pub struct Param;
 
 impl Answer for Param {
-    fn answer(&self, a: Option<&Quadric>, b: Option<&Quadric>) -> Result<String, String> {
+    fn answer(
+        &self,
+        a: Option<&Quadric>,
+        b: Option<&Quadric>,
+        _planes: [bool; 2],
+    ) -> Result<String, String> {
         curve_of(a, b).map(|c| fields_of(&ParamJson::from(&c)))
     }
 }

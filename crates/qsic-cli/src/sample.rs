@@ -142,7 +142,12 @@ pub fn sample_of(
 pub struct Sample(pub SampleOptions);
 
 impl Answer for Sample {
-    fn answer(&self, a: Option<&Quadric>, b: Option<&Quadric>) -> Result<String, String> {
+    fn answer(
+        &self,
+        a: Option<&Quadric>,
+        b: Option<&Quadric>,
+        _planes: [bool; 2],
+    ) -> Result<String, String> {
         let (curve, sampled) = sample_of(a, b, &self.0)?;
         Ok(fields_of(&SampleJson::new(&curve, &sampled)))
     }

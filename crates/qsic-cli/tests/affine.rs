@@ -90,3 +90,37 @@ fn an_affine_map_changes_no_count() {
         assert_eq!(b["affine"]["solids"], a["affine"]["solids"], "{}", b["id"]);
     }
 }
+
+/// A degree-1 polynomial is a plane: the section of a sphere by `z = 1/2` is a circle counted
+/// twice, bounded; a plane tangent to the sphere touches it at one point; the plane `x*w`
+/// (homogeneous) stays a plane pair with the plane at infinity.
+#[test]
+fn planes_as_input_give_the_section() {
+    let lines = concat!(
+        r#"{"id": 1, "A": "x^2+y^2+z^2-1", "B": "z - 1/2"}"#,
+        "\n",
+        r#"{"id": 2, "A": "x^2+y^2+z^2-1", "B": "z - 1"}"#,
+        "\n",
+        r#"{"id": 3, "A": "x^2+y^2-z^2-1", "B": "y"}"#,
+        "\n",
+        r#"{"id": 4, "A": "x^2+y^2+z^2-1", "B": "x*w"}"#,
+        "\n",
+    );
+    let r = classify_batch(lines);
+    assert_eq!(r.len(), 4);
+    assert_eq!(
+        (r[0]["case"].as_u64(), r[0]["real_type"].as_str()),
+        (Some(19), Some("double_conic"))
+    );
+    assert_eq!(r[0]["affine"]["surfaces"][1], "plane");
+    assert_eq!(r[0]["affine"]["curves_bounded"], 1);
+    assert_eq!(r[0]["affine"]["components"][0]["name"], "circle");
+    // tangent plane: the two conjugate double lines meet at the point of contact
+    assert_eq!(r[1]["affine"]["isolated_points"], 1);
+    // a hyperboloid of one sheet cut through its axis: a hyperbola, two unbounded curves
+    assert_eq!(r[2]["affine"]["curves_unbounded"], 2);
+    assert_eq!(r[2]["affine"]["components"][0]["name"], "hyperbola");
+    // x·w: a plane pair, not a plane input; the real conic x = 0 and the conic at infinity
+    assert_eq!(r[3]["affine"]["surfaces"][1], "plane");
+    assert_ne!(r[3]["case"].as_u64(), Some(19));
+}
