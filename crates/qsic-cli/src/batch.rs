@@ -233,6 +233,8 @@ pub trait Answer: Sync {
 pub struct Classify {
     /// Leave out the affine view (it builds the curve: much slower than the classification).
     pub projective_only: bool,
+    /// The affine chart and its text (`None`: `w = 0`, written `"w"`).
+    pub chart: Option<(qsic::affine::Chart, String)>,
 }
 
 impl Answer for Classify {
@@ -246,8 +248,9 @@ impl Answer for Classify {
         let mut out = String::with_capacity(512);
         write_classification_fields(&mut out, &c);
         if !self.projective_only {
-            let chart = qsic::affine::Chart::default();
-            let view = crate::affine::affine_json(a, b, &chart, "w", planes);
+            let default = (qsic::affine::Chart::default(), "w".to_owned());
+            let (chart, text) = self.chart.as_ref().unwrap_or(&default);
+            let view = crate::affine::affine_json(a, b, chart, text, planes);
             out.push_str(",\"affine\":");
             out.push_str(&view.to_string());
         }
@@ -262,6 +265,7 @@ pub fn answer_line(line: &RawLine) -> (String, bool) {
         line,
         &Classify {
             projective_only: false,
+            chart: None,
         },
     )
 }
@@ -724,6 +728,7 @@ mod tests {
                 &raw,
                 &Classify {
                     projective_only: true,
+                    chart: None,
                 },
             );
             let got: Value = serde_json::from_str(&answer)

@@ -215,6 +215,11 @@ struct ClassifyArgs {
     /// the curve and costs far more than the classification.
     #[arg(long)]
     projective: bool,
+
+    /// The plane at infinity of the affine view, a linear form "a*x+b*y+c*z+d*w"
+    /// (default "w"); solids are given in the default chart only.
+    #[arg(long, value_name = "FORM", allow_hyphen_values = true)]
+    chart: Option<String>,
 }
 
 const MOTION_HELP: &str = "\
@@ -295,24 +300,36 @@ fn main() -> ExitCode {
         Command::Motion(args) => run_motion(&args),
         Command::Param(args) => run_param(&args),
         Command::Sample(args) => run_sample(&args),
-        Command::Classify(args) => match (&args.batch, &args.a, &args.b) {
-            (Some(path), _, _) => run_batch_with(
-                path,
-                &batch::Classify {
-                    projective_only: args.projective,
-                },
-            ),
-            (None, Some(a), Some(b)) => run_single(a, b, args.json, args.projective),
-            _ => {
-                // clap's `required_unless_present` makes this unreachable; answer as a usage error.
-                let mut cmd = Cli::command();
-                cmd.error(
-                    clap::error::ErrorKind::MissingRequiredArgument,
-                    "two quadrics A and B, or --batch FILE, are required",
-                )
-                .exit()
+        Command::Classify(args) => {
+            let chart = match args.chart.as_deref().map(classify_chart).transpose() {
+                Ok(chart) => chart,
+                Err(message) => {
+                    eprintln!("error: --chart: {message}");
+                    return ExitCode::from(2);
+                }
+            };
+            match (&args.batch, &args.a, &args.b) {
+                (Some(path), _, _) => run_batch_with(
+                    path,
+                    &batch::Classify {
+                        projective_only: args.projective,
+                        chart,
+                    },
+                ),
+                (None, Some(a), Some(b)) => {
+                    run_single(a, b, args.json, args.projective, chart.as_ref())
+                }
+                _ => {
+                    // clap's `required_unless_present` makes this unreachable; answer as a usage error.
+                    let mut cmd = Cli::command();
+                    cmd.error(
+                        clap::error::ErrorKind::MissingRequiredArgument,
+                        "two quadrics A and B, or --batch FILE, are required",
+                    )
+                    .exit()
+                }
             }
-        },
+        }
         Command::Contact(args) => run_contact(&args),
     }
 }
@@ -355,7 +372,22 @@ fn run_contact(args: &ContactArgs) -> ExitCode {
 }
 
 /// `qsic classify A B`: exit 0 with the report, or 1 with `error: A: …` on stderr.
-fn run_single(a: &str, b: &str, json: bool, projective: bool) -> ExitCode {
+/// The chart of `--chart`: the parsed form and its text.
+fn classify_chart(text: &str) -> Result<(qsic::affine::Chart, String), String> {
+    let form = sample::parse_chart(text)?;
+    let chart = qsic::affine::Chart::new(form).map_err(|e| e.to_string())?;
+    Ok((chart, text.to_owned()))
+}
+
+fn run_single(
+    a: &str,
+    b: &str,
+    json: bool,
+    projective: bool,
+    chart: Option<&(qsic::affine::Chart, String)>,
+) -> ExitCode {
+    let default = (qsic::affine::Chart::default(), "w".to_owned());
+    let (chart, chart_text) = chart.unwrap_or(&default);
     let read =
         |name: &str, text: &str| input::surface_from_arg(text).map_err(|e| format!("{name}: {e}"));
     let result = read("A", a).and_then(|sa| {
@@ -364,14 +396,8 @@ fn run_single(a: &str, b: &str, json: bool, projective: bool) -> ExitCode {
         let (qa, qb) = (sa.quadric, sb.quadric);
         let c = qsic::classify_allowing_zero(qa.as_ref(), qb.as_ref())
             .map_err(|e| format!("A and B: both are zero: {e}"))?;
-        let view = (!projective).then(|| {
-            qsic::affine::affine_view(
-                qa.as_ref(),
-                qb.as_ref(),
-                &qsic::affine::Chart::default(),
-                planes,
-            )
-        });
+        let view = (!projective)
+            .then(|| qsic::affine::affine_view(qa.as_ref(), qb.as_ref(), chart, planes));
         Ok((c, view))
     });
     let (classification, view) = match result {
@@ -387,14 +413,17 @@ fn run_single(a: &str, b: &str, json: bool, projective: bool) -> ExitCode {
             // the object's closing brace last: the affine object goes before it
             line.pop();
             line.push_str(",\"affine\":");
-            line.push_str(&qsic_cli::affine::to_json(view, "w").to_string());
+            line.push_str(&qsic_cli::affine::to_json(view, chart_text).to_string());
             line.push('}');
         }
         line + "\n"
     } else {
         let mut text = output::human_report(&classification);
         if let Some(view) = &view {
-            text.push_str(&format!("in R^3 (w = 0 at infinity): {}\n", view.summary()));
+            text.push_str(&format!(
+                "in R^3 ({chart_text} = 0 at infinity): {}\n",
+                view.summary()
+            ));
         }
         text
     };

@@ -124,3 +124,42 @@ fn planes_as_input_give_the_section() {
     assert_eq!(r[3]["affine"]["surfaces"][1], "plane");
     assert_ne!(r[3]["case"].as_u64(), Some(19));
 }
+
+/// `--chart`: the two loops of the cylinders x² + y² = 1, y² + z² = 4 are bounded with
+/// `w = 0` at infinity and cut twice each by the plane `x = 0`; a zero form is a usage error.
+#[test]
+fn a_chart_moves_the_plane_at_infinity() {
+    let run = |chart: &str| {
+        Command::new(env!("CARGO_BIN_EXE_qsic"))
+            .args([
+                "classify",
+                "--json",
+                "x^2+y^2-1",
+                "y^2+z^2-4",
+                "--chart",
+                chart,
+            ])
+            .output()
+            .unwrap()
+    };
+    let affine = |chart: &str| -> Value {
+        let out = run(chart);
+        assert!(out.status.success(), "{chart}");
+        serde_json::from_slice::<Value>(&out.stdout).unwrap()["affine"].clone()
+    };
+    let w = affine("w");
+    assert_eq!(
+        (w["curves_bounded"].as_u64(), w["curves_unbounded"].as_u64()),
+        (Some(2), Some(0))
+    );
+    let x = affine("x");
+    assert_eq!(
+        (x["curves_bounded"].as_u64(), x["curves_unbounded"].as_u64()),
+        (Some(0), Some(4))
+    );
+    assert_eq!(
+        (x["chart"].as_str(), x["points_at_infinity"].as_u64()),
+        (Some("x"), Some(4))
+    );
+    assert_eq!(run("0").status.code(), Some(2));
+}
