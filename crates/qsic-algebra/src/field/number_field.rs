@@ -574,10 +574,12 @@ impl Poly<NumberFieldElement> {
     /// ```
     /// The exact sign of `p(t)` at a real algebraic number `t`.
     ///
-    /// Zero iff `t` is one of [`Self::real_roots`] (exact comparison); otherwise the value is
-    /// enclosed by rational interval arithmetic over the boxes of `α` and `t`, both refined
-    /// (their shared states) until the enclosure excludes zero, which it does for a nonzero
-    /// value once the boxes are small enough.
+    /// The value is enclosed by rational interval arithmetic over the boxes of `α` and `t`,
+    /// both refined (their shared states) until the enclosure excludes zero — which it does
+    /// for a nonzero value once the boxes are small enough; if it still holds zero at 64
+    /// bits, zero is decided exactly: over a quadratic field by signs of rational polynomials
+    /// at `t` (`p₀ + α·p₁ = 0` iff `−p₀/p₁` is the root `α` of the modulus), otherwise by `t`
+    /// being one of [`Self::real_roots`] (exact comparison).
     ///
     /// ```
     /// # use qsic_algebra::{field::NumberField, AlgebraicReal, Poly, Ring, Sign};
@@ -595,18 +597,33 @@ impl Poly<NumberFieldElement> {
         if let Some(v) = t.as_rational() {
             return self.eval(&NumberFieldElement::rational(v.clone())).sign();
         }
-        if self.real_roots().iter().any(|r| r == t) {
-            return Sign::Zero;
-        }
         let field = self
             .coeffs()
             .iter()
             .find_map(|c| c.field_if_irrational())
             .cloned();
         // boxes rounded outward to dyadic ends of `bits` bits: the shared refinements may be
-        // far narrower, with ends of huge height that would make the arithmetic crawl
+        // far narrower, with ends of huge height that would make the arithmetic crawl; the
+        // exact zero test (costly: a norm and its roots) only once an enclosure at 64 bits
+        // still holds 0
         let mut bits = 16usize;
+        let mut zero_tested = false;
         loop {
+            if bits > 64 && !zero_tested {
+                let quadratic = field.as_ref().map_or(QuadraticTest::NotQuadratic, |k| {
+                    quadratic_zero_test(self, k, t)
+                });
+                match quadratic {
+                    QuadraticTest::Sign(sign) => return sign,
+                    QuadraticTest::Nonzero => {}
+                    QuadraticTest::NotQuadratic => {
+                        if self.real_roots().iter().any(|r| r == t) {
+                            return Sign::Zero;
+                        }
+                    }
+                }
+                zero_tested = true;
+            }
             let width = RBig::from_parts(IBig::ONE, dashu_int::UBig::ONE << bits);
             let alpha = field.as_ref().map(|k| {
                 let iv = k.snapshot().alpha.refined_interval(&width);
@@ -696,6 +713,77 @@ impl Poly<NumberFieldElement> {
                 iv => AlgebraicReal::from_isolating_interval(&norm, &iv),
             })
             .collect()
+    }
+}
+
+/// What [`quadratic_zero_test`] found.
+enum QuadraticTest {
+    /// The exact sign.
+    Sign(Sign),
+    /// The value is not zero (its sign is left to interval arithmetic).
+    Nonzero,
+    /// The field is not quadratic: no answer.
+    NotQuadratic,
+}
+
+/// The sign of a rational polynomial at `t`, exactly.
+fn rational_sign_at(p: &Poly<RBig>, t: &AlgebraicReal) -> Sign {
+    if p.is_zero() {
+        return Sign::Zero;
+    }
+    let (q, scale) = Poly::from_rational(p);
+    let s = t.sign_of(&q);
+    if scale < RBig::ZERO {
+        -s
+    } else {
+        s
+    }
+}
+
+/// Over a quadratic field `ℚ(α)`, `α` a root of `m = a₂x² + a₁x + a₀`: `p = p₀ + α·p₁` with
+/// `p₀, p₁ ∈ ℚ[u]`; `p(t) = p₀(t)` if `p₁(t) = 0`, else `p(t) = 0` iff `−p₀(t)/p₁(t)` is a
+/// root of `m` — `a₂p₀² − a₁p₀p₁ + a₀p₁²` vanishes at `t` — and that root is `α`, not its
+/// conjugate: on `α`'s side of the midpoint `−a₁/(2a₂)`. Every sign is of a rational
+/// polynomial at `t` (exact and cheap), no norm or root isolation.
+fn quadratic_zero_test(
+    p: &Poly<NumberFieldElement>,
+    k: &NumberField,
+    t: &AlgebraicReal,
+) -> QuadraticTest {
+    let m = k.modulus();
+    if m.degree() != Some(2) {
+        return QuadraticTest::NotQuadratic;
+    }
+    let part = |j: usize| -> Poly<RBig> {
+        Poly::new(
+            p.coeffs()
+                .iter()
+                .map(|c| RBig::from(c.num.coeff(j)) / RBig::from(c.den.clone()))
+                .collect(),
+        )
+    };
+    if p.coeffs().iter().any(|c| c.num.degree().unwrap_or(0) > 1) {
+        return QuadraticTest::NotQuadratic;
+    }
+    let (p0, p1) = (part(0), part(1));
+    let s1 = rational_sign_at(&p1, t);
+    if s1 == Sign::Zero {
+        return QuadraticTest::Sign(rational_sign_at(&p0, t));
+    }
+    let [a0, a1, a2] = [0, 1, 2].map(|j| RBig::from(m.coeff(j)));
+    let z = &(&(&p0 * &p0).scale(&a2) - &(&p0 * &p1).scale(&a1)) + &(&p1 * &p1).scale(&a0);
+    if rational_sign_at(&z, t) != Sign::Zero {
+        return QuadraticTest::Nonzero;
+    }
+    // −p₀/p₁ − mid = (−2a₂p₀ − a₁p₁)/(2a₂p₁); α − mid = (2a₂α + a₁)/(2a₂)
+    let two_a2 = &a2 * RBig::from(2);
+    let side_of_root = rational_sign_at(&(&p0.scale(&-two_a2.clone()) - &p1.scale(&a1)), t) * s1;
+    let alpha = k.snapshot().alpha.clone();
+    let side_of_alpha = alpha.sign_of(&Poly::new(vec![m.coeff(1), m.coeff(2) * IBig::from(2)]));
+    if side_of_root == side_of_alpha {
+        QuadraticTest::Sign(Sign::Zero)
+    } else {
+        QuadraticTest::Nonzero
     }
 }
 
