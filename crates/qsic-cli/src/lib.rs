@@ -10,6 +10,7 @@
 //! | [`contact`] | `qsic contact`: first contact of two moving quadrics and the relation of moving solid ellipsoids |
 //! | [`batch`] | `--batch`: bounded, ordered, parallel JSON Lines processing, for any [`batch::Answer`] or line answer |
 //! | [`motion`] | `qsic motion`: moving quadrics in, their timeline out (text, JSON, batch lines) |
+//! | [`motion_plot`] | `qsic motion --plot`: the timeline as an SVG picture |
 //! | [`param`] | `qsic param`: the exact curve as JSON and text |
 //! | [`mod@sample`] | `qsic sample`: real points as JSON, CSV, OBJ |
 
@@ -19,6 +20,7 @@ pub mod contact;
 pub mod input;
 pub mod line;
 pub mod motion;
+pub mod motion_plot;
 pub mod output;
 pub mod param;
 pub mod sample;

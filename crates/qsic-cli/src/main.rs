@@ -248,6 +248,13 @@ RANGE (--range T0 T1):
   instant only if its type differs from that of the interval beside it. T0 = T1 gives no
   interval and the one instant.
 
+PLOT (--plot FILE):
+  Also write the timeline as an SVG picture: a t axis over the range (for an open side, a
+  window holding every instant with margins, and an arrow to -oo/+oo), one coloured band
+  per interval labelled \"case k: real_type\", one tick per instant labelled with its exact
+  value (p/q, or a decimal marked algebraic) and type, and a legend of the colours. Not
+  with --batch (a usage error); an unwritable FILE exits 2.
+
 BATCH (--batch FILE, or - for standard input):
   JSON Lines {\"id\", \"A\", \"B\"} in; one JSON line out per non-blank line, in order:
   {\"id\", \"instants\", \"intervals\"} or {\"id\", \"error\": {\"line\", \"message\"}}, as for
@@ -292,6 +299,10 @@ struct MotionArgs {
     /// Print one JSON object instead of the text timeline (batch output is always JSON).
     #[arg(long)]
     json: bool,
+
+    /// Also draw the timeline as an SVG picture into FILE (not with --batch).
+    #[arg(long, value_name = "FILE", conflicts_with = "batch")]
+    plot: Option<PathBuf>,
 }
 
 fn main() -> ExitCode {
@@ -469,6 +480,12 @@ fn run_motion(args: &MotionArgs) -> ExitCode {
         let mb = read("B", b)?;
         motion::analyze(ma, mb, &range).map_err(|e| format!("A and B: {e}"))
     });
+    if let (Ok(m), Some(path)) = (&result, &args.plot) {
+        let svg = qsic_cli::motion_plot::motion_to_svg(m, &range);
+        if let Err(e) = std::fs::write(path, svg) {
+            return io_failure(&format!("writing the plot {}", path.display()), &e);
+        }
+    }
     let text = match result {
         Ok(m) if args.json => motion::motion_to_json_line(&m) + "\n",
         Ok(m) => motion::human_timeline(&m),

@@ -206,3 +206,51 @@ fn bad_single_motions_exit_1_and_usage_errors_2() {
     assert_eq!(code, Some(0));
     assert!(help.contains("--range") && help.contains("RANGE") && help.contains("EXIT STATUS"));
 }
+
+/// `--plot FILE` writes an SVG with one band per interval and one tick per instant and keeps
+/// the usual output; an unwritable path exits 2; `--plot` with `--batch` is a usage error.
+#[test]
+fn plot_writes_an_svg_and_reports_errors() {
+    let dir = std::env::temp_dir().join(format!("qsic-motion-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("out.svg");
+    let p = path.to_str().unwrap();
+    let (code, out, err) = qsic(&["motion", "--json", "--plot", p, FIXED, MOVING], "");
+    assert_eq!(code, Some(0), "{err}");
+    let v = json(out.trim());
+    let svg = std::fs::read_to_string(&path).unwrap();
+    assert!(svg.starts_with("<?xml") && svg.trim_end().ends_with("</svg>"));
+    assert_eq!(
+        svg.matches("<rect class=\"band\"").count(),
+        v["intervals"].as_array().unwrap().len()
+    );
+    assert_eq!(
+        svg.matches("<line class=\"tick\"").count(),
+        v["instants"].as_array().unwrap().len()
+    );
+    for i in v["instants"].as_array().unwrap() {
+        assert!(svg.contains(&format!(">t = {}<", i["t"].as_str().unwrap())));
+        assert!(svg.contains(i["real_type"].as_str().unwrap()));
+    }
+    // an unwritable path (a missing directory): exit 2, nothing on stdout
+    let bad = dir.join("missing").join("out.svg");
+    let (code, out, err) = qsic(
+        &["motion", "--plot", bad.to_str().unwrap(), FIXED, MOVING],
+        "",
+    );
+    assert_eq!(code, Some(2));
+    assert!(out.is_empty() && err.contains("writing the plot"), "{err}");
+    // bad input: exit 1 and no file
+    let none = dir.join("none.svg");
+    let (code, _, _) = qsic(
+        &["motion", "--plot", none.to_str().unwrap(), "x^2+q", MOVING],
+        "",
+    );
+    assert_eq!(code, Some(1));
+    assert!(!none.exists());
+    assert_eq!(
+        qsic(&["motion", "--batch", "-", "--plot", p], "").0,
+        Some(2)
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
