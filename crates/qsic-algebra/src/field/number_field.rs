@@ -572,6 +572,43 @@ impl Poly<NumberFieldElement> {
     /// assert_eq!(roots.len(), 2);
     /// assert!((roots[0] + 1.0).abs() < 1e-12 && (roots[1] - 2f64.sqrt()).abs() < 1e-9);
     /// ```
+    /// An enclosure `[lo, hi] ∋ p(t)` by rational interval arithmetic on the boxes of `α` and
+    /// `t` refined below `2^−bits` and rounded outward to dyadic ends (a nonzero `p(t)` is
+    /// excluded from zero once `bits` is large enough).
+    pub fn enclosure_at(&self, t: &AlgebraicReal, bits: usize) -> (RBig, RBig) {
+        let field = self
+            .coeffs()
+            .iter()
+            .find_map(|c| c.field_if_irrational())
+            .cloned();
+        let width = RBig::from_parts(IBig::ONE, dashu_int::UBig::ONE << bits);
+        let alpha = field.as_ref().map(|k| {
+            let iv = k.snapshot().alpha.refined_interval(&width);
+            dyadic_outward(iv.lo(), iv.hi(), bits + 8)
+        });
+        let tv = t.refined_interval(&width);
+        let t_box = dyadic_outward(tv.lo(), tv.hi(), bits + 8);
+        // the coefficients' enclosures, then Horner in t
+        let mut acc = (RBig::ZERO, RBig::ZERO);
+        for c in self.coeffs().iter().rev() {
+            let cv = match (&alpha, c.field_if_irrational()) {
+                (Some(a), Some(_)) => {
+                    let b =
+                        interval_horner(c.num.coeffs().iter().map(|v| RBig::from(v.clone())), a);
+                    let d = RBig::from(c.den.clone());
+                    (b.0 / &d, b.1 / &d)
+                }
+                _ => {
+                    let v = c.representative().coeff(0);
+                    (v.clone(), v)
+                }
+            };
+            let m = interval_mul(&acc, &t_box);
+            acc = (m.0 + &cv.0, m.1 + &cv.1);
+        }
+        acc
+    }
+
     /// The exact sign of `p(t)` at a real algebraic number `t`.
     ///
     /// The value is enclosed by rational interval arithmetic over the boxes of `α` and `t`,
@@ -624,33 +661,7 @@ impl Poly<NumberFieldElement> {
                 }
                 zero_tested = true;
             }
-            let width = RBig::from_parts(IBig::ONE, dashu_int::UBig::ONE << bits);
-            let alpha = field.as_ref().map(|k| {
-                let iv = k.snapshot().alpha.refined_interval(&width);
-                dyadic_outward(iv.lo(), iv.hi(), bits + 8)
-            });
-            let tv = t.refined_interval(&width);
-            let t_box = dyadic_outward(tv.lo(), tv.hi(), bits + 8);
-            // the coefficients' enclosures, then Horner in t
-            let mut acc = (RBig::ZERO, RBig::ZERO);
-            for c in self.coeffs().iter().rev() {
-                let cv = match (&alpha, c.field_if_irrational()) {
-                    (Some(a), Some(_)) => {
-                        let b = interval_horner(
-                            c.num.coeffs().iter().map(|v| RBig::from(v.clone())),
-                            a,
-                        );
-                        let d = RBig::from(c.den.clone());
-                        (b.0 / &d, b.1 / &d)
-                    }
-                    _ => {
-                        let v = c.representative().coeff(0);
-                        (v.clone(), v)
-                    }
-                };
-                let m = interval_mul(&acc, &t_box);
-                acc = (m.0 + &cv.0, m.1 + &cv.1);
-            }
+            let acc = self.enclosure_at(t, bits);
             if acc.0 > RBig::ZERO {
                 return Sign::Positive;
             }
