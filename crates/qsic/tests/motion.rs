@@ -748,3 +748,140 @@ fn ranges_clip_the_timeline() {
         }
     }
 }
+
+/// The instants of `m` that are roots of `t² − 2` (`±√2`), each classified exactly (not
+/// `IrrationalUnclassified`) with non-null types, as their motion types.
+fn types_at_sqrt2(m: &Motion, id: &str) -> Vec<MotionType> {
+    let two = Poly::from_i64s(&[-2, 0, 1]);
+    m.instants
+        .iter()
+        .filter(|i| i.t.is_root_of(&two))
+        .map(|i| {
+            let c = i
+                .class
+                .classification()
+                .unwrap_or_else(|| panic!("{id}: unclassified at {}", i.t));
+            let t = MotionType::of(c);
+            assert!(
+                t.complex_type.is_some() && t.real_type.is_some(),
+                "{id}: null types at {}",
+                i.t
+            );
+            t
+        })
+        .collect()
+}
+
+/// Moving pairs whose pencil is singular exactly when `u = t² − s = 0`, one per way a
+/// singular pencil arises (module docs of `classify::singular`): cones sharing their vertex
+/// (`k = 1`, a pencil of conics: two double lines, four lines, a double line and two lines),
+/// plane pairs sharing their line (`k = 2`: with or without a common plane), no common
+/// singular point (`k = 0`). With `s = 2` the instant is `√2`, classified over ℚ(√2); with
+/// `s = 9/4` it is the rational `3/2`, classified over ℚ. The two must agree, and agree
+/// with the static pair at `t = 3/2` read from the strings (the `t`-dependence away from
+/// `u` is mild, so `√2` and `3/2` give the same structure). The first column is the
+/// expected complex type, which is also the real type: every component is real.
+const SINGULAR_AT_ROOT: [(&str, &str, &str); 6] = [
+    (
+        "two_concurrent_double_lines",
+        "x^2 + y^2 - z^2",
+        "(x - u*w)^2 + t*y^2 - z^2",
+    ),
+    (
+        "four_concurrent_lines",
+        "x^2 + 2*y^2 - 3*z^2 + x*y",
+        "(x - u*w)^2 + t*(x - u*w)*z - 3*y^2 + z^2",
+    ),
+    (
+        // the circle and a member through its tangent at (1, 0, 1) and the chord y = z/2
+        "two_concurrent_lines_and_double_line",
+        "x^2 + y^2 - z^2",
+        "(x - u*w)^2 + y^2 - z^2 + t*(x - u*w - z)*(2*y - z)",
+    ),
+    (
+        "quadruple_line_of_plane_pairs",
+        "x^2 - y^2",
+        "x*y + t*y^2 + u*z*w",
+    ),
+    ("plane", "x^2 - y^2", "(x + y)*(x + t*y) + u*z*w"),
+    (
+        "conic_and_double_line",
+        "2*x*y + w^2",
+        "2*y*z + t*w^2 + u*x^2",
+    ),
+];
+
+#[test]
+fn singular_pencil_at_an_irrational_instant_has_the_rational_class() {
+    for (id, a, b) in SINGULAR_AT_ROOT {
+        let at_sqrt2 = motion_of(a, &b.replace('u', "(t^2 - 2)"));
+        let types = types_at_sqrt2(&at_sqrt2, id);
+        assert_eq!(types.len(), 2, "{id}: {at_sqrt2:?}");
+        // the instants increase: √2 is the second root of t² − 2
+        let irrational = types[1];
+        assert_eq!(irrational.pencil, "singular", "{id}");
+        assert_eq!(
+            (irrational.complex_type, irrational.real_type),
+            (Some(id), Some(id)),
+            "{id}"
+        );
+        let b_rational = b.replace('u', "(t^2 - 9/4)");
+        let at_three_halves = motion_of(a, &b_rational);
+        let three_halves = RBig::from_parts_signed(3.into(), 2u8.into());
+        assert_eq!(type_at(&at_three_halves, &three_halves), irrational, "{id}");
+        let (qa, qb) = (
+            qsic::io::parse_quadric(&substitute(a, "3/2")).unwrap(),
+            qsic::io::parse_quadric(&substitute(&b_rational, "3/2")).unwrap(),
+        );
+        assert_eq!(
+            MotionType::of(&qsic::classify(&qa, &qb)),
+            irrational,
+            "{id}"
+        );
+    }
+}
+
+/// Every labelled singular pair `(A₀, B₀)` of QI's test file, disguised as a motion that is
+/// singular exactly at `t = ±√2`: `A(t) = A₀∘M(t)`, `B(t) = (B₀ + (t² − 2)C)∘M(t)` with the
+/// shear `M(t): x ↦ x + t·y` (invertible for every `t`) and a nonsingular `C`. At `±√2` the
+/// pencil is congruent over ℝ to `(A₀, B₀)`, with entries in ℚ(√2): its class is the
+/// recorded one.
+#[test]
+fn labelled_singular_pairs_disguised_at_sqrt2() {
+    let path = format!(
+        "{}/tests/data/qi-quadrics.jsonl",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path).unwrap();
+    let shear = |form: &str| form.replace('x', "(x + t*y)");
+    let mut checked = 0;
+    for (n, raw) in text.lines().enumerate() {
+        let line: Value = serde_json::from_str(raw).unwrap();
+        if line["pencil"].as_str() != Some("singular") {
+            continue;
+        }
+        let id = format!("line {}: {}", n + 1, line["id"]);
+        let (a0, b0) = (line["A"].as_str().unwrap(), line["B"].as_str().unwrap());
+        let a = shear(a0);
+        let b = shear(&format!(
+            "{b0} + (t^2 - 2)*(x^2 + 2*y^2 - 3*z^2 + 5*w^2 + x*y)"
+        ));
+        let m = motion_of(&a, &b);
+        let want = (
+            line["complex_type"].as_str().unwrap(),
+            line["real_type"].as_str().unwrap(),
+        );
+        let types = types_at_sqrt2(&m, &id);
+        assert_eq!(types.len(), 2, "{id}: {m:?}");
+        for t in types {
+            assert_eq!(t.pencil, "singular", "{id}");
+            assert_eq!(
+                (t.complex_type.unwrap(), t.real_type.unwrap()),
+                want,
+                "{id}"
+            );
+        }
+        checked += 1;
+    }
+    assert_eq!(checked, 31);
+}

@@ -25,6 +25,7 @@ mod notation;
 mod signature;
 mod single;
 mod singular;
+pub(crate) use singular::OrderedDomain;
 mod table;
 
 pub use morphology::{
@@ -97,6 +98,30 @@ fn classify_fast(a: &Quadric, b: &Quadric) -> Option<Classification> {
     Some(from_row(&CASES[usize::from(case) - 1], 0))
 }
 
+/// The classification of a singular pencil from its type (`None`: undetermined, never guessed).
+fn singular_classification(typed: Option<(Morphology, Description)>) -> Classification {
+    let (morphology, description) = typed.map_or((None, None), |(m, d)| (Some(m), Some(d)));
+    Classification {
+        pencil: PencilKind::Singular,
+        case: None,
+        segre: None,
+        signature: None,
+        index_sequence: None,
+        morphology,
+        description,
+    }
+}
+
+/// The classification of the singular pencil `λA − μB` over an ordered domain (ℚ(α) at an
+/// irrational instant of a motion); precondition as `singular::classify_singular`:
+/// `det(λA − μB) ≡ 0`, `A`, `B` not proportional.
+pub(crate) fn classify_singular_in<C: OrderedDomain>(
+    a: &[[C; 4]; 4],
+    b: &[[C; 4]; 4],
+) -> Classification {
+    singular_classification(singular::classify_singular_in(a, b))
+}
+
 /// [`classify()`] without the machine-arithmetic fast path: every decision by exact
 /// rational arithmetic. The two must agree (property tests).
 pub(crate) fn classify_exact(a: &Quadric, b: &Quadric) -> Classification {
@@ -104,17 +129,7 @@ pub(crate) fn classify_exact(a: &Quadric, b: &Quadric) -> Classification {
     match pencil_kind(&data) {
         PencilKind::Single => classify_single(a),
         PencilKind::Singular => {
-            let (morphology, description) = singular::classify_singular(&data.a, &data.b)
-                .map_or((None, None), |(m, d)| (Some(m), Some(d)));
-            Classification {
-                pencil: PencilKind::Singular,
-                case: None,
-                segre: None,
-                signature: None,
-                index_sequence: None,
-                morphology,
-                description,
-            }
+            singular_classification(singular::classify_singular(&data.a, &data.b))
         }
         PencilKind::Regular => classify_regular(&PencilAnalysis::compute(&data)),
     }

@@ -112,9 +112,11 @@
 //! intersection is `L` counted four times and every member is a pair of planes through
 //! it, `quadruple_line_of_plane_pairs`.
 //!
-//! Everything is exact integer arithmetic: an 8×4 fraction-free elimination, principal
-//! minors, one binary cubic (closed forms: discriminant, rational multiple roots) or
-//! quadratic, and at most one Sturm–Tarski sequence.
+//! Everything is exact arithmetic in an ordered domain ([`OrderedDomain`]): an 8×4
+//! fraction-free elimination, principal minors, one binary cubic (closed forms:
+//! discriminant, multiple roots in the domain's fraction field) or quadratic, and at most one
+//! Sturm–Tarski sequence. Rational pencils run it over ℤ (the primitive integer matrices); a
+//! moving pencil at an irrational instant `α` over ℚ(α) (`motion::irrational`).
 
 use super::morphology::{
     ComplexType, Component, ComponentKind, Description, Morphology, RealType, SingularPointKind,
@@ -125,7 +127,27 @@ use qsic_algebra::linalg::pencil::pencil_principal_minor_sums;
 use qsic_algebra::linalg::Matrix;
 use qsic_algebra::matrix::SymMatrix4;
 use qsic_algebra::poly::sturm::tarski_query;
-use qsic_algebra::{IBig, Poly, Sign};
+use qsic_algebra::{IBig, Poly, Ring, Sign};
+
+/// An ordered integral domain the singular classifier computes in: ℤ for rational pencils
+/// (fraction-free, every entry an integer of the primitive matrices) and ℚ(α) for a moving
+/// pencil at an irrational instant. Every decision below is a ring operation, an exact sign
+/// or a Sturm–Tarski query, so one implementation serves both.
+pub(crate) trait OrderedDomain: Ring {
+    /// The sign, decided exactly.
+    fn sign_of(&self) -> Sign;
+    /// `Σ sign q(x)` over the distinct real roots `x` of the square-free `p` (positive degree).
+    fn tarski_query(p: &Poly<Self>, q: &Poly<Self>) -> i64;
+}
+
+impl OrderedDomain for IBig {
+    fn sign_of(&self) -> Sign {
+        Sign::of(self)
+    }
+    fn tarski_query(p: &Poly, q: &Poly) -> i64 {
+        tarski_query(p, q)
+    }
+}
 
 /// Classifies a singular pencil, exactly.
 ///
@@ -136,58 +158,53 @@ pub(crate) fn classify_singular(
     a: &SymMatrix4,
     b: &SymMatrix4,
 ) -> Option<(Morphology, Description)> {
+    classify_singular_in(a.entries(), b.entries())
+}
+
+/// [`classify_singular`] over any [`OrderedDomain`] (same precondition).
+pub(crate) fn classify_singular_in<C: OrderedDomain>(
+    a: &[[C; 4]; 4],
+    b: &[[C; 4]; 4],
+) -> Option<(Morphology, Description)> {
     let morphology = singular_morphology(a, b)?;
     Some((morphology, describe(morphology)))
 }
 
 /// The complex and real type of a singular pencil (see the module docs for the table).
-fn singular_morphology(a: &SymMatrix4, b: &SymMatrix4) -> Option<Morphology> {
-    use ComplexType as C;
+fn singular_morphology<C: OrderedDomain>(a: &[[C; 4]; 4], b: &[[C; 4]; 4]) -> Option<Morphology> {
+    use ComplexType as C3;
     let pivots = pivot_columns(a, b);
     match pivots.len() {
         // k = 0: no common singular point, the Kronecker block L₁ with a 1×1 regular block.
         4 => Some(Morphology {
-            complex: C::ConicAndDoubleLine,
+            complex: C3::ConicAndDoubleLine,
             real: RealType::Same,
         }),
         // k = 1: a pencil of conics.
         3 => {
             let i = [pivots[0], pivots[1], pivots[2]];
-            conic_pencil(&sub3(a, i), &sub3(b, i))
+            conic_pencil(&sub(a, i), &sub(b, i))
         }
         // k = 2: a pencil of binary forms (pairs of planes through the common line).
         2 => {
             let i = [pivots[0], pivots[1]];
-            Some(binary_pencil(&sub2(a, i), &sub2(b, i)))
+            Some(binary_pencil(&sub(a, i), &sub(b, i)))
         }
         // k ≥ 3 means A ∝ B, excluded by the precondition.
         _ => None,
     }
 }
 
-type M3 = [[IBig; 3]; 3];
-type M2 = [[IBig; 2]; 2];
-
-fn sub3(m: &SymMatrix4, i: [usize; 3]) -> M3 {
-    let e = m.entries();
-    i.map(|r| i.map(|c| e[r][c].clone()))
-}
-
-fn sub2(m: &SymMatrix4, i: [usize; 2]) -> M2 {
-    let e = m.entries();
-    i.map(|r| i.map(|c| e[r][c].clone()))
+/// The principal submatrix of `m` on the indices `i`.
+fn sub<C: Ring, const N: usize>(m: &[[C; 4]; 4], i: [usize; N]) -> [[C; N]; N] {
+    i.map(|r| i.map(|c| m[r][c].clone()))
 }
 
 /// The pivot columns of the stacked 8×4 matrix `[A; B]` (fraction-free elimination,
 /// [`Matrix::pivot_columns`]): `4 −` their number is the dimension of the common kernel, and
 /// the principal submatrices on them are the projected pencil (module docs).
-fn pivot_columns(a: &SymMatrix4, b: &SymMatrix4) -> Vec<usize> {
-    let rows: Vec<Vec<IBig>> = a
-        .entries()
-        .iter()
-        .chain(b.entries().iter())
-        .map(|r| r.to_vec())
-        .collect();
+fn pivot_columns<C: Ring>(a: &[[C; 4]; 4], b: &[[C; 4]; 4]) -> Vec<usize> {
+    let rows: Vec<Vec<C>> = a.iter().chain(b.iter()).map(|r| r.to_vec()).collect();
     Matrix::from_rows(rows)
         .expect("rows of length 4")
         .pivot_columns()
@@ -195,7 +212,7 @@ fn pivot_columns(a: &SymMatrix4, b: &SymMatrix4) -> Vec<usize> {
 
 /// The rank of a real symmetric 3×3 matrix: the largest `k` with `E_k ≠ 0` (the
 /// characteristic polynomial is `x^(3−r)` times the product over the `r` nonzero eigenvalues).
-fn rank3(e: &[IBig; 3]) -> u8 {
+fn rank3<C: Ring>(e: &[C; 3]) -> u8 {
     (0..3)
         .rev()
         .find(|&k| !e[k].is_zero())
@@ -203,13 +220,18 @@ fn rank3(e: &[IBig; 3]) -> u8 {
 }
 
 /// `p·A − q·B` for 3×3 matrices.
-fn combine3(a: &M3, p: &IBig, b: &M3, q: &IBig) -> M3 {
-    std::array::from_fn(|i| std::array::from_fn(|j| p * &a[i][j] - q * &b[i][j]))
+fn combine3<C: Ring>(a: &[[C; 3]; 3], p: &C, b: &[[C; 3]; 3], q: &C) -> [[C; 3]; 3] {
+    std::array::from_fn(|i| std::array::from_fn(|j| p.mul(&a[i][j]).sub(&q.mul(&b[i][j]))))
 }
 
 /// `[E₁(λ), E₂(λ), E₃(λ)]` of `λA − B` (`E₃` is `det(λA − B)`).
-fn pencil_minor_sums3(a: &M3, b: &M3) -> [Poly; 3] {
+fn pencil_minor_sums3<C: Ring>(a: &[[C; 3]; 3], b: &[[C; 3]; 3]) -> [Poly<C>; 3] {
     pencil_principal_minor_sums(a, b).map(|c| Poly::new(c.to_vec()))
+}
+
+/// The integer `v` in `C`.
+fn int<C: Ring>(v: i64) -> C {
+    C::from_int(&IBig::from(v))
 }
 
 /// The regular or singular pencil of conics `(A₃, B₃)` obtained by projecting from the
@@ -222,14 +244,14 @@ fn pencil_minor_sums3(a: &M3, b: &M3) -> [Poly; 3] {
 /// a triple root (`h = 0`) is `−c₂/(3c₃)`; otherwise the double root is
 /// `α = (9c₃c₀ − c₂c₁)/(2h)` and the simple one `β = −c₂/c₃ − 2α` (for
 /// `f = c₃(λ − α)²(λ − β)`: `h = c₃²(α − β)²`, `9c₃c₀ − c₂c₁ = 2c₃²α(α − β)²`).
-fn conic_pencil(a3: &M3, b3: &M3) -> Option<Morphology> {
-    use ComplexType as C;
+fn conic_pencil<C: OrderedDomain>(a3: &[[C; 3]; 3], b3: &[[C; 3]; 3]) -> Option<Morphology> {
+    use ComplexType as C3;
     use RealType as R;
     let [_, e2, f] = pencil_minor_sums3(a3, b3);
     if f.is_zero() {
         // a single ε = 1 block: a common line and a moving one
         return Some(Morphology {
-            complex: C::LineAndPlane,
+            complex: C3::LineAndPlane,
             real: R::Same,
         });
     }
@@ -240,64 +262,70 @@ fn conic_pencil(a3: &M3, b3: &M3) -> Option<Morphology> {
     } else {
         let a_star = [1i64, -1, 2]
             .iter()
-            .map(|&t| combine3(a3, &IBig::ONE, b3, &IBig::from(-t)))
+            .map(|&t| combine3(a3, &C::one(), b3, &int(-t)))
             .find(|m| !det(m).is_zero())?;
         let [_, e2, f] = pencil_minor_sums3(&a_star, b3);
         (a_star, f, e2)
     };
     let [c0, c1, c2, c3] = [0, 1, 2, 3].map(|i| f.coeff(i));
-    let disc = IBig::from(18) * &c3 * &c2 * &c1 * &c0 - IBig::from(4) * c2.pow(3) * &c0
-        + c2.pow(2) * c1.pow(2)
-        - IBig::from(4) * &c3 * c1.pow(3)
-        - IBig::from(27) * c3.pow(2) * c0.pow(2);
+    let disc = int::<C>(18)
+        .mul(&c3)
+        .mul(&c2)
+        .mul(&c1)
+        .mul(&c0)
+        .sub(&int::<C>(4).mul(&c2.pow(3)).mul(&c0))
+        .add(&c2.pow(2).mul(&c1.pow(2)))
+        .sub(&int::<C>(4).mul(&c3).mul(&c1.pow(3)))
+        .sub(&int::<C>(27).mul(&c3.pow(2)).mul(&c0.pow(2)));
     // [E₁, E₂, E₃] of the member p·A* − q·B₃ at the root λ = p/q
-    let member = |p: &IBig, q: &IBig| principal_minor_sums(&combine3(&a_star, p, b3, q));
-    let (complex, real) = match Sign::of(&disc) {
+    let member = |p: &C, q: &C| principal_minor_sums(&combine3(&a_star, p, b3, q));
+    let (complex, real) = match disc.sign_of() {
         // [111], four base points: two real (one real root) …
-        Sign::Negative => (C::FourConcurrentLines, R::TwoConcurrentLines),
+        Sign::Negative => (C3::FourConcurrentLines, R::TwoConcurrentLines),
         // … four or none (three real roots)
         Sign::Positive => {
-            let real = if tarski_query(&f, &e2) == -3 {
+            let real = if C::tarski_query(&f, &e2) == -3 {
                 R::Same
             } else {
                 R::Point
             };
-            (C::FourConcurrentLines, real)
+            (C3::FourConcurrentLines, real)
         }
         Sign::Zero => {
-            let h = c2.pow(2) - IBig::from(3) * &c3 * &c1;
+            let h = c2.pow(2).sub(&int::<C>(3).mul(&c3).mul(&c1));
             if h.is_zero() {
                 // a triple root: [3] (rank 2) or [(21)] (rank 1)
-                match rank3(&member(&-&c2, &(IBig::from(3) * &c3))) {
-                    2 => (C::LineAndTripleLine, R::Same),
-                    1 => (C::QuadrupleLine, R::Same),
+                match rank3(&member(&c2.neg(), &int::<C>(3).mul(&c3))) {
+                    2 => (C3::LineAndTripleLine, R::Same),
+                    1 => (C3::QuadrupleLine, R::Same),
                     _ => return None, // rank 0 would mean A ∝ B
                 }
             } else {
                 // a double root α = n/d: [21] (rank 2) or [(11)1] (rank 1)
-                let n = IBig::from(9) * &c3 * &c0 - &c2 * &c1;
-                let d = IBig::from(2) * &h;
+                let n = int::<C>(9).mul(&c3).mul(&c0).sub(&c2.mul(&c1));
+                let d = int::<C>(2).mul(&h);
                 let e = member(&n, &d);
                 match rank3(&e) {
                     2 => {
                         // PQ₁ ∪ PQ₂: real lines iff the simple base points are real
-                        let real = if Sign::of(&e[1]) == Sign::Negative {
+                        let real = if e[1].sign_of() == Sign::Negative {
                             R::Same
                         } else {
                             R::DoubleLine
                         };
-                        (C::TwoConcurrentLinesAndDoubleLine, real)
+                        (C3::TwoConcurrentLinesAndDoubleLine, real)
                     }
                     1 => {
                         // the member at the simple root β = −c₂/c₃ − 2n/d: the two
                         // tangents at the double points
-                        let e = member(&(-&c2 * &d - IBig::from(2) * &n * &c3), &(&c3 * &d));
-                        let real = if Sign::of(&e[1]) == Sign::Negative {
+                        let p = c2.neg().mul(&d).sub(&int::<C>(2).mul(&n).mul(&c3));
+                        let e = member(&p, &c3.mul(&d));
+                        let real = if e[1].sign_of() == Sign::Negative {
                             R::Same
                         } else {
                             R::Point
                         };
-                        (C::TwoConcurrentDoubleLines, real)
+                        (C3::TwoConcurrentDoubleLines, real)
                     }
                     _ => return None, // rank 0 would mean A ∝ B
                 }
@@ -309,17 +337,20 @@ fn conic_pencil(a3: &M3, b3: &M3) -> Option<Morphology> {
 
 /// The pencil of binary forms `(A₂, B₂)` obtained by projecting from the common singular
 /// line (`k = 2`); they are not proportional, since `A` and `B` are not.
-fn binary_pencil(a: &M2, b: &M2) -> Morphology {
-    use ComplexType as C;
+fn binary_pencil<C: Ring>(a: &[[C; 2]; 2], b: &[[C; 2]; 2]) -> Morphology {
+    use ComplexType as C3;
     // det(λA − μB) = λ²·det A − λμ·s + μ²·det B
-    let det_a = &a[0][0] * &a[1][1] - &a[0][1] * &a[0][1];
-    let det_b = &b[0][0] * &b[1][1] - &b[0][1] * &b[0][1];
-    let s = &a[0][0] * &b[1][1] + &a[1][1] * &b[0][0] - IBig::from(2) * &a[0][1] * &b[0][1];
-    let discriminant = &s * &s - IBig::from(4) * &det_a * &det_b;
+    let det_a = a[0][0].mul(&a[1][1]).sub(&a[0][1].mul(&a[0][1]));
+    let det_b = b[0][0].mul(&b[1][1]).sub(&b[0][1].mul(&b[0][1]));
+    let s = a[0][0]
+        .mul(&b[1][1])
+        .add(&a[1][1].mul(&b[0][0]))
+        .sub(&int::<C>(2).mul(&a[0][1]).mul(&b[0][1]));
+    let discriminant = s.mul(&s).sub(&int::<C>(4).mul(&det_a).mul(&det_b));
     let complex = if discriminant.is_zero() {
-        C::Plane
+        C3::Plane
     } else {
-        C::QuadrupleLineOfPlanePairs
+        C3::QuadrupleLineOfPlanePairs
     };
     Morphology {
         complex,
@@ -432,15 +463,15 @@ mod tests {
         // x*y and x*z: common kernel spanned by w
         let a = sym([[0, 1, 0, 0], [1, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]]);
         let b = sym([[0, 0, 1, 0], [0, 0, 0, 0], [1, 0, 0, 0], [0, 0, 0, 0]]);
-        assert_eq!(pivot_columns(&a, &b), vec![0, 1, 2]);
+        assert_eq!(pivot_columns(a.entries(), b.entries()), vec![0, 1, 2]);
         // 2xy + w², 2yz + w²: no common kernel
         let a = sym([[0, 1, 0, 0], [1, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]);
         let b = sym([[0, 0, 0, 0], [0, 0, 1, 0], [0, 1, 0, 0], [0, 0, 0, 1]]);
-        assert_eq!(pivot_columns(&a, &b).len(), 4);
+        assert_eq!(pivot_columns(a.entries(), b.entries()).len(), 4);
         // (x+y)^2 and (x+y)*z: the kernel is spanned by (1,-1,0,0) and w
         let a = sym([[1, 1, 0, 0], [1, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]]);
         let b = sym([[0, 0, 1, 0], [0, 0, 1, 0], [1, 1, 0, 0], [0, 0, 0, 0]]);
-        assert_eq!(pivot_columns(&a, &b), vec![0, 2]);
+        assert_eq!(pivot_columns(a.entries(), b.entries()), vec![0, 2]);
     }
 
     #[test]

@@ -5,11 +5,16 @@
 //! orders in `D₁, D₂, D₃` (gcds over `K[λ]` of the minors); the real roots of their product
 //! isolated by Sturm sequences over `K` and bisection; the inertia at multiple roots from the
 //! signs of the principal-minor sums `E_k` there (Sturm–Tarski queries over `K`), on arcs at
-//! rational samples, at simple roots from the neighbouring arcs. Singular and single pencils
-//! at `α` are not handled here (`None`).
+//! rational samples, at simple roots from the neighbouring arcs. A single quadric at `α` is
+//! typed by its inertia in `K`; a singular pencil at `α` by the singular classifier
+//! instantiated over `K` ([`crate::classify::OrderedDomain`]: Kronecker structure, common
+//! singular points, the projected pencil of conics, all decided by exact signs in `K`).
 
 use super::instants::TPoly;
-use crate::classify::{classify_regular_parts, classify_single_inertia, Classification};
+use crate::classify::{
+    classify_regular_parts, classify_single_inertia, classify_singular_in, Classification,
+    OrderedDomain,
+};
 use crate::pencil::SigItem;
 use qsic_algebra::field::number_field::{NumberField, NumberFieldElement as K};
 use qsic_algebra::linalg::minors::SmallMinors;
@@ -195,8 +200,30 @@ fn single_at_irrational(
     )))
 }
 
-/// The classification of `λA(α) − B(α)` for a regular pencil at `α`; `None` when the pencil
-/// at `α` is singular or a single quadric, or the isolation exceeds its budget.
+/// A singular pencil at `α` (`det(λA(α) − B(α)) ≡ 0`, `A(α)`, `B(α)` not proportional),
+/// classified over `K`; `None` when the pencil at `α` is not singular. The caller has ruled
+/// out a single quadric.
+fn singular_at_irrational(
+    entries: &[[TPoly; 4]; 4],
+    alpha: &AlgebraicReal,
+) -> Option<Classification> {
+    let field = NumberField::new(alpha);
+    let (ma, mb): ([[K; 4]; 4], [[K; 4]; 4]) = (
+        std::array::from_fn(|i| {
+            std::array::from_fn(|j| field.integer_element(&entries[i][j].coeff(1)))
+        }),
+        std::array::from_fn(|i| {
+            std::array::from_fn(|j| field.integer_element(&entries[i][j].coeff(0)).neg())
+        }),
+    );
+    let det = qsic_algebra::linalg::pencil::pencil_principal_minor_sums(&ma, &mb)[3].clone();
+    det.iter()
+        .all(Ring::is_zero)
+        .then(|| classify_singular_in(&ma, &mb))
+}
+
+/// The classification of `λA(α) − B(α)` at `α`: a single quadric, a singular or a regular
+/// pencil; `None` only when the root isolation of a regular pencil exceeds its budget.
 pub(crate) fn classify_at_irrational(
     entries: &[[TPoly; 4]; 4],
     alpha: &AlgebraicReal,
@@ -204,7 +231,9 @@ pub(crate) fn classify_at_irrational(
     if let Some(single) = single_at_irrational(entries, alpha) {
         return Some(single);
     }
-    let an = analyze(entries, alpha)?;
+    let Some(an) = analyze(entries, alpha) else {
+        return singular_at_irrational(entries, alpha);
+    };
     let mut real_blocks: Vec<Vec<u8>> = Vec::new();
     let mut complex_blocks: Vec<Vec<u8>> = Vec::new();
     let mut seq = vec![SigItem::Interval(an.arcs[0].1.positive)];
@@ -297,6 +326,28 @@ fn rational_sign(x: &RBig) -> Sign {
         std::cmp::Ordering::Less => Sign::Negative,
         std::cmp::Ordering::Equal => Sign::Zero,
         std::cmp::Ordering::Greater => Sign::Positive,
+    }
+}
+
+impl OrderedDomain for K {
+    fn sign_of(&self) -> Sign {
+        self.sign()
+    }
+    /// The variations of the Sturm–Tarski sequence at `−∞` minus at `+∞` (signs of the
+    /// leading coefficients).
+    fn tarski_query(p: &KPoly, q: &KPoly) -> i64 {
+        let seq = sturm(p, Some(q));
+        let at = |negative: bool| {
+            qsic_algebra::sign::count_variations(seq.iter().map(|s| {
+                let lead = s.leading().sign();
+                if negative && s.degree().unwrap_or(0) % 2 == 1 {
+                    -lead
+                } else {
+                    lead
+                }
+            }))
+        };
+        at(true) as i64 - at(false) as i64
     }
 }
 
