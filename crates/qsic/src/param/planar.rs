@@ -943,19 +943,13 @@ fn conjugate_pair_curve(
     a: &Mat,
     b: &Mat,
 ) -> Result<Option<Curve>, Error> {
-    let e = pencil_principal_minor_sums(a, b);
-    let e3 = Poly::new(e[2].to_vec());
-    let e4 = Poly::new(e[3].to_vec());
-    if e3.is_zero() || e4.is_zero() {
+    // det(λA − B) = c·f² with f irreducible of degree 2 (E₃ may vanish identically)
+    let e4 = Poly::new(pencil_principal_minor_sums(a, b)[3].to_vec());
+    if e4.is_zero() {
         return Ok(None);
     }
-    // the square-free part of gcd(E₃, E₄) without its rational roots: one quadratic
-    let g = e3.gcd_monic(&e4);
-    if g.degree().unwrap_or(0) == 0 {
-        return Ok(None);
-    }
-    let mut f = Poly::from_rational(&g).0.squarefree_part();
-    for r in rational_roots(&g) {
+    let mut f = Poly::from_rational(&e4).0.squarefree_part();
+    for r in rational_roots(&e4) {
         f = f
             .div_exact(&Poly::vanishing_at(&r))
             .expect("a rational root divides");
