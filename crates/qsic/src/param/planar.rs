@@ -1012,34 +1012,55 @@ fn conjugate_pair_curve(
         let (ext, ps) = real_ends(&sides[0], delta);
         let (x, y, e) = &sides[1];
         // q± in the field of p±: √e' there, or √e' = k·√e₀ with k ∈ ℚ(√D)
-        let qs: [Vec<Number>; 2] = match (sqrt_in_field(e, delta), &ext.root) {
-            (Some(s), _) => plus_minus(x, y, &s).map(|v| ext.embed_vec(&v)),
+        let qs: Option<[Vec<Number>; 2]> = match (sqrt_in_field(e, delta), &ext.root) {
+            (Some(s), _) => Some(plus_minus(x, y, &s).map(|v| ext.embed_vec(&v))),
             (None, Some(_)) => {
                 let ratio = e.div(&sides[0].2).expect("e ≠ 0");
-                let Some(k) = sqrt_in_field(&ratio, delta) else {
+                sqrt_in_field(&ratio, delta).map(|k| {
+                    let ky: Vq = y.iter().map(|c| k.mul(c)).collect();
+                    let neg: Vq = ky.iter().map(Quadratic::neg).collect();
+                    [ext.with_root(x, &ky), ext.with_root(x, &neg)]
+                })
+            }
+            (None, None) => None,
+        };
+        let lines: Vec<ComponentParam> = match &qs {
+            Some(qs) => ps
+                .iter()
+                .flat_map(|p| qs.iter().map(move |q| line_param(p, q)))
+                .collect(),
+            None => {
+                // the joins need ℚ(√D, √e, √ē) (degree 8): the lines of the two rulings of
+                // a rational member, each pair in its own field
+                let Some((families, d2)) = ruled_families(a, b) else {
                     return Err(Error::Unsupported(
                         "a skew quadrilateral whose lines need a field of degree 8 (not yet)"
                             .into(),
                     ));
                 };
-                let ky: Vq = y.iter().map(|c| k.mul(c)).collect();
-                let neg: Vq = ky.iter().map(Quadratic::neg).collect();
-                [ext.with_root(x, &ky), ext.with_root(x, &neg)]
+                let mut lines = Vec::new();
+                for family in &families {
+                    if !real(&family.2) {
+                        return Ok(None);
+                    }
+                    let (_, ends) = real_ends(family, d2.as_ref());
+                    lines.extend(ends.iter().map(|end| line_param(&end[..4], &end[4..])));
+                }
+                lines
             }
-            (None, None) => return Ok(None),
         };
-        for p in &ps {
-            for q in &qs {
-                curve.components.push(Component {
-                    kind: ComponentKind::Line,
-                    multiplicity: 1,
-                    real: true,
-                    param: Some(line_param(p, q)),
-                    plane: None,
-                });
-            }
+        for param in lines {
+            curve.components.push(Component {
+                kind: ComponentKind::Line,
+                multiplicity: 1,
+                real: true,
+                param: Some(param),
+                plane: None,
+            });
         }
-        for x in ps.iter().chain(&qs) {
+        // the vertices p±, q±, each in its own field
+        let (_, qs_own) = real_ends(&sides[1], delta);
+        for x in ps.iter().chain(&qs_own) {
             curve.singular_points.push(SingularPoint {
                 kind: SingularPointKind::Crunode,
                 point: to_point(x),
@@ -1159,6 +1180,19 @@ fn ruled_member_curve(
     a: &Mat,
     b: &Mat,
 ) -> Result<Option<Curve>, Error> {
+    let Some((families, delta)) = ruled_families(a, b) else {
+        return Ok(None);
+    };
+    Ok(ruled_lines(classification, &families, delta.as_ref()))
+}
+
+/// A point pair `x ± √e·y` of 8-vectors: the two ends `(b, d)` of two lines.
+type Family = (Vq, Vq, Quadratic);
+
+/// The two rulings' line pairs of the curve on the first rational member of inertia (2, 2)
+/// (λ = ∞, −3, …, 3) whose rulings are parameterized, and the parameterization's radicand
+/// ([`ruled_member_curve`]).
+fn ruled_families(a: &Mat, b: &Mat) -> Option<([Family; 2], Option<IBig>)> {
     let lambdas = std::iter::once(None).chain((-3..=3).map(|v| Some(RBig::from(v))));
     for lambda in lambdas {
         let s = member(a, b, lambda.as_ref());
@@ -1173,17 +1207,15 @@ fn ruled_member_curve(
             continue;
         };
         let other = to_quadratic(if lambda.is_some() { a } else { b });
-        return Ok(ruled_lines(classification, &rp, &other));
+        if let Some(families) = families_on(&rp, &other) {
+            return Some((families, rp.delta));
+        }
     }
-    Ok(None)
+    None
 }
 
-/// [`ruled_member_curve`] on one parameterization.
-fn ruled_lines(
-    classification: Classification,
-    rp: &RuledParameterization,
-    other: &[[Quadratic; 4]; 4],
-) -> Option<Curve> {
+/// `F = g(u)·h(v)` on one parameterization, the roots of `g` and `h` as line pairs.
+fn families_on(rp: &RuledParameterization, other: &[[Quadratic; 4]; 4]) -> Option<[Family; 2]> {
     let c0 = poly_form(other, &rp.b, &rp.b);
     let c1 = poly_form(other, &rp.b, &rp.d);
     let c2 = poly_form(other, &rp.d, &rp.d);
@@ -1212,7 +1244,7 @@ fn ruled_lines(
     let half = qr(&RBig::from_parts_signed(IBig::ONE, IBig::from(2)));
     // u-lines: g(u, w) on (u, w) ↦ (u·b₁ + w·b₀, u·d₁ + w·d₀); v-lines: h(v, z) on
     // (v, z) ↦ (z·b₀ + v·d₀, z·b₁ + v·d₁)
-    let families = [
+    Some([
         binary_points(
             &g.coeff(2),
             &g.coeff(1).mul(&half),
@@ -1221,7 +1253,15 @@ fn ruled_lines(
             &cat(&b0, &d0),
         )?,
         binary_points(&h[2], &h[1], &h[0], &cat(&d0, &d1), &cat(&b0, &b1))?,
-    ];
+    ])
+}
+
+/// The curve from the rulings' line pairs when at most one ruling is real.
+fn ruled_lines(
+    classification: Classification,
+    families: &[Family; 2],
+    delta: Option<&IBig>,
+) -> Option<Curve> {
     let real: Vec<bool> = families
         .iter()
         .map(|f| f.2.sign() == Some(Sign::Positive))
@@ -1230,7 +1270,6 @@ fn ruled_lines(
         // four real lines meeting at four real points: the plane-pair routes
         return None;
     }
-    let delta = rp.delta.as_ref();
     let mut curve = Curve {
         classification,
         components: Vec::new(),
