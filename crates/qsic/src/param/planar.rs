@@ -5,6 +5,8 @@
 //! |---|---|
 //! | [`plane_pair_curve`] | a member `P` of rank ≤ 2 at a rational λ, split into its planes; each plane cut by another member |
 //! | [`single_curve`] | `A ∝ B`: the quadric itself |
+//! | [`concurrent_lines_curve`] | no rational plane pair: four concurrent lines, the cone over two conics' meeting points |
+//! | [`conjugate_pair_curve`] | no rational plane pair: the skew quadrilateral at conjugate quadratic λ (real: kernels; complex: [`ruled_member_curve`]) |
 //!
 //! **Method.** At a real λ a symmetric member has rank ≤ 2 iff `E₃(λ) = E₄(λ) = 0` (`E_k` the
 //! sums of principal `k`-minors: the elementary symmetric functions of its real eigenvalues), so
@@ -25,7 +27,9 @@
 
 use super::curve::{self, Arc, Component, ComponentParam, Curve, Number, ParamRange, Point};
 use super::curve::{RealPiece, Sheet, SingularPoint};
-use super::surface::sqrt_in_field;
+use super::surface::{
+    parameterize_doubly_ruled, poly_form, sqrt_in_field, to_quadratic, RuledParameterization,
+};
 use crate::classify::{Classification, ComponentKind, SingularPointKind};
 use crate::error::Error;
 use crate::quadric::Quadric;
@@ -355,7 +359,9 @@ struct Plane {
 /// connection.
 ///
 /// # Errors
-/// [`Error::Unsupported`] when every member of rank ≤ 2 is at an irrational λ;
+/// [`Error::Unsupported`] when every member of rank ≤ 2 is at an irrational λ and the curve
+/// is neither four concurrent lines nor a skew quadrilateral at quadratic λ (a rational
+/// member with parameterized rulings, for the joins needing degree 8);
 /// [`Error::Algebra`] when a conic's rational point is out of the factoring bounds.
 pub(crate) fn plane_pair_curve(
     classification: Classification,
@@ -363,7 +369,18 @@ pub(crate) fn plane_pair_curve(
     qb: &Quadric,
 ) -> Result<Curve, Error> {
     let (am, bm) = (integer_matrix(qa), integer_matrix(qb));
-    let split = choose_split(&am, &bm)?;
+    let split = match choose_split(&am, &bm) {
+        Ok(split) => split,
+        Err(e) => {
+            if let Some(curve) = concurrent_lines_curve(classification.clone(), &am, &bm)? {
+                return Ok(curve);
+            }
+            return match conjugate_pair_curve(classification.clone(), &am, &bm)? {
+                Some(curve) => Ok(curve),
+                None => Err(e),
+            };
+        }
+    };
     let delta = radicand_of(split.pair.planes.iter().flatten());
     let q = rational_matrix(&split.other).map(qr);
     let complex = split.pair.kind == PlanePairKind::ComplexConjugate;
@@ -918,6 +935,558 @@ fn meet(
     }
 }
 
+/// The two members of rank 2 at conjugate real quadratic irrationalities `λ, λ̄ ∈ ℚ(√D)`
+/// (Segre `[(11)(11)]`, the skew quadrilateral and its complex forms), or `None`.
+///
+/// Over ℂ the pencil is `diag(a₁, a₂, a₃, a₄)`, `diag(λa₁, λa₂, λ̄a₃, λ̄a₄)`: the kernels `V`
+/// of `λA − B` and `V̄` of `λ̄A − B` are disjoint lines, `A` pairs them to zero, and the curve
+/// meets `V` where `A|V = 0` (`B|V = λ·A|V`): at `p±`, and `V̄` at `q± = σ(p±)` (`σ: √D ↦ −√D`).
+/// The four lines are the joins `pᵢqⱼ`: `A(s·p + t·q) = s²A(p) + 2st·A(p, q) + t²A(q) = 0`.
+/// With `e` the discriminant of `A|V`, the points `p±` are real iff `e > 0` and `q±` iff
+/// `σ(e) > 0`: four real lines meeting at four crunodes, or (one sign each) four non-real lines
+/// meeting in pairs at the two real points `p±` (acnodes), or nothing real.
+fn conjugate_pair_curve(
+    classification: Classification,
+    a: &Mat,
+    b: &Mat,
+) -> Result<Option<Curve>, Error> {
+    // det(λA − B) = c·f² with f irreducible of degree 2 (E₃ may vanish identically)
+    let e4 = Poly::new(pencil_principal_minor_sums(a, b)[3].to_vec());
+    if e4.is_zero() {
+        return Ok(None);
+    }
+    let mut f = Poly::from_rational(&e4).0.squarefree_part();
+    for r in rational_roots(&e4) {
+        f = f
+            .div_exact(&Poly::vanishing_at(&r))
+            .expect("a rational root divides");
+    }
+    if f.degree() != Some(2) {
+        return Ok(None);
+    }
+    let (c0, c1, c2) = (
+        RBig::from(f.coeff(0)),
+        RBig::from(f.coeff(1)),
+        RBig::from(f.coeff(2)),
+    );
+    let disc = &c1 * &c1 - RBig::from(4) * &c0 * &c2;
+    if disc.is_zero() {
+        return Ok(None);
+    }
+    if disc < RBig::ZERO {
+        return ruled_member_curve(classification, a, b);
+    }
+    let Some(root) = sqrt_in_field(&qr(&disc), None) else {
+        return Ok(None);
+    };
+    let Some(d) = radicand_of([&root]) else {
+        return Ok(None);
+    };
+    let two_c2 = qr(&(RBig::from(2) * &c2));
+    let lambdas = [root.clone(), root.neg()].map(|r| {
+        r.sub(&qr(&c1))
+            .div(&two_c2)
+            .expect("a quadratic's leading coefficient")
+    });
+    let am = rational_matrix(a).map(qr);
+    let bm = rational_matrix(b).map(qr);
+    // for each root: the points x ± √e·y of V where A|V = 0
+    let mut sides: Vec<(Vq, Vq, Quadratic)> = Vec::new();
+    for lambda in &lambdas {
+        let p = Matrix::from_fn(4, 4, |i, j| lambda.mul(&am[(i, j)]).sub(&bm[(i, j)]));
+        let ker = p.kernel();
+        if ker.len() != 2 {
+            return Ok(None);
+        }
+        let (v0, v1) = (&ker[0], &ker[1]);
+        let (qa, qb, qc) = (form(&am, v0, v0), form(&am, v0, v1), form(&am, v1, v1));
+        let Some(side) = binary_points(&qa, &qb, &qc, v0, v1) else {
+            return Ok(None);
+        };
+        sides.push(side);
+    }
+    let delta = Some(&d);
+    let real = |e: &Quadratic| e.sign() == Some(Sign::Positive);
+    let mut curve = Curve {
+        classification,
+        components: Vec::new(),
+        singular_points: Vec::new(),
+        pieces: Vec::new(),
+        connected: Vec::new(),
+    };
+    let reals: Vec<bool> = sides.iter().map(|s| real(&s.2)).collect();
+    if reals[0] && reals[1] {
+        let (ext, ps) = real_ends(&sides[0], delta);
+        let (x, y, e) = &sides[1];
+        // q± in the field of p±: √e' there, or √e' = k·√e₀ with k ∈ ℚ(√D)
+        let qs: Option<[Vec<Number>; 2]> = match (sqrt_in_field(e, delta), &ext.root) {
+            (Some(s), _) => Some(plus_minus(x, y, &s).map(|v| ext.embed_vec(&v))),
+            (None, Some(_)) => {
+                let ratio = e.div(&sides[0].2).expect("e ≠ 0");
+                sqrt_in_field(&ratio, delta).map(|k| {
+                    let ky: Vq = y.iter().map(|c| k.mul(c)).collect();
+                    let neg: Vq = ky.iter().map(Quadratic::neg).collect();
+                    [ext.with_root(x, &ky), ext.with_root(x, &neg)]
+                })
+            }
+            (None, None) => None,
+        };
+        let lines: Vec<ComponentParam> = match &qs {
+            Some(qs) => ps
+                .iter()
+                .flat_map(|p| qs.iter().map(move |q| line_param(p, q)))
+                .collect(),
+            None => {
+                // the joins need ℚ(√D, √e, √ē) (degree 8): the lines of the two rulings of
+                // a rational member, each pair in its own field
+                let Some((families, d2)) = ruled_families(a, b) else {
+                    return Err(Error::Unsupported(
+                        "a skew quadrilateral whose lines need a field of degree 8 (not yet)"
+                            .into(),
+                    ));
+                };
+                let mut lines = Vec::new();
+                for family in &families {
+                    if !real(&family.2) {
+                        return Ok(None);
+                    }
+                    let (_, ends) = real_ends(family, d2.as_ref());
+                    lines.extend(ends.iter().map(|end| line_param(&end[..4], &end[4..])));
+                }
+                lines
+            }
+        };
+        for param in lines {
+            curve.components.push(Component {
+                kind: ComponentKind::Line,
+                multiplicity: 1,
+                real: true,
+                param: Some(param),
+                plane: None,
+            });
+        }
+        // the vertices p±, q±, each in its own field
+        let (_, qs_own) = real_ends(&sides[1], delta);
+        for x in ps.iter().chain(&qs_own) {
+            curve.singular_points.push(SingularPoint {
+                kind: SingularPointKind::Crunode,
+                point: to_point(x),
+            });
+        }
+        for component in 0..4 {
+            curve.pieces.push(RealPiece::Curve {
+                component,
+                arcs: vec![Arc {
+                    range: ParamRange::All,
+                    sheet: Sheet::Only,
+                    reversed: false,
+                }],
+                closed: true,
+            });
+        }
+        curve.connected.push(vec![0, 1, 2, 3]);
+    } else {
+        // the lines p₊q±, p₋q± are non-real; the real ends (of one side at most) are
+        // acnodes, each where two conjugate lines meet
+        for _ in 0..4 {
+            curve.components.push(non_real(ComponentKind::Line, 1));
+        }
+        for side in sides.iter().filter(|s| real(&s.2)) {
+            let (_, ps) = real_ends(side, delta);
+            for (i, p) in ps.iter().enumerate() {
+                curve.singular_points.push(SingularPoint {
+                    kind: SingularPointKind::Acnode,
+                    point: to_point(p),
+                });
+                curve.connected.push(vec![curve.pieces.len()]);
+                curve.pieces.push(RealPiece::Point {
+                    component: 2 * i,
+                    point: to_point(p),
+                });
+            }
+        }
+    }
+    Ok(Some(curve))
+}
+
+/// Four distinct concurrent lines (a singular pencil whose members share one vertex `v`)
+/// when their base points need irrational roots, or `None`.
+///
+/// With `v` the common kernel and `vₖ ≠ 0`, the members restricted to the coordinates
+/// `i ≠ k` are conics `C`, `D` of a plane missing `v`, and `A(s·v + X) = A(X)`: the curve
+/// is the cone from `v` over `C ∩ D`. A member conic with a rational point `y` is
+/// parameterized by the lines through `y`, `X(t) = 2(yᵀCw)w − (wᵀCw)y`, `w = e_a + t·e_b`;
+/// the other conic gives the binary quartic `q(t) = X(t)ᵀDX(t)` (`t = ∞` its degree drop).
+/// For square-free `q` its real roots `τ` (`ℚ(τ)`) are the real lines `v + s·X(τ)`, the
+/// others non-real; all meet at `v` (a multiple point), the real locus is connected.
+///
+/// # Errors
+/// [`Error::Algebra`] when a conic's rational point search fails.
+fn concurrent_lines_curve(
+    classification: Classification,
+    a: &Mat,
+    b: &Mat,
+) -> Result<Option<Curve>, Error> {
+    let rows: Vec<Vec<RBig>> = a.iter().chain(b.iter()).map(|r| r.to_vec()).collect();
+    let common = Matrix::from_rows(rows).expect("rows of four").kernel();
+    if common.len() != 1 {
+        return Ok(None);
+    }
+    let v = common[0].clone();
+    let k = (0..4)
+        .find(|&i| !v[i].is_zero())
+        .expect("a nonzero kernel vector");
+    let idx: Vec<usize> = (0..4).filter(|&i| i != k).collect();
+    let restrict = |m: &Mat| -> [[RBig; 3]; 3] {
+        std::array::from_fn(|i| std::array::from_fn(|j| m[idx[i]][idx[j]].clone()))
+    };
+    let (ca, cb) = (restrict(a), restrict(b));
+    // a nondegenerate member conic with a rational point, and another member
+    let mut found = None;
+    for lambda in std::iter::once(None).chain((-2..=2).map(|v| Some(RBig::from(v)))) {
+        let c: [[RBig; 3]; 3] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| match &lambda {
+                Some(l) => l * &ca[i][j] - &cb[i][j],
+                None => ca[i][j].clone(),
+            })
+        });
+        if Matrix::from_array(c.clone()).rank() != 3 {
+            continue;
+        }
+        let point = find_point(&c).map_err(|e| Error::Algebra(format!("a conic's point: {e}")))?;
+        if let ConicPoint::Rational(y) = point {
+            let d = if lambda.is_some() {
+                ca.clone()
+            } else {
+                cb.clone()
+            };
+            found = Some((c, d, y));
+            break;
+        }
+    }
+    let Some((c, d, y)) = found else {
+        return Ok(None);
+    };
+    let pivot = (0..3).find(|&i| !y[i].is_zero()).expect("a nonzero point");
+    let (ia, ib) = match pivot {
+        0 => (1, 2),
+        1 => (0, 2),
+        _ => (0, 1),
+    };
+    let rp = |c: Vec<RBig>| Poly::new(c);
+    let mut w: Vec<Poly<RBig>> = vec![Poly::zero(), Poly::zero(), Poly::zero()];
+    w[ia] = rp(vec![RBig::ONE]);
+    w[ib] = rp(vec![RBig::ZERO, RBig::ONE]);
+    let apply = |m: &[[RBig; 3]; 3], x: &[Poly<RBig>]| -> Vec<Poly<RBig>> {
+        (0..3)
+            .map(|i| (0..3).fold(Poly::zero(), |acc, j| &acc + &x[j].scale(&m[i][j])))
+            .collect()
+    };
+    let inner = |x: &[Poly<RBig>], y: &[Poly<RBig>]| -> Poly<RBig> {
+        (0..3).fold(Poly::zero(), |acc, i| &acc + &(&x[i] * &y[i]))
+    };
+    let cw = apply(&c, &w);
+    let ycw = (0..3).fold(Poly::zero(), |acc, i| &acc + &cw[i].scale(&y[i]));
+    let wcw = inner(&w, &cw);
+    let two = RBig::from(2);
+    let x: Vec<Poly<RBig>> = (0..3)
+        .map(|i| &(&ycw.scale(&two) * &w[i]) - &wcw.scale(&y[i]))
+        .collect();
+    let q = inner(&x, &apply(&d, &x));
+    let Some(deg) = q.degree() else {
+        return Ok(None);
+    };
+    // square-free as a binary quartic: no repeated finite root, at most a simple one at ∞
+    if deg < 3 || q.gcd_monic(&q.derivative()).degree() != Some(0) {
+        return Ok(None);
+    }
+    let qi = Poly::from_rational(&q).0;
+    let vn: Vec<Number> = v.iter().map(|c| curve::rational(c.clone())).collect();
+    let lift = |x3: Vec<Number>| -> Vec<Number> {
+        let mut x4 = vec![Number::zero(); 4];
+        for (i, &j) in idx.iter().enumerate() {
+            x4[j] = x3[i].clone();
+        }
+        x4
+    };
+    // rational roots first, the irrational ones in ℚ(τ) of the rest (degree ≤ 4 − #rational)
+    let rational = rational_roots(&q);
+    let rest = rational.iter().fold(qi, |p, r| {
+        p.div_exact(&Poly::vanishing_at(r))
+            .expect("a rational root divides")
+    });
+    let taus = rational.into_iter().map(curve::rational).chain(
+        AlgebraicReal::real_roots_of(&rest)
+            .into_iter()
+            .map(|root| NumberField::new(&root).generator()),
+    );
+    let mut ends: Vec<Vec<Number>> = Vec::new();
+    for tau in taus {
+        let x3: Vec<Number> = x
+            .iter()
+            .map(|p| {
+                p.coeffs().iter().rev().fold(Number::zero(), |acc, c| {
+                    acc.mul(&tau).add(&curve::rational(c.clone()))
+                })
+            })
+            .collect();
+        ends.push(lift(x3));
+    }
+    if deg == 3 {
+        ends.push(lift(
+            x.iter().map(|p| curve::rational(p.coeff(2))).collect(),
+        ));
+    }
+    let mut curve = Curve {
+        classification,
+        components: Vec::new(),
+        singular_points: Vec::new(),
+        pieces: Vec::new(),
+        connected: Vec::new(),
+    };
+    for end in &ends {
+        let component = curve.components.len();
+        curve.components.push(Component {
+            kind: ComponentKind::Line,
+            multiplicity: 1,
+            real: true,
+            param: Some(line_param(&vn, end)),
+            plane: None,
+        });
+        curve.pieces.push(RealPiece::Curve {
+            component,
+            arcs: vec![Arc {
+                range: ParamRange::All,
+                sheet: Sheet::Only,
+                reversed: false,
+            }],
+            closed: true,
+        });
+    }
+    for _ in ends.len()..4 {
+        curve.components.push(non_real(ComponentKind::Line, 1));
+    }
+    if ends.is_empty() {
+        curve.pieces.push(RealPiece::Point {
+            component: 0,
+            point: to_point(&vn),
+        });
+    }
+    curve.connected.push((0..curve.pieces.len()).collect());
+    curve.singular_points.push(SingularPoint {
+        kind: SingularPointKind::Multiple,
+        point: to_point(&vn),
+    });
+    Ok(Some(curve))
+}
+
+/// The roots of `a·s² + 2b·st + c·t²` as the points `s·v₀ + t·v₁ = x ± √e·y`; `None` when
+/// the form vanishes or has a double root.
+fn binary_points(
+    a: &Quadratic,
+    b: &Quadratic,
+    c: &Quadratic,
+    v0: &[Quadratic],
+    v1: &[Quadratic],
+) -> Option<(Vq, Vq, Quadratic)> {
+    let (a, c, v0, v1) = if a.is_zero() {
+        (c, a, v1, v0)
+    } else {
+        (a, c, v0, v1)
+    };
+    if a.is_zero() {
+        // a = c = 0: the roots (1, 0), (0, 1), i.e. (v₀ + v₁) ± (v₀ − v₁) up to 2
+        if b.is_zero() {
+            return None;
+        }
+        let x: Vq = v0.iter().zip(v1).map(|(s, t)| s.add(t)).collect();
+        let y: Vq = v0.iter().zip(v1).map(|(s, t)| s.sub(t)).collect();
+        return Some((x, y, Quadratic::one()));
+    }
+    // (s, t) = (−b ± √e, a), e = b² − ac
+    let e = b.mul(b).sub(&a.mul(c));
+    if e.is_zero() {
+        return None;
+    }
+    let x: Vq = v0
+        .iter()
+        .zip(v1)
+        .map(|(s, t)| b.neg().mul(s).add(&a.mul(t)))
+        .collect();
+    Some((x, v0.to_vec(), e))
+}
+
+/// `x ± s·y`.
+fn plus_minus(x: &[Quadratic], y: &[Quadratic], s: &Quadratic) -> [Vq; 2] {
+    [
+        x.iter().zip(y).map(|(a, b)| a.add(&s.mul(b))).collect(),
+        x.iter().zip(y).map(|(a, b)| a.sub(&s.mul(b))).collect(),
+    ]
+}
+
+/// The real points `x ± √e·y` (`e > 0` in ℚ(√δ)) in ℚ(√δ), ℚ(√e) or ℚ(√δ, √e).
+fn real_ends((x, y, e): &(Vq, Vq, Quadratic), delta: Option<&IBig>) -> (Ext, [Vec<Number>; 2]) {
+    match sqrt_in_field(e, delta) {
+        Some(s) => {
+            let rad = radicand_of([&s]).or_else(|| delta.cloned());
+            let ext = Ext::new(rad.as_ref(), None);
+            let ends = plus_minus(x, y, &s).map(|v| ext.embed_vec(&v));
+            (ext, ends)
+        }
+        None => {
+            let ext = Ext::new(delta, Some(e));
+            let neg: Vq = y.iter().map(Quadratic::neg).collect();
+            let ends = [ext.with_root(x, y), ext.with_root(x, &neg)];
+            (ext, ends)
+        }
+    }
+}
+
+/// The curve as four lines on a real doubly ruled member `S` (a rational λ, inertia (2, 2)),
+/// two in each ruling, when the pencil's plane pairs are at complex λ (case 31), or `None`.
+///
+/// On `q(u, v) = b(u) + v·d(u)` ([`parameterize_doubly_ruled`]: `b`, `d` linear, so `v`
+/// fixed is a line too) another member `Q` is `F = c₀ + 2c₁v + c₂v²` (`c₀ = bᵀQb`,
+/// `c₁ = bᵀQd`, `c₂ = dᵀQd`). The curve is four lines iff `F = g(u)·h(v)` for binary
+/// quadratics `g = gcd(c₀, c₁, c₂)` (homogenized to degree 2) and `h = (c₀, c₁, c₂)/g`, each
+/// with distinct roots: the lines `u = uᵢ` and `v = vⱼ`. The parameterization is real, so a
+/// line is real iff its root is; two real lines of one ruling are skew, and a real line
+/// meets a non-real line of the other ruling at a non-real point: the real locus is the real
+/// lines, each its own connected component, when one ruling alone has real roots.
+fn ruled_member_curve(
+    classification: Classification,
+    a: &Mat,
+    b: &Mat,
+) -> Result<Option<Curve>, Error> {
+    let Some((families, delta)) = ruled_families(a, b) else {
+        return Ok(None);
+    };
+    Ok(ruled_lines(classification, &families, delta.as_ref()))
+}
+
+/// A point pair `x ± √e·y` of 8-vectors: the two ends `(b, d)` of two lines.
+type Family = (Vq, Vq, Quadratic);
+
+/// The two rulings' line pairs of the curve on the first rational member of inertia (2, 2)
+/// (λ = ∞, −3, …, 3) whose rulings are parameterized, and the parameterization's radicand
+/// ([`ruled_member_curve`]).
+fn ruled_families(a: &Mat, b: &Mat) -> Option<([Family; 2], Option<IBig>)> {
+    let lambdas = std::iter::once(None).chain((-3..=3).map(|v| Some(RBig::from(v))));
+    for lambda in lambdas {
+        let s = member(a, b, lambda.as_ref());
+        let Some(dg) = rational_matrix(&s).diagonalize_congruent() else {
+            continue;
+        };
+        let inertia = dg.inertia();
+        if (inertia.positive, inertia.negative) != (2, 2) {
+            continue;
+        }
+        let Ok(Some(rp)) = parameterize_doubly_ruled(&s) else {
+            continue;
+        };
+        let other = to_quadratic(if lambda.is_some() { a } else { b });
+        if let Some(families) = families_on(&rp, &other) {
+            return Some((families, rp.delta));
+        }
+    }
+    None
+}
+
+/// `F = g(u)·h(v)` on one parameterization, the roots of `g` and `h` as line pairs.
+fn families_on(rp: &RuledParameterization, other: &[[Quadratic; 4]; 4]) -> Option<[Family; 2]> {
+    let c0 = poly_form(other, &rp.b, &rp.b);
+    let c1 = poly_form(other, &rp.b, &rp.d);
+    let c2 = poly_form(other, &rp.d, &rp.d);
+    let g = c0.gcd_monic(&c1).gcd_monic(&c2);
+    if g.is_zero() || g.degree()? > 2 {
+        return None;
+    }
+    // h_j = c_j / g, constants
+    let mut h = Vec::new();
+    for c in [&c0, &c1, &c2] {
+        let (quo, rem) = c.div_rem(&g);
+        if !rem.is_zero() || quo.degree().unwrap_or(0) > 0 {
+            return None;
+        }
+        h.push(quo.coeff(0));
+    }
+    let (b0, b1): (Vq, Vq) = (
+        (0..4).map(|k| rp.b[k].coeff(0)).collect(),
+        (0..4).map(|k| rp.b[k].coeff(1)).collect(),
+    );
+    let (d0, d1): (Vq, Vq) = (
+        (0..4).map(|k| rp.d[k].coeff(0)).collect(),
+        (0..4).map(|k| rp.d[k].coeff(1)).collect(),
+    );
+    let cat = |x: &Vq, y: &Vq| -> Vq { x.iter().chain(y).cloned().collect() };
+    let half = qr(&RBig::from_parts_signed(IBig::ONE, IBig::from(2)));
+    // u-lines: g(u, w) on (u, w) ↦ (u·b₁ + w·b₀, u·d₁ + w·d₀); v-lines: h(v, z) on
+    // (v, z) ↦ (z·b₀ + v·d₀, z·b₁ + v·d₁)
+    Some([
+        binary_points(
+            &g.coeff(2),
+            &g.coeff(1).mul(&half),
+            &g.coeff(0),
+            &cat(&b1, &d1),
+            &cat(&b0, &d0),
+        )?,
+        binary_points(&h[2], &h[1], &h[0], &cat(&d0, &d1), &cat(&b0, &b1))?,
+    ])
+}
+
+/// The curve from the rulings' line pairs when at most one ruling is real.
+fn ruled_lines(
+    classification: Classification,
+    families: &[Family; 2],
+    delta: Option<&IBig>,
+) -> Option<Curve> {
+    let real: Vec<bool> = families
+        .iter()
+        .map(|f| f.2.sign() == Some(Sign::Positive))
+        .collect();
+    if real[0] && real[1] {
+        // four real lines meeting at four real points: the plane-pair routes
+        return None;
+    }
+    let mut curve = Curve {
+        classification,
+        components: Vec::new(),
+        singular_points: Vec::new(),
+        pieces: Vec::new(),
+        connected: Vec::new(),
+    };
+    for (family, is_real) in families.iter().zip(real) {
+        if !is_real {
+            for _ in 0..2 {
+                curve.components.push(non_real(ComponentKind::Line, 1));
+            }
+            continue;
+        }
+        let (_, ends) = real_ends(family, delta);
+        for end in ends {
+            let component = curve.components.len();
+            curve.components.push(Component {
+                kind: ComponentKind::Line,
+                multiplicity: 1,
+                real: true,
+                param: Some(line_param(&end[..4], &end[4..])),
+                plane: None,
+            });
+            curve.connected.push(vec![curve.pieces.len()]);
+            curve.pieces.push(RealPiece::Curve {
+                component,
+                arcs: vec![Arc {
+                    range: ParamRange::All,
+                    sheet: Sheet::Only,
+                    reversed: false,
+                }],
+                closed: true,
+            });
+        }
+    }
+    Some(curve)
+}
+
 /// `(s, t)` with `x = s·v₀ + t·v₁` for a point `x` of the line spanned by `v`.
 fn coordinates_on(x: &[Quadratic], v: &[Vq; 2]) -> (Quadratic, Quadratic) {
     for i in 0..4 {
@@ -980,6 +1549,190 @@ mod tests {
             assert_eq!(sd.mul(&sd), Number::from_int(&two));
             assert_eq!(root.mul(&root), ext.embed(&radicand), "{radicand}");
             assert_eq!((sd.sign(), root.sign()), (Sign::Positive, Sign::Positive));
+        }
+    }
+
+    use crate::io::parse_quadric;
+
+    fn eval_at(p: &Poly<Number>, t: i64) -> Number {
+        let t = Number::from_int(&IBig::from(t));
+        p.coeffs()
+            .iter()
+            .rev()
+            .fold(Number::zero(), |acc, c| acc.mul(&t).add(c))
+    }
+
+    /// Two points of a line component.
+    fn line_points(c: &Component) -> [Vec<Number>; 2] {
+        match &c.param {
+            Some(ComponentParam::Rational { x, degree: 1 }) => {
+                [0, 1].map(|t| x.iter().map(|p| eval_at(p, t)).collect())
+            }
+            _ => panic!("not a parameterized line"),
+        }
+    }
+
+    fn quadric_at(q: &Quadric, x: &[Number]) -> Number {
+        let m = q.matrix();
+        let mut acc = Number::zero();
+        for i in 0..4 {
+            for j in 0..4 {
+                acc = acc.add(&curve::rational(m[i][j].clone()).mul(&x[i]).mul(&x[j]));
+            }
+        }
+        acc
+    }
+
+    /// The substitution `X = T·X'` (`Q' = TᵀQT`).
+    fn transformed(text: &str, t: &[[i64; 4]; 4]) -> Quadric {
+        let m = parse_quadric(text).unwrap().matrix().clone();
+        Quadric::from_matrix(std::array::from_fn(|i| {
+            std::array::from_fn(|j| {
+                let mut acc = RBig::ZERO;
+                for k in 0..4 {
+                    for l in 0..4 {
+                        acc += RBig::from(t[k][i] * t[l][j]) * &m[k][l];
+                    }
+                }
+                acc
+            })
+        }))
+        .unwrap()
+    }
+
+    fn apply(t: &[[i64; 4]; 4], x: &[Number]) -> Vec<Number> {
+        (0..4)
+            .map(|i| {
+                (0..4).fold(Number::zero(), |acc, j| {
+                    acc.add(&Number::from_int(&IBig::from(t[i][j])).mul(&x[j]))
+                })
+            })
+            .collect()
+    }
+
+    const MOVES: [[[i64; 4]; 4]; 3] = [
+        [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]],
+        [[1, 1, 0, 0], [0, 1, 2, 0], [0, 0, 1, -1], [1, 0, 0, 1]],
+        [[2, 1, 0, 1], [1, 1, 0, 0], [0, 3, 1, 0], [0, 0, 1, 1]],
+    ];
+
+    /// Case 31 (plane pairs at λ = ±2i) under integer changes of coordinates: the two real
+    /// lines found are the images of the known lines `x = w, y = −z` and `x = −w, y = z`,
+    /// the other two are non-real and nothing else is real.
+    #[test]
+    fn the_real_lines_of_case_31_are_the_known_skew_lines() {
+        for t in &MOVES {
+            let a = transformed("x*y+z*w", t);
+            let b = transformed("-x^2+y^2-z^2+w^2", t);
+            let curve = super::super::parameterize(&a, &b).unwrap();
+            let real: Vec<&Component> = curve.components.iter().filter(|c| c.real).collect();
+            assert_eq!((curve.components.len(), real.len()), (4, 2));
+            let mut signs = Vec::new();
+            for c in real {
+                let pts = line_points(c).map(|x| apply(t, &x));
+                // x = s·w and y = −s·z with s = ±1, at both points
+                let s = [1i64, -1]
+                    .into_iter()
+                    .find(|&s| {
+                        pts.iter().all(|x| {
+                            let s = Number::from_int(&IBig::from(s));
+                            x[0].sub(&s.mul(&x[3])).is_zero() && x[1].add(&s.mul(&x[2])).is_zero()
+                        })
+                    })
+                    .expect("a known line");
+                signs.push(s);
+            }
+            signs.sort();
+            assert_eq!(signs, [-1, 1]);
+            assert_eq!(curve.connected.len(), 2);
+            assert!(curve.singular_points.is_empty());
+        }
+    }
+
+    /// Skew quadrilaterals with plane pairs at conjugate real λ (one over a degree-4 field,
+    /// one needing the rulings' route): four real lines on both quadrics, four crunodes on
+    /// both quadrics, one connected piece; under changes of coordinates too.
+    #[test]
+    fn skew_quadrilaterals_at_real_quadratic_lambda_have_four_real_lines() {
+        for (ta, tb) in [
+            ("x^2-y^2-2*z*w", "2*x^2+2*x*y+2*y^2-z^2-3*w^2"),
+            ("x^2-3*y^2-2*z*w", "3*x^2+6*x*y+9*y^2-z^2-6*w^2"),
+        ] {
+            for t in &MOVES {
+                let (a, b) = (transformed(ta, t), transformed(tb, t));
+                let curve = super::super::parameterize(&a, &b).unwrap();
+                assert_eq!(curve.components.len(), 4, "{ta}");
+                for c in &curve.components {
+                    let p = c.param.as_ref().expect("real");
+                    assert!(p.lies_on(a.matrix()) && p.lies_on(b.matrix()));
+                }
+                assert_eq!(curve.singular_points.len(), 4);
+                for sp in &curve.singular_points {
+                    assert!(quadric_at(&a, &sp.point).is_zero());
+                    assert!(quadric_at(&b, &sp.point).is_zero());
+                }
+                assert_eq!(curve.connected, [vec![0, 1, 2, 3]]);
+            }
+        }
+    }
+
+    /// Four concurrent lines over `xz = y²`, `2xy + z² = 0` (cone from (0:0:0:1)): the
+    /// conic points `(1 : t : t²)` with `t(t³ + 2) = 0` give the real lines through
+    /// `(1:0:0:0)` (rational) and `(1 : −∛2 : ∛4 : 0)` (degree 3), two non-real lines.
+    #[test]
+    fn four_concurrent_lines_through_cubic_irrationalities() {
+        for t in &MOVES[..2] {
+            let a = transformed("x*z-y^2", t);
+            let b = transformed("2*x*y+z^2", t);
+            let curve = super::super::parameterize(&a, &b).unwrap();
+            let real: Vec<&Component> = curve.components.iter().filter(|c| c.real).collect();
+            assert_eq!((curve.components.len(), real.len()), (4, 2));
+            let mut degrees = Vec::new();
+            for c in real {
+                let pts = line_points(c).map(|x| apply(t, &x));
+                // in the original coordinates: a point (1 : τ : τ² : *) with τ(τ³ + 2) = 0
+                let p = pts
+                    .iter()
+                    .find(|x| !x[0].is_zero())
+                    .expect("off the vertex");
+                let tau = p[1].div(&p[0]).unwrap();
+                let t4 = tau.mul(&tau).mul(&tau).mul(&tau);
+                assert!(t4.add(&tau.add(&tau)).is_zero());
+                assert!(p[2].div(&p[0]).unwrap().sub(&tau.mul(&tau)).is_zero());
+                degrees.push(tau.field().map_or(1, |f| f.modulus().degree().unwrap()));
+            }
+            degrees.sort();
+            assert_eq!(degrees, [1, 3]);
+            assert_eq!(curve.connected.len(), 1);
+        }
+    }
+
+    /// Case 30 at conjugate real λ (corpus qi-060…062): four non-real lines, the two real
+    /// vertices on one kernel are acnodes on both quadrics, the only real pieces.
+    #[test]
+    fn case_30_at_real_quadratic_lambda_is_two_acnodes() {
+        for (ta, tb) in [
+            ("x^2+y^2-2*z*w", "2*x*y+z^2+w^2"),
+            ("x^2+3*y^2-2*z*w", "x^2-6*x*y-3*y^2-z^2-4*w^2"),
+            ("x^2+2*y^2-2*z*w", "x^2-4*x*y-2*y^2-z^2-3*w^2"),
+        ] {
+            for t in &MOVES[..2] {
+                let (a, b) = (transformed(ta, t), transformed(tb, t));
+                let curve = super::super::parameterize(&a, &b).unwrap();
+                assert_eq!(curve.components.len(), 4);
+                assert!(curve.components.iter().all(|c| !c.real));
+                assert_eq!(curve.singular_points.len(), 2, "{ta}");
+                for sp in &curve.singular_points {
+                    assert_eq!(sp.kind, SingularPointKind::Acnode);
+                    assert!(quadric_at(&a, &sp.point).is_zero());
+                    assert!(quadric_at(&b, &sp.point).is_zero());
+                }
+                assert_eq!(curve.connected, [vec![0], vec![1]]);
+                assert!(curve
+                    .pieces
+                    .iter()
+                    .all(|p| matches!(p, RealPiece::Point { .. })));
+            }
         }
     }
 }
