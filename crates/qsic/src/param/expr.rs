@@ -108,7 +108,9 @@ impl Names {
         let k = match self
             .named
             .iter()
-            .position(|a| a.poly() == alpha.poly() && a == alpha)
+            // roots of one square-free polynomial are equal iff their isolating intervals
+            // meet (no refinement, no comparison that could be costly)
+            .position(|a| a.poly() == alpha.poly() && intervals_meet(a, alpha))
         {
             Some(k) => k,
             None => {
@@ -253,6 +255,17 @@ fn short_ends(a: &AlgebraicReal, lo: &RBig, hi: &RBig) -> (RBig, RBig) {
         }
     }
     (lo.clone(), hi.clone())
+}
+
+/// Whether the isolating intervals of two roots of the same polynomial meet.
+fn intervals_meet(a: &AlgebraicReal, b: &AlgebraicReal) -> bool {
+    let (x, y) = (a.interval(), b.interval());
+    match (x.as_exact(), y.as_exact()) {
+        (Some(u), Some(v)) => u == v,
+        (Some(u), None) => y.lo() < u && u < y.hi(),
+        (None, Some(v)) => x.lo() < v && v < x.hi(),
+        (None, None) => x.lo() < y.hi() && y.lo() < x.hi(),
+    }
 }
 
 /// The rational value of an element with a constant numerator.
