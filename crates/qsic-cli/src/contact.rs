@@ -75,7 +75,7 @@ pub fn moving_from_arg(text: &str) -> Result<MovingMatrix, Error> {
 /// As [`parse_number`].
 pub fn range_end(text: &str) -> Result<Option<RBig>, Error> {
     match text.trim() {
-        "inf" | "+inf" | "-inf" | "none" => Ok(None),
+        "inf" | "+inf" | "-inf" | "oo" | "+oo" | "-oo" | "none" => Ok(None),
         t => parse_number(t).map(Some),
     }
 }

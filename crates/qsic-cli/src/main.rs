@@ -107,7 +107,7 @@ struct ContactArgs {
     /// Second moving quadric.
     #[arg(value_name = "B", allow_hyphen_values = true)]
     b: String,
-    /// Search the first contact in [T0, T1] (rationals, or -inf / inf); default all t.
+    /// Search the first contact in [T0, T1] (rationals, or -oo / oo, also -inf / inf); default all t.
     #[arg(long, num_args = 2, value_names = ["T0", "T1"], allow_hyphen_values = true)]
     range: Option<Vec<String>>,
     /// Print one JSON object instead of the text report.
