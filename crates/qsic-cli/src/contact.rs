@@ -69,7 +69,7 @@ pub fn moving_from_arg(text: &str) -> Result<MovingMatrix, Error> {
     moving_matrix_from_rows(&rows)
 }
 
-/// A range end: a rational number, or `inf`/`-inf` (also `none`) for an open end.
+/// A range end: a rational number, or `oo`/`-oo` (also `inf`/`-inf`, `none`) for an open end.
 ///
 /// # Errors
 /// As [`parse_number`].
