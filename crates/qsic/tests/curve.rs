@@ -7,34 +7,16 @@
 // Index loops read as the matrix formulas they implement.
 #![allow(clippy::needless_range_loop)]
 
+mod common;
+
+use common::read_form;
 use qsic::affine::{affine_curve, surface_name, AffineCurve, Chart};
 use qsic::classify::PencilKind;
-use qsic::io::{parse_quadric, quadric_from_rows};
 use qsic::param::{parameterize, Curve, RealPiece};
 use qsic::{Error, Quadric};
 use qsic_algebra::testing::SplitMix;
 use qsic_algebra::RBig;
 use serde_json::Value;
-
-fn read_form(v: &Value) -> Quadric {
-    match v {
-        Value::String(s) => parse_quadric(s).unwrap(),
-        Value::Array(rows) => {
-            let rows: Vec<Vec<String>> = rows
-                .iter()
-                .map(|r| {
-                    r.as_array()
-                        .unwrap()
-                        .iter()
-                        .map(|x| x.as_str().map_or_else(|| x.to_string(), str::to_owned))
-                        .collect()
-                })
-                .collect();
-            quadric_from_rows(&rows).unwrap()
-        }
-        _ => panic!("unexpected quadric value {v}"),
-    }
-}
 
 /// Connected components of the real locus in ℝP³, `(curves, isolated points)`, per case.
 fn expected_regular(case: u8) -> (usize, usize) {

@@ -5,32 +5,15 @@
 // Index loops read as the matrix formulas they implement.
 #![allow(clippy::needless_range_loop)]
 
-use qsic::io::{parse_quadric, quadric_from_rows};
+mod common;
+
+use common::read_form;
+use qsic::io::parse_quadric;
 use qsic::param::{parameterize_smooth_quartic, LevinParameterization, PolyVector};
 use qsic::{classify, Quadric};
 use qsic_algebra::field::Quadratic;
 use qsic_algebra::{Poly, RBig, Sign};
 use serde_json::Value;
-
-fn read_form(v: &Value) -> Quadric {
-    match v {
-        Value::String(s) => parse_quadric(s).unwrap(),
-        Value::Array(rows) => {
-            let rows: Vec<Vec<String>> = rows
-                .iter()
-                .map(|r| {
-                    r.as_array()
-                        .unwrap()
-                        .iter()
-                        .map(|x| x.as_str().map_or_else(|| x.to_string(), str::to_owned))
-                        .collect()
-                })
-                .collect();
-            quadric_from_rows(&rows).unwrap()
-        }
-        _ => panic!("unexpected quadric value {v}"),
-    }
-}
 
 /// `(id, A, B, real_type)` of every case 1–4 line of the corpora.
 fn smooth_quartic_lines() -> Vec<(String, Quadric, Quadric, String)> {

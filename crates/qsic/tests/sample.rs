@@ -4,32 +4,15 @@
 //! and the affine view consistent with the points (crossings of the plane at infinity on
 //! it, affine points that map back to the projective ones).
 
-use qsic::io::{parse_quadric, quadric_from_rows};
+mod common;
+
+use common::read_form;
+use qsic::io::parse_quadric;
 use qsic::param::sample::{sample, SampleOptions, SampledPiece, MAX_ANGLE};
 use qsic::param::{parameterize, Curve, ParamRange, ParamValue, RealPiece};
 use qsic::{Error, Quadric};
 use qsic_algebra::RBig;
 use serde_json::Value;
-
-fn read_form(v: &Value) -> Quadric {
-    match v {
-        Value::String(s) => parse_quadric(s).unwrap(),
-        Value::Array(rows) => {
-            let rows: Vec<Vec<String>> = rows
-                .iter()
-                .map(|r| {
-                    r.as_array()
-                        .unwrap()
-                        .iter()
-                        .map(|x| x.as_str().map_or_else(|| x.to_string(), str::to_owned))
-                        .collect()
-                })
-                .collect();
-            quadric_from_rows(&rows).unwrap()
-        }
-        _ => panic!("unexpected quadric value {v}"),
-    }
-}
 
 /// The corpus pairs whose curve is parameterized, with their ids.
 fn curves() -> Vec<(String, Quadric, Quadric, Curve)> {
