@@ -223,21 +223,7 @@ impl AffineSurface {
 
 /// The inertia of a symmetric `N × N` rational matrix, exactly.
 fn inertia<const N: usize>(m: &[[RBig; N]; N]) -> Inertia {
-    Inertia::from_minor_sum_signs(principal_minor_sums(m).map(|e| e.sign_of()))
-}
-
-trait SignOf {
-    fn sign_of(&self) -> Sign;
-}
-
-impl SignOf for RBig {
-    fn sign_of(&self) -> Sign {
-        match self.cmp(&RBig::ZERO) {
-            std::cmp::Ordering::Less => Sign::Negative,
-            std::cmp::Ordering::Equal => Sign::Zero,
-            std::cmp::Ordering::Greater => Sign::Positive,
-        }
-    }
+    Inertia::from_minor_sum_signs(principal_minor_sums(m).map(|e| Sign::of_rational(&e)))
 }
 
 /// The affine name of `q` in `chart`.
