@@ -372,6 +372,31 @@ mod tests {
         }
     }
 
+    /// The unit sphere seen with a plane at infinity that misses it (an ellipsoid), cuts it
+    /// (a hyperboloid of two sheets) or touches it (an elliptic paraboloid): charts whose
+    /// change of coordinates is not a permutation.
+    #[test]
+    fn a_sphere_is_an_ellipsoid_a_hyperboloid_or_a_paraboloid_by_its_plane_at_infinity() {
+        let q = parse_quadric("x^2+y^2+z^2-w^2").unwrap();
+        let name = |f: [i64; 4]| surface_name(&q, &Chart::new(f.map(RBig::from)).unwrap());
+        assert!(name([1, 0, 0, 2]).is_ellipsoid()); // x = −2w misses it
+        assert!(name([1, 1, 0, 3]).is_ellipsoid());
+        assert_eq!(name([2, 0, 0, 1]), HyperboloidTwoSheets); // x = −w/2 cuts it
+        assert_eq!(name([1, 1, 1, 1]), HyperboloidTwoSheets);
+        assert_eq!(name([1, 0, 0, 1]), EllipticParaboloid); // x = −w touches it
+        assert_eq!(name([3, 0, 4, 5]), EllipticParaboloid); // |(3, 0, 4)| = 5
+                                                            // solids are read in the default chart only
+        let b = parse_quadric("(x-1)^2+y^2+z^2-1").unwrap();
+        let default = affine_view(Some(&q), Some(&b), &Chart::default(), [false, false]);
+        assert_eq!(default.solids.map(|s| s.key()), Some("overlapping"));
+        let other = Chart::new([1, 0, 0, 3].map(RBig::from)).unwrap();
+        assert!(!other.is_default() && Chart::default().is_default());
+        assert_eq!(
+            affine_view(Some(&q), Some(&b), &other, [false, false]).solids,
+            None
+        );
+    }
+
     #[test]
     fn an_affine_map_changes_no_name_and_a_chart_moves_infinity() {
         // x → x + 2y + 3, y → y − z, z → 2z + x + y: affine, invertible (det 1)
