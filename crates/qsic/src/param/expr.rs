@@ -19,7 +19,8 @@ use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring, Sign};
 pub struct NamedNumber {
     /// `a1`, `a2`, …
     pub name: String,
-    /// Its defining polynomial, in `x` (square-free; it vanishes at the number).
+    /// Its defining polynomial, in `x`, monic with rational coefficients (square-free; it
+    /// vanishes at the number).
     pub poly: String,
     /// An interval `[lo, hi]` isolating it among the real roots of `poly` (`lo = hi` when
     /// exact), as `p/q` strings.
@@ -226,7 +227,10 @@ impl Names {
                 let (lo, hi) = short_ends(a, iv.lo(), iv.hi());
                 NamedNumber {
                     name: format!("a{}", k + 1),
-                    poly: a.poly().to_string(),
+                    // monic: a checker evaluating it near the root in floating point
+                    // sees terms of the size of the root's powers, not of the integer
+                    // content (which can be 10⁶⁰ for a disguised pencil)
+                    poly: a.poly().to_rational().monic().to_string(),
                     interval: [lo.to_string(), hi.to_string()],
                     approx: a.to_f64(),
                 }
@@ -383,6 +387,17 @@ mod tests {
             .unwrap();
         let reducible = NumberField::new(&half);
         assert_eq!(Names::new().number(&reducible.generator()), "1/2");
+    }
+
+    #[test]
+    fn named_polynomials_are_monic() {
+        // α = ∛(2/3), a root of 3x³ − 2: its listed polynomial is x³ − 2/3
+        let alpha = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 0, 3]))
+            .pop()
+            .unwrap();
+        let mut names = Names::new();
+        assert_eq!(names.number(&NumberField::new(&alpha).generator()), "a1");
+        assert_eq!(names.numbers()[0].poly, "x^3 - 2/3");
     }
 
     #[test]
