@@ -250,3 +250,29 @@ fn a_user_chart_moves_the_points_at_infinity() {
     };
     assert!(sample(&curve, &none).is_err());
 }
+
+/// A line over ℚ(√5) of a disguised skew quadrilateral (QI entry 67 under an integer change of
+/// coordinates and of pencil basis): its direction term is ~4000 times its point term, so the
+/// vector turns half round within |θ| < 0.03 and two samples there are nearly opposite, one
+/// projective point to a test up to sign — the sampler must still go round between them.
+#[test]
+fn a_line_dominated_by_its_direction_is_sampled_without_a_jump() {
+    let form = |text: &str| read_form(&serde_json::from_str(text).unwrap());
+    let a = form("[[-19,75,-119,103],[75,-180,525,-285],[-119,525,-719,703],[103,-285,703,-431]]");
+    let b = form(
+        "[[-1121,1401,-1918,2178],[1401,-1695,2856,-2773],[-1918,2856,-3655,4209],[2178,-2773,4209,-4359]]",
+    );
+    let curve = parameterize(&a, &b).unwrap();
+    let ms = [float_matrix(&a), float_matrix(&b)];
+    for points in [5, 64] {
+        let options = SampleOptions {
+            points,
+            ..SampleOptions::default()
+        };
+        let s = sample(&curve, &options).unwrap();
+        assert_eq!(s.pieces.len(), 4);
+        for p in &s.pieces {
+            check_piece(p, &ms, points).unwrap();
+        }
+    }
+}

@@ -896,13 +896,20 @@ impl Sampler<'_> {
 
     /// Whether the segment `p, q` needs a point between them; computes it if so.
     fn split(&self, p: &Sample, q: &Sample, sheet: Sheet) -> Result<Option<Sample>, Error> {
-        let far = dot(&p.x, &q.x).abs() < MAX_ANGLE.cos();
-        if !far && self.tolerance.is_none() {
+        let d = dot(&p.x, &q.x);
+        let far = d.abs() < MAX_ANGLE.cos();
+        // nearly opposite vectors are one projective point, but the vector may have swung
+        // all the way round between them (a direction term dominating a line's point term):
+        // the midpoint tells, close to both or not
+        let opposite = d < 0.0;
+        if !far && !opposite && self.tolerance.is_none() {
             return Ok(None);
         }
         let (lo, hi) = (p.theta.min(q.theta), p.theta.max(q.theta));
         let m = self.at(0.5 * (p.theta + q.theta), lo, hi, sheet)?;
-        if far {
+        let swung = opposite
+            && (dot(&m.x, &p.x).abs() < MAX_ANGLE.cos() || dot(&m.x, &q.x).abs() < MAX_ANGLE.cos());
+        if far || swung {
             return Ok(Some(m));
         }
         let tol = self.tolerance.unwrap_or(f64::INFINITY);
