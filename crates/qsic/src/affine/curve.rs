@@ -597,12 +597,78 @@ pub fn affine_curve(
         curves_bounded: bounded,
         curves_unbounded: unbounded,
         isolated_points: isolated,
-        points_at_infinity: singular_inf + locals.len() + isolated_at_infinity,
+        points_at_infinity: singular_points_at_infinity_on_finite_components(
+            curve,
+            &singular_at_infinity,
+            a,
+            b,
+            chart,
+        ) + locals.len()
+            + isolated_at_infinity,
         singular_finite: ns - singular_inf,
         singular_at_infinity: singular_inf,
         components,
         singular_points,
     })
+}
+
+/// The singular points at infinity that lie on a component not contained in the plane at
+/// infinity (the others are points of components at infinity only, which the counts leave out).
+///
+/// Components lie in the plane at infinity `ℓ = 0` only in two ways: the conics at infinity of
+/// `A` and `B` share one line (the only component there, and every singular point on it is
+/// where it meets the rest of the curve, which is finite), or they are proportional, so that a
+/// member `M` of the pencil is `ℓ·L`. Then the curve is `(A ∩ {ℓ = 0}) ∪ (A ∩ {L = 0})` and a
+/// point at infinity is on a finite component iff `L(X) = 0` (never when `L ∝ ℓ`).
+fn singular_points_at_infinity_on_finite_components(
+    curve: &Curve,
+    singular_at_infinity: &[bool],
+    a: &Quadric,
+    b: &Quadric,
+    chart: &Chart,
+) -> usize {
+    let at_infinity = curve
+        .singular_points
+        .iter()
+        .zip(singular_at_infinity)
+        .filter(|(_, &inf)| inf);
+    let (ma, mb) = (
+        chart.matrix_in_chart(a.matrix()),
+        chart.matrix_in_chart(b.matrix()),
+    );
+    let block = |m: &[[RBig; 4]; 4]| -> Vec<RBig> {
+        (0..3)
+            .flat_map(|i| (0..3).map(move |j| m[i][j].clone()))
+            .collect()
+    };
+    let (qa, qb) = (block(&ma), block(&mb));
+    // a member M with a zero 3×3 block, if any
+    let member: Option<[[RBig; 4]; 4]> = match qa.iter().position(|v| *v != RBig::ZERO) {
+        None => Some(ma.clone()),
+        Some(k) => {
+            let lambda = &qb[k] / &qa[k];
+            qa.iter().zip(&qb).all(|(x, y)| &lambda * x == *y).then(|| {
+                std::array::from_fn(|i| std::array::from_fn(|j| &lambda * &ma[i][j] - &mb[i][j]))
+            })
+        }
+    };
+    let Some(m) = member else {
+        return at_infinity.count();
+    };
+    // M = w·L in chart coordinates: L = (2M₀₃, 2M₁₃, 2M₂₃, M₃₃)
+    let two = RBig::from(2);
+    let l_form: [RBig; 4] = [
+        &two * &m[0][3],
+        &two * &m[1][3],
+        &two * &m[2][3],
+        m[3][3].clone(),
+    ];
+    if l_form[..3].iter().all(|v| *v == RBig::ZERO) {
+        return 0;
+    }
+    at_infinity
+        .filter(|(s, _)| chart_value(&l_form, &chart.to_chart_number(&s.point)).is_zero())
+        .count()
 }
 
 /// Whether two points are the same projective point (exactly; points in fields made

@@ -464,10 +464,32 @@ impl AffineView {
                 }
                 out.push_str(": ");
                 out.push_str(&parts.join(", "));
-                out.push_str(&match c.points_at_infinity {
-                    0 => "; no point at infinity".to_owned(),
-                    n => format!("; {} at infinity", plural(n, "point")),
-                });
+                let in_plane = c
+                    .components
+                    .iter()
+                    .filter(|k| k.at_infinity && k.name.is_some())
+                    .count();
+                if in_plane > 0 {
+                    out.push_str(&format!(
+                        "; {} in the plane at infinity",
+                        plural(in_plane, "real component")
+                    ));
+                }
+                if c.points_at_infinity > 0 {
+                    out.push_str(&format!(
+                        "; {} at infinity",
+                        plural(c.points_at_infinity, "point")
+                    ));
+                }
+                if c.singular_at_infinity > 0 {
+                    out.push_str(&format!(
+                        "; {} at infinity",
+                        plural(c.singular_at_infinity, "singular point")
+                    ));
+                }
+                if in_plane + c.points_at_infinity + c.singular_at_infinity == 0 {
+                    out.push_str("; no point at infinity");
+                }
             }
             Err(_) => out.push_str(": the curve in ℝ³ is not available for this class yet"),
         }
