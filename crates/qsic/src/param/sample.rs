@@ -161,7 +161,12 @@ pub struct Sampled {
 /// }
 /// ```
 pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> {
-    if options.points == 0 || options.points > MAX_POINTS {
+    if options.points == 0 {
+        return Err(Error::InvalidShape(
+            "at least one point per piece is asked for (--points ≥ 1)".into(),
+        ));
+    }
+    if options.points > MAX_POINTS {
         return Err(Error::Limit {
             what: format!("{} points per piece", options.points),
             limit: MAX_POINTS,
