@@ -13,6 +13,7 @@
 //! are staggered into rows.
 
 use crate::motion::TimeRange;
+use crate::svg::{colour, push_escaped, push_text};
 use qsic::motion::{Motion, MotionType};
 use qsic::Classification;
 use qsic_algebra::AlgebraicReal;
@@ -28,11 +29,6 @@ const ROW: f64 = 30.0;
 const BAND: f64 = 36.0;
 /// Approximate width of one character of the 12 px labels.
 const CHAR: f64 = 7.0;
-/// Fill colours of the bands, cycled when there are more types.
-const PALETTE: [&str; 10] = [
-    "#4e79a7", "#f28e2b", "#59a14f", "#e15759", "#76b7b2", "#edc948", "#b07aa1", "#ff9da7",
-    "#9c755f", "#bab0ac",
-];
 
 /// The window `[lo, hi]` of `t` drawn for `m` on `range`: the range itself when both ends
 /// are finite (widened by 1 on each side when it is a single point); otherwise the span of
@@ -58,30 +54,6 @@ pub fn plot_window(m: &Motion, range: &TimeRange) -> (f64, f64) {
     };
     let margin = ((hi - lo) / 4.0).max(1.0);
     (from.unwrap_or(lo - margin), to.unwrap_or(hi + margin))
-}
-
-/// Appends `text` with `&`, `<`, `>`, `"` and `'` escaped for XML text and attributes.
-fn push_escaped(out: &mut String, text: &str) {
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&apos;"),
-            c => out.push(c),
-        }
-    }
-}
-
-/// Appends a `<text>` element (escaped content).
-fn push_text(out: &mut String, x: f64, y: f64, anchor: &str, class: &str, text: &str) {
-    let _ = write!(
-        out,
-        "<text class=\"{class}\" x=\"{x:.1}\" y=\"{y:.1}\" text-anchor=\"{anchor}\">"
-    );
-    push_escaped(out, text);
-    out.push_str("</text>\n");
 }
 
 /// A short type label: `case 24: conic_and_point`, `singular: …`, or `not classified`.
@@ -190,7 +162,7 @@ pub fn motion_to_svg(m: &Motion, range: &TimeRange) -> String {
 
     // The distinct types of the intervals, in order of first appearance.
     let mut types: Vec<MotionType> = Vec::new();
-    let colour: Vec<usize> = m
+    let colour_of: Vec<usize> = m
         .intervals
         .iter()
         .map(|v| {
@@ -278,7 +250,7 @@ pub fn motion_to_svg(m: &Motion, range: &TimeRange) -> String {
     // Bands and their labels.
     for (k, v) in m.intervals.iter().enumerate() {
         let (a, b) = band_x[k];
-        let fill = PALETTE[colour[k] % PALETTE.len()];
+        let fill = colour(colour_of[k]);
         let _ = write!(
             out,
             "<rect class=\"band\" x=\"{a:.1}\" y=\"{band_top:.1}\" width=\"{:.1}\" \
@@ -292,7 +264,7 @@ pub fn motion_to_svg(m: &Motion, range: &TimeRange) -> String {
             &format!(
                 "({from}, {to}), sample t = {}: {}",
                 v.sample,
-                legend_label(&types[colour[k]])
+                legend_label(&types[colour_of[k]])
             ),
         );
         out.push_str("</title></rect>\n");
@@ -421,7 +393,7 @@ pub fn motion_to_svg(m: &Motion, range: &TimeRange) -> String {
             "<rect class=\"swatch\" x=\"{SIDE}\" y=\"{:.1}\" width=\"24\" height=\"12\" \
              fill=\"{}\" fill-opacity=\"0.75\"/>",
             y - 10.0,
-            PALETTE[k % PALETTE.len()]
+            colour(k)
         );
         push_text(
             &mut out,
@@ -452,79 +424,8 @@ pub fn motion_to_svg(m: &Motion, range: &TimeRange) -> String {
 mod tests {
     use super::*;
     use crate::motion::analyze;
+    use crate::svg::xml::{check_xml, texts_of};
     use qsic::io::moving_matrix_from_polynomial as q;
-
-    /// A tiny XML well-formedness check: one root, tags nested and closed in order, quoted
-    /// attributes, no raw `<` or stray `&` in text. Returns the element names in order.
-    fn check_xml(svg: &str) -> Vec<String> {
-        let mut stack: Vec<String> = Vec::new();
-        let mut names = Vec::new();
-        let mut rest = svg
-            .strip_prefix("<?xml version=\"1.0\" encoding=\"UTF-8\"?>")
-            .expect("XML declaration");
-        let mut roots = 0;
-        while let Some(open) = rest.find('<') {
-            check_text(&rest[..open]);
-            let close = rest[open..].find('>').expect("tag closed") + open;
-            let tag = &rest[open + 1..close];
-            assert!(!tag.contains('<'), "{tag}");
-            if let Some(name) = tag.strip_prefix('/') {
-                assert_eq!(stack.pop().as_deref(), Some(name), "closing {name}");
-            } else {
-                let self_closing = tag.ends_with('/');
-                let body = tag.trim_end_matches('/');
-                let name = body.split_whitespace().next().expect("a name").to_string();
-                let attrs = &body[name.len()..];
-                // attributes: name="value" pairs with escaped values
-                let mut a = attrs.trim();
-                while !a.is_empty() {
-                    let eq = a.find("=\"").expect("attribute quoted");
-                    assert!(!a[..eq].contains(' '), "{a}");
-                    let end = a[eq + 2..].find('"').expect("value closed") + eq + 2;
-                    check_text(&a[eq + 2..end]);
-                    a = a[end + 1..].trim_start();
-                }
-                if stack.is_empty() {
-                    roots += 1;
-                }
-                names.push(name.clone());
-                if !self_closing {
-                    stack.push(name);
-                }
-            }
-            rest = &rest[close + 1..];
-        }
-        check_text(rest);
-        assert!(stack.is_empty(), "unclosed {stack:?}");
-        assert_eq!(roots, 1);
-        names
-    }
-
-    /// Text has only the five predefined entities and no `>`-free raw `<`.
-    fn check_text(text: &str) {
-        assert!(!text.contains('<'));
-        for (k, _) in text.match_indices('&') {
-            let entity = &text[k..];
-            assert!(
-                ["&amp;", "&lt;", "&gt;", "&quot;", "&apos;"]
-                    .iter()
-                    .any(|e| entity.starts_with(e)),
-                "raw & in {text:?}"
-            );
-        }
-    }
-
-    /// The text contents of the elements with `class="{class}"`, unescaped.
-    fn texts_of(svg: &str, class: &str) -> Vec<String> {
-        let key = format!("<text class=\"{class}\"");
-        svg.match_indices(&key)
-            .map(|(k, _)| {
-                let start = svg[k..].find('>').unwrap() + k + 1;
-                let end = svg[start..].find("</text>").unwrap() + start;
-                svg[start..end].replace("&lt;", "<").replace("&amp;", "&")
-            })
-            .collect()
-    }
 
     /// One band per interval, one tick per instant, labels with the exact values and the
     /// types, and a legend entry per distinct type — on the whole line, a finite range, an
@@ -630,19 +531,5 @@ mod tests {
         }
         // far apart labels share the first row
         assert_eq!(stagger(&[(0.0, 10.0), (100.0, 110.0)]), [0, 0]);
-    }
-
-    #[test]
-    fn text_is_escaped() {
-        let mut out = String::new();
-        push_text(&mut out, 0.0, 0.0, "start", "x", "a<b & \"c\" 'd' > e");
-        assert_eq!(
-            out,
-            "<text class=\"x\" x=\"0.0\" y=\"0.0\" text-anchor=\"start\">\
-             a&lt;b &amp; &quot;c&quot; &apos;d&apos; &gt; e</text>\n"
-        );
-        check_xml(&format!(
-            "<?xml version=\"1.0\" encoding=\"UTF-8\"?><g>{out}</g>"
-        ));
     }
 }
