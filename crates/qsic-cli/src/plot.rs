@@ -1020,7 +1020,7 @@ fn push_legend(body: &mut String, scene: &Scene) -> f64 {
     let cube = &scene.cube;
     let range = |i: usize| format!("[{}, {}]", short(cube.lo(i)), short(cube.hi(i)));
     let around = match scene.region {
-        Region::Bounded => "around the bounded part of the curve",
+        Region::Bounded => "around the bounded pieces, isolated and singular points",
         Region::Unbounded => "around the unbounded branches' points nearest the origin",
         Region::Surfaces => "around the surfaces (no real point in ℝ³)",
     };
