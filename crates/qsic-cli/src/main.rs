@@ -312,8 +312,10 @@ PLOT (--plot FILE):
   Also write the timeline as an SVG picture: a t axis over the range (for an open side, a
   window holding every instant with margins, and an arrow to -oo/+oo), one coloured band
   per interval labelled \"case k: real_type\", one tick per instant labelled with its exact
-  value (p/q, or a decimal marked algebraic) and type, and a legend of the colours. Not
-  with --batch (a usage error); an unwritable FILE exits 2.
+  value (p/q, or a decimal marked algebraic) and type, and a legend of the colours; below,
+  a small picture of the real curve at the sample t of each interval (as 'qsic plot', the
+  first 20 intervals), framed in the interval's colour. Not with --batch (a usage error);
+  an unwritable FILE exits 2.
 
 BATCH (--batch FILE, or - for standard input):
   JSON Lines {\"id\", \"A\", \"B\"} in; one JSON line out per non-blank line, in order:
@@ -539,17 +541,20 @@ fn run_motion(args: &MotionArgs) -> ExitCode {
         |name: &str, text: &str| motion::moving_from_arg(text).map_err(|e| format!("{name}: {e}"));
     let result = read("A", a).and_then(|ma| {
         let mb = read("B", b)?;
-        motion::analyze(ma, mb, &range).map_err(|e| format!("A and B: {e}"))
+        // the plot's snapshots need the moving quadrics again
+        let pair = args.plot.is_some().then(|| (ma.clone(), mb.clone()));
+        let m = motion::analyze(ma, mb, &range).map_err(|e| format!("A and B: {e}"))?;
+        Ok((m, pair))
     });
-    if let (Ok(m), Some(path)) = (&result, &args.plot) {
-        let svg = qsic_cli::motion_plot::motion_to_svg(m, &range);
+    if let (Ok((m, Some((ma, mb)))), Some(path)) = (&result, &args.plot) {
+        let svg = qsic_cli::motion_plot::motion_with_snapshots_to_svg(m, &range, ma, mb);
         if let Err(e) = std::fs::write(path, svg) {
             return io_failure(&format!("writing the plot {}", path.display()), &e);
         }
     }
     let text = match result {
-        Ok(m) if args.json => motion::motion_to_json_line(&m) + "\n",
-        Ok(m) => motion::human_timeline(&m),
+        Ok((m, _)) if args.json => motion::motion_to_json_line(&m) + "\n",
+        Ok((m, _)) => motion::human_timeline(&m),
         Err(message) => {
             eprintln!("error: {message}");
             return ExitCode::from(1);

@@ -3,6 +3,7 @@
 //! | entry point | does |
 //! |---|---|
 //! | [`motion_to_svg`] | the whole picture: `t` axis, one coloured band per interval, one tick per instant, legend |
+//! | [`motion_with_snapshots_to_svg`] | the timeline and, below, the real curve at the sample `t` of each interval (`qsic motion --plot`) |
 //! | [`plot_window`] | the drawn window of `t` (the range, or all instants with margins when unbounded) |
 //!
 //! Floating point appears only here, for positions on the page: every instant is labelled
@@ -13,7 +14,8 @@
 //! are staggered into rows.
 
 use crate::motion::TimeRange;
-use crate::svg::{colour, push_escaped, push_text};
+use crate::svg::{colour, document, push_escaped, push_text, Panel};
+use qsic::io::MovingMatrix;
 use qsic::motion::{Motion, MotionType};
 use qsic::Classification;
 use qsic_algebra::AlgebraicReal;
@@ -154,25 +156,18 @@ fn span_at(x: f64, chars: usize) -> (f64, f64) {
 /// assert!(svg.contains("t = -3") && svg.contains("+∞"));
 /// ```
 pub fn motion_to_svg(m: &Motion, range: &TimeRange) -> String {
+    document(&[timeline_panel(m, range)])
+}
+
+/// The timeline panel of [`motion_to_svg`].
+fn timeline_panel(m: &Motion, range: &TimeRange) -> Panel {
     let (lo, hi) = plot_window(m, range);
     let scale = (WIDTH - 2.0 * SIDE) / (hi - lo);
     let x_of = |t: f64| (SIDE + (t - lo) * scale).clamp(SIDE, WIDTH - SIDE);
     let x_end =
         |t: &Option<AlgebraicReal>, open: f64| t.as_ref().map_or(open, |t| x_of(t.to_f64()));
 
-    // The distinct types of the intervals, in order of first appearance.
-    let mut types: Vec<MotionType> = Vec::new();
-    let colour_of: Vec<usize> = m
-        .intervals
-        .iter()
-        .map(|v| {
-            let t = MotionType::of(&v.classification);
-            types.iter().position(|u| *u == t).unwrap_or_else(|| {
-                types.push(t);
-                types.len() - 1
-            })
-        })
-        .collect();
+    let (types, colour_of) = type_colours(m);
 
     // Band labels above the band, instant labels (two lines) below the axis.
     let band_x: Vec<(f64, f64)> = m
@@ -218,17 +213,6 @@ pub fn motion_to_svg(m: &Motion, range: &TimeRange) -> String {
         legend_top + 20.0 * (types.len() as f64 + 1.0 + f64::from(u8::from(algebraic))) + 10.0;
 
     let mut out = String::with_capacity(4096);
-    let _ = writeln!(
-        out,
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" \
-         width=\"{WIDTH}\" height=\"{height:.0}\" viewBox=\"0 0 {WIDTH} {height:.0}\" \
-         font-family=\"sans-serif\" font-size=\"12\">"
-    );
-    out.push_str(
-        "<style>.title{font-size:15px;font-weight:bold}.band-label{font-size:12px}\
-         .value{font-size:12px;font-weight:bold}.type{font-size:11px;fill:#333}\
-         .legend{font-size:12px}.axis-label{font-size:13px}</style>\n",
-    );
     out.push_str(
         "<defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" \
          markerWidth=\"8\" markerHeight=\"8\" orient=\"auto-start-reverse\">\
@@ -416,8 +400,145 @@ pub fn motion_to_svg(m: &Motion, range: &TimeRange) -> String {
              its polynomial and isolating interval are in the tooltip and in --json.",
         );
     }
-    out.push_str("</svg>\n");
-    out
+    Panel {
+        width: WIDTH,
+        height,
+        style: ".title{font-size:15px;font-weight:bold}.band-label{font-size:12px}\
+                .value{font-size:12px;font-weight:bold}.type{font-size:11px;fill:#333}\
+                .legend{font-size:12px}.axis-label{font-size:13px}"
+            .into(),
+        body: out,
+    }
+}
+
+/// Most snapshots drawn by [`motion_with_snapshots_to_svg`].
+pub const MAX_SNAPSHOTS: usize = 20;
+
+/// [`motion_to_svg`] with a second panel: a small picture of the real curve at the sample
+/// `t` of each interval (the first [`MAX_SNAPSHOTS`]), framed in the interval's band colour
+/// and labelled with `t` and the type, drawn by [`crate::plot::snapshot`] from `A(t)`,
+/// `B(t)`; where no picture can be drawn (a zero quadric at `t`, a class whose curve is not
+/// built yet) the cell says why.
+pub fn motion_with_snapshots_to_svg(
+    m: &Motion,
+    range: &TimeRange,
+    a: &MovingMatrix,
+    b: &MovingMatrix,
+) -> String {
+    document(&[timeline_panel(m, range), snapshots_panel(m, a, b)])
+}
+
+/// The snapshot panel of [`motion_with_snapshots_to_svg`].
+fn snapshots_panel(m: &Motion, a: &MovingMatrix, b: &MovingMatrix) -> Panel {
+    const CELL: (f64, f64) = (190.0, 214.0);
+    const PER_ROW: usize = 5;
+    let (_, colour_of) = type_colours(m);
+    let shown = m.intervals.len().min(MAX_SNAPSHOTS);
+    let mut body = String::with_capacity(1 << 16);
+    push_text(
+        &mut body,
+        WIDTH / 2.0,
+        22.0,
+        "middle",
+        "title",
+        "The real curve at the sample t of each interval",
+    );
+    for (k, v) in m.intervals.iter().take(shown).enumerate() {
+        let left = 25.0 + (k % PER_ROW) as f64 * CELL.0;
+        let top = 36.0 + (k / PER_ROW) as f64 * CELL.1;
+        let _ = write!(body, "<g class=\"snapshot\" data-interval=\"{k}\">");
+        let _ = writeln!(
+            body,
+            "<rect class=\"cell\" x=\"{:.1}\" y=\"{top:.1}\" width=\"{:.1}\" height=\"{:.1}\" \
+             stroke=\"{}\"/>",
+            left + 2.0,
+            CELL.0 - 4.0,
+            CELL.1 - 6.0,
+            colour(colour_of[k])
+        );
+        let centre = left + CELL.0 / 2.0;
+        push_text(
+            &mut body,
+            centre,
+            top + 16.0,
+            "middle",
+            "snapshot-t",
+            &format!("t = {}", v.sample),
+        );
+        push_text(
+            &mut body,
+            centre,
+            top + 31.0,
+            "middle",
+            "snapshot-type",
+            &type_label(Some(&v.classification)),
+        );
+        let rect = (left + 8.0, top + 38.0, CELL.0 - 16.0, CELL.1 - 50.0);
+        let picture = a
+            .quadric_at(&v.sample)
+            .and_then(|qa| Ok((qa, b.quadric_at(&v.sample)?)))
+            .map_err(|e| e.to_string())
+            .and_then(|(qa, qb)| crate::plot::snapshot(&qa, &qb, rect));
+        match picture {
+            Ok(svg) => body.push_str(&svg),
+            Err(message) => {
+                for (n, line) in crate::svg::wrap(&format!("no picture: {message}"), 28)
+                    .iter()
+                    .enumerate()
+                {
+                    push_text(
+                        &mut body,
+                        centre,
+                        rect.1 + rect.3 / 2.0 + 14.0 * n as f64,
+                        "middle",
+                        "snapshot-none",
+                        line,
+                    );
+                }
+            }
+        }
+        body.push_str("</g>\n");
+    }
+    let rows = shown.div_ceil(PER_ROW);
+    let mut height = 36.0 + rows as f64 * CELL.1 + 10.0;
+    if shown < m.intervals.len() {
+        push_text(
+            &mut body,
+            25.0,
+            height,
+            "start",
+            "snapshot-note",
+            &format!("the first {shown} of {} intervals", m.intervals.len()),
+        );
+        height += 20.0;
+    }
+    Panel {
+        width: WIDTH,
+        height,
+        style: crate::plot::SCENE_STYLE.to_owned()
+            + ".cell{fill:none;stroke-width:2}.snapshot-t{font-size:12px;font-weight:bold}\
+               .snapshot-type{font-size:11px;fill:#333}.snapshot-none{font-size:11px;fill:#b00}\
+               .snapshot .piece{stroke-width:1.6}",
+        body,
+    }
+}
+
+/// The distinct types of the intervals, in order of first appearance, and each interval's
+/// index among them (its colour).
+fn type_colours(m: &Motion) -> (Vec<MotionType>, Vec<usize>) {
+    let mut types: Vec<MotionType> = Vec::new();
+    let colour_of = m
+        .intervals
+        .iter()
+        .map(|v| {
+            let t = MotionType::of(&v.classification);
+            types.iter().position(|u| *u == t).unwrap_or_else(|| {
+                types.push(t);
+                types.len() - 1
+            })
+        })
+        .collect();
+    (types, colour_of)
 }
 
 #[cfg(test)]
@@ -491,6 +612,45 @@ mod tests {
             let axis = texts_of(&svg, "axis-label");
             assert_eq!(axis.contains(&"−∞".to_string()), range.from.is_none());
             assert_eq!(axis.contains(&"+∞".to_string()), range.to.is_none());
+        }
+    }
+
+    /// One snapshot per interval, framed in its band's colour, whose pieces are the real
+    /// pieces of the curve of `A(t)`, `B(t)` at the interval's sample (spheres through one
+    /// another, cylinders sliding along each other, unit spheres touching at t = ±2).
+    #[test]
+    fn snapshots_show_the_curve_of_each_interval() {
+        let cases = [
+            ("x^2+y^2+z^2-4", "(x-t)^2+y^2+z^2-1"),
+            ("x^2+y^2-1", "x^2+(z-t)^2-1"),
+            ("x^2+y^2+z^2-1", "(x-t)^2+y^2+z^2-1"),
+        ];
+        for (a, b) in cases {
+            let (ma, mb) = (q(a).unwrap(), q(b).unwrap());
+            let range = TimeRange::default();
+            let m = analyze(ma.clone(), mb.clone(), &range).unwrap();
+            let svg = motion_with_snapshots_to_svg(&m, &range, &ma, &mb);
+            check_xml(&svg);
+            let cells: Vec<&str> = svg.split("<g class=\"snapshot\"").skip(1).collect();
+            assert_eq!(cells.len(), m.intervals.len().min(MAX_SNAPSHOTS), "{b}");
+            let (_, colour_of) = type_colours(&m);
+            for ((cell, v), c) in cells.iter().zip(&m.intervals).zip(&colour_of) {
+                assert!(cell.contains(&format!("stroke=\"{}\"", colour(*c))));
+                assert!(cell.contains(&format!(">t = {}<", v.sample)));
+                let pair = ma.quadric_at(&v.sample).and_then(|qa| {
+                    let qb = mb.quadric_at(&v.sample)?;
+                    qsic::param::parameterize(&qa, &qb)
+                });
+                match pair {
+                    Ok(curve) => assert_eq!(
+                        cell.matches("<g class=\"piece\"").count(),
+                        curve.pieces.len(),
+                        "{b} at {}",
+                        v.sample
+                    ),
+                    Err(_) => assert!(cell.contains("no picture"), "{cell}"),
+                }
+            }
         }
     }
 

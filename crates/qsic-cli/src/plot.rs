@@ -134,33 +134,7 @@ pub fn plot_to_svg(
     planes: [bool; 2],
     options: &PlotOptions,
 ) -> Result<String, String> {
-    let curve = curve_of(Some(a), Some(b))?;
-    let chart = Chart::new(options.chart.clone()).map_err(|e| e.to_string())?;
-    let view = affine_view(Some(a), Some(b), &chart, planes);
-    let mut sample_options = SampleOptions {
-        points: options.points,
-        tolerance: None,
-        chart: options.chart.clone(),
-    };
-    let first = sample(&curve, &sample_options).map_err(|e| e.to_string())?;
-    let surfaces = [a, b].map(|q| float_matrix(&chart.matrix_in_chart(q.matrix())));
-    let singular = singular_points(&view);
-    let (cube, region) = region_of(&first, &singular, &view, &surfaces);
-    // a second pass whose chords deviate from the curve by less than a pixel in the cube
-    sample_options.tolerance = Some(cube.half / 300.0);
-    let sampled = sample(&curve, &sample_options).unwrap_or(first);
-    let scene = Scene {
-        curve: &curve,
-        sampled: &sampled,
-        view: &view,
-        singular: &singular,
-        surfaces,
-        texts: [a, b].map(Quadric::to_polynomial_string),
-        cube,
-        region,
-        camera: options.view,
-        chart: chart_text(&options.chart),
-    };
+    let scene = Scene::new(a, b, planes, options)?;
     let mut panels = vec![curve_panel(&scene)];
     if options.eigencurve {
         panels.push(eigencurve_panel(a, b));
@@ -363,11 +337,11 @@ fn ellipsoid_box(m: &[[f64; 4]; 4]) -> Option<([f64; 3], [f64; 3])> {
 }
 
 /// Everything the curve panel draws.
-struct Scene<'a> {
-    curve: &'a Curve,
-    sampled: &'a Sampled,
-    view: &'a AffineView,
-    singular: &'a [(&'static str, Option<[f64; 3]>)],
+struct Scene {
+    curve: Curve,
+    sampled: Sampled,
+    view: AffineView,
+    singular: Vec<(&'static str, Option<[f64; 3]>)>,
     /// The surfaces' matrices in the chart's coordinates.
     surfaces: [[[f64; 4]; 4]; 2],
     texts: [String; 2],
@@ -375,6 +349,80 @@ struct Scene<'a> {
     region: Region,
     camera: View,
     chart: String,
+}
+
+impl Scene {
+    /// The curve, its points (two passes: the first fixes the cube, the second has chords
+    /// within a pixel of it), the affine view and the cube.
+    fn new(
+        a: &Quadric,
+        b: &Quadric,
+        planes: [bool; 2],
+        options: &PlotOptions,
+    ) -> Result<Scene, String> {
+        let curve = curve_of(Some(a), Some(b))?;
+        let chart = Chart::new(options.chart.clone()).map_err(|e| e.to_string())?;
+        let view = affine_view(Some(a), Some(b), &chart, planes);
+        let mut sample_options = SampleOptions {
+            points: options.points,
+            tolerance: None,
+            chart: options.chart.clone(),
+        };
+        let first = sample(&curve, &sample_options).map_err(|e| e.to_string())?;
+        let surfaces = [a, b].map(|q| float_matrix(&chart.matrix_in_chart(q.matrix())));
+        let singular = singular_points(&view);
+        let (cube, region) = region_of(&first, &singular, &view, &surfaces);
+        sample_options.tolerance = Some(cube.half / 300.0);
+        let sampled = sample(&curve, &sample_options).unwrap_or(first);
+        Ok(Scene {
+            curve,
+            sampled,
+            view,
+            singular,
+            surfaces,
+            texts: [a, b].map(Quadric::to_polynomial_string),
+            cube,
+            region,
+            camera: options.view,
+            chart: chart_text(&options.chart),
+        })
+    }
+
+    /// No real point in the chart.
+    fn is_empty(&self) -> bool {
+        self.sampled
+            .pieces
+            .iter()
+            .all(|p| p.affine.at_infinity || p.affine.branches.is_empty())
+    }
+}
+
+/// A small picture of the curve of `a` and `b` (default chart and view) drawn into the page
+/// rectangle `(left, top, width, height)`: the box, the surfaces faintly, the pieces in
+/// their colours and the singular points, as in `qsic plot` without the legend; SVG elements
+/// to place in a document.
+///
+/// # Errors
+/// The message of [`plot_to_svg`].
+pub fn snapshot(a: &Quadric, b: &Quadric, rect: (f64, f64, f64, f64)) -> Result<String, String> {
+    let options = PlotOptions {
+        points: 16,
+        ..PlotOptions::default()
+    };
+    let scene = Scene::new(a, b, [false; 2], &options)?;
+    let mut body = String::with_capacity(1 << 14);
+    draw_scene(&mut body, &scene, rect, false);
+    if scene.is_empty() {
+        push_text(
+            &mut body,
+            rect.0 + rect.2 / 2.0,
+            rect.1 + rect.3 / 2.0,
+            "middle",
+            "empty",
+            "no real point",
+        );
+    }
+    Ok(body)
 }
 
 /// An orthographic camera fitted to a page rectangle.
@@ -731,8 +779,6 @@ const SURFACE_DASHES: [&str; 2] = ["none", "4,3"];
 /// the curve in its own colour (clipped branches as paths, an isolated point as a dot), one
 /// `<g class="singular">` per real singular point in ℝ³ with its kind, and the legend.
 fn curve_panel(scene: &Scene) -> Panel {
-    let cube = &scene.cube;
-    let camera = Camera::new(scene.camera, cube, DRAW);
     let mut body = String::with_capacity(1 << 16);
     push_text(
         &mut body,
@@ -742,7 +788,48 @@ fn curve_panel(scene: &Scene) -> Panel {
         "title",
         "The real intersection curve of A and B",
     );
+    draw_scene(&mut body, scene, DRAW, true);
+    if scene.is_empty() {
+        let message = if scene.sampled.pieces.is_empty() {
+            "no real point: the real curve is empty"
+        } else {
+            "no real point in ℝ³: the real curve lies at infinity"
+        };
+        push_text(
+            &mut body,
+            DRAW.0 + DRAW.2 / 2.0,
+            DRAW.1 + 40.0,
+            "middle",
+            "empty",
+            message,
+        );
+    }
+    let legend_bottom = push_legend(&mut body, scene);
+    Panel {
+        width: WIDTH,
+        height: (DRAW.1 + DRAW.3 + 10.0).max(legend_bottom + 16.0),
+        style: SCENE_STYLE.to_owned()
+            + ".title{font-size:15px;font-weight:bold}.legend{font-size:12px}\
+               .legend-head{font-size:12px;font-weight:bold}",
+        body,
+    }
+}
 
+/// The style rules of [`draw_scene`]'s elements.
+pub const SCENE_STYLE: &str = ".axis{font-size:11px;fill:#555}\
+    .box line{stroke:#999;stroke-width:0.6}\
+    .surface{fill:none;stroke-width:0.7;stroke-opacity:0.45}\
+    .piece{stroke-width:2.2;stroke-linejoin:round}.branch{fill:none}\
+    .isolated{stroke:#000;stroke-width:1}\
+    .singular-mark{fill:#fff;stroke:#000;stroke-width:1.5}\
+    .singular-label{font-size:11px;font-weight:bold}.empty{font-size:14px;fill:#b00}";
+
+/// Draws the scene into the page rectangle `rect`: the cube's edges (with the axes' names
+/// and ranges when `labels`), the surfaces' sections, the pieces and the singular points
+/// (labelled by kind when `labels`).
+fn draw_scene(body: &mut String, scene: &Scene, rect: (f64, f64, f64, f64), labels: bool) {
+    let cube = &scene.cube;
+    let camera = Camera::new(scene.camera, cube, rect);
     // the cube: hidden edges would need depth; all are drawn thin
     body.push_str("<g class=\"box\">\n");
     for k in 0..8usize {
@@ -766,7 +853,7 @@ fn curve_panel(scene: &Scene) -> Panel {
         }
     }
     let lo = [0, 1, 2].map(|i| cube.lo(i));
-    for (i, name) in ["x", "y", "z"].iter().enumerate() {
+    for (i, name) in ["x", "y", "z"].iter().enumerate().filter(|_| labels) {
         let mut end = lo;
         end[i] = cube.hi(i);
         let (x, y) = camera.project(&end);
@@ -776,7 +863,7 @@ fn curve_panel(scene: &Scene) -> Panel {
         let (dx, dy) = (x - x0, y - y0);
         let len = (dx * dx + dy * dy).sqrt().max(1.0);
         push_text(
-            &mut body,
+            body,
             x + 14.0 * dx / len,
             y + 14.0 * dy / len + 4.0,
             "middle",
@@ -797,7 +884,7 @@ fn curve_panel(scene: &Scene) -> Panel {
             SURFACE_DASHES[k]
         );
         for line in &sections {
-            push_path_data(&mut body, &camera, line);
+            push_path_data(body, &camera, line);
             body.push(' ');
         }
         body.push_str("\"/>\n");
@@ -827,7 +914,7 @@ fn curve_panel(scene: &Scene) -> Panel {
                     );
                 } else {
                     body.push_str("<path class=\"branch\" d=\"");
-                    push_path_data(&mut body, &camera, &line);
+                    push_path_data(body, &camera, &line);
                     body.push_str("\"/>\n");
                 }
             }
@@ -836,11 +923,11 @@ fn curve_panel(scene: &Scene) -> Panel {
     }
 
     // the singular points in ℝ³
-    for (kind, at) in scene.singular {
+    for (kind, at) in &scene.singular {
         let Some(p) = at else { continue };
         let (x, y) = camera.project(p);
         let _ = write!(body, "<g class=\"singular\" data-kind=\"{kind}\">");
-        push_title(&mut body, &format!("{kind} at {}", point_text(p)));
+        push_title(body, &format!("{kind} at {}", point_text(p)));
         let _ = writeln!(
             body,
             "<rect class=\"singular-mark\" x=\"{:.1}\" y=\"{:.1}\" width=\"9\" height=\"9\" \
@@ -848,47 +935,10 @@ fn curve_panel(scene: &Scene) -> Panel {
             x - 4.5,
             y - 4.5
         );
-        push_text(&mut body, x + 9.0, y - 7.0, "start", "singular-label", kind);
+        if labels {
+            push_text(body, x + 9.0, y - 7.0, "start", "singular-label", kind);
+        }
         body.push_str("</g>\n");
-    }
-
-    let empty = scene.sampled.pieces.is_empty();
-    let none_finite = scene
-        .sampled
-        .pieces
-        .iter()
-        .all(|p| p.affine.at_infinity || p.affine.branches.is_empty());
-    if empty || none_finite {
-        let message = if empty {
-            "no real point: the real curve is empty"
-        } else {
-            "no real point in ℝ³: the real curve lies at infinity"
-        };
-        push_text(
-            &mut body,
-            DRAW.0 + DRAW.2 / 2.0,
-            DRAW.1 + 40.0,
-            "middle",
-            "empty",
-            message,
-        );
-    }
-
-    let legend_bottom = push_legend(&mut body, scene);
-    Panel {
-        width: WIDTH,
-        height: (DRAW.1 + DRAW.3 + 10.0).max(legend_bottom + 16.0),
-        style: ".title{font-size:15px;font-weight:bold}.axis{font-size:11px;fill:#555}\
-                .box line{stroke:#999;stroke-width:0.6}\
-                .surface{fill:none;stroke-width:0.7;stroke-opacity:0.45}\
-                .piece{stroke-width:2.2;stroke-linejoin:round}.branch{fill:none}\
-                .isolated{stroke:#000;stroke-width:1}\
-                .singular-mark{fill:#fff;stroke:#000;stroke-width:1.5}\
-                .singular-label{font-size:11px;font-weight:bold}\
-                .empty{font-size:14px;fill:#b00}.legend{font-size:12px}\
-                .legend-head{font-size:12px;font-weight:bold}"
-            .into(),
-        body,
     }
 }
 
