@@ -284,3 +284,79 @@ fn errors_are_messages() {
     assert_eq!(code, Some(2), "-o is required");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Every line of the labelled corpus (the 35 cases, singular pencils) through the library:
+/// a well-formed picture with one piece group per real piece of the exact curve, one mark per
+/// real singular point off the plane at infinity, one root mark per finite real root of
+/// det(λA − B) and the exact index on every arc — or a `not yet` message, never a panic.
+#[test]
+fn every_corpus_line_draws() {
+    use qsic_algebra::Ring;
+    use qsic_cli::plot::{plot_to_svg, PlotOptions};
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../qsic/tests/data/cases.jsonl"
+    );
+    let text = std::fs::read_to_string(path).unwrap();
+    let options = PlotOptions {
+        points: 16,
+        eigencurve: true,
+        ..PlotOptions::default()
+    };
+    let (mut drawn, mut total) = (0, 0);
+    for (n, line) in text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty())
+    {
+        let v: Value = serde_json::from_str(line).unwrap();
+        let read = |k: &str| qsic_cli::input::quadric_from_json(&v[k]).unwrap();
+        let (Some(a), Some(b)) = (read("A"), read("B")) else {
+            continue;
+        };
+        total += 1;
+        let svg = match plot_to_svg(&a, &b, [false; 2], &options) {
+            Ok(svg) => svg,
+            Err(message) => {
+                assert!(message.starts_with("not yet"), "line {}: {message}", n + 1);
+                continue;
+            }
+        };
+        drawn += 1;
+        check_xml(&svg);
+        let curve = qsic::param::parameterize(&a, &b).unwrap();
+        assert_eq!(
+            svg.matches("<g class=\"piece\"").count(),
+            curve.pieces.len(),
+            "line {}",
+            n + 1
+        );
+        let finite = curve
+            .singular_points
+            .iter()
+            .filter(|s| !s.point[3].is_zero())
+            .count();
+        assert_eq!(groups(&svg, "singular").len(), finite, "line {}", n + 1);
+        if let Some(an) = qsic::classify::analyze_pencil(&a, &b) {
+            let roots = an
+                .real_roots
+                .iter()
+                .filter(|r| matches!(r.point, qsic::pencil::PencilPoint::Finite(_)))
+                .count();
+            assert_eq!(
+                svg.matches("<circle class=\"root-mark\"").count(),
+                roots,
+                "line {}",
+                n + 1
+            );
+            let index: Vec<String> = an
+                .arcs
+                .iter()
+                .map(|(_, i)| i.positive.to_string())
+                .collect();
+            assert_eq!(texts_of(&svg, "index-axis"), index, "line {}", n + 1);
+        }
+    }
+    eprintln!("{drawn} of {total} corpus lines drawn");
+    assert_eq!(drawn, total, "every corpus line is drawn");
+}
