@@ -1021,12 +1021,7 @@ fn push_legend(body: &mut String, scene: &Scene) -> f64 {
             } else if piece.affine.bounded {
                 s.push_str(", bounded");
             } else {
-                let n = piece.affine.points_at_infinity.len();
-                let _ = write!(
-                    s,
-                    ", unbounded ({n} point{} at infinity), clipped",
-                    if n == 1 { "" } else { "s" }
-                );
+                s.push_str(", unbounded, clipped");
             }
             s
         };
