@@ -189,7 +189,7 @@ fn singular_points(view: &AffineView) -> Vec<(&'static str, Option<[f64; 3]>)> {
 
 /// An axis-parallel cube.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Cube {
+struct Cube {
     /// Its centre.
     pub centre: [f64; 3],
     /// Half its side.
@@ -816,7 +816,7 @@ fn curve_panel(scene: &Scene) -> Panel {
 }
 
 /// The style rules of [`draw_scene`]'s elements.
-pub const SCENE_STYLE: &str = ".axis{font-size:11px;fill:#555}\
+pub(crate) const SCENE_STYLE: &str = ".axis{font-size:11px;fill:#555}\
     .box line{stroke:#999;stroke-width:0.6}\
     .surface{fill:none;stroke-width:0.7;stroke-opacity:0.45}\
     .piece{stroke-width:2.2;stroke-linejoin:round}.branch{fill:none}\

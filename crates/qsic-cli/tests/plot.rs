@@ -228,7 +228,7 @@ fn eigencurve_marks_roots_and_index() {
 }
 
 /// A class with no real point gives a picture saying so, with no piece and the box around
-/// the surfaces.
+/// the surfaces; so does a curve lying at infinity.
 #[test]
 fn no_real_point_is_a_picture() {
     let dir = scratch("empty");
@@ -241,6 +241,18 @@ fn no_real_point_is_a_picture() {
     // the surfaces are drawn in the box around them
     assert!(svg.matches("<path class=\"surface\" ").count() == 2);
     assert!(path_points(&svg).len() > 100);
+    // a real curve lying in the plane at infinity (a double conic): one piece, nothing drawn
+    let svg = plot(&dir, "x^2+y^2-z^2", "x^2+y^2-z^2+1", &[]);
+    let pieces = groups(&svg, "piece");
+    assert_eq!(pieces.len(), 1);
+    assert!(!pieces[0].contains("<path") && !pieces[0].contains("<circle"));
+    assert_eq!(
+        texts_of(&svg, "empty"),
+        ["no real point in ℝ³: the real curve lies at infinity"]
+    );
+    assert!(texts_of(&svg, "legend")
+        .join(" ")
+        .contains("at infinity (not drawn)"));
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
