@@ -6,6 +6,7 @@
 //! | [`plot_to_svg`] | the picture of a pair: the curve panel, and with [`PlotOptions::eigencurve`] the eigencurve panel below |
 //! | `curve_panel` | the curve in ℝ³ (affine chart) seen by an orthographic camera, the surfaces faintly, the legend |
 //! | [`eigencurve_panel`] | `det(λA − B − uI) = 0` in the `(λ, u)` plane, the index in each region, the real roots of `det(λA − B)` |
+//! | [`snapshot`] | a small picture of the curve without legend (the snapshots of `qsic motion --plot`) |
 //! | [`View`], [`parse_view`] | the camera's azimuth and elevation |
 //!
 //! Everything decided comes from the exact description: the pieces, their kinds and
