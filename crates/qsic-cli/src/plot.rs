@@ -430,6 +430,8 @@ pub fn snapshot(a: &Quadric, b: &Quadric, rect: (f64, f64, f64, f64)) -> Result<
 struct Camera {
     right: [f64; 3],
     up: [f64; 3],
+    /// Towards the viewer.
+    toward: [f64; 3],
     centre: [f64; 3],
     scale: f64,
     origin: (f64, f64),
@@ -442,9 +444,11 @@ impl Camera {
         let (az, el) = (view.azimuth.to_radians(), view.elevation.to_radians());
         let right = [-az.sin(), az.cos(), 0.0];
         let up = [-el.sin() * az.cos(), -el.sin() * az.sin(), el.cos()];
+        let toward = [el.cos() * az.cos(), el.cos() * az.sin(), el.sin()];
         let mut camera = Camera {
             right,
             up,
+            toward,
             centre: cube.centre,
             scale: 1.0,
             origin: (0.0, 0.0),
@@ -467,6 +471,37 @@ impl Camera {
         camera.scale = 0.95 * (width / (2.0 * w)).min(height / (2.0 * h));
         camera.origin = (left + width / 2.0, top + height / 2.0);
         camera
+    }
+
+    /// The signed distance of `p` from the plane through the cube's centre facing the
+    /// viewer (positive in front).
+    fn depth(&self, p: &[f64; 3]) -> f64 {
+        (0..3)
+            .map(|i| (p[i] - self.centre[i]) * self.toward[i])
+            .sum()
+    }
+
+    /// `line` split where it crosses the plane of [`Camera::depth`] zero: runs with a flag,
+    /// `true` behind.
+    fn split_by_depth(&self, line: &[[f64; 3]]) -> Vec<(bool, Vec<[f64; 3]>)> {
+        let mut out: Vec<(bool, Vec<[f64; 3]>)> = Vec::new();
+        for (n, p) in line.iter().enumerate() {
+            let behind = self.depth(p) < 0.0;
+            match out.last_mut() {
+                Some((b, run)) if *b == behind => run.push(*p),
+                Some((_, run)) => {
+                    // the crossing point ends one run and starts the next
+                    let q = line[n - 1];
+                    let (dq, dp) = (self.depth(&q), self.depth(p));
+                    let t = dq / (dq - dp);
+                    let x = [0, 1, 2].map(|i| q[i] + t * (p[i] - q[i]));
+                    run.push(x);
+                    out.push((behind, vec![x, *p]));
+                }
+                None => out.push((behind, vec![*p])),
+            }
+        }
+        out
     }
 
     /// The page position of `p`.
@@ -820,7 +855,7 @@ fn curve_panel(scene: &Scene) -> Panel {
 pub(crate) const SCENE_STYLE: &str = ".axis{font-size:11px;fill:#555}\
     .box line{stroke:#999;stroke-width:0.6}\
     .surface{fill:none;stroke-width:0.7;stroke-opacity:0.45}\
-    .piece{stroke-width:2.2;stroke-linejoin:round}.branch{fill:none}\
+    .piece{stroke-width:2.2;stroke-linejoin:round}.branch{fill:none}.far{stroke-opacity:0.45}\
     .isolated{stroke:#000;stroke-width:1}\
     .singular-mark{fill:#fff;stroke:#000;stroke-width:1.5}\
     .singular-label{font-size:11px;font-weight:bold}.empty{font-size:14px;fill:#b00}";
@@ -914,9 +949,13 @@ fn draw_scene(body: &mut String, scene: &Scene, rect: (f64, f64, f64, f64), labe
                         "<circle class=\"isolated\" cx=\"{x:.1}\" cy=\"{y:.1}\" r=\"6\"/>"
                     );
                 } else {
-                    body.push_str("<path class=\"branch\" d=\"");
-                    push_path_data(body, &camera, &line);
-                    body.push_str("\"/>\n");
+                    // lighter behind the centre plane: a depth cue
+                    for (behind, run) in camera.split_by_depth(&line) {
+                        let class = if behind { "branch far" } else { "branch" };
+                        let _ = write!(body, "<path class=\"{class}\" d=\"");
+                        push_path_data(body, &camera, &run);
+                        body.push_str("\"/>\n");
+                    }
                 }
             }
         }
@@ -1097,7 +1136,8 @@ fn push_legend(body: &mut String, scene: &Scene) -> f64 {
         body,
         "legend",
         0.0,
-        "Faint lines: sections of A (solid) and B (dashed) by planes x, y, z = const.",
+        "Faint lines: sections of A (solid) and B (dashed) by planes x, y, z = const. Curves \
+         are lighter behind the plane through the box's centre facing the viewer.",
     );
     line(
         &mut y,
@@ -1717,6 +1757,37 @@ mod tests {
         let (x1, _) = top.project(&[2.0, 2.0, 3.0]);
         let (_, y1) = top.project(&[1.0, 3.0, 3.0]);
         assert!(x1 > x0 && y1 < y0);
+    }
+
+    /// A line through the cube's centre plane splits at a point of depth zero into a front
+    /// and a back run that share it; the runs keep every original point in order.
+    #[test]
+    fn depth_split_at_the_centre_plane() {
+        let cube = Cube {
+            centre: [0.0; 3],
+            half: 1.0,
+        };
+        let cam = Camera::new(View::default(), &cube, (0.0, 0.0, 100.0, 100.0));
+        let t = cam.toward;
+        let line: Vec<[f64; 3]> = (0..=10)
+            .map(|k| {
+                let s = k as f64 / 5.0 - 1.0 + 0.05;
+                [t[0] * s + 0.1, t[1] * s, t[2] * s]
+            })
+            .collect();
+        let runs = cam.split_by_depth(&line);
+        assert_eq!(runs.len(), 2);
+        assert!(runs[0].0 && !runs[1].0, "behind first, then in front");
+        let shared = runs[0].1.last().unwrap();
+        assert_eq!(Some(shared), runs[1].1.first());
+        assert!(cam.depth(shared).abs() < 1e-12);
+        let kept: Vec<[f64; 3]> = runs
+            .iter()
+            .flat_map(|(_, r)| r.iter().copied())
+            .filter(|p| cam.depth(p).abs() > 1e-12)
+            .collect();
+        assert_eq!(kept, line);
+        assert_eq!(cam.split_by_depth(&line[6..]).len(), 1);
     }
 
     #[test]
