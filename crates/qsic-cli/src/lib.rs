@@ -13,6 +13,8 @@
 //! | [`motion_plot`] | `qsic motion --plot`: the timeline as an SVG picture |
 //! | [`param`] | `qsic param`: the exact curve as JSON and text |
 //! | [`mod@sample`] | `qsic sample`: real points as JSON, CSV, OBJ |
+//! | [`plot`] | `qsic plot`: the curve in a 3D view and the eigencurve, as SVG |
+//! | [`svg`] | SVG helpers shared by the pictures: escaping, palette, panels |
 
 pub mod affine;
 pub mod batch;
@@ -23,4 +25,6 @@ pub mod motion;
 pub mod motion_plot;
 pub mod output;
 pub mod param;
+pub mod plot;
 pub mod sample;
+pub mod svg;

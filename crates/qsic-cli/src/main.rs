@@ -8,7 +8,7 @@ use clap::{Args, CommandFactory, Parser, Subcommand};
 use qsic::param::sample::SampleOptions;
 use qsic::Quadric;
 use qsic_cli::motion::{self, TimeRange};
-use qsic_cli::{batch, contact, input, output, param, sample};
+use qsic_cli::{batch, contact, input, output, param, plot, sample};
 use std::fs::File;
 use std::io::{self, IsTerminal, Write};
 use std::path::PathBuf;
@@ -90,6 +90,66 @@ enum Command {
     /// Points come from the exact parameterization, ordered along each piece, consecutive
     /// unit vectors at most 0.1 rad apart; the affine chart splits pieces at infinity.
     Sample(SampleArgs),
+    /// Draw the real curve in a 3D view as SVG (-o FILE), and the eigencurve (--eigencurve).
+    ///
+    /// Each real piece in its own colour, isolated points as dots, singular points marked
+    /// with their kind, the two surfaces faintly as their sections by planes x, y, z = const,
+    /// unbounded branches clipped to a box; the legend names the class and the affine view.
+    Plot(PlotArgs),
+}
+
+const PLOT_HELP: &str = "\
+PICTURE:
+  The curve in the affine chart (--chart, default w = 0 at infinity) seen by an orthographic
+  camera (--view AZIMUTH,ELEVATION in degrees, default 35,25) looking at a cube: around the
+  bounded part of the curve (bounded pieces, isolated and singular points) if there is one,
+  else around the unbounded branches' points nearest the origin, else around the surfaces.
+  Unbounded branches are clipped to the cube (stated in the legend). Points come from the
+  exact parameterization (as 'qsic sample'), never from marching.
+
+EIGENCURVE (--eigencurve):
+  A second panel: det(lambda*A - B - u*I) = 0 in the (lambda, u) plane, the index (number of
+  positive eigenvalues of lambda*A - B - u*I) in each region, the exact index function on
+  u = 0, and the real roots of det(lambda*A - B) from the exact pencil analysis.
+
+EXIT STATUS:
+  0  the picture was written; 1 bad input or a class not covered; 2 usage or I/O error
+
+EXAMPLES:
+  qsic plot \"x^2+y^2+z^2-4\" \"(x-1)^2+y^2-1\" -o viviani.svg
+  qsic plot \"x^2+y^2-1\" \"x^2+z^2-1\" -o cylinders.svg --view 60,20 --eigencurve";
+
+/// Arguments of `qsic plot`.
+#[derive(Args, Debug)]
+#[command(after_long_help = PLOT_HELP, after_help = "See 'qsic plot --help' for the picture, the eigencurve and the exit codes.")]
+struct PlotArgs {
+    /// First quadric: a polynomial in x, y, z, w, or a 4x4 JSON matrix.
+    #[arg(value_name = "A", allow_hyphen_values = true)]
+    a: String,
+
+    /// Second quadric: a polynomial in x, y, z, w, or a 4x4 JSON matrix.
+    #[arg(value_name = "B", allow_hyphen_values = true)]
+    b: String,
+
+    /// The SVG file to write.
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    output: PathBuf,
+
+    /// At least N points per piece.
+    #[arg(long, value_name = "N", default_value_t = 64)]
+    points: usize,
+
+    /// The plane at infinity, "a*x+b*y+c*z+d*w" (default "w").
+    #[arg(long, value_name = "PLANE", allow_hyphen_values = true)]
+    chart: Option<String>,
+
+    /// The camera direction: azimuth about z from the x axis, elevation, in degrees.
+    #[arg(long, value_name = "AZIMUTH,ELEVATION", allow_hyphen_values = true)]
+    view: Option<String>,
+
+    /// Add a panel with the eigenvalue curve det(lambda*A - B - u*I) = 0.
+    #[arg(long)]
+    eigencurve: bool,
 }
 
 /// Arguments of `qsic contact`.
@@ -252,8 +312,10 @@ PLOT (--plot FILE):
   Also write the timeline as an SVG picture: a t axis over the range (for an open side, a
   window holding every instant with margins, and an arrow to -oo/+oo), one coloured band
   per interval labelled \"case k: real_type\", one tick per instant labelled with its exact
-  value (p/q, or a decimal marked algebraic) and type, and a legend of the colours. Not
-  with --batch (a usage error); an unwritable FILE exits 2.
+  value (p/q, or a decimal marked algebraic) and type, and a legend of the colours; below,
+  a small picture of the real curve at the sample t of each interval (as 'qsic plot', the
+  first 20 intervals), framed in the interval's colour. Not with --batch (a usage error);
+  an unwritable FILE exits 2.
 
 BATCH (--batch FILE, or - for standard input):
   JSON Lines {\"id\", \"A\", \"B\"} in; one JSON line out per non-blank line, in order:
@@ -311,6 +373,7 @@ fn main() -> ExitCode {
         Command::Motion(args) => run_motion(&args),
         Command::Param(args) => run_param(&args),
         Command::Sample(args) => run_sample(&args),
+        Command::Plot(args) => run_plot(&args),
         Command::Classify(args) => {
             let chart = match args.chart.as_deref().map(classify_chart).transpose() {
                 Ok(chart) => chart,
@@ -478,17 +541,20 @@ fn run_motion(args: &MotionArgs) -> ExitCode {
         |name: &str, text: &str| motion::moving_from_arg(text).map_err(|e| format!("{name}: {e}"));
     let result = read("A", a).and_then(|ma| {
         let mb = read("B", b)?;
-        motion::analyze(ma, mb, &range).map_err(|e| format!("A and B: {e}"))
+        // the plot's snapshots need the moving quadrics again
+        let pair = args.plot.is_some().then(|| (ma.clone(), mb.clone()));
+        let m = motion::analyze(ma, mb, &range).map_err(|e| format!("A and B: {e}"))?;
+        Ok((m, pair))
     });
-    if let (Ok(m), Some(path)) = (&result, &args.plot) {
-        let svg = qsic_cli::motion_plot::motion_to_svg(m, &range);
+    if let (Ok((m, Some((ma, mb)))), Some(path)) = (&result, &args.plot) {
+        let svg = qsic_cli::motion_plot::motion_with_snapshots_to_svg(m, &range, ma, mb);
         if let Err(e) = std::fs::write(path, svg) {
             return io_failure(&format!("writing the plot {}", path.display()), &e);
         }
     }
     let text = match result {
-        Ok(m) if args.json => motion::motion_to_json_line(&m) + "\n",
-        Ok(m) => motion::human_timeline(&m),
+        Ok((m, _)) if args.json => motion::motion_to_json_line(&m) + "\n",
+        Ok((m, _)) => motion::human_timeline(&m),
         Err(message) => {
             eprintln!("error: {message}");
             return ExitCode::from(1);
@@ -643,6 +709,48 @@ fn run_sample(args: &SampleArgs) -> ExitCode {
         Format::Obj => sample::to_obj(&sampled),
     };
     write_out(&text)
+}
+
+/// `qsic plot`: exit 0 with the picture written, 1 on bad input, 2 on a usage or I/O error.
+fn run_plot(args: &PlotArgs) -> ExitCode {
+    let mut options = plot::PlotOptions {
+        points: args.points,
+        eigencurve: args.eigencurve,
+        ..plot::PlotOptions::default()
+    };
+    let settings = (|| {
+        if let Some(text) = &args.chart {
+            options.chart = sample::parse_chart(text)?;
+        }
+        if let Some(text) = &args.view {
+            options.view = plot::parse_view(text)?;
+        }
+        Ok::<(), String>(())
+    })();
+    if let Err(message) = settings {
+        eprintln!("error: {message}");
+        return ExitCode::from(2);
+    }
+    let read =
+        |name: &str, text: &str| input::surface_from_arg(text).map_err(|e| format!("{name}: {e}"));
+    let result = read("A", &args.a).and_then(|sa| {
+        let sb = read("B", &args.b)?;
+        let (Some(qa), Some(qb)) = (&sa.quadric, &sb.quadric) else {
+            return Err("A and B: a zero form has no curve to draw".to_string());
+        };
+        plot::plot_to_svg(qa, qb, [sa.plane, sb.plane], &options)
+    });
+    let svg = match result {
+        Ok(svg) => svg,
+        Err(message) => {
+            eprintln!("error: {message}");
+            return ExitCode::from(1);
+        }
+    };
+    match std::fs::write(&args.output, svg) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => io_failure(&format!("writing the plot {}", args.output.display()), &e),
+    }
 }
 
 /// Exit 2 after an I/O error; a closed output pipe (`| head`) ends quietly.

@@ -3,6 +3,7 @@
 //! | entry point | does |
 //! |---|---|
 //! | [`motion_to_svg`] | the whole picture: `t` axis, one coloured band per interval, one tick per instant, legend |
+//! | [`motion_with_snapshots_to_svg`] | the timeline and, below, the real curve at the sample `t` of each interval (`qsic motion --plot`) |
 //! | [`plot_window`] | the drawn window of `t` (the range, or all instants with margins when unbounded) |
 //!
 //! Floating point appears only here, for positions on the page: every instant is labelled
@@ -13,6 +14,8 @@
 //! are staggered into rows.
 
 use crate::motion::TimeRange;
+use crate::svg::{colour, document, push_escaped, push_text, Panel};
+use qsic::io::MovingMatrix;
 use qsic::motion::{Motion, MotionType};
 use qsic::Classification;
 use qsic_algebra::AlgebraicReal;
@@ -28,11 +31,6 @@ const ROW: f64 = 30.0;
 const BAND: f64 = 36.0;
 /// Approximate width of one character of the 12 px labels.
 const CHAR: f64 = 7.0;
-/// Fill colours of the bands, cycled when there are more types.
-const PALETTE: [&str; 10] = [
-    "#4e79a7", "#f28e2b", "#59a14f", "#e15759", "#76b7b2", "#edc948", "#b07aa1", "#ff9da7",
-    "#9c755f", "#bab0ac",
-];
 
 /// The window `[lo, hi]` of `t` drawn for `m` on `range`: the range itself when both ends
 /// are finite (widened by 1 on each side when it is a single point); otherwise the span of
@@ -58,30 +56,6 @@ pub fn plot_window(m: &Motion, range: &TimeRange) -> (f64, f64) {
     };
     let margin = ((hi - lo) / 4.0).max(1.0);
     (from.unwrap_or(lo - margin), to.unwrap_or(hi + margin))
-}
-
-/// Appends `text` with `&`, `<`, `>`, `"` and `'` escaped for XML text and attributes.
-fn push_escaped(out: &mut String, text: &str) {
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&apos;"),
-            c => out.push(c),
-        }
-    }
-}
-
-/// Appends a `<text>` element (escaped content).
-fn push_text(out: &mut String, x: f64, y: f64, anchor: &str, class: &str, text: &str) {
-    let _ = write!(
-        out,
-        "<text class=\"{class}\" x=\"{x:.1}\" y=\"{y:.1}\" text-anchor=\"{anchor}\">"
-    );
-    push_escaped(out, text);
-    out.push_str("</text>\n");
 }
 
 /// A short type label: `case 24: conic_and_point`, `singular: …`, or `not classified`.
@@ -182,25 +156,18 @@ fn span_at(x: f64, chars: usize) -> (f64, f64) {
 /// assert!(svg.contains("t = -3") && svg.contains("+∞"));
 /// ```
 pub fn motion_to_svg(m: &Motion, range: &TimeRange) -> String {
+    document(&[timeline_panel(m, range)])
+}
+
+/// The timeline panel of [`motion_to_svg`].
+fn timeline_panel(m: &Motion, range: &TimeRange) -> Panel {
     let (lo, hi) = plot_window(m, range);
     let scale = (WIDTH - 2.0 * SIDE) / (hi - lo);
     let x_of = |t: f64| (SIDE + (t - lo) * scale).clamp(SIDE, WIDTH - SIDE);
     let x_end =
         |t: &Option<AlgebraicReal>, open: f64| t.as_ref().map_or(open, |t| x_of(t.to_f64()));
 
-    // The distinct types of the intervals, in order of first appearance.
-    let mut types: Vec<MotionType> = Vec::new();
-    let colour: Vec<usize> = m
-        .intervals
-        .iter()
-        .map(|v| {
-            let t = MotionType::of(&v.classification);
-            types.iter().position(|u| *u == t).unwrap_or_else(|| {
-                types.push(t);
-                types.len() - 1
-            })
-        })
-        .collect();
+    let (types, colour_of) = type_colours(m);
 
     // Band labels above the band, instant labels (two lines) below the axis.
     let band_x: Vec<(f64, f64)> = m
@@ -246,17 +213,6 @@ pub fn motion_to_svg(m: &Motion, range: &TimeRange) -> String {
         legend_top + 20.0 * (types.len() as f64 + 1.0 + f64::from(u8::from(algebraic))) + 10.0;
 
     let mut out = String::with_capacity(4096);
-    let _ = writeln!(
-        out,
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" \
-         width=\"{WIDTH}\" height=\"{height:.0}\" viewBox=\"0 0 {WIDTH} {height:.0}\" \
-         font-family=\"sans-serif\" font-size=\"12\">"
-    );
-    out.push_str(
-        "<style>.title{font-size:15px;font-weight:bold}.band-label{font-size:12px}\
-         .value{font-size:12px;font-weight:bold}.type{font-size:11px;fill:#333}\
-         .legend{font-size:12px}.axis-label{font-size:13px}</style>\n",
-    );
     out.push_str(
         "<defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" \
          markerWidth=\"8\" markerHeight=\"8\" orient=\"auto-start-reverse\">\
@@ -278,7 +234,7 @@ pub fn motion_to_svg(m: &Motion, range: &TimeRange) -> String {
     // Bands and their labels.
     for (k, v) in m.intervals.iter().enumerate() {
         let (a, b) = band_x[k];
-        let fill = PALETTE[colour[k] % PALETTE.len()];
+        let fill = colour(colour_of[k]);
         let _ = write!(
             out,
             "<rect class=\"band\" x=\"{a:.1}\" y=\"{band_top:.1}\" width=\"{:.1}\" \
@@ -292,7 +248,7 @@ pub fn motion_to_svg(m: &Motion, range: &TimeRange) -> String {
             &format!(
                 "({from}, {to}), sample t = {}: {}",
                 v.sample,
-                legend_label(&types[colour[k]])
+                legend_label(&types[colour_of[k]])
             ),
         );
         out.push_str("</title></rect>\n");
@@ -421,7 +377,7 @@ pub fn motion_to_svg(m: &Motion, range: &TimeRange) -> String {
             "<rect class=\"swatch\" x=\"{SIDE}\" y=\"{:.1}\" width=\"24\" height=\"12\" \
              fill=\"{}\" fill-opacity=\"0.75\"/>",
             y - 10.0,
-            PALETTE[k % PALETTE.len()]
+            colour(k)
         );
         push_text(
             &mut out,
@@ -444,87 +400,153 @@ pub fn motion_to_svg(m: &Motion, range: &TimeRange) -> String {
              its polynomial and isolating interval are in the tooltip and in --json.",
         );
     }
-    out.push_str("</svg>\n");
-    out
+    Panel {
+        width: WIDTH,
+        height,
+        style: ".title{font-size:15px;font-weight:bold}.band-label{font-size:12px}\
+                .value{font-size:12px;font-weight:bold}.type{font-size:11px;fill:#333}\
+                .legend{font-size:12px}.axis-label{font-size:13px}"
+            .into(),
+        body: out,
+    }
+}
+
+/// Most snapshots drawn by [`motion_with_snapshots_to_svg`].
+pub const MAX_SNAPSHOTS: usize = 20;
+
+/// [`motion_to_svg`] with a second panel: a small picture of the real curve at the sample
+/// `t` of each interval (the first [`MAX_SNAPSHOTS`]), framed in the interval's band colour
+/// and labelled with `t` and the type, drawn by [`crate::plot::snapshot`] from `A(t)`,
+/// `B(t)`; where no picture can be drawn (a zero quadric at `t`, a class whose curve is not
+/// built yet) the cell says why.
+pub fn motion_with_snapshots_to_svg(
+    m: &Motion,
+    range: &TimeRange,
+    a: &MovingMatrix,
+    b: &MovingMatrix,
+) -> String {
+    document(&[timeline_panel(m, range), snapshots_panel(m, a, b)])
+}
+
+/// The snapshot panel of [`motion_with_snapshots_to_svg`].
+fn snapshots_panel(m: &Motion, a: &MovingMatrix, b: &MovingMatrix) -> Panel {
+    const CELL: (f64, f64) = (190.0, 214.0);
+    const PER_ROW: usize = 5;
+    let (_, colour_of) = type_colours(m);
+    let shown = m.intervals.len().min(MAX_SNAPSHOTS);
+    let mut body = String::with_capacity(1 << 16);
+    push_text(
+        &mut body,
+        WIDTH / 2.0,
+        22.0,
+        "middle",
+        "title",
+        "The real curve at the sample t of each interval",
+    );
+    for (k, v) in m.intervals.iter().take(shown).enumerate() {
+        let left = 25.0 + (k % PER_ROW) as f64 * CELL.0;
+        let top = 36.0 + (k / PER_ROW) as f64 * CELL.1;
+        let _ = write!(body, "<g class=\"snapshot\" data-interval=\"{k}\">");
+        let _ = writeln!(
+            body,
+            "<rect class=\"cell\" x=\"{:.1}\" y=\"{top:.1}\" width=\"{:.1}\" height=\"{:.1}\" \
+             stroke=\"{}\"/>",
+            left + 2.0,
+            CELL.0 - 4.0,
+            CELL.1 - 6.0,
+            colour(colour_of[k])
+        );
+        let centre = left + CELL.0 / 2.0;
+        push_text(
+            &mut body,
+            centre,
+            top + 16.0,
+            "middle",
+            "snapshot-t",
+            &format!("t = {}", v.sample),
+        );
+        push_text(
+            &mut body,
+            centre,
+            top + 31.0,
+            "middle",
+            "snapshot-type",
+            &type_label(Some(&v.classification)),
+        );
+        let rect = (left + 8.0, top + 38.0, CELL.0 - 16.0, CELL.1 - 50.0);
+        let picture = a
+            .quadric_at(&v.sample)
+            .and_then(|qa| Ok((qa, b.quadric_at(&v.sample)?)))
+            .map_err(|e| e.to_string())
+            .and_then(|(qa, qb)| crate::plot::snapshot(&qa, &qb, rect));
+        match picture {
+            Ok(svg) => body.push_str(&svg),
+            Err(message) => {
+                for (n, line) in crate::svg::wrap(&format!("no picture: {message}"), 28)
+                    .iter()
+                    .enumerate()
+                {
+                    push_text(
+                        &mut body,
+                        centre,
+                        rect.1 + rect.3 / 2.0 + 14.0 * n as f64,
+                        "middle",
+                        "snapshot-none",
+                        line,
+                    );
+                }
+            }
+        }
+        body.push_str("</g>\n");
+    }
+    let rows = shown.div_ceil(PER_ROW);
+    let mut height = 36.0 + rows as f64 * CELL.1 + 10.0;
+    if shown < m.intervals.len() {
+        push_text(
+            &mut body,
+            25.0,
+            height,
+            "start",
+            "snapshot-note",
+            &format!("the first {shown} of {} intervals", m.intervals.len()),
+        );
+        height += 20.0;
+    }
+    Panel {
+        width: WIDTH,
+        height,
+        style: crate::plot::SCENE_STYLE.to_owned()
+            + ".cell{fill:none;stroke-width:2}.snapshot-t{font-size:12px;font-weight:bold}\
+               .snapshot-type{font-size:11px;fill:#333}.snapshot-none{font-size:11px;fill:#b00}\
+               .snapshot .piece{stroke-width:1.6}",
+        body,
+    }
+}
+
+/// The distinct types of the intervals, in order of first appearance, and each interval's
+/// index among them (its colour).
+fn type_colours(m: &Motion) -> (Vec<MotionType>, Vec<usize>) {
+    let mut types: Vec<MotionType> = Vec::new();
+    let colour_of = m
+        .intervals
+        .iter()
+        .map(|v| {
+            let t = MotionType::of(&v.classification);
+            types.iter().position(|u| *u == t).unwrap_or_else(|| {
+                types.push(t);
+                types.len() - 1
+            })
+        })
+        .collect();
+    (types, colour_of)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::motion::analyze;
+    use crate::svg::xml::{check_xml, texts_of};
     use qsic::io::moving_matrix_from_polynomial as q;
-
-    /// A tiny XML well-formedness check: one root, tags nested and closed in order, quoted
-    /// attributes, no raw `<` or stray `&` in text. Returns the element names in order.
-    fn check_xml(svg: &str) -> Vec<String> {
-        let mut stack: Vec<String> = Vec::new();
-        let mut names = Vec::new();
-        let mut rest = svg
-            .strip_prefix("<?xml version=\"1.0\" encoding=\"UTF-8\"?>")
-            .expect("XML declaration");
-        let mut roots = 0;
-        while let Some(open) = rest.find('<') {
-            check_text(&rest[..open]);
-            let close = rest[open..].find('>').expect("tag closed") + open;
-            let tag = &rest[open + 1..close];
-            assert!(!tag.contains('<'), "{tag}");
-            if let Some(name) = tag.strip_prefix('/') {
-                assert_eq!(stack.pop().as_deref(), Some(name), "closing {name}");
-            } else {
-                let self_closing = tag.ends_with('/');
-                let body = tag.trim_end_matches('/');
-                let name = body.split_whitespace().next().expect("a name").to_string();
-                let attrs = &body[name.len()..];
-                // attributes: name="value" pairs with escaped values
-                let mut a = attrs.trim();
-                while !a.is_empty() {
-                    let eq = a.find("=\"").expect("attribute quoted");
-                    assert!(!a[..eq].contains(' '), "{a}");
-                    let end = a[eq + 2..].find('"').expect("value closed") + eq + 2;
-                    check_text(&a[eq + 2..end]);
-                    a = a[end + 1..].trim_start();
-                }
-                if stack.is_empty() {
-                    roots += 1;
-                }
-                names.push(name.clone());
-                if !self_closing {
-                    stack.push(name);
-                }
-            }
-            rest = &rest[close + 1..];
-        }
-        check_text(rest);
-        assert!(stack.is_empty(), "unclosed {stack:?}");
-        assert_eq!(roots, 1);
-        names
-    }
-
-    /// Text has only the five predefined entities and no `>`-free raw `<`.
-    fn check_text(text: &str) {
-        assert!(!text.contains('<'));
-        for (k, _) in text.match_indices('&') {
-            let entity = &text[k..];
-            assert!(
-                ["&amp;", "&lt;", "&gt;", "&quot;", "&apos;"]
-                    .iter()
-                    .any(|e| entity.starts_with(e)),
-                "raw & in {text:?}"
-            );
-        }
-    }
-
-    /// The text contents of the elements with `class="{class}"`, unescaped.
-    fn texts_of(svg: &str, class: &str) -> Vec<String> {
-        let key = format!("<text class=\"{class}\"");
-        svg.match_indices(&key)
-            .map(|(k, _)| {
-                let start = svg[k..].find('>').unwrap() + k + 1;
-                let end = svg[start..].find("</text>").unwrap() + start;
-                svg[start..end].replace("&lt;", "<").replace("&amp;", "&")
-            })
-            .collect()
-    }
 
     /// One band per interval, one tick per instant, labels with the exact values and the
     /// types, and a legend entry per distinct type — on the whole line, a finite range, an
@@ -593,6 +615,45 @@ mod tests {
         }
     }
 
+    /// One snapshot per interval, framed in its band's colour, whose pieces are the real
+    /// pieces of the curve of `A(t)`, `B(t)` at the interval's sample (spheres through one
+    /// another, cylinders sliding along each other, unit spheres touching at t = ±2).
+    #[test]
+    fn snapshots_show_the_curve_of_each_interval() {
+        let cases = [
+            ("x^2+y^2+z^2-4", "(x-t)^2+y^2+z^2-1"),
+            ("x^2+y^2-1", "x^2+(z-t)^2-1"),
+            ("x^2+y^2+z^2-1", "(x-t)^2+y^2+z^2-1"),
+        ];
+        for (a, b) in cases {
+            let (ma, mb) = (q(a).unwrap(), q(b).unwrap());
+            let range = TimeRange::default();
+            let m = analyze(ma.clone(), mb.clone(), &range).unwrap();
+            let svg = motion_with_snapshots_to_svg(&m, &range, &ma, &mb);
+            check_xml(&svg);
+            let cells: Vec<&str> = svg.split("<g class=\"snapshot\"").skip(1).collect();
+            assert_eq!(cells.len(), m.intervals.len().min(MAX_SNAPSHOTS), "{b}");
+            let (_, colour_of) = type_colours(&m);
+            for ((cell, v), c) in cells.iter().zip(&m.intervals).zip(&colour_of) {
+                assert!(cell.contains(&format!("stroke=\"{}\"", colour(*c))));
+                assert!(cell.contains(&format!(">t = {}<", v.sample)));
+                let pair = ma.quadric_at(&v.sample).and_then(|qa| {
+                    let qb = mb.quadric_at(&v.sample)?;
+                    qsic::param::parameterize(&qa, &qb)
+                });
+                match pair {
+                    Ok(curve) => assert_eq!(
+                        cell.matches("<g class=\"piece\"").count(),
+                        curve.pieces.len(),
+                        "{b} at {}",
+                        v.sample
+                    ),
+                    Err(_) => assert!(cell.contains("no picture"), "{cell}"),
+                }
+            }
+        }
+    }
+
     /// The window holds every instant strictly inside when a side is open, and is the range
     /// when both ends are finite.
     #[test]
@@ -630,19 +691,5 @@ mod tests {
         }
         // far apart labels share the first row
         assert_eq!(stagger(&[(0.0, 10.0), (100.0, 110.0)]), [0, 0]);
-    }
-
-    #[test]
-    fn text_is_escaped() {
-        let mut out = String::new();
-        push_text(&mut out, 0.0, 0.0, "start", "x", "a<b & \"c\" 'd' > e");
-        assert_eq!(
-            out,
-            "<text class=\"x\" x=\"0.0\" y=\"0.0\" text-anchor=\"start\">\
-             a&lt;b &amp; &quot;c&quot; &apos;d&apos; &gt; e</text>\n"
-        );
-        check_xml(&format!(
-            "<?xml version=\"1.0\" encoding=\"UTF-8\"?><g>{out}</g>"
-        ));
     }
 }

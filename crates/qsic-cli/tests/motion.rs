@@ -228,6 +228,11 @@ fn plot_writes_an_svg_and_reports_errors() {
         svg.matches("<line class=\"tick\"").count(),
         v["instants"].as_array().unwrap().len()
     );
+    // one snapshot of the curve per interval
+    assert_eq!(
+        svg.matches("<g class=\"snapshot\"").count(),
+        v["intervals"].as_array().unwrap().len()
+    );
     for i in v["instants"].as_array().unwrap() {
         assert!(svg.contains(&format!(">t = {}<", i["t"].as_str().unwrap())));
         assert!(svg.contains(i["real_type"].as_str().unwrap()));

@@ -1,0 +1,1818 @@
+//! `qsic plot A B -o out.svg`: the real intersection curve drawn in a 3D view, and the
+//! eigenvalue curve of the pencil, as hand-written SVG.
+//!
+//! | entry point | does |
+//! |---|---|
+//! | [`plot_to_svg`] | the picture of a pair: the curve panel, and with [`PlotOptions::eigencurve`] the eigencurve panel below |
+//! | `curve_panel` | the curve in ℝ³ (affine chart) seen by an orthographic camera, the surfaces faintly, the legend |
+//! | [`eigencurve_panel`] | `det(λA − B − uI) = 0` in the `(λ, u)` plane, the index in each region, the real roots of `det(λA − B)` |
+//! | [`snapshot`] | a small picture of the curve without legend (the snapshots of `qsic motion --plot`) |
+//! | [`View`], [`parse_view`] | the camera's azimuth and elevation |
+//!
+//! Everything decided comes from the exact description: the pieces, their kinds and
+//! boundedness, the singular points and their kinds, the class, the roots of `det(λA − B)` and
+//! the index on each arc between them. Floating point is used only to draw: the points come
+//! from [`qsic::param::sample::sample`] (the exact parameterization evaluated, never
+//! marching), the surfaces are drawn as their sections by planes `x, y, z = const` (conics
+//! sampled in floats from their canonical forms), and the eigenvalue branches are the sorted
+//! eigenvalues of `λA − B` (Jacobi's method) at a grid of `λ`.
+//!
+//! The drawn region is a cube: around the finite points of the bounded pieces, isolated
+//! points and finite singular points when there are any; else around the points of the
+//! unbounded branches nearest the origin; else (no real point in ℝ³) around the ellipsoids
+//! among the surfaces, or the unit cube at the origin. Unbounded branches are clipped to it,
+//! and the legend says so.
+
+use crate::param::curve_of;
+use crate::svg::{colour, document, push_text, push_title, wrap, Panel};
+use qsic::affine::{affine_view, AffineView, Chart};
+use qsic::classify::analyze_pencil;
+use qsic::param::sample::{sample, SampleOptions, Sampled};
+use qsic::param::Curve;
+use qsic::pencil::PencilPoint;
+use qsic::Quadric;
+use qsic_algebra::{IBig, RBig};
+use std::fmt::Write as _;
+
+/// The camera: azimuth (degrees, about the z axis from the x axis) and elevation (degrees
+/// above the xy plane) of the viewing direction.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct View {
+    /// Degrees about the z axis, from the x axis towards the y axis.
+    pub azimuth: f64,
+    /// Degrees above the xy plane, in `[−90, 90]`.
+    pub elevation: f64,
+}
+
+impl Default for View {
+    /// Azimuth 35°, elevation 25°.
+    fn default() -> View {
+        View {
+            azimuth: 35.0,
+            elevation: 25.0,
+        }
+    }
+}
+
+/// Reads `"AZIMUTH,ELEVATION"` (degrees, decimals).
+///
+/// # Errors
+/// A message for anything else, or an elevation outside `[−90, 90]`.
+///
+/// ```
+/// use qsic_cli::plot::{parse_view, View};
+/// assert_eq!(parse_view("30,-10.5"), Ok(View { azimuth: 30.0, elevation: -10.5 }));
+/// assert!(parse_view("30").is_err() && parse_view("0,91").is_err());
+/// ```
+pub fn parse_view(text: &str) -> Result<View, String> {
+    let usage = || format!("--view: \"AZIMUTH,ELEVATION\" in degrees is required, not {text:?}");
+    let (a, e) = text.split_once(',').ok_or_else(usage)?;
+    let read = |s: &str| {
+        s.trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .ok_or_else(usage)
+    };
+    let view = View {
+        azimuth: read(a)?,
+        elevation: read(e)?,
+    };
+    if !(-90.0..=90.0).contains(&view.elevation) {
+        return Err(format!(
+            "--view: the elevation {} is outside [-90, 90]",
+            view.elevation
+        ));
+    }
+    Ok(view)
+}
+
+/// What [`plot_to_svg`] draws.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlotOptions {
+    /// The camera.
+    pub view: View,
+    /// At least this many points per piece ([`SampleOptions::points`]).
+    pub points: usize,
+    /// The plane at infinity `[a, b, c, d]` (default `w`).
+    pub chart: [RBig; 4],
+    /// Add the eigencurve panel.
+    pub eigencurve: bool,
+}
+
+impl Default for PlotOptions {
+    fn default() -> PlotOptions {
+        PlotOptions {
+            view: View::default(),
+            points: 64,
+            chart: SampleOptions::default().chart,
+            eigencurve: false,
+        }
+    }
+}
+
+/// The SVG picture of the intersection of `a` and `b`; `planes[i]` marks an input given as a
+/// plane (named `plane` in the legend).
+///
+/// # Errors
+/// The message of [`curve_of`] (a class not covered: `not yet: …`), of an invalid chart, or of
+/// the sampler (too many points).
+///
+/// # Examples
+/// ```
+/// use qsic::io::parse_quadric;
+/// use qsic_cli::plot::{plot_to_svg, PlotOptions};
+/// let a = parse_quadric("x^2+y^2+z^2-4").unwrap();
+/// let b = parse_quadric("(x-1)^2+y^2-1").unwrap(); // Viviani's curve
+/// let svg = plot_to_svg(&a, &b, [false; 2], &PlotOptions::default()).unwrap();
+/// assert_eq!(svg.matches("<g class=\"piece\"").count(), 1);
+/// assert_eq!(svg.matches("<g class=\"singular\"").count(), 1);
+/// assert!(svg.contains("crunode"));
+/// ```
+pub fn plot_to_svg(
+    a: &Quadric,
+    b: &Quadric,
+    planes: [bool; 2],
+    options: &PlotOptions,
+) -> Result<String, String> {
+    let scene = Scene::new(a, b, planes, options)?;
+    let mut panels = vec![curve_panel(&scene)];
+    if options.eigencurve {
+        panels.push(eigencurve_panel(a, b));
+    }
+    Ok(document(&panels))
+}
+
+/// The chart's plane as text: `w`, or `a*x + b*y + …`.
+fn chart_text(form: &[RBig; 4]) -> String {
+    let names = ["x", "y", "z", "w"];
+    let terms: Vec<String> = form
+        .iter()
+        .zip(names)
+        .filter(|(c, _)| **c != RBig::ZERO)
+        .map(|(c, n)| {
+            if *c == RBig::ONE {
+                n.to_string()
+            } else {
+                format!("{c}*{n}")
+            }
+        })
+        .collect();
+    terms.join(" + ")
+}
+
+/// A float copy of a rational matrix, scaled so its largest entry has absolute value 1.
+fn float_matrix(m: &[[RBig; 4]; 4]) -> [[f64; 4]; 4] {
+    let f = m.clone().map(|row| row.map(|v| v.to_f64().value()));
+    let max = f.iter().flatten().fold(0.0f64, |acc, v| acc.max(v.abs()));
+    if max > 0.0 && max.is_finite() {
+        f.map(|row| row.map(|v| v / max))
+    } else {
+        f
+    }
+}
+
+/// The real singular points: kind key and affine coordinates (`None` at infinity), in the
+/// order of [`Curve::singular_points`].
+fn singular_points(view: &AffineView) -> Vec<(&'static str, Option<[f64; 3]>)> {
+    let Ok(curve) = &view.curve else {
+        return Vec::new();
+    };
+    curve
+        .singular_points
+        .iter()
+        .map(|s| {
+            let at = s.point.as_ref().map(|p| [0, 1, 2].map(|i| p[i].to_f64()));
+            (s.kind.key(), at.filter(|p| p.iter().all(|v| v.is_finite())))
+        })
+        .collect()
+}
+
+/// An axis-parallel cube.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Cube {
+    /// Its centre.
+    pub centre: [f64; 3],
+    /// Half its side.
+    pub half: f64,
+}
+
+impl Cube {
+    fn lo(&self, i: usize) -> f64 {
+        self.centre[i] - self.half
+    }
+
+    fn hi(&self, i: usize) -> f64 {
+        self.centre[i] + self.half
+    }
+
+    /// The cube around the bounding box of `points` with a margin of an eighth of its
+    /// largest side on each side (`None` for no points; a single point gets half-side
+    /// `max(1, |p|/2)`).
+    fn around(points: &[[f64; 3]]) -> Option<Cube> {
+        let first = points.first()?;
+        let (mut lo, mut hi) = (*first, *first);
+        for p in points {
+            for i in 0..3 {
+                lo[i] = lo[i].min(p[i]);
+                hi[i] = hi[i].max(p[i]);
+            }
+        }
+        let centre = [0, 1, 2].map(|i| (lo[i] + hi[i]) / 2.0);
+        let side = (0..3).map(|i| hi[i] - lo[i]).fold(0.0, f64::max);
+        let half = if side > 0.0 {
+            side * 0.5 * 1.25
+        } else {
+            (norm(&centre) / 2.0).max(1.0)
+        };
+        Some(Cube { centre, half })
+    }
+}
+
+/// How the cube was chosen (said in the legend).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Region {
+    /// Around the bounded part of the curve.
+    Bounded,
+    /// Around the unbounded branches' points nearest the origin.
+    Unbounded,
+    /// No real point in ℝ³: around the surfaces.
+    Surfaces,
+}
+
+fn norm(p: &[f64; 3]) -> f64 {
+    p.iter().map(|v| v * v).sum::<f64>().sqrt()
+}
+
+/// The drawn cube (module docs).
+fn region_of(
+    sampled: &Sampled,
+    singular: &[(&'static str, Option<[f64; 3]>)],
+    view: &AffineView,
+    surfaces: &[[[f64; 4]; 4]; 2],
+) -> (Cube, Region) {
+    let finite = |p: &[f64; 3]| p.iter().all(|v| v.is_finite());
+    let mut bounded: Vec<[f64; 3]> = singular.iter().filter_map(|s| s.1).collect();
+    let mut nearest: Vec<[f64; 3]> = Vec::new();
+    for piece in &sampled.pieces {
+        if piece.affine.at_infinity {
+            continue;
+        }
+        if piece.isolated || piece.affine.bounded {
+            bounded.extend(piece.affine.branches.iter().flatten().filter(|p| finite(p)));
+        } else {
+            nearest.extend(piece.affine.branches.iter().filter_map(|b| {
+                b.iter()
+                    .filter(|p| finite(p))
+                    .min_by(|p, q| norm(p).total_cmp(&norm(q)))
+                    .copied()
+            }));
+        }
+    }
+    if let Some(cube) = Cube::around(&bounded) {
+        return (cube, Region::Bounded);
+    }
+    if !nearest.is_empty() {
+        let n = nearest.len() as f64;
+        let mean = [0, 1, 2].map(|i| nearest.iter().map(|p| p[i]).sum::<f64>() / n);
+        let spread = nearest
+            .iter()
+            .map(|p| norm(&[0, 1, 2].map(|i| p[i] - mean[i])))
+            .fold(0.0, f64::max);
+        let half = 2.0 * spread.max(norm(&mean) / 2.0);
+        let half = if half > 0.0 && half.is_finite() {
+            half
+        } else {
+            1.0
+        };
+        return (Cube { centre: mean, half }, Region::Unbounded);
+    }
+    let mut corners = Vec::new();
+    for (k, name) in view.surfaces.iter().enumerate() {
+        if name.is_some_and(|s| s.is_ellipsoid()) {
+            if let Some((lo, hi)) = ellipsoid_box(&surfaces[k]) {
+                corners.extend([lo, hi]);
+            }
+        }
+    }
+    let cube = Cube::around(&corners).unwrap_or(Cube {
+        centre: [0.0; 3],
+        half: 1.0,
+    });
+    (cube, Region::Surfaces)
+}
+
+/// The bounding box of the ellipsoid `[x 1] M [x 1]ᵀ = 0` (floats; `None` when the quadratic
+/// part is not invertible or the ellipsoid has no real point).
+fn ellipsoid_box(m: &[[f64; 4]; 4]) -> Option<([f64; 3], [f64; 3])> {
+    let q = |i: usize, j: usize| m[i][j];
+    // the adjugate of the 3×3 quadratic part
+    let cof = |i: usize, j: usize| {
+        let r: Vec<usize> = (0..3).filter(|&k| k != i).collect();
+        let c: Vec<usize> = (0..3).filter(|&k| k != j).collect();
+        let minor = q(r[0], c[0]) * q(r[1], c[1]) - q(r[0], c[1]) * q(r[1], c[0]);
+        if (i + j) % 2 == 0 {
+            minor
+        } else {
+            -minor
+        }
+    };
+    let det = q(0, 0) * cof(0, 0) + q(0, 1) * cof(0, 1) + q(0, 2) * cof(0, 2);
+    if det == 0.0 || !det.is_finite() {
+        return None;
+    }
+    let inv = |i: usize, j: usize| cof(j, i) / det;
+    let g = [m[0][3], m[1][3], m[2][3]];
+    let centre = [0, 1, 2].map(|i| -(0..3).map(|j| inv(i, j) * g[j]).sum::<f64>());
+    // (x − c)ᵀQ(x − c) = k
+    let k = -(m[3][3] + (0..3).map(|i| g[i] * centre[i]).sum::<f64>());
+    let extent = [0, 1, 2].map(|i| k * inv(i, i));
+    if extent.iter().any(|e| e.is_nan() || *e <= 0.0) {
+        return None;
+    }
+    let e = extent.map(f64::sqrt);
+    Some((
+        [0, 1, 2].map(|i| centre[i] - e[i]),
+        [0, 1, 2].map(|i| centre[i] + e[i]),
+    ))
+}
+
+/// Everything the curve panel draws.
+struct Scene {
+    curve: Curve,
+    sampled: Sampled,
+    view: AffineView,
+    singular: Vec<(&'static str, Option<[f64; 3]>)>,
+    /// The surfaces' matrices in the chart's coordinates.
+    surfaces: [[[f64; 4]; 4]; 2],
+    texts: [String; 2],
+    cube: Cube,
+    region: Region,
+    camera: View,
+    chart: String,
+}
+
+impl Scene {
+    /// The curve, its points (two passes: the first fixes the cube, the second has chords
+    /// within a pixel of it), the affine view and the cube.
+    fn new(
+        a: &Quadric,
+        b: &Quadric,
+        planes: [bool; 2],
+        options: &PlotOptions,
+    ) -> Result<Scene, String> {
+        let curve = curve_of(Some(a), Some(b))?;
+        let chart = Chart::new(options.chart.clone()).map_err(|e| e.to_string())?;
+        let view = affine_view(Some(a), Some(b), &chart, planes);
+        let mut sample_options = SampleOptions {
+            points: options.points,
+            tolerance: None,
+            chart: options.chart.clone(),
+        };
+        let first = sample(&curve, &sample_options).map_err(|e| e.to_string())?;
+        let surfaces = [a, b].map(|q| float_matrix(&chart.matrix_in_chart(q.matrix())));
+        let singular = singular_points(&view);
+        let (cube, region) = region_of(&first, &singular, &view, &surfaces);
+        sample_options.tolerance = Some(cube.half / 300.0);
+        let sampled = sample(&curve, &sample_options).unwrap_or(first);
+        Ok(Scene {
+            curve,
+            sampled,
+            view,
+            singular,
+            surfaces,
+            texts: [a, b].map(Quadric::to_polynomial_string),
+            cube,
+            region,
+            camera: options.view,
+            chart: chart_text(&options.chart),
+        })
+    }
+
+    /// No real point in the chart.
+    fn is_empty(&self) -> bool {
+        self.sampled
+            .pieces
+            .iter()
+            .all(|p| p.affine.at_infinity || p.affine.branches.is_empty())
+    }
+}
+
+/// A small picture of the curve of `a` and `b` (default chart and view) drawn into the page
+/// rectangle `(left, top, width, height)`: the box, the surfaces faintly, the pieces in
+/// their colours and the singular points, as in `qsic plot` without the legend; SVG elements
+/// to place in a document.
+///
+/// # Errors
+/// The message of [`plot_to_svg`].
+pub fn snapshot(a: &Quadric, b: &Quadric, rect: (f64, f64, f64, f64)) -> Result<String, String> {
+    let options = PlotOptions {
+        points: 16,
+        ..PlotOptions::default()
+    };
+    let scene = Scene::new(a, b, [false; 2], &options)?;
+    let mut body = String::with_capacity(1 << 14);
+    draw_scene(&mut body, &scene, rect, false);
+    if scene.is_empty() {
+        push_text(
+            &mut body,
+            rect.0 + rect.2 / 2.0,
+            rect.1 + rect.3 / 2.0,
+            "middle",
+            "empty",
+            "no real point",
+        );
+    }
+    Ok(body)
+}
+
+/// An orthographic camera fitted to a page rectangle.
+struct Camera {
+    right: [f64; 3],
+    up: [f64; 3],
+    /// Towards the viewer.
+    toward: [f64; 3],
+    centre: [f64; 3],
+    scale: f64,
+    origin: (f64, f64),
+}
+
+impl Camera {
+    /// Looks at `cube` from direction `view`, the cube's projection fitted into the page
+    /// rectangle `(left, top, width, height)`.
+    fn new(view: View, cube: &Cube, rect: (f64, f64, f64, f64)) -> Camera {
+        let (az, el) = (view.azimuth.to_radians(), view.elevation.to_radians());
+        let right = [-az.sin(), az.cos(), 0.0];
+        let up = [-el.sin() * az.cos(), -el.sin() * az.sin(), el.cos()];
+        let toward = [el.cos() * az.cos(), el.cos() * az.sin(), el.sin()];
+        let mut camera = Camera {
+            right,
+            up,
+            toward,
+            centre: cube.centre,
+            scale: 1.0,
+            origin: (0.0, 0.0),
+        };
+        // the projected corners at scale 1
+        let (mut w, mut h) = (0.0f64, 0.0f64);
+        for k in 0..8 {
+            let corner = [0, 1, 2].map(|i| {
+                if k >> i & 1 == 1 {
+                    cube.hi(i)
+                } else {
+                    cube.lo(i)
+                }
+            });
+            let (x, y) = camera.project(&corner);
+            w = w.max(x.abs());
+            h = h.max(y.abs());
+        }
+        let (left, top, width, height) = rect;
+        camera.scale = 0.95 * (width / (2.0 * w)).min(height / (2.0 * h));
+        camera.origin = (left + width / 2.0, top + height / 2.0);
+        camera
+    }
+
+    /// The signed distance of `p` from the plane through the cube's centre facing the
+    /// viewer (positive in front).
+    fn depth(&self, p: &[f64; 3]) -> f64 {
+        (0..3)
+            .map(|i| (p[i] - self.centre[i]) * self.toward[i])
+            .sum()
+    }
+
+    /// `line` split where it crosses the plane of [`Camera::depth`] zero: runs with a flag,
+    /// `true` behind.
+    fn split_by_depth(&self, line: &[[f64; 3]]) -> Vec<(bool, Vec<[f64; 3]>)> {
+        let mut out: Vec<(bool, Vec<[f64; 3]>)> = Vec::new();
+        for (n, p) in line.iter().enumerate() {
+            let behind = self.depth(p) < 0.0;
+            match out.last_mut() {
+                Some((b, run)) if *b == behind => run.push(*p),
+                Some((_, run)) => {
+                    // the crossing point ends one run and starts the next
+                    let q = line[n - 1];
+                    let (dq, dp) = (self.depth(&q), self.depth(p));
+                    let t = dq / (dq - dp);
+                    let x = [0, 1, 2].map(|i| q[i] + t * (p[i] - q[i]));
+                    run.push(x);
+                    out.push((behind, vec![x, *p]));
+                }
+                None => out.push((behind, vec![*p])),
+            }
+        }
+        out
+    }
+
+    /// The page position of `p`.
+    fn project(&self, p: &[f64; 3]) -> (f64, f64) {
+        let d = [0, 1, 2].map(|i| p[i] - self.centre[i]);
+        let dot = |v: &[f64; 3]| d[0] * v[0] + d[1] * v[1] + d[2] * v[2];
+        (
+            self.origin.0 + self.scale * dot(&self.right),
+            self.origin.1 - self.scale * dot(&self.up),
+        )
+    }
+}
+
+/// The part `[t0, t1]` of the segment `p + t(q − p)`, `t ∈ [0, 1]`, inside `cube`
+/// (Liang–Barsky), or `None`.
+fn clip_segment(p: &[f64; 3], q: &[f64; 3], cube: &Cube) -> Option<(f64, f64)> {
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for i in 0..3 {
+        let d = q[i] - p[i];
+        for (num, den) in [(p[i] - cube.lo(i), d), (cube.hi(i) - p[i], -d)] {
+            // inside this side where num + den·t ≥ 0
+            if den == 0.0 {
+                if num < 0.0 {
+                    return None;
+                }
+            } else {
+                let t = -num / den;
+                if den > 0.0 {
+                    t0 = t0.max(t);
+                } else {
+                    t1 = t1.min(t);
+                }
+            }
+        }
+    }
+    (t0 <= t1).then_some((t0, t1))
+}
+
+/// The parts of the polyline `points` inside `cube`, each a polyline; a single point is kept
+/// when it is inside. Segments with a non-finite end are dropped.
+fn clip_polyline(points: &[[f64; 3]], cube: &Cube) -> Vec<Vec<[f64; 3]>> {
+    let inside = |p: &[f64; 3]| (0..3).all(|i| cube.lo(i) <= p[i] && p[i] <= cube.hi(i));
+    if points.len() == 1 {
+        return if inside(&points[0]) {
+            vec![points.to_vec()]
+        } else {
+            Vec::new()
+        };
+    }
+    let at = |p: &[f64; 3], q: &[f64; 3], t: f64| [0, 1, 2].map(|i| p[i] + t * (q[i] - p[i]));
+    let mut out: Vec<Vec<[f64; 3]>> = Vec::new();
+    let mut run: Vec<[f64; 3]> = Vec::new();
+    for w in points.windows(2) {
+        let (p, q) = (&w[0], &w[1]);
+        let clipped = if p.iter().chain(q).all(|v| v.is_finite()) {
+            clip_segment(p, q, cube)
+        } else {
+            None
+        };
+        match clipped {
+            Some((t0, t1)) => {
+                if t0 > 0.0 || run.is_empty() {
+                    if run.len() > 1 {
+                        out.push(std::mem::take(&mut run));
+                    }
+                    run = vec![at(p, q, t0)];
+                }
+                run.push(at(p, q, t1));
+                if t1 < 1.0 {
+                    out.push(std::mem::take(&mut run));
+                }
+            }
+            None => {
+                if run.len() > 1 {
+                    out.push(std::mem::take(&mut run));
+                }
+                run.clear();
+            }
+        }
+    }
+    if run.len() > 1 {
+        out.push(run);
+    }
+    out
+}
+
+/// The real points of the conic `a p² + 2b pq + c q² + 2d p + 2e q + f = 0` (coefficients
+/// `[a, b, c, d, e, f]`) within distance `radius` of `centre`, as polylines (floats, for
+/// drawing): from the canonical form after a rotation — ellipse, hyperbola (two branches),
+/// parabola, line pair, parallel lines, one line; nothing for a point or an empty conic.
+/// Lines and unbounded branches reach at least `radius` beyond `centre`.
+fn conic_polylines(coef: [f64; 6], centre: [f64; 2], radius: f64) -> Vec<Vec<[f64; 2]>> {
+    const N: usize = 72;
+    let scale = coef.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    if scale == 0.0 || !scale.is_finite() {
+        return Vec::new();
+    }
+    let [a, b, c, d, e, f] = coef.map(|v| v / scale);
+    let tol = 1e-9;
+    let theta = 0.5 * (2.0 * b).atan2(a - c);
+    let (s, co) = theta.sin_cos();
+    // p = X·(co, s) + Y·(−s, co)
+    let l1 = a * co * co + 2.0 * b * s * co + c * s * s;
+    let l2 = a * s * s - 2.0 * b * s * co + c * co * co;
+    let g1 = d * co + e * s;
+    let g2 = -d * s + e * co;
+    let to_p = |x: f64, y: f64| [x * co - y * s, x * s + y * co];
+    // the centre and the radius in the rotated frame: where the parameters must reach
+    let rc = [
+        centre[0] * co + centre[1] * s,
+        -centre[0] * s + centre[1] * co,
+    ];
+    let reach = |x0: f64, y0: f64| radius + ((x0 - rc[0]).powi(2) + (y0 - rc[1]).powi(2)).sqrt();
+    let line = |x0: f64, y0: f64, dx: f64, dy: f64| {
+        let r = reach(x0, y0);
+        vec![
+            to_p(x0 - r * dx, y0 - r * dy),
+            to_p(x0 + r * dx, y0 + r * dy),
+        ]
+    };
+    // the roots of l x² + 2g x + h = 0 (one for a double root)
+    let roots = |l: f64, g: f64, h: f64| -> Vec<f64> {
+        if l.abs() <= tol {
+            return if g.abs() > tol {
+                vec![-h / (2.0 * g)]
+            } else {
+                Vec::new()
+            };
+        }
+        let disc = g * g - l * h;
+        if disc.abs() <= tol {
+            vec![-g / l]
+        } else if disc > 0.0 {
+            let r = disc.sqrt();
+            vec![(-g - r) / l, (-g + r) / l]
+        } else {
+            Vec::new()
+        }
+    };
+    match (l1.abs() > tol, l2.abs() > tol) {
+        (true, true) => {
+            let (x0, y0) = (-g1 / l1, -g2 / l2);
+            let k = g1 * g1 / l1 + g2 * g2 / l2 - f;
+            let shift = |x: f64, y: f64| to_p(x0 + x, y0 + y);
+            if k.abs() <= tol {
+                if l1 * l2 > 0.0 {
+                    return Vec::new(); // a point
+                }
+                let m = (-l1 / l2).sqrt(); // Y = ±m X
+                let n = (1.0 + m * m).sqrt();
+                return vec![line(x0, y0, 1.0 / n, m / n), line(x0, y0, 1.0 / n, -m / n)];
+            }
+            if l1 * l2 > 0.0 {
+                if k / l1 < 0.0 {
+                    return Vec::new();
+                }
+                let (ra, rb) = ((k / l1).sqrt(), (k / l2).sqrt());
+                return vec![(0..=N)
+                    .map(|i| {
+                        let t = std::f64::consts::TAU * i as f64 / N as f64;
+                        shift(ra * t.cos(), rb * t.sin())
+                    })
+                    .collect()];
+            }
+            // a hyperbola: the transverse axis is the one where k / l > 0
+            let (ra, rb, swap) = if k / l1 > 0.0 {
+                ((k / l1).sqrt(), (-k / l2).sqrt(), false)
+            } else {
+                ((k / l2).sqrt(), (-k / l1).sqrt(), true)
+            };
+            let top = (reach(x0, y0) / ra.min(rb)).asinh() + 0.05;
+            [1.0, -1.0]
+                .iter()
+                .map(|&sign| {
+                    (0..=N)
+                        .map(|i| {
+                            let t = top * (2.0 * i as f64 / N as f64 - 1.0);
+                            let (u, v) = (sign * ra * t.cosh(), rb * t.sinh());
+                            if swap {
+                                shift(v, u)
+                            } else {
+                                shift(u, v)
+                            }
+                        })
+                        .collect()
+                })
+                .collect()
+        }
+        (true, false) | (false, true) => {
+            // l X² + 2g X + 2h Y + f = 0 with X the axis of the nonzero eigenvalue
+            let swap = l1.abs() <= tol;
+            let (l, g, h) = if swap { (l2, g2, g1) } else { (l1, g1, g2) };
+            let frame = |x: f64, y: f64| if swap { (y, x) } else { (x, y) };
+            if h.abs() > tol {
+                // a parabola Y = −(l X² + 2g X + f) / 2h, X around the vertex
+                let x0 = -g / l;
+                let (cx, _) = frame(rc[0], rc[1]);
+                let r = radius + (x0 - cx).abs();
+                let mut branch = Vec::with_capacity(2 * N + 1);
+                for i in 0..=2 * N {
+                    let x = x0 + r * (i as f64 / N as f64 - 1.0);
+                    let y = -(l * x * x + 2.0 * g * x + f) / (2.0 * h);
+                    let (u, v) = frame(x, y);
+                    branch.push(to_p(u, v));
+                }
+                vec![branch]
+            } else {
+                roots(l, g, f)
+                    .into_iter()
+                    .map(|x| {
+                        let (u, v) = frame(x, 0.0);
+                        let (du, dv) = frame(0.0, 1.0);
+                        line(u, v, du, dv)
+                    })
+                    .collect()
+            }
+        }
+        (false, false) => {
+            let n = (g1 * g1 + g2 * g2).sqrt();
+            if n <= tol {
+                return Vec::new();
+            }
+            // 2 g·X + f = 0: the point nearest the origin and the direction
+            let t = -f / (2.0 * n * n);
+            vec![line(g1 * t, g2 * t, -g2 / n, g1 / n)]
+        }
+    }
+}
+
+/// The sections of the surface `[x 1] M [x 1]ᵀ = 0` by `levels` planes `x_k = const` across
+/// the cube, for each axis `k`, clipped to the cube: 3D polylines.
+fn surface_sections(m: &[[f64; 4]; 4], cube: &Cube, levels: usize) -> Vec<Vec<[f64; 3]>> {
+    let mut out = Vec::new();
+    for k in 0..3 {
+        let (i, j) = match k {
+            0 => (1, 2),
+            1 => (0, 2),
+            _ => (0, 1),
+        };
+        for n in 0..levels {
+            let t = cube.lo(k) + (n as f64 + 0.5) / levels as f64 * 2.0 * cube.half;
+            let coef = [
+                m[i][i],
+                m[i][j],
+                m[j][j],
+                m[i][k] * t + m[i][3],
+                m[j][k] * t + m[j][3],
+                m[k][k] * t * t + 2.0 * m[k][3] * t + m[3][3],
+            ];
+            let centre = [cube.centre[i], cube.centre[j]];
+            for line in conic_polylines(coef, centre, cube.half * std::f64::consts::SQRT_2) {
+                let lifted: Vec<[f64; 3]> = line
+                    .iter()
+                    .map(|pq| {
+                        let mut p = [0.0; 3];
+                        p[i] = pq[0];
+                        p[j] = pq[1];
+                        p[k] = t;
+                        p
+                    })
+                    .collect();
+                out.extend(clip_polyline(&lifted, cube));
+            }
+        }
+    }
+    out
+}
+
+/// Appends the path data `M x,y L x,y …` of `line` seen by `camera`.
+fn push_path_data(out: &mut String, camera: &Camera, line: &[[f64; 3]]) {
+    for (n, p) in line.iter().enumerate() {
+        let (x, y) = camera.project(p);
+        let _ = write!(out, "{}{x:.1},{y:.1}", if n == 0 { "M" } else { " L" });
+    }
+}
+
+/// A short decimal: three significant decimals, scientific notation for very large or small.
+fn short(v: f64) -> String {
+    let v = v + 0.0;
+    if v != 0.0 && !(1e-3..1e5).contains(&v.abs()) {
+        return format!("{v:.2e}");
+    }
+    let s = format!("{v:.3}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".into()
+    } else {
+        s.into()
+    }
+}
+
+fn point_text(p: &[f64; 3]) -> String {
+    format!("({}, {}, {})", short(p[0]), short(p[1]), short(p[2]))
+}
+
+/// Page width of the panels.
+const WIDTH: f64 = 1000.0;
+/// The drawing rectangle of the curve panel.
+const DRAW: (f64, f64, f64, f64) = (10.0, 40.0, 600.0, 580.0);
+/// Left edge of the legend.
+const LEGEND_X: f64 = 625.0;
+/// Characters per legend line.
+const LEGEND_CHARS: usize = 52;
+/// Colours of the two surfaces' sections.
+const SURFACE_COLOURS: [&str; 2] = ["#6f8299", "#99826f"];
+/// Dashes of the two surfaces' sections (A solid, B dashed).
+const SURFACE_DASHES: [&str; 2] = ["none", "4,3"];
+
+/// The curve panel (module docs): the cube's edges with the axes' names and ranges, the
+/// surfaces' sections (`<path class="surface">`), one `<g class="piece">` per real piece of
+/// the curve in its own colour (clipped branches as paths, an isolated point as a dot), one
+/// `<g class="singular">` per real singular point in ℝ³ with its kind, and the legend.
+fn curve_panel(scene: &Scene) -> Panel {
+    let mut body = String::with_capacity(1 << 16);
+    push_text(
+        &mut body,
+        DRAW.0 + DRAW.2 / 2.0,
+        24.0,
+        "middle",
+        "title",
+        "The real intersection curve of A and B",
+    );
+    draw_scene(&mut body, scene, DRAW, true);
+    if scene.is_empty() {
+        let message = if scene.sampled.pieces.is_empty() {
+            "no real point: the real curve is empty"
+        } else {
+            "no real point in ℝ³: the real curve lies at infinity"
+        };
+        push_text(
+            &mut body,
+            DRAW.0 + DRAW.2 / 2.0,
+            DRAW.1 + 40.0,
+            "middle",
+            "empty",
+            message,
+        );
+    }
+    let legend_bottom = push_legend(&mut body, scene);
+    Panel {
+        width: WIDTH,
+        height: (DRAW.1 + DRAW.3 + 10.0).max(legend_bottom + 16.0),
+        style: SCENE_STYLE.to_owned()
+            + ".title{font-size:15px;font-weight:bold}.legend{font-size:12px}\
+               .legend-head{font-size:12px;font-weight:bold}",
+        body,
+    }
+}
+
+/// The style rules of [`draw_scene`]'s elements.
+pub(crate) const SCENE_STYLE: &str = ".axis{font-size:11px;fill:#555}\
+    .box line{stroke:#999;stroke-width:0.6}\
+    .surface{fill:none;stroke-width:0.7;stroke-opacity:0.45}\
+    .piece{stroke-width:2.2;stroke-linejoin:round}.branch{fill:none}.far{stroke-opacity:0.45}\
+    .isolated{stroke:#000;stroke-width:1}\
+    .singular-mark{fill:#fff;stroke:#000;stroke-width:1.5}\
+    .singular-label{font-size:11px;font-weight:bold}.empty{font-size:14px;fill:#b00}";
+
+/// Draws the scene into the page rectangle `rect`: the cube's edges (with the axes' names
+/// and ranges when `labels`), the surfaces' sections, the pieces and the singular points
+/// (labelled by kind when `labels`).
+fn draw_scene(body: &mut String, scene: &Scene, rect: (f64, f64, f64, f64), labels: bool) {
+    let cube = &scene.cube;
+    let camera = Camera::new(scene.camera, cube, rect);
+    // the cube: hidden edges would need depth; all are drawn thin
+    body.push_str("<g class=\"box\">\n");
+    for k in 0..8usize {
+        for i in 0..3 {
+            if k >> i & 1 == 0 {
+                let p = [0, 1, 2].map(|j| {
+                    if k >> j & 1 == 1 {
+                        cube.hi(j)
+                    } else {
+                        cube.lo(j)
+                    }
+                });
+                let mut q = p;
+                q[i] = cube.hi(i);
+                let ((x1, y1), (x2, y2)) = (camera.project(&p), camera.project(&q));
+                let _ = writeln!(
+                    body,
+                    "<line x1=\"{x1:.1}\" y1=\"{y1:.1}\" x2=\"{x2:.1}\" y2=\"{y2:.1}\"/>"
+                );
+            }
+        }
+    }
+    let lo = [0, 1, 2].map(|i| cube.lo(i));
+    for (i, name) in ["x", "y", "z"].iter().enumerate().filter(|_| labels) {
+        let mut end = lo;
+        end[i] = cube.hi(i);
+        let (x, y) = camera.project(&end);
+        let (x0, y0) = camera.project(&lo);
+        let label = format!("{name} → {}", short(cube.hi(i)));
+        // the label just beyond the edge's far end
+        let (dx, dy) = (x - x0, y - y0);
+        let len = (dx * dx + dy * dy).sqrt().max(1.0);
+        push_text(
+            body,
+            x + 14.0 * dx / len,
+            y + 14.0 * dy / len + 4.0,
+            "middle",
+            "axis",
+            &label,
+        );
+    }
+    body.push_str("</g>\n");
+
+    // the surfaces, faintly
+    for (k, m) in scene.surfaces.iter().enumerate() {
+        let sections = surface_sections(m, cube, 5);
+        let _ = write!(
+            body,
+            "<path class=\"surface\" data-surface=\"{}\" stroke=\"{}\" stroke-dasharray=\"{}\" d=\"",
+            ["A", "B"][k],
+            SURFACE_COLOURS[k],
+            SURFACE_DASHES[k]
+        );
+        for line in &sections {
+            push_path_data(body, &camera, line);
+            body.push(' ');
+        }
+        body.push_str("\"/>\n");
+    }
+
+    // the pieces
+    for (k, piece) in scene.sampled.pieces.iter().enumerate() {
+        let kind = if piece.isolated {
+            "point"
+        } else {
+            scene.curve.components[piece.component].kind.key()
+        };
+        let _ = writeln!(
+            body,
+            "<g class=\"piece\" data-piece=\"{k}\" data-kind=\"{kind}\" stroke=\"{}\" fill=\"{}\">",
+            colour(k),
+            colour(k)
+        );
+        let _ = write!(body, "<title>piece {}: {kind}</title>", k + 1);
+        for branch in &piece.affine.branches {
+            for line in clip_polyline(branch, cube) {
+                if piece.isolated || line.len() == 1 {
+                    let (x, y) = camera.project(&line[0]);
+                    let _ = writeln!(
+                        body,
+                        "<circle class=\"isolated\" cx=\"{x:.1}\" cy=\"{y:.1}\" r=\"6\"/>"
+                    );
+                } else {
+                    // lighter behind the centre plane: a depth cue
+                    for (behind, run) in camera.split_by_depth(&line) {
+                        let class = if behind { "branch far" } else { "branch" };
+                        let _ = write!(body, "<path class=\"{class}\" d=\"");
+                        push_path_data(body, &camera, &run);
+                        body.push_str("\"/>\n");
+                    }
+                }
+            }
+        }
+        body.push_str("</g>\n");
+    }
+
+    // the singular points in ℝ³
+    for (kind, at) in &scene.singular {
+        let Some(p) = at else { continue };
+        let (x, y) = camera.project(p);
+        let _ = write!(body, "<g class=\"singular\" data-kind=\"{kind}\">");
+        push_title(body, &format!("{kind} at {}", point_text(p)));
+        let _ = writeln!(
+            body,
+            "<rect class=\"singular-mark\" x=\"{:.1}\" y=\"{:.1}\" width=\"9\" height=\"9\" \
+             transform=\"rotate(45 {x:.1} {y:.1})\"/>",
+            x - 4.5,
+            y - 4.5
+        );
+        if labels {
+            push_text(body, x + 9.0, y - 7.0, "start", "singular-label", kind);
+        }
+        body.push_str("</g>\n");
+    }
+}
+
+/// The legend of the curve panel at the right; returns its bottom.
+fn push_legend(body: &mut String, scene: &Scene) -> f64 {
+    let mut y = 40.0;
+    // a legend entry wrapped into lines, continuation lines indented
+    let line = |y: &mut f64, body: &mut String, class: &str, indent: f64, text: &str| {
+        for (n, l) in wrap(text, LEGEND_CHARS).iter().enumerate() {
+            let x = LEGEND_X + indent + if n > 0 { 10.0 } else { 0.0 };
+            push_text(body, x, *y, "start", class, l);
+            *y += 15.0;
+        }
+    };
+    let names = scene
+        .view
+        .surfaces
+        .map(|s| s.map_or("zero form", |s| s.key()));
+    for k in 0..2 {
+        line(
+            &mut y,
+            body,
+            "legend",
+            0.0,
+            &format!("{}: {} = 0 ({})", ["A", "B"][k], scene.texts[k], names[k]),
+        );
+    }
+    let c = crate::output::ClassificationJson::from(&scene.curve.classification);
+    let class = match c.case {
+        Some(k) => format!("{} pencil, case {k}", c.pencil),
+        None => format!("{} pencil", c.pencil),
+    };
+    line(
+        &mut y,
+        body,
+        "legend",
+        0.0,
+        &format!(
+            "Class: {class}; complex type {}, real type {}",
+            c.complex_type.unwrap_or("?"),
+            c.real_type.unwrap_or("?")
+        ),
+    );
+    line(
+        &mut y,
+        body,
+        "legend",
+        0.0,
+        &format!(
+            "In ℝ³ ({} = 0 at infinity): {}",
+            scene.chart,
+            scene.view.summary()
+        ),
+    );
+    y += 6.0;
+    line(&mut y, body, "legend-head", 0.0, "Real pieces (colours):");
+    if scene.sampled.pieces.is_empty() {
+        line(
+            &mut y,
+            body,
+            "legend",
+            0.0,
+            "none: the curve has no real point",
+        );
+    }
+    for (k, piece) in scene.sampled.pieces.iter().enumerate() {
+        let component = &scene.curve.components[piece.component];
+        let what = if piece.isolated {
+            match piece.affine.branches.first().and_then(|b| b.first()) {
+                Some(p) => format!("isolated point {}", point_text(p)),
+                None => "isolated point at infinity".into(),
+            }
+        } else {
+            let mut s = component.kind.key().to_string();
+            if component.multiplicity > 1 {
+                let _ = write!(s, " (multiplicity {})", component.multiplicity);
+            }
+            if piece.affine.at_infinity {
+                s.push_str(", at infinity (not drawn)");
+            } else if piece.affine.bounded {
+                s.push_str(", bounded");
+            } else {
+                s.push_str(", unbounded, clipped");
+            }
+            s
+        };
+        let _ = writeln!(
+            body,
+            "<rect class=\"swatch\" x=\"{LEGEND_X}\" y=\"{:.1}\" width=\"18\" height=\"5\" fill=\"{}\"/>",
+            y - 6.0,
+            colour(k)
+        );
+        line(&mut y, body, "legend", 24.0, &format!("{}: {what}", k + 1));
+    }
+    let finite: Vec<_> = scene
+        .singular
+        .iter()
+        .filter_map(|(k, p)| p.map(|p| (k, p)))
+        .collect();
+    let at_infinity = scene.singular.len() - finite.len();
+    if !scene.singular.is_empty() {
+        y += 6.0;
+        line(&mut y, body, "legend-head", 0.0, "Singular points (◇):");
+        for (kind, p) in &finite {
+            line(
+                &mut y,
+                body,
+                "legend",
+                0.0,
+                &format!("{kind} at {}", point_text(p)),
+            );
+        }
+        if at_infinity > 0 {
+            line(
+                &mut y,
+                body,
+                "legend",
+                0.0,
+                &format!("{at_infinity} at infinity (not drawn)"),
+            );
+        }
+    }
+    y += 6.0;
+    let cube = &scene.cube;
+    let range = |i: usize| format!("[{}, {}]", short(cube.lo(i)), short(cube.hi(i)));
+    let around = match scene.region {
+        Region::Bounded => "around the bounded pieces, isolated and singular points",
+        Region::Unbounded => "around the unbounded branches' points nearest the origin",
+        Region::Surfaces => "around the surfaces (no real point in ℝ³)",
+    };
+    let unbounded = scene
+        .sampled
+        .pieces
+        .iter()
+        .any(|p| !p.isolated && !p.affine.bounded && !p.affine.at_infinity);
+    line(
+        &mut y,
+        body,
+        "legend",
+        0.0,
+        &format!(
+            "Box {} × {} × {}, {around}{}.",
+            range(0),
+            range(1),
+            range(2),
+            if unbounded {
+                "; unbounded branches are clipped to it"
+            } else {
+                ""
+            }
+        ),
+    );
+    line(
+        &mut y,
+        body,
+        "legend",
+        0.0,
+        "Faint lines: sections of A (solid) and B (dashed) by planes x, y, z = const. Curves \
+         are lighter behind the plane through the box's centre facing the viewer.",
+    );
+    line(
+        &mut y,
+        body,
+        "legend",
+        0.0,
+        &format!(
+            "Orthographic view from azimuth {}°, elevation {}°.",
+            short(scene.camera.azimuth),
+            short(scene.camera.elevation)
+        ),
+    );
+    y
+}
+
+/// The eigenvalues of the symmetric matrix `m`, increasing (cyclic Jacobi rotations until the
+/// off-diagonal part is below `10⁻²⁸` of the whole, at most 64 sweeps).
+fn symmetric_eigenvalues(mut m: [[f64; 4]; 4]) -> [f64; 4] {
+    let total: f64 = m.iter().flatten().map(|v| v * v).sum();
+    for _ in 0..64 {
+        let off: f64 = (0..4)
+            .flat_map(|i| (0..4).filter(move |&j| j != i).map(move |j| (i, j)))
+            .map(|(i, j)| m[i][j] * m[i][j])
+            .sum();
+        if off <= 1e-28 * total || off == 0.0 {
+            break;
+        }
+        for p in 0..4 {
+            for q in p + 1..4 {
+                if m[p][q] == 0.0 {
+                    continue;
+                }
+                let theta = (m[q][q] - m[p][p]) / (2.0 * m[p][q]);
+                let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
+                let c = 1.0 / (t * t + 1.0).sqrt();
+                let s = t * c;
+                let apq = m[p][q];
+                m[p][p] -= t * apq;
+                m[q][q] += t * apq;
+                m[p][q] = 0.0;
+                m[q][p] = 0.0;
+                #[allow(clippy::needless_range_loop)] // rows and columns of one matrix
+                for r in 0..4 {
+                    if r != p && r != q {
+                        let (arp, arq) = (m[r][p], m[r][q]);
+                        m[r][p] = c * arp - s * arq;
+                        m[p][r] = m[r][p];
+                        m[r][q] = c * arq + s * arp;
+                        m[q][r] = m[r][q];
+                    }
+                }
+            }
+        }
+    }
+    let mut e = [m[0][0], m[1][1], m[2][2], m[3][3]];
+    e.sort_by(f64::total_cmp);
+    e
+}
+
+/// Round tick values in `[lo, hi]`: steps of 1, 2 or 5 times a power of ten, about six.
+fn nice_ticks(lo: f64, hi: f64) -> Vec<f64> {
+    let span = hi - lo;
+    if span.is_nan() || span <= 0.0 || !span.is_finite() {
+        return Vec::new();
+    }
+    let raw = span / 6.0;
+    let power = 10f64.powf(raw.log10().floor());
+    let step = [1.0, 2.0, 5.0, 10.0]
+        .iter()
+        .map(|m| m * power)
+        .find(|s| *s >= raw)
+        .unwrap_or(10.0 * power);
+    let first = (lo / step).ceil() as i64;
+    let last = (hi / step).floor() as i64;
+    (first..=last).map(|k| k as f64 * step).collect()
+}
+
+/// `s` with `A = s·P`, `P` the primitive integer matrix of `q` (the scaling the
+/// classification works with).
+fn integer_scale(q: &Quadric) -> RBig {
+    let p = q.integer_matrix().entries();
+    p.iter()
+        .flatten()
+        .zip(q.matrix().iter().flatten())
+        .find(|(p, _)| **p != IBig::ZERO)
+        .map_or(RBig::ONE, |(p, m)| m.clone() / RBig::from(p.clone()))
+}
+
+/// A real root of `det(λA − B)` for the picture.
+struct RootMark {
+    /// Its position.
+    at: f64,
+    /// Its label: `λ = p/q`, or `λ ≈ d (algebraic)`.
+    label: String,
+    /// The tooltip: exact value, multiplicity, Jordan blocks, inertia.
+    title: String,
+}
+
+/// The eigencurve panel: the four sorted eigenvalues of `λA − B` as functions of `λ` (the
+/// curve `det(λA − B − uI) = 0`) over a window holding the real roots of `det(λA − B)`; in
+/// each region the index of `λA − B − uI` — the number of its positive eigenvalues, i.e. of
+/// branches above the point (Tu et al. 2009, §2.4: `index(D)` is the number of positive
+/// eigenvalues, and on `u = 0` it is the index function `Id(λ)`); on `u = 0`, one
+/// `<circle class="root-mark">` per real root of `det(λA − B)` from the exact pencil analysis
+/// (`qsic::classify::analyze_pencil`, scaled back from the classification's primitive integer
+/// matrices to `A`, `B` as given) and, between them, `Id(λ)` from the exact inertia
+/// (`<text class="index-axis">`).
+pub fn eigencurve_panel(a: &Quadric, b: &Quadric) -> Panel {
+    let (fa, fb) = (
+        a.matrix().clone().map(|r| r.map(|v| v.to_f64().value())),
+        b.matrix().clone().map(|r| r.map(|v| v.to_f64().value())),
+    );
+    let analysis = analyze_pencil(a, b);
+    // λ for A, B as given = ratio · λ for the primitive integer matrices
+    let ratio = integer_scale(b) / integer_scale(a);
+    let ratio_f = ratio.to_f64().value();
+    let mut roots: Vec<RootMark> = Vec::new();
+    let mut at_infinity = None;
+    if let Some(an) = &analysis {
+        for r in &an.real_roots {
+            let detail = format!(
+                "multiplicity {}, Jordan blocks {:?}, inertia (+{}, −{}, 0: {})",
+                r.multiplicity, r.blocks, r.inertia.positive, r.inertia.negative, r.inertia.zero
+            );
+            match &r.point {
+                PencilPoint::Finite(alpha) => {
+                    let (label, exact) = match alpha.as_rational() {
+                        Some(v) => {
+                            let v = &ratio * v;
+                            (format!("λ = {v}"), format!("λ = {v}"))
+                        }
+                        None => {
+                            let iv = alpha.interval();
+                            (
+                                format!("λ ≈ {:.6} (algebraic)", alpha.to_f64() * ratio_f),
+                                format!(
+                                    "λ = {ratio}·α, α the root of {} in [{}, {}]",
+                                    alpha.poly(),
+                                    iv.lo(),
+                                    iv.hi()
+                                ),
+                            )
+                        }
+                    };
+                    roots.push(RootMark {
+                        at: alpha.to_f64() * ratio_f,
+                        label,
+                        title: format!("{exact}: {detail}"),
+                    });
+                }
+                PencilPoint::Infinity => at_infinity = Some(detail),
+            }
+        }
+    }
+    // the λ window
+    let (lo, hi) = match (roots.first(), roots.last()) {
+        (Some(first), Some(last)) if last.at > first.at => {
+            let m = 0.35 * (last.at - first.at);
+            (first.at - m, last.at + m)
+        }
+        (Some(r), _) => {
+            let m = (r.at.abs() / 2.0).max(1.0);
+            (r.at - m, r.at + m)
+        }
+        _ => (-3.0, 3.0),
+    };
+    const COLUMNS: usize = 480;
+    let lambdas: Vec<f64> = (0..=COLUMNS)
+        .map(|i| lo + (hi - lo) * i as f64 / COLUMNS as f64)
+        .collect();
+    let member = |l: f64| -> [[f64; 4]; 4] {
+        std::array::from_fn(|i| std::array::from_fn(|j| l * fa[i][j] - fb[i][j]))
+    };
+    let eigen: Vec<[f64; 4]> = lambdas
+        .iter()
+        .map(|&l| symmetric_eigenvalues(member(l)))
+        .collect();
+    let finite = |v: &f64| v.is_finite();
+    let umin = eigen
+        .iter()
+        .flatten()
+        .copied()
+        .filter(finite)
+        .fold(0.0, f64::min);
+    let umax = eigen
+        .iter()
+        .flatten()
+        .copied()
+        .filter(finite)
+        .fold(0.0, f64::max);
+    let pad = 0.08 * (umax - umin).max(1e-9);
+    let (ulo, uhi) = (umin - pad, umax + pad);
+
+    // the plot rectangle
+    let (left, top, width, height) = (80.0, 50.0, 860.0, 380.0);
+    let px = |l: f64| left + (l - lo) / (hi - lo) * width;
+    let py = |u: f64| top + (uhi - u) / (uhi - ulo) * height;
+    let mut body = String::with_capacity(1 << 15);
+    push_text(
+        &mut body,
+        WIDTH / 2.0,
+        28.0,
+        "middle",
+        "title",
+        "Eigenvalue curve det(λA − B − uI) = 0 and the index of λA − B − uI in each region",
+    );
+    let _ = writeln!(
+        body,
+        "<rect class=\"frame\" x=\"{left}\" y=\"{top}\" width=\"{width}\" height=\"{height}\"/>"
+    );
+    // ticks and the axes
+    for t in nice_ticks(lo, hi) {
+        let x = px(t);
+        let _ = writeln!(
+            body,
+            "<line class=\"grid\" x1=\"{x:.1}\" y1=\"{top}\" x2=\"{x:.1}\" y2=\"{:.1}\"/>",
+            top + height
+        );
+        push_text(
+            &mut body,
+            x,
+            top + height + 16.0,
+            "middle",
+            "tick",
+            &short(t),
+        );
+    }
+    for t in nice_ticks(ulo, uhi) {
+        let y = py(t);
+        let _ = writeln!(
+            body,
+            "<line class=\"grid\" x1=\"{left}\" y1=\"{y:.1}\" x2=\"{:.1}\" y2=\"{y:.1}\"/>",
+            left + width
+        );
+        push_text(&mut body, left - 6.0, y + 4.0, "end", "tick", &short(t));
+    }
+    let y0 = py(0.0);
+    let _ = writeln!(
+        body,
+        "<line class=\"axis-line\" x1=\"{left}\" y1=\"{y0:.1}\" x2=\"{:.1}\" y2=\"{y0:.1}\"/>",
+        left + width
+    );
+    if lo < 0.0 && 0.0 < hi {
+        let x0 = px(0.0);
+        let _ = writeln!(
+            body,
+            "<line class=\"axis-line\" x1=\"{x0:.1}\" y1=\"{top}\" x2=\"{x0:.1}\" y2=\"{:.1}\"/>",
+            top + height
+        );
+    }
+    push_text(
+        &mut body,
+        left + width + 12.0,
+        y0 + 4.0,
+        "start",
+        "axis-name",
+        "λ",
+    );
+    push_text(
+        &mut body,
+        left - 40.0,
+        top + 4.0,
+        "middle",
+        "axis-name",
+        "u",
+    );
+
+    // the four branches
+    for k in 0..4 {
+        body.push_str("<path class=\"eigen-branch\" d=\"");
+        for (n, (l, e)) in lambdas.iter().zip(&eigen).enumerate() {
+            let _ = write!(
+                body,
+                "{}{:.1},{:.1}",
+                if n == 0 { "M" } else { " L" },
+                px(*l),
+                py(e[k])
+            );
+        }
+        body.push_str("\"/>\n");
+    }
+
+    // the index in the regions crossed by a column in the middle of each arc
+    let mut ends: Vec<f64> = vec![lo];
+    ends.extend(roots.iter().map(|r| r.at));
+    ends.push(hi);
+    let exact_index: Vec<Option<u8>> = match &analysis {
+        Some(an) if an.arcs.len() == ends.len() - 1 => {
+            an.arcs.iter().map(|(_, i)| Some(i.positive)).collect()
+        }
+        _ => vec![None; ends.len() - 1],
+    };
+    let axis_x = (lo < 0.0 && 0.0 < hi).then(|| px(0.0));
+    for (w, exact) in ends.windows(2).zip(&exact_index) {
+        let mid = (w[0] + w[1]) / 2.0;
+        // off the u axis when the arc's middle falls on it
+        let x = match axis_x {
+            Some(ax) if (px(mid) - ax).abs() < 12.0 => ax + 14.0,
+            _ => px(mid),
+        };
+        let e = symmetric_eigenvalues(member(mid));
+        // gaps between consecutive eigenvalues, from below: index 4, 3, 2, 1, 0
+        let mut bounds = vec![ulo];
+        bounds.extend(e.iter().map(|v| v.clamp(ulo, uhi)));
+        bounds.push(uhi);
+        for (g, gap) in bounds.windows(2).enumerate() {
+            let index = 4 - g;
+            let (ylo, yhi) = (py(gap[0]), py(gap[1]));
+            let holds_zero = gap[0] < 0.0 && 0.0 < gap[1];
+            let (class, text) = match (holds_zero, exact) {
+                (true, Some(i)) => ("index-axis", i.to_string()),
+                _ => ("index", index.to_string()),
+            };
+            let y = if holds_zero {
+                // beside the axis, in the gap
+                let above = (y0 - yhi).abs() > (ylo - y0).abs();
+                if above {
+                    y0 - 6.0
+                } else {
+                    y0 + 16.0
+                }
+            } else {
+                (ylo + yhi) / 2.0 + 5.0
+            };
+            if (ylo - yhi).abs() >= 18.0 || holds_zero {
+                push_text(&mut body, x, y, "middle", class, &text);
+            }
+        }
+    }
+
+    // the roots
+    let mut rows: Vec<f64> = Vec::new();
+    for r in &roots {
+        let x = px(r.at);
+        body.push_str("<g class=\"root\">");
+        push_title(&mut body, &r.title);
+        let _ = writeln!(
+            body,
+            "<circle class=\"root-mark\" cx=\"{x:.1}\" cy=\"{y0:.1}\" r=\"4.5\"/>"
+        );
+        // labels below the frame, staggered when close
+        let w = r.label.chars().count() as f64 * 6.5;
+        let row = rows
+            .iter()
+            .position(|&end| end + 8.0 <= x - w / 2.0)
+            .unwrap_or(rows.len());
+        if row == rows.len() {
+            rows.push(x + w / 2.0);
+        } else {
+            rows[row] = x + w / 2.0;
+        }
+        let ly = top + height + 36.0 + 16.0 * row as f64;
+        let _ = writeln!(
+            body,
+            "<line class=\"leader\" x1=\"{x:.1}\" y1=\"{y0:.1}\" x2=\"{x:.1}\" y2=\"{:.1}\"/>",
+            ly - 12.0
+        );
+        push_text(&mut body, x, ly, "middle", "root-label", &r.label);
+        body.push_str("</g>\n");
+    }
+
+    // the legend
+    let mut y = top + height + 46.0 + 16.0 * rows.len() as f64;
+    let mut notes = vec![
+        "Curves: the eigenvalues u of λA − B (A, B as given). Numbers: the index of λA − B − uI, \
+         its number of positive eigenvalues (Tu et al. 2009, §2.4), i.e. the number of branches \
+         above; bold on u = 0: the index function Id(λ) from the exact inertia."
+            .to_string(),
+        "Dots on u = 0: the real roots of det(λA − B), exact (pencil analysis).".to_string(),
+    ];
+    match (&analysis, &at_infinity) {
+        (None, _) => notes.push(
+            "det(λA − B) vanishes identically (a singular pencil, or a single quadric): no roots \
+             to mark."
+                .into(),
+        ),
+        (Some(_), Some(detail)) => {
+            notes.push(format!("Also a root at λ = ∞ (A singular): {detail}."))
+        }
+        (Some(_), None) => {}
+    }
+    for note in notes {
+        for l in wrap(&note, 140) {
+            push_text(&mut body, left, y, "start", "legend", &l);
+            y += 15.0;
+        }
+    }
+    Panel {
+        width: WIDTH,
+        height: y + 10.0,
+        style: ".frame{fill:none;stroke:#333}.grid{stroke:#e4e4e4}.tick{font-size:10px;fill:#555}\
+                .axis-line{stroke:#000;stroke-width:1}.axis-name{font-size:14px;font-style:italic}\
+                .eigen-branch{fill:none;stroke:#4e79a7;stroke-width:1.8}\
+                .index{font-size:13px;fill:#666}.index-axis{font-size:14px;font-weight:bold}\
+                .root-mark{fill:#e15759;stroke:#000}.root-label{font-size:11px}\
+                .leader{stroke:#999;stroke-dasharray:2,2}"
+            .into(),
+        body,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use qsic_algebra::testing::SplitMix;
+
+    /// Uniform in `[0, 1)`.
+    fn unit(rng: &mut SplitMix) -> f64 {
+        (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    fn conic_at(c: &[f64; 6], p: &[f64; 2]) -> f64 {
+        let [a, b, cc, d, e, f] = *c;
+        a * p[0] * p[0]
+            + 2.0 * b * p[0] * p[1]
+            + cc * p[1] * p[1]
+            + 2.0 * d * p[0]
+            + 2.0 * e * p[1]
+            + f
+    }
+
+    /// Every sampled point lies on its conic, in the expected number of polylines, for each
+    /// canonical type moved by a random rotation and translation; lines and unbounded
+    /// branches reach the requested radius.
+    #[test]
+    fn conic_sections_lie_on_the_conic() {
+        // (canonical l1 X² + l2 Y² + 2 g1 X + 2 g2 Y + f, polylines)
+        let types: [([f64; 5], usize); 9] = [
+            ([1.0, 4.0, 0.0, 0.0, -4.0], 1),  // ellipse
+            ([1.0, -1.0, 0.0, 0.0, -1.0], 2), // hyperbola
+            ([-1.0, 1.0, 0.0, 0.0, -1.0], 2), // hyperbola, other axis
+            ([1.0, -4.0, 0.0, 0.0, 0.0], 2),  // line pair
+            ([1.0, 0.0, 0.0, -1.0, 0.0], 1),  // parabola
+            ([1.0, 0.0, 0.0, 0.0, -1.0], 2),  // parallel lines
+            ([1.0, 0.0, 0.0, 0.0, 0.0], 1),   // double line
+            ([0.0, 0.0, 1.0, 0.5, -1.0], 1),  // one line
+            ([1.0, 1.0, 0.0, 0.0, 1.0], 0),   // empty
+        ];
+        let mut rng = SplitMix(7);
+        for (k, (t, count)) in types.iter().enumerate() {
+            for _ in 0..8 {
+                let angle = unit(&mut rng) * 6.0;
+                let shift = [unit(&mut rng) * 4.0 - 2.0, unit(&mut rng) * 4.0 - 2.0];
+                let (s, c) = f64::sin_cos(angle);
+                // X = c(p − h) + s(q − k), Y = −s(p − h) + c(q − k)
+                let [l1, l2, g1, g2, f] = *t;
+                let a = l1 * c * c + l2 * s * s;
+                let b = (l1 - l2) * c * s;
+                let cc = l1 * s * s + l2 * c * c;
+                let d0 = g1 * c - g2 * s;
+                let e0 = g1 * s + g2 * c;
+                // translate: p → p − h
+                let (h, kk) = (shift[0], shift[1]);
+                let d = d0 - a * h - b * kk;
+                let e = e0 - b * h - cc * kk;
+                let f1 =
+                    a * h * h + 2.0 * b * h * kk + cc * kk * kk - 2.0 * d0 * h - 2.0 * e0 * kk + f;
+                let coef = [a, b, cc, d, e, f1];
+                let lines = conic_polylines(coef, [0.0, 0.0], 5.0);
+                assert_eq!(lines.len(), *count, "type {k}: {coef:?}");
+                for line in &lines {
+                    assert!(line.len() >= 2);
+                    for p in line {
+                        let scale = 1.0 + p[0] * p[0] + p[1] * p[1];
+                        assert!(conic_at(&coef, p).abs() < 1e-8 * scale, "type {k}: {p:?}");
+                    }
+                }
+                if k != 0 {
+                    // unbounded: the far points leave the disc of radius 5
+                    let far = lines
+                        .iter()
+                        .flatten()
+                        .map(|p| (p[0] * p[0] + p[1] * p[1]).sqrt())
+                        .fold(0.0, f64::max);
+                    assert!(*count == 0 || far >= 5.0, "type {k}: reaches {far}");
+                } else {
+                    let l = &lines[0];
+                    assert!((l[0][0] - l[l.len() - 1][0]).abs() < 1e-12, "closed");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn clipping_keeps_the_parts_inside() {
+        let cube = Cube {
+            centre: [0.0; 3],
+            half: 1.0,
+        };
+        // a line through the cube along x: one part from x = −1 to 1
+        let parts = clip_polyline(&[[-3.0, 0.0, 0.0], [3.0, 0.0, 0.0]], &cube);
+        assert_eq!(parts, vec![vec![[-1.0, 0.0, 0.0], [1.0, 0.0, 0.0]]]);
+        // in, out, in again: two parts; outside entirely: none
+        let zig = [
+            [0.0, 0.0, 0.0],
+            [0.5, 0.0, 0.0],
+            [3.0, 0.0, 0.0],
+            [0.5, 0.5, 0.0],
+            [0.0, 0.5, 0.0],
+        ];
+        let parts = clip_polyline(&zig, &cube);
+        assert_eq!(parts.len(), 2);
+        assert_eq!(
+            parts[0],
+            vec![[0.0, 0.0, 0.0], [0.5, 0.0, 0.0], [1.0, 0.0, 0.0]]
+        );
+        assert_eq!(parts[1].last(), Some(&[0.0, 0.5, 0.0]));
+        assert!(clip_polyline(&[[2.0, 2.0, 0.0], [3.0, -2.0, 0.0]], &cube).is_empty());
+        // every point of every part lies in the cube, and a non-finite point cuts the line
+        let parts = clip_polyline(
+            &[
+                [0.0; 3],
+                [f64::INFINITY, 0.0, 0.0],
+                [0.2, 0.2, 0.2],
+                [0.3, 0.2, 0.2],
+            ],
+            &cube,
+        );
+        assert_eq!(parts, vec![vec![[0.2, 0.2, 0.2], [0.3, 0.2, 0.2]]]);
+        assert_eq!(clip_polyline(&[[5.0, 0.0, 0.0]], &cube).len(), 0);
+        assert_eq!(clip_polyline(&[[0.5, 0.0, 0.0]], &cube).len(), 1);
+    }
+
+    /// Eigenvalues of `R diag(e) Rᵀ` with `R` a product of random plane rotations are `e`.
+    #[test]
+    fn jacobi_recovers_known_eigenvalues() {
+        let mut rng = SplitMix(3);
+        for _ in 0..50 {
+            let mut e = [0.0; 4];
+            for v in &mut e {
+                *v = (unit(&mut rng) - 0.5) * 20.0;
+            }
+            e[3] = e[1]; // a double eigenvalue too
+            let mut m = [[0.0; 4]; 4];
+            for i in 0..4 {
+                m[i][i] = e[i];
+            }
+            for _ in 0..6 {
+                let p = (rng.next_u64() % 4) as usize;
+                let q = (p + 1 + (rng.next_u64() % 3) as usize) % 4;
+                let (s, c) = f64::sin_cos(unit(&mut rng) * 6.0);
+                // m ← G m Gᵀ with G the rotation in the (p, q) plane
+                let mut g: [[f64; 4]; 4] =
+                    std::array::from_fn(|i| std::array::from_fn(|j| f64::from(u8::from(i == j))));
+                g[p][p] = c;
+                g[q][q] = c;
+                g[p][q] = -s;
+                g[q][p] = s;
+                let gm: [[f64; 4]; 4] = std::array::from_fn(|i| {
+                    std::array::from_fn(|j| (0..4).map(|k| g[i][k] * m[k][j]).sum())
+                });
+                m = std::array::from_fn(|i| {
+                    std::array::from_fn(|j| (0..4).map(|k| gm[i][k] * g[j][k]).sum())
+                });
+            }
+            let mut want = e;
+            want.sort_by(f64::total_cmp);
+            let got = symmetric_eigenvalues(m);
+            for (g, w) in got.iter().zip(&want) {
+                assert!((g - w).abs() < 1e-9, "{got:?} {want:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn ticks_are_round_and_inside() {
+        assert_eq!(nice_ticks(0.0, 6.0), [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+        assert_eq!(nice_ticks(-1.3, 1.3), [-1.0, -0.5, 0.0, 0.5, 1.0]);
+        assert!(nice_ticks(1.0, 1.0).is_empty());
+        let t = nice_ticks(-0.0123, 0.0456);
+        assert!(t.len() >= 4 && t.iter().all(|v| (-0.0123..=0.0456).contains(v)));
+    }
+
+    /// The camera maps the cube's centre to the rectangle's centre and keeps every corner in it;
+    /// looking down the z axis, x goes right and y up.
+    #[test]
+    fn camera_fits_the_cube() {
+        let cube = Cube {
+            centre: [1.0, 2.0, 3.0],
+            half: 2.0,
+        };
+        let rect = (10.0, 20.0, 300.0, 200.0);
+        for view in [
+            View::default(),
+            View {
+                azimuth: -120.0,
+                elevation: 80.0,
+            },
+        ] {
+            let cam = Camera::new(view, &cube, rect);
+            let (x, y) = cam.project(&cube.centre);
+            assert!((x - 160.0).abs() < 1e-9 && (y - 120.0).abs() < 1e-9);
+            for k in 0..8 {
+                let p = [0, 1, 2].map(|i| {
+                    if k >> i & 1 == 1 {
+                        cube.hi(i)
+                    } else {
+                        cube.lo(i)
+                    }
+                });
+                let (x, y) = cam.project(&p);
+                assert!(
+                    (10.0..=310.0).contains(&x) && (20.0..=220.0).contains(&y),
+                    "{x} {y}"
+                );
+            }
+        }
+        let top = Camera::new(
+            View {
+                azimuth: -90.0,
+                elevation: 90.0,
+            },
+            &cube,
+            rect,
+        );
+        let (x0, y0) = top.project(&cube.centre);
+        let (x1, _) = top.project(&[2.0, 2.0, 3.0]);
+        let (_, y1) = top.project(&[1.0, 3.0, 3.0]);
+        assert!(x1 > x0 && y1 < y0);
+    }
+
+    /// A line through the cube's centre plane splits at a point of depth zero into a front
+    /// and a back run that share it; the runs keep every original point in order.
+    #[test]
+    fn depth_split_at_the_centre_plane() {
+        let cube = Cube {
+            centre: [0.0; 3],
+            half: 1.0,
+        };
+        let cam = Camera::new(View::default(), &cube, (0.0, 0.0, 100.0, 100.0));
+        let t = cam.toward;
+        let line: Vec<[f64; 3]> = (0..=10)
+            .map(|k| {
+                let s = k as f64 / 5.0 - 1.0 + 0.05;
+                [t[0] * s + 0.1, t[1] * s, t[2] * s]
+            })
+            .collect();
+        let runs = cam.split_by_depth(&line);
+        assert_eq!(runs.len(), 2);
+        assert!(runs[0].0 && !runs[1].0, "behind first, then in front");
+        let shared = runs[0].1.last().unwrap();
+        assert_eq!(Some(shared), runs[1].1.first());
+        assert!(cam.depth(shared).abs() < 1e-12);
+        let kept: Vec<[f64; 3]> = runs
+            .iter()
+            .flat_map(|(_, r)| r.iter().copied())
+            .filter(|p| cam.depth(p).abs() > 1e-12)
+            .collect();
+        assert_eq!(kept, line);
+        assert_eq!(cam.split_by_depth(&line[6..]).len(), 1);
+    }
+
+    #[test]
+    fn short_numbers() {
+        assert_eq!(short(2.0), "2");
+        assert_eq!(short(-0.0), "0");
+        assert_eq!(short(1.23456), "1.235");
+        assert_eq!(short(-1e-7), "-1.00e-7");
+        assert_eq!(short(123456.0), "1.23e5");
+    }
+
+    /// The ellipsoid's box from the float matrix: a sphere of radius 2 at (1, 0, 0), an
+    /// ellipsoid with semi-axes 1, 2, 3, and none for a cylinder or an empty ellipsoid.
+    #[test]
+    fn ellipsoid_boxes() {
+        let m = |q: &str| float_matrix(qsic::io::parse_quadric(q).unwrap().matrix());
+        let (lo, hi) = ellipsoid_box(&m("(x-1)^2+y^2+z^2-4")).unwrap();
+        for (got, want) in lo.iter().chain(&hi).zip([-1.0, -2.0, -2.0, 3.0, 2.0, 2.0]) {
+            assert!((got - want).abs() < 1e-12, "{lo:?} {hi:?}");
+        }
+        let (lo, hi) = ellipsoid_box(&m("36*x^2+9*y^2+4*z^2-36")).unwrap();
+        for (got, want) in lo.iter().chain(&hi).zip([-1.0, -2.0, -3.0, 1.0, 2.0, 3.0]) {
+            assert!((got - want).abs() < 1e-12, "{lo:?} {hi:?}");
+        }
+        assert!(ellipsoid_box(&m("x^2+y^2-1")).is_none());
+        assert!(ellipsoid_box(&m("x^2+y^2+z^2+1")).is_none());
+    }
+}
