@@ -83,14 +83,22 @@ impl Surd {
 /// unit vector in decimals.
 #[derive(Clone, Debug)]
 pub struct Direction {
-    /// An exact direction vector, `None` when only decimals are given.
+    /// An exact direction vector, its first nonzero coordinate `±1`; `None` when only decimals
+    /// are given.
     pub exact: Option<[Number; 3]>,
     /// The unit vector (decimals).
     pub unit: [f64; 3],
 }
 
 impl Direction {
-    fn of(v: [Number; 3]) -> Direction {
+    /// `v` scaled so that its first nonzero coordinate is `±1` (`+1` unless `oriented`, which
+    /// keeps the orientation).
+    fn of(v: [Number; 3], oriented: bool) -> Direction {
+        let v = match v.iter().find(|c| !c.is_zero()).and_then(Field::inv) {
+            Some(k) if oriented && k.sign() == Sign::Negative => scaled(&v, &k.neg()),
+            Some(k) => scaled(&v, &k),
+            None => v,
+        };
         let v = plain3(&v);
         let unit = unit(v.each_ref().map(approx));
         Direction {
@@ -353,7 +361,7 @@ fn parabola(
     let focal_length2 = div(&bperp2.mul(&bperp2), &int(16).mul(&dd))?;
     Ok(ConicShape::Parabola {
         vertex: plain3(&vertex),
-        axis: Direction::of(d),
+        axis: Direction::of(d, true),
         focal_length2: plain(&focal_length2),
     })
 }
@@ -442,7 +450,7 @@ fn central(
                 } else {
                     (m12.neg(), m11)
                 };
-                Direction::of(combine(&za, va, &zb, vb))
+                Direction::of(combine(&za, va, &zb, vb), false)
             }
             None => Direction {
                 exact: None,

@@ -17,9 +17,11 @@
 
 mod conic;
 mod curve;
+mod view;
 
 pub use conic::{affine_conic, approx, AffineConic, Axis, ConicShape, Direction, Surd};
 pub use curve::{affine_curve, AffineComponent, AffineCurve, AffineSingularPoint};
+pub use view::affine_view_of_curve;
 
 use crate::error::Error;
 use crate::param::{Number, Point};
