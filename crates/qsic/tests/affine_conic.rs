@@ -104,7 +104,10 @@ fn exact(d: &qsic::affine::Direction) -> &[Number; 3] {
 fn a_sphere_cut_by_planes_gives_circles_of_known_centre_and_radius() {
     // x² + y² + z² = 25: z = 3 (r² 16), z = −4 (r² 9); x + y + z = 3 at distance √3 (r² 22,
     // centre (1, 1, 1)); x = y through the centre (r² 25)
-    let cases: [(&str, [([(i64, i64); 3], i64, [(i64, i64); 3]); 2]); 2] = [
+    // (planes, [(centre, radius², normal)])
+    type Vector = [(i64, i64); 3];
+    type Circle = (Vector, i64, Vector);
+    let cases: [(&str, [Circle; 2]); 2] = [
         (
             "(z-3)*(z+4)",
             [
