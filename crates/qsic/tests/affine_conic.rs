@@ -625,7 +625,55 @@ fn check_conic(
                         major.semi_axis2.to_f64()
                     );
                 }
-                ConicShape::Hyperbola { transverse, .. } => {
+                ConicShape::Hyperbola {
+                    transverse,
+                    conjugate,
+                    ..
+                } => {
+                    // the asymptotes: the directions X(u) at the roots of W make with the
+                    // axes the angle whose tan² is b²/a²
+                    let w = &xf[3];
+                    let (c0, c1, c2) = (
+                        w[0],
+                        w.get(1).copied().unwrap_or(0.0),
+                        w.get(2).copied().unwrap_or(0.0),
+                    );
+                    let roots: Vec<Vec<f64>> = if c2 == 0.0 {
+                        // one root at u = ∞: the leading coefficients
+                        vec![
+                            (0..3)
+                                .map(|i| xf[i].get(2).copied().unwrap_or(0.0))
+                                .collect(),
+                            {
+                                let u = -c0 / c1;
+                                (0..3)
+                                    .map(|i| xf[i].iter().rev().fold(0.0, |a, c| a * u + c))
+                                    .collect()
+                            },
+                        ]
+                    } else {
+                        let d = (c1 * c1 - 4.0 * c0 * c2).sqrt();
+                        [(-c1 + d) / (2.0 * c2), (-c1 - d) / (2.0 * c2)]
+                            .iter()
+                            .map(|&u| {
+                                (0..3)
+                                    .map(|i| xf[i].iter().rev().fold(0.0, |a, c| a * u + c))
+                                    .collect()
+                            })
+                            .collect()
+                    };
+                    let ratio = conjugate.semi_axis2.to_f64() / transverse.semi_axis2.to_f64();
+                    for v in roots {
+                        let along = |e: &[f64; 3]| (0..3).map(|i| v[i] * e[i]).sum::<f64>();
+                        let (t, c) = (
+                            along(&transverse.direction.unit),
+                            along(&conjugate.direction.unit),
+                        );
+                        assert!(
+                            (c * c - ratio * t * t).abs() <= 1e-6 * (c * c + t * t),
+                            "{id}: asymptote {c} {t} {ratio}"
+                        );
+                    }
                     if let Some(mu) = transverse.semi_axis2.as_number() {
                         if xc
                             .iter()

@@ -17,8 +17,9 @@
 //!   `G = [v_i·v_j]` the squared semi-axes `μ` are the roots of
 //!   `det F·μ² − τκ·μ + det G·κ² = 0`, `τ = F₁₁G₂₂ + F₂₂G₁₁ − 2F₁₂G₁₂`: in `K(√D)`,
 //!   `D = τ² − 4 det F det G` (`D = 0`: a circle); the axis of `μ` spans the kernel of
-//!   `μF − κG`. Over `K = ℚ` they are exact in ℚ(√D); over a larger `K`, `μ` is
-//!   `p + q·sqrt(D)` ([`Surd`]) and the directions are decimals;
+//!   `μF − κG`. Over `K = ℚ` they are exact in ℚ(√D); over a larger `K` exact in `K` when `D`
+//!   is the square of a rational, else `μ` is `p + q·sqrt(D)` ([`Surd`]) and the directions
+//!   are decimals;
 //! * parabola: with the double root `u₀` of `W` moved to `t = ∞` (`u = u₀ + 1/t`) the affine
 //!   points are `a + bt + dt²`: the axis is `d` (pointing into the parabola), the vertex is at
 //!   `t = −(b·d)/(2d·d)`, the focal length `f` has `f² = |b⊥|⁴/(16|d|²)`, `b⊥` the part of `b`
@@ -422,6 +423,11 @@ fn central(
             Some(r) => Number::rational(r.clone()),
             None => from_quadratic(&s, Some(&sqrt_field(s.radicand()))),
         })
+    } else if disc.numerator().is_constant() {
+        // a rational D that is a square keeps everything in K
+        Quadratic::sqrt_rational(&constant(&disc))
+            .as_rational()
+            .map(|r| Number::rational(r.clone()))
     } else {
         None
     };
