@@ -268,10 +268,12 @@ fn normalized(v: [Number; 3]) -> Option<[Number; 3]> {
 /// # use qsic_algebra::Ring;
 /// ```
 ///
-/// `Ok(None)` for a component that is not a real conic.
+/// `Ok(None)` for a component that is not a real conic with a parameterization of degree 2
+/// (the only form [`crate::param::parameterize`] gives conics).
 ///
 /// # Errors
-/// [`Error::Algebra`] for a conic parameterization that is not of degree 2 or degenerate.
+/// [`Error::Algebra`] for a degenerate parameterization (coefficient vectors not spanning a
+/// plane).
 pub fn affine_conic(component: &Component, chart: &Chart) -> Result<Option<AffineConic>, Error> {
     let (ComponentKind::Conic, Some(ComponentParam::Rational { x, degree: 2 })) =
         (component.kind, &component.param)
@@ -316,9 +318,9 @@ pub fn affine_conic(component: &Component, chart: &Chart) -> Result<Option<Affin
         s => {
             // the centre: 2w₂x₀ − w₁x₁ + 2w₀x₂ over its w′ = −Δ
             let yc = [int(2).mul(&l[2]), l[1].neg(), int(2).mul(&l[0])];
-            let w = delta.neg().inv().expect("Δ ≠ 0");
+            let w = div(&int(-1), &delta)?;
             let centre = scaled(&image(&yc), &w);
-            let kappa = delta.inv().expect("Δ ≠ 0");
+            let kappa = div(&int(1), &delta)?;
             let f = [
                 conic_form(&za, &za),
                 conic_form(&za, &zb),
@@ -343,11 +345,11 @@ fn parabola(
 ) -> Result<ConicShape, Error> {
     // a + bt + dt²: the root of W moved to t = ∞
     let (a, b, d) = if l[2].is_zero() {
-        let s = l[0].inv().expect("W is a nonzero constant");
+        let s = div(&int(1), &l[0])?;
         (scaled(x0, &s), scaled(x1, &s), scaled(x2, &s))
     } else {
         let u0 = div(&l[1].neg(), &int(2).mul(&l[2]))?;
-        let s = l[2].inv().expect("nonzero");
+        let s = div(&int(1), &l[2])?;
         let at_u0: [Number; 3] =
             std::array::from_fn(|i| x0[i].add(&u0.mul(&x1[i])).add(&u0.mul(&u0).mul(&x2[i])));
         let b: [Number; 3] = std::array::from_fn(|i| x1[i].add(&int(2).mul(&u0).mul(&x2[i])));
