@@ -1,4 +1,4 @@
-//! The `"affine"` object of `qsic classify`: the pair seen in ℝ³ (surface names, bounded and
+//! The `"affine"` object of `qsic classify` (and of `qsic param` and `qsic sample`): the pair seen in ℝ³ (surface names, bounded and
 //! unbounded curves, points and singular points at infinity, solids), from
 //! [`qsic::affine::affine_view`].
 //!
@@ -11,11 +11,14 @@
 //! ```
 //! The counts, components and singular points are `null` (with `"unavailable"` saying why)
 //! for the classes whose curve is not built yet; `solids` is set when both surfaces are
-//! ellipsoids (spheres included).
+//! ellipsoids (spheres included). [`conic_json`]: a conic component's affine data in
+//! `qsic param`.
 
-use qsic::affine::{affine_view, AffineView, Chart};
+use qsic::affine::{affine_view, approx, AffineConic, AffineView, Chart, ConicShape};
 use qsic::param::expr::Names;
+use qsic::param::Number;
 use qsic::Quadric;
+use serde::Serialize;
 use serde_json::{json, Value};
 
 /// The `"affine"` object of a pair (`None`: the zero form) in `chart` (`chart_text` as the
@@ -92,6 +95,228 @@ pub fn to_json(view: &AffineView, chart_text: &str) -> Value {
             }
             fields.insert("unavailable".into(), e.to_string().into());
         }
+    }
+    out
+}
+
+/// The `"affine"` object of a conic component of `qsic param` (exact strings printed by
+/// `names`, decimals under `"approx"`):
+///
+/// ```json
+/// {"type": "circle", "normal": [3], "centre": [3], "radius2": e,
+///  "approx": {"normal": [unit], "centre": [3], "radius": r}}
+/// {"type": "ellipse" | "hyperbola", "normal", "centre",
+///  "axes": [{"semi_axis2": e, "direction": [3] | null}, …],
+///  "approx": {"normal", "centre", "axes": [{"semi_axis", "direction": [unit]}, …]}}
+/// {"type": "parabola", "normal", "vertex", "axis": [3], "focal_length2": e,
+///  "approx": {"normal", "vertex", "axis": [unit], "focal_length"}}
+/// {"type": "conic_at_infinity"}
+/// ```
+/// An ellipse's axes are major then minor, a hyperbola's transverse then conjugate.
+pub fn conic_json(conic: &AffineConic, names: &mut Names) -> ConicJson {
+    let decimals = |v: &[Number; 3]| -> Vec<f64> { v.iter().map(approx).collect() };
+    let root = |v: &Number| approx(v).max(0.0).sqrt();
+    let mut out = ConicJson {
+        kind: conic.shape.key(),
+        ..ConicJson::default()
+    };
+    let Some(normal) = &conic.normal else {
+        return out;
+    };
+    out.normal = Some(exact3(names, normal));
+    let mut approx_out = ConicApproxJson {
+        normal: unit_vector(&decimals(normal)),
+        ..ConicApproxJson::default()
+    };
+    match &conic.shape {
+        ConicShape::AtInfinity => {}
+        ConicShape::Circle { centre, radius2 } => {
+            out.centre = Some(exact3(names, centre));
+            out.radius2 = Some(names.number(radius2));
+            approx_out.centre = Some(decimals(centre));
+            approx_out.radius = Some(root(radius2));
+        }
+        ConicShape::Ellipse {
+            centre,
+            major: first,
+            minor: second,
+        }
+        | ConicShape::Hyperbola {
+            centre,
+            transverse: first,
+            conjugate: second,
+        } => {
+            out.centre = Some(exact3(names, centre));
+            approx_out.centre = Some(decimals(centre));
+            let (mut axes, mut axes_approx) = (Vec::new(), Vec::new());
+            for axis in [first, second] {
+                axes.push(AxisJson {
+                    semi_axis2: axis.semi_axis2.expr(names),
+                    direction: axis.direction.exact.as_ref().map(|v| exact3(names, v)),
+                });
+                axes_approx.push(AxisApproxJson {
+                    semi_axis: axis.semi_axis2.to_f64().max(0.0).sqrt(),
+                    direction: axis.direction.unit,
+                });
+            }
+            out.axes = Some(axes);
+            approx_out.axes = Some(axes_approx);
+        }
+        ConicShape::Parabola {
+            vertex,
+            axis,
+            focal_length2,
+        } => {
+            out.vertex = Some(exact3(names, vertex));
+            out.axis = axis.exact.as_ref().map(|v| exact3(names, v));
+            out.focal_length2 = Some(names.number(focal_length2));
+            approx_out.vertex = Some(decimals(vertex));
+            approx_out.axis = Some(axis.unit);
+            approx_out.focal_length = Some(root(focal_length2));
+        }
+    }
+    out.approx = Some(approx_out);
+    out
+}
+
+/// [`conic_json`]'s object, fields in order (absent ones left out).
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct ConicJson {
+    #[serde(rename = "type")]
+    kind: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    unavailable: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    normal: Option<Vec<String>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    centre: Option<Vec<String>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    radius2: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    axes: Option<Vec<AxisJson>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    vertex: Option<Vec<String>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    axis: Option<Vec<String>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    focal_length2: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    approx: Option<ConicApproxJson>,
+}
+
+impl ConicJson {
+    /// A conic whose affine data could not be computed: `{"type": "conic", "unavailable": why}`.
+    pub fn unavailable(why: String) -> ConicJson {
+        ConicJson {
+            kind: "conic",
+            unavailable: Some(why),
+            ..ConicJson::default()
+        }
+    }
+}
+
+#[derive(Clone, Debug, Serialize)]
+struct AxisJson {
+    semi_axis2: String,
+    direction: Option<Vec<String>>,
+}
+
+#[derive(Clone, Debug, Default, Serialize)]
+struct ConicApproxJson {
+    normal: Vec<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    centre: Option<Vec<f64>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    radius: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    axes: Option<Vec<AxisApproxJson>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    vertex: Option<Vec<f64>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    axis: Option<[f64; 3]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    focal_length: Option<f64>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+struct AxisApproxJson {
+    semi_axis: f64,
+    direction: [f64; 3],
+}
+
+/// The exact coordinates as expressions.
+fn exact3(names: &mut Names, v: &[Number; 3]) -> Vec<String> {
+    v.iter().map(|c| names.number(c)).collect()
+}
+
+/// `v/|v|`.
+fn unit_vector(v: &[f64]) -> Vec<f64> {
+    let n = v.iter().map(|c| c * c).sum::<f64>().sqrt();
+    v.iter().map(|c| if n > 0.0 { c / n } else { *c }).collect()
+}
+
+/// One line of text for a conic's `"affine"` object ([`conic_json`]), e.g. `circle: centre
+/// (0, 0, 3), radius² 16 (radius ≈ 4), plane normal (0, 0, 1)`.
+pub fn conic_text(conic: &ConicJson) -> String {
+    let v = &serde_json::to_value(conic).expect("plain data serializes");
+    let list = |v: &Value| -> String {
+        v.as_array().map_or_else(
+            || "-".to_owned(),
+            |a| {
+                a.iter()
+                    .map(|x| x.as_str().map_or_else(|| x.to_string(), str::to_owned))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            },
+        )
+    };
+    let text = |v: &Value| v.as_str().unwrap_or("-").to_owned();
+    let num = |v: &Value| {
+        v.as_f64()
+            .map_or_else(|| "-".to_owned(), |x| format!("{x:.6}"))
+    };
+    let kind = text(&v["type"]);
+    let approx = &v["approx"];
+    let mut out = kind.clone();
+    match kind.as_str() {
+        "circle" => out.push_str(&format!(
+            ": centre ({}), radius² {} (radius ≈ {})",
+            list(&v["centre"]),
+            text(&v["radius2"]),
+            num(&approx["radius"])
+        )),
+        "ellipse" | "hyperbola" => {
+            out.push_str(&format!(": centre ({})", list(&v["centre"])));
+            let names = if kind == "ellipse" {
+                ["major", "minor"]
+            } else {
+                ["transverse", "conjugate"]
+            };
+            for (k, name) in names.iter().enumerate() {
+                let (e, a) = (&v["axes"][k], &approx["axes"][k]);
+                out.push_str(&format!(
+                    ", {name} semi-axis² {} (≈ {}) along ({})",
+                    text(&e["semi_axis2"]),
+                    num(&a["semi_axis"]),
+                    if e["direction"].is_null() {
+                        list(&a["direction"].clone())
+                    } else {
+                        list(&e["direction"])
+                    }
+                ));
+            }
+        }
+        "parabola" => out.push_str(&format!(
+            ": vertex ({}), axis ({}), focal length² {} (≈ {})",
+            list(&v["vertex"]),
+            list(&v["axis"]),
+            text(&v["focal_length2"]),
+            num(&approx["focal_length"])
+        )),
+        _ => {}
+    }
+    if !v["normal"].is_null() {
+        out.push_str(&format!(", plane normal ({})", list(&v["normal"])));
     }
     out
 }

@@ -185,6 +185,16 @@ struct ParamArgs {
     /// Print one JSON object instead of the text report (batch output is always JSON).
     #[arg(long)]
     json: bool,
+
+    /// Leave out the affine data (each conic's type, centre, axes; the "affine" object of
+    /// the pair in R^3).
+    #[arg(long)]
+    projective: bool,
+
+    /// The plane at infinity of the affine data, a linear form "a*x+b*y+c*z+d*w"
+    /// (default "w"); lengths use the Euclidean metric of the chart's coordinates.
+    #[arg(long, value_name = "FORM", allow_hyphen_values = true)]
+    chart: Option<String>,
 }
 
 /// Output formats of `qsic sample`.
@@ -217,6 +227,10 @@ struct SampleArgs {
     /// Output format (batch: json only).
     #[arg(long, value_enum, default_value_t = Format::Json)]
     format: Format,
+
+    /// Leave out the "affine" object of the pair in R^3 (JSON).
+    #[arg(long)]
+    projective: bool,
 }
 
 /// Two quadrics or a batch file.
@@ -604,14 +618,16 @@ fn run_batch_with<A: batch::Answer>(path: &std::path::Path, answer: &A) -> ExitC
     })
 }
 
-/// The two quadrics of a single query (`None`: the zero form), or exit 1 with the message.
-fn read_pair(a: &str, b: &str) -> Result<(Option<Quadric>, Option<Quadric>), ExitCode> {
-    let read = |name: &str, text: &str| {
-        input::surface_from_arg(text)
-            .map(|s| s.quadric)
-            .map_err(|e| format!("{name}: {e}"))
-    };
-    match read("A", a).and_then(|qa| Ok((qa, read("B", b)?))) {
+/// The two quadrics of a single query (`None`: the zero form) and whether each was given as a
+/// plane, or exit 1 with the message.
+type Pair = (Option<Quadric>, Option<Quadric>, [bool; 2]);
+fn read_pair(a: &str, b: &str) -> Result<Pair, ExitCode> {
+    let read =
+        |name: &str, text: &str| input::surface_from_arg(text).map_err(|e| format!("{name}: {e}"));
+    match read("A", a).and_then(|sa| {
+        let sb = read("B", b)?;
+        Ok((sa.quadric, sb.quadric, [sa.plane, sb.plane]))
+    }) {
         Ok(pair) => Ok(pair),
         Err(message) => {
             eprintln!("error: {message}");
@@ -640,12 +656,23 @@ fn usage_error(message: &str) -> ExitCode {
 
 /// `qsic param`.
 fn run_param(args: &ParamArgs) -> ExitCode {
+    let chart = match args.chart.as_deref().map(classify_chart).transpose() {
+        Ok(chart) => chart,
+        Err(message) => {
+            eprintln!("error: --chart: {message}");
+            return ExitCode::from(2);
+        }
+    };
+    let answer = param::Param {
+        projective_only: args.projective,
+        chart,
+    };
     let (a, b) = match (&args.input.batch, &args.input.a, &args.input.b) {
-        (Some(path), _, _) => return run_batch_with(path, &param::Param),
+        (Some(path), _, _) => return run_batch_with(path, &answer),
         (None, Some(a), Some(b)) => (a, b),
         _ => return usage_error("two quadrics A and B, or --batch FILE, are required"),
     };
-    let (qa, qb) = match read_pair(a, b) {
+    let (qa, qb, planes) = match read_pair(a, b) {
         Ok(pair) => pair,
         Err(code) => return code,
     };
@@ -656,7 +683,16 @@ fn run_param(args: &ParamArgs) -> ExitCode {
             return ExitCode::from(1);
         }
     };
-    let json = param::ParamJson::from(&curve);
+    let default = (qsic::affine::Chart::default(), "w".to_owned());
+    let (chart, chart_text) = answer.chart.as_ref().unwrap_or(&default);
+    let ctx = param::AffineContext {
+        a: qa.as_ref(),
+        b: qb.as_ref(),
+        chart,
+        chart_text,
+        planes,
+    };
+    let json = param::ParamJson::new(&curve, (!args.projective).then_some(&ctx));
     let text = if args.json {
         format!("{{{}}}\n", param::fields_of(&json))
     } else {
@@ -685,11 +721,20 @@ fn run_sample(args: &SampleArgs) -> ExitCode {
         (Some(_), _, _) if args.format != Format::Json => {
             return usage_error("--batch writes JSON Lines: --format csv and obj need A and B")
         }
-        (Some(path), _, _) => return run_batch_with(path, &sample::Sample(options)),
+        (Some(path), _, _) => {
+            return run_batch_with(
+                path,
+                &sample::Sample {
+                    options,
+                    projective_only: args.projective,
+                    chart_text: args.chart.clone().unwrap_or_else(|| "w".to_owned()),
+                },
+            )
+        }
         (None, Some(a), Some(b)) => (a, b),
         _ => return usage_error("two quadrics A and B, or --batch FILE, are required"),
     };
-    let (qa, qb) = match read_pair(a, b) {
+    let (qa, qb, planes) = match read_pair(a, b) {
         Ok(pair) => pair,
         Err(code) => return code,
     };
@@ -701,10 +746,28 @@ fn run_sample(args: &SampleArgs) -> ExitCode {
         }
     };
     let text = match args.format {
-        Format::Json => format!(
-            "{{{}}}\n",
-            param::fields_of(&sample::SampleJson::new(&curve, &sampled))
-        ),
+        Format::Json => {
+            let chart = match qsic::affine::Chart::new(options.chart.clone()) {
+                Ok(c) => c,
+                Err(e) => {
+                    eprintln!("error: --chart: {e}");
+                    return ExitCode::from(2);
+                }
+            };
+            let chart_text = args.chart.clone().unwrap_or_else(|| "w".to_owned());
+            let ctx = param::AffineContext {
+                a: qa.as_ref(),
+                b: qb.as_ref(),
+                chart: &chart,
+                chart_text: &chart_text,
+                planes,
+            };
+            let affine = (!args.projective).then_some(&ctx);
+            format!(
+                "{{{}}}\n",
+                param::fields_of(&sample::SampleJson::with_affine(&curve, &sampled, affine))
+            )
+        }
         Format::Csv => sample::to_csv(&sampled, &options),
         Format::Obj => sample::to_obj(&sampled),
     };

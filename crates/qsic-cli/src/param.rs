@@ -3,17 +3,19 @@
 //!
 //! | entry point | gives |
 //! |---|---|
-//! | [`ParamJson`] | the result object: the classification's fields, `numbers`, `components`, `singular_points` |
+//! | [`ParamJson`] | the result object: the classification's fields, `numbers`, `components` (a conic's `affine` data), `singular_points`, `affine` |
 //! | [`curve_of`] | the curve of two quadrics, with the CLI's error messages |
 //! | [`Param`] | the batch answer |
 //! | [`human_report`] | the text of `qsic param A B` |
 
 use crate::batch::Answer;
 use crate::output::ClassificationJson;
+use qsic::affine::{affine_conic, affine_view_of_curve, Chart};
 use qsic::param::expr::{NamedNumber, Names};
 use qsic::param::{parameterize, ComponentParam, Curve};
 use qsic::{Error, Quadric};
 use serde::Serialize;
+use serde_json::Value;
 
 /// The curve of `a` and `b` (`None`: the zero form), or the message of an error line:
 /// `not yet: …` for a class not covered.
@@ -96,6 +98,10 @@ pub struct ComponentParamJson {
     pub real: bool,
     /// The parameterization, `null` for a non-real component.
     pub param: Option<ParamFormJson>,
+    /// A real conic's type, centre or vertex, axes ([`crate::affine::conic_json`]); absent
+    /// for other components and with `--projective`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub affine: Option<crate::affine::ConicJson>,
 }
 
 /// One real singular point.
@@ -132,10 +138,43 @@ pub struct ParamJson {
     pub components: Vec<ComponentParamJson>,
     /// The real singular points.
     pub singular_points: Vec<SingularPointJson>,
+    /// The pair in ℝ³ ([`crate::affine::to_json`]); absent with `--projective`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub affine: Option<Value>,
+}
+
+/// What the affine parts of a `param` or `sample` answer need: the pair, the chart and its
+/// text as the user wrote it (`"w"` by default), which inputs were planes.
+pub struct AffineContext<'a> {
+    /// `A` (`None`: the zero form).
+    pub a: Option<&'a Quadric>,
+    /// `B`.
+    pub b: Option<&'a Quadric>,
+    /// The chart.
+    pub chart: &'a Chart,
+    /// Its text.
+    pub chart_text: &'a str,
+    /// Inputs given as planes.
+    pub planes: [bool; 2],
+}
+
+impl AffineContext<'_> {
+    /// The `"affine"` object of the pair with its curve.
+    pub fn view_json(&self, curve: &Curve) -> Value {
+        let view = affine_view_of_curve(self.a, self.b, Some(curve), self.chart, self.planes);
+        crate::affine::to_json(&view, self.chart_text)
+    }
 }
 
 impl From<&Curve> for ParamJson {
     fn from(curve: &Curve) -> Self {
+        ParamJson::new(curve, None)
+    }
+}
+
+impl ParamJson {
+    /// The object for `curve`, with the affine data when `affine` is given.
+    pub fn new(curve: &Curve, affine: Option<&AffineContext>) -> Self {
         let c = ClassificationJson::from(&curve.classification);
         let mut names = Names::new();
         let components = curve
@@ -157,6 +196,14 @@ impl From<&Curve> for ParamJson {
                         d: std::array::from_fn(|i| names.poly(&d[i])),
                         s: names.poly(s),
                     },
+                }),
+                affine: affine.and_then(|ctx| {
+                    let conic = affine_conic(comp, ctx.chart);
+                    match conic {
+                        Ok(Some(k)) => Some(crate::affine::conic_json(&k, &mut names)),
+                        Ok(None) => None,
+                        Err(e) => Some(crate::affine::ConicJson::unavailable(e.to_string())),
+                    }
                 }),
             })
             .collect();
@@ -180,6 +227,7 @@ impl From<&Curve> for ParamJson {
             numbers: names.numbers().into_iter().map(NumberJson::from).collect(),
             components,
             singular_points,
+            affine: affine.map(|ctx| ctx.view_json(curve)),
         }
     }
 }
@@ -192,16 +240,32 @@ pub fn fields_of<T: Serialize>(value: &T) -> String {
 }
 
 /// The batch answer of `qsic param`.
-pub struct Param;
+pub struct Param {
+    /// Leave out the affine data (`--projective`).
+    pub projective_only: bool,
+    /// The chart and its text (`--chart`; `None`: `w = 0`, written `"w"`).
+    pub chart: Option<(Chart, String)>,
+}
 
 impl Answer for Param {
     fn answer(
         &self,
         a: Option<&Quadric>,
         b: Option<&Quadric>,
-        _planes: [bool; 2],
+        planes: [bool; 2],
     ) -> Result<String, String> {
-        curve_of(a, b).map(|c| fields_of(&ParamJson::from(&c)))
+        let curve = curve_of(a, b)?;
+        let default = (Chart::default(), "w".to_owned());
+        let (chart, chart_text) = self.chart.as_ref().unwrap_or(&default);
+        let ctx = AffineContext {
+            a,
+            b,
+            chart,
+            chart_text,
+            planes,
+        };
+        let affine = (!self.projective_only).then_some(&ctx);
+        Ok(fields_of(&ParamJson::new(&curve, affine)))
     }
 }
 
@@ -250,12 +314,22 @@ pub fn human_report(json: &ParamJson) -> String {
                 out.push_str(&format!("  s(u) = {s}\n"));
             }
         }
+        if let Some(a) = &c.affine {
+            out.push_str(&format!("  in R^3: {}\n", crate::affine::conic_text(a)));
+        }
     }
     for p in &json.singular_points {
         out.push_str(&format!(
             "singular point ({}): ({})\n",
             p.kind,
             p.point.join(", ")
+        ));
+    }
+    if let Some(a) = &json.affine {
+        out.push_str(&format!(
+            "in R^3 ({} = 0 at infinity): {}\n",
+            a["chart"].as_str().unwrap_or("w"),
+            a["summary"].as_str().unwrap_or("-")
         ));
     }
     out

@@ -9,7 +9,8 @@
 
 use crate::batch::Answer;
 use crate::output::ClassificationJson;
-use crate::param::{curve_of, fields_of};
+use crate::param::{curve_of, fields_of, AffineContext};
+use qsic::affine::Chart;
 use qsic::io::{parse_rational_function, Variable};
 use qsic::param::sample::{sample, SampleOptions, Sampled};
 use qsic::param::Curve;
@@ -90,6 +91,9 @@ pub struct SampleJson {
     pub components: Vec<PieceJson>,
     /// The connected components of the real locus in ℝP³: groups of indices into `components`.
     pub connected_components: Vec<Vec<usize>>,
+    /// The pair in ℝ³ ([`crate::affine::to_json`]); absent with `--projective`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub affine: Option<serde_json::Value>,
 }
 
 impl SampleJson {
@@ -120,6 +124,19 @@ impl SampleJson {
             real_type: c.real_type,
             components,
             connected_components: curve.connected.clone(),
+            affine: None,
+        }
+    }
+
+    /// [`SampleJson::new`] with the `"affine"` object when `affine` is given.
+    pub fn with_affine(
+        curve: &Curve,
+        sampled: &Sampled,
+        affine: Option<&AffineContext>,
+    ) -> SampleJson {
+        SampleJson {
+            affine: affine.map(|ctx| ctx.view_json(curve)),
+            ..SampleJson::new(curve, sampled)
         }
     }
 }
@@ -139,17 +156,40 @@ pub fn sample_of(
 }
 
 /// The batch answer of `qsic sample` (JSON).
-pub struct Sample(pub SampleOptions);
+pub struct Sample {
+    /// Points per piece, tolerance, chart.
+    pub options: SampleOptions,
+    /// Leave out the `"affine"` object (`--projective`).
+    pub projective_only: bool,
+    /// The chart as the user wrote it (`"w"` by default).
+    pub chart_text: String,
+}
 
 impl Answer for Sample {
     fn answer(
         &self,
         a: Option<&Quadric>,
         b: Option<&Quadric>,
-        _planes: [bool; 2],
+        planes: [bool; 2],
     ) -> Result<String, String> {
-        let (curve, sampled) = sample_of(a, b, &self.0)?;
-        Ok(fields_of(&SampleJson::new(&curve, &sampled)))
+        let (curve, sampled) = sample_of(a, b, &self.options)?;
+        let affine = if self.projective_only {
+            None
+        } else {
+            Some(Chart::new(self.options.chart.clone()).map_err(|e| e.to_string())?)
+        };
+        let ctx = affine.as_ref().map(|chart| AffineContext {
+            a,
+            b,
+            chart,
+            chart_text: &self.chart_text,
+            planes,
+        });
+        Ok(fields_of(&SampleJson::with_affine(
+            &curve,
+            &sampled,
+            ctx.as_ref(),
+        )))
     }
 }
 

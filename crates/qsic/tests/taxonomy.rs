@@ -1,8 +1,8 @@
 //! `docs/taxonomy.md` runs: every example pair of its class tables is classified and must give
-//! the keys of its row, and every affine example must get its name, so the document cannot
-//! drift from the code.
+//! the keys of its row, and every affine example must get its name (a conic type: a component
+//! of that type), so the document cannot drift from the code.
 
-use qsic::affine::{surface_name, Chart};
+use qsic::affine::{affine_conic, surface_name, Chart};
 use qsic::classify_allowing_zero;
 use qsic::io::parse_quadric;
 
@@ -28,7 +28,7 @@ fn quadric(s: &str) -> Option<qsic::Quadric> {
 fn every_example_of_the_taxonomy_gives_its_keys() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/taxonomy.md");
     let text = std::fs::read_to_string(path).unwrap();
-    let (mut classes, mut names) = (0, 0);
+    let (mut classes, mut names, mut conics) = (0, 0, 0);
     let mut cases = Vec::new();
     for row in rows(&text) {
         match row.len() {
@@ -51,9 +51,25 @@ fn every_example_of_the_taxonomy_gives_its_keys() {
                 assert_eq!(surface_name(&q, &Chart::default()).key(), row[0], "{row:?}");
                 names += 1;
             }
+            4 if row[0] != "type" => {
+                let (a, b) = (
+                    parse_quadric(&row[2]).unwrap(),
+                    parse_quadric(&row[3]).unwrap(),
+                );
+                let curve = qsic::param::parameterize(&a, &b).unwrap();
+                let keys: Vec<&str> = curve
+                    .components
+                    .iter()
+                    .filter_map(|c| affine_conic(c, &Chart::default()).unwrap())
+                    .map(|c| c.shape.key())
+                    .collect();
+                assert!(keys.contains(&row[0].as_str()), "{row:?}: {keys:?}");
+                conics += 1;
+            }
             _ => {}
         }
     }
+    assert_eq!(conics, 5);
     cases.sort_unstable();
     assert_eq!(cases, (1..=35).collect::<Vec<u8>>(), "every case once");
     assert_eq!((classes, names), (35 + 13 + 8, 20));

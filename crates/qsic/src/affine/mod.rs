@@ -5,6 +5,7 @@
 //! | [`Chart`] | the plane at infinity `ℓ(X) = 0` (default `w = 0`) and the change of coordinates making it `w = 0` |
 //! | [`AffineSurface`], [`surface_name`] | the affine name of a quadric (sphere, elliptic cylinder, …), exactly |
 //! | [`affine_curve`] | the curve in ℝ³: bounded and unbounded pieces, points and singular points at infinity, conic names |
+//! | [`affine_conic`] | a conic component's type, centre or vertex, axes, radius, exactly |
 //!
 //! With `M` the 4×4 matrix in coordinates where the plane at infinity is `w = 0` and `Q` its
 //! upper-left 3×3 block (the quadratic part), the affine type is decided by the inertias of
@@ -14,9 +15,13 @@
 //! has `Q`'s characteristic polynomial `x(x² − E₁x + E₂)` with `E₁² = 4E₂`; a circular cone has
 //! a cubic characteristic polynomial with zero discriminant.
 
+mod conic;
 mod curve;
+mod view;
 
+pub use conic::{affine_conic, approx, AffineConic, Axis, ConicShape, Direction, Surd};
 pub use curve::{affine_curve, AffineComponent, AffineCurve, AffineSingularPoint};
+pub use view::affine_view_of_curve;
 
 use crate::error::Error;
 use crate::param::{Number, Point};
