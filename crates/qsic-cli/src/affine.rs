@@ -295,7 +295,7 @@ pub fn conic_text(conic: &ConicJson) -> String {
             for (k, name) in names.iter().enumerate() {
                 let (e, a) = (&v["axes"][k], &approx["axes"][k]);
                 out.push_str(&format!(
-                    ", {name} semi-axis² {} (≈ {}) along ({})",
+                    ", {name} semi-axis² {} (semi-axis ≈ {}) along ({})",
                     text(&e["semi_axis2"]),
                     num(&a["semi_axis"]),
                     if e["direction"].is_null() {
@@ -307,7 +307,7 @@ pub fn conic_text(conic: &ConicJson) -> String {
             }
         }
         "parabola" => out.push_str(&format!(
-            ": vertex ({}), axis ({}), focal length² {} (≈ {})",
+            ": vertex ({}), axis ({}), focal length² {} (focal length ≈ {})",
             list(&v["vertex"]),
             list(&v["axis"]),
             text(&v["focal_length2"]),
