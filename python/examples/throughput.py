@@ -1,11 +1,13 @@
 """Throughput of ``qsic.classify_many`` against ``qsic classify --batch`` on the same random
 integer pairs (symmetric matrices, entries in [-10, 10]), per pair, wall clock.
 
-    python throughput.py --pairs 100000 --qsic target/release/qsic [--affine]
+    python throughput.py --pairs 100000 --qsic target/release/qsic [--affine] [--dask]
 
 Both run on all cores. The CLI reads JSON Lines of 4×4 integer arrays and writes JSON
 (``--projective`` unless ``--affine``); ``classify_many`` reads an ``int64`` array and returns
-columns. The answers are compared field by field.
+columns. The answers are compared field by field. With ``--dask``, also the Dask example
+(``dask_classify.py``: the pairs as a CSV file, read and classified by ``map_partitions`` on a
+LocalCluster of two worker processes, one thread each), cluster start-up not counted.
 """
 
 from __future__ import annotations
@@ -40,6 +42,7 @@ def main() -> None:
     p.add_argument("--pairs", type=int, default=100_000)
     p.add_argument("--qsic", default="target/release/qsic", help="the qsic binary")
     p.add_argument("--affine", action="store_true", help="with the affine view")
+    p.add_argument("--dask", action="store_true", help="also the Dask example on 2 local workers")
     args = p.parse_args()
     A, B = random_pairs(args.pairs)
     lines = "".join(
@@ -73,12 +76,45 @@ def main() -> None:
         if args.affine:
             assert cols["affine"][k] == ans["affine"], k
     per = lambda s: s / args.pairs * 1e6  # noqa: E731
+    if args.dask:
+        dask_seconds = run_dask(A, B, cols)
+        print(f"{args.pairs} pairs through Dask: {dask_seconds:.2f} s ({per(dask_seconds):.2f} µs/pair)")
     print(
         f"{args.pairs} pairs{' with the affine view' if args.affine else ''}: "
         f"CLI batch {cli:.2f} s ({per(cli):.2f} µs/pair; CPU {per(cli_cpu):.2f} µs/pair), "
         f"classify_many {py:.2f} s ({per(py):.2f} µs/pair; CPU {per(py_cpu):.2f} µs/pair), "
         f"ratio {py / cli:.2f}; answers equal"
     )
+
+
+def run_dask(A, B, cols) -> float:
+    """Seconds for the Dask example on the pairs (written to a CSV file first)."""
+    import os
+    import sys
+    import tempfile
+
+    import pandas as pd
+    from dask.distributed import Client, LocalCluster
+
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import dask_classify
+
+    with tempfile.TemporaryDirectory() as tmp:
+        frame = pd.DataFrame(A.reshape(-1, 16), columns=dask_classify.A_COLUMNS)
+        frame[dask_classify.B_COLUMNS] = B.reshape(-1, 16)
+        frame.insert(0, "id", range(len(frame)))
+        path = os.path.join(tmp, "pairs.csv")
+        frame.to_csv(path, index=False)
+        cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
+        with cluster, Client(cluster) as client:
+            client.upload_file(dask_classify.__file__)
+            t = time.perf_counter()
+            answers = dask_classify.classify_dataset(path, blocksize="1MB").compute()
+            seconds = time.perf_counter() - t
+    answers = answers.sort_values("id")
+    for key in ("pencil", "case", "complex_type", "real_type", "error"):
+        assert list(answers[key]) == list(cols[key]), key
+    return seconds
 
 
 if __name__ == "__main__":
