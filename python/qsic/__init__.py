@@ -261,7 +261,7 @@ class Classification:
     __hash__ = None  # type: ignore[assignment]
 
     def __str__(self) -> str:
-        return self._text
+        return self._text.rstrip("\n")
 
     def __repr__(self) -> str:
         return (

@@ -76,3 +76,23 @@ def test_classify_many_rows_equal_classify_with_the_affine_view(cli):
         answers[k].pop("id")
         assert single.to_dict() == answers[k], line["id"]
         assert isinstance(single.affine, dict) and single.affine["chart"] == "w"
+
+
+def test_chart_and_projective_options_equal_cli(cli):
+    lines = read_jsonl(AFFINE_CORPUS)[:6]
+    records = [{"id": r["id"], "A": r["A"], "B": r["B"]} for r in lines]
+    charted = cli_batch(cli, records, "--chart", "x+w")
+    projective = cli_batch(cli, records, "--projective")
+    A = np.array([as_matrix(r["A"]) for r in lines], dtype=object)
+    B = np.array([as_matrix(r["B"]) for r in lines], dtype=object)
+    cols = qsic.classify_many(A, B, affine=True, chart="x+w")
+    for k, line in enumerate(lines):
+        charted[k].pop("id")
+        projective[k].pop("id")
+        assert qsic.classify(line["A"], line["B"], chart="x+w").to_dict() == charted[k]
+        assert qsic.classify(line["A"], line["B"], affine=False).to_dict() == projective[k]
+        if not (qsic.Quadric(line["A"]).is_plane or qsic.Quadric(line["B"]).is_plane):
+            assert row(cols, k) == charted[k], line["id"]
+        assert charted[k]["affine"]["chart"] == "x+w"
+    with pytest.raises(qsic.QsicError, match="chart"):
+        qsic.classify(lines[0]["A"], lines[0]["B"], chart="x^2")
