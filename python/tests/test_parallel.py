@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+import os
 import threading
 import time
+from pathlib import Path
 
 import numpy as np
+import pytest
 
 import qsic
 
@@ -39,6 +42,29 @@ def test_the_gil_is_released_while_classifying():
     worker.join()
     assert spans[0] > 0.2
     assert longest < spans[0] / 3, (longest, spans[0])
+
+
+def cpu_ticks_per_thread() -> dict:
+    """CPU time (user + system, in clock ticks) of each thread of this process, from /proc."""
+    ticks = {}
+    for tid in os.listdir("/proc/self/task"):
+        fields = Path(f"/proc/self/task/{tid}/stat").read_text().rsplit(")", 1)[1].split()
+        ticks[tid] = int(fields[11]) + int(fields[12])
+    return ticks
+
+
+@pytest.mark.skipif(not Path("/proc/self/task").exists(), reason="per-thread CPU time from Linux /proc")
+def test_both_cores_do_work():
+    """With the default pool (one thread per core), at least two threads other than this one
+    spend CPU time on the batch."""
+    A, B = random_pairs(48, seed=4)
+    qsic.classify_many(A[:2], B[:2])  # the pool exists before the count starts
+    before = cpu_ticks_per_thread()
+    qsic.classify_many(A, B, affine=True)
+    after = cpu_ticks_per_thread()
+    me = str(threading.get_native_id())
+    busy = [t for t in after if t != me and after[t] - before.get(t, 0) > 0]
+    assert len(busy) >= min(2, os.cpu_count() or 1), (before, after)
 
 
 def test_thread_counts_agree():
