@@ -1,0 +1,467 @@
+"""Exact classification of the intersection curve of two quadric surfaces (the QSIC).
+
+Every sign, rank, multiplicity and root count is decided exactly; numbers are read exactly
+(a float is the binary fraction it holds, 0.1 as a float is 3602879701896397/2**55; the
+string "0.1" is one tenth).
+
+>>> import qsic
+>>> r = qsic.classify("x^2+y^2+z^2-1", "x^2+y^2-z^2")
+>>> (r.pencil, r.case, r.real_type)
+('regular', 14, 'two_nonsecant_conics')
+
+The answers are the JSON objects of the ``qsic`` command line (README, "Result object"):
+``classify(a, b).to_dict()`` equals ``qsic classify --json A B``.
+"""
+
+from __future__ import annotations
+
+import json
+import operator
+from fractions import Fraction
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _qsic
+from ._qsic import QsicError
+
+__all__ = [
+    "Quadric",
+    "Classification",
+    "QsicError",
+    "classify",
+    "classify_many",
+    "param",
+    "sample",
+    "motion",
+    "first_contact",
+    "FIELDS",
+]
+
+#: The fields of a classification, in the order of the JSON result object.
+FIELDS = (
+    "pencil",
+    "case",
+    "segre",
+    "signature",
+    "index_sequence",
+    "complex_type",
+    "real_type",
+    "components",
+    "singular_points",
+    "description",
+)
+
+
+def _entry_text(x: Any) -> str:
+    """An exact text for one number: ``str`` as written, integers in full, anything with
+    ``as_integer_ratio`` (float, Fraction, Decimal, NumPy scalars) as ``p/q``; a non-finite
+    float as ``nan``/``inf``, which the library refuses with the entry's position."""
+    if isinstance(x, str):
+        return x
+    if isinstance(x, (bool, np.bool_)):
+        raise QsicError(f"a matrix entry must be a number or a string, found {x!r}")
+    if isinstance(x, int):
+        return str(x)
+    try:
+        return str(operator.index(x))
+    except TypeError:
+        pass
+    ratio = getattr(x, "as_integer_ratio", None)
+    if ratio is None:
+        raise QsicError(
+            f"a matrix entry must be a number or a string, found {type(x).__name__}"
+        )
+    try:
+        p, q = ratio()
+    except (ValueError, OverflowError):
+        return str(x)  # nan, inf: refused by the library's number reader
+    return str(p) if q == 1 else f"{p}/{q}"
+
+
+def _matrix_texts(m: Any) -> List[str]:
+    arr = np.asarray(m, dtype=object)
+    if arr.shape != (4, 4):
+        raise QsicError(f"a quadric matrix must be 4x4, got shape {arr.shape}")
+    return [_entry_text(x) for x in arr.ravel()]
+
+
+QuadricLike = Union["Quadric", str, Sequence[Sequence[Any]], np.ndarray]
+
+
+def _native(q: Any) -> Optional[_qsic.NativeQuadric]:
+    """The native quadric of anything a quadric can be given as; None for the zero form."""
+    if isinstance(q, Quadric):
+        return q._native
+    if isinstance(q, str):
+        return _qsic.quadric_from_text(q)
+    return _qsic.quadric_from_entries(_matrix_texts(q))
+
+
+def _vector(v: Any) -> List[str]:
+    return [_entry_text(x) for x in np.asarray(v, dtype=object).ravel()]
+
+
+class Quadric:
+    """A quadric surface ``XᵀAX = 0``, ``X = (x, y, z, w)``, ``A`` a symmetric 4×4 rational
+    matrix, read exactly.
+
+    ``Quadric(source)`` takes a polynomial string of degree 2 in ``x, y, z, w`` (homogeneous)
+    or in ``x, y, z`` (affine, homogenized with ``w``; a polynomial of degree 1 is a plane,
+    read as its double plane), or a 4×4 array whose entries are ints, floats (converted
+    exactly), ``Fraction``s or number strings (``"3/4"``, ``"0.1"``, ``"-2.5e3"``).
+
+    Raises:
+        QsicError: the library's message (syntax error with its column, entry ``(row,col)``,
+            a matrix that is not symmetric, the zero form, a limit).
+    """
+
+    __slots__ = ("_native",)
+
+    def __init__(self, source: QuadricLike) -> None:
+        native = _native(source)
+        if native is None:
+            raise QsicError("the zero form is not a quadric")
+        self._native = native
+
+    @classmethod
+    def _of(cls, native: _qsic.NativeQuadric) -> "Quadric":
+        q = cls.__new__(cls)
+        q._native = native
+        return q
+
+    @property
+    def matrix(self) -> np.ndarray:
+        """The symmetric matrix, a 4×4 object array of ``Fraction``s (as given, not rescaled)."""
+        return np.array(
+            [Fraction(t) for t in self._native.entries()], dtype=object
+        ).reshape(4, 4)
+
+    @property
+    def polynomial(self) -> str:
+        """The quadratic form as a polynomial string in ``x, y, z, w``."""
+        return self._native.polynomial()
+
+    @property
+    def is_plane(self) -> bool:
+        """Given as a polynomial of degree 1: a plane, the quadric its double plane."""
+        return self._native.is_plane()
+
+    def __str__(self) -> str:
+        return self.polynomial
+
+    def __repr__(self) -> str:
+        return f"Quadric({self.polynomial!r})"
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Quadric) and self._native.equals(other._native)
+
+    __hash__ = None  # type: ignore[assignment]
+
+    # Shapes (module qsic::shapes of the Rust library). Lengths enter squared, so every
+    # coefficient stays rational; parameters are numbers as in the matrix entries.
+
+    @classmethod
+    def _shape(cls, name: str, *args: Any) -> "Quadric":
+        texts = [
+            _vector(a) if np.ndim(a) > 0 else [_entry_text(a)] for a in args
+        ]
+        return cls._of(_qsic.quadric_from_shape(name, texts))
+
+    @classmethod
+    def sphere(cls, center: Sequence[Any], r2: Any) -> "Quadric":
+        """The sphere ``|X − center|² = r2``."""
+        return cls._shape("sphere", center, r2)
+
+    @classmethod
+    def ellipsoid(cls, center: Sequence[Any], semi_axes2: Sequence[Any]) -> "Quadric":
+        """``Σ (Xᵢ − centerᵢ)²/a2ᵢ = 1`` with ``semi_axes2 = (a2₀, a2₁, a2₂)``."""
+        return cls._shape("ellipsoid", center, semi_axes2)
+
+    @classmethod
+    def cylinder(cls, point: Sequence[Any], direction: Sequence[Any], r2: Any) -> "Quadric":
+        """The circular cylinder of squared radius ``r2`` about the line ``point + s·direction``."""
+        return cls._shape("cylinder", point, direction, r2)
+
+    @classmethod
+    def elliptic_cylinder(cls, axis: Sequence[Any], semi_axes2: Sequence[Any]) -> "Quadric":
+        """``(x − x₀)²/a2 + (y − y₀)²/b2 = 1`` with ``axis = (x₀, y₀)``, ``semi_axes2 = (a2, b2)``."""
+        return cls._shape("elliptic_cylinder", axis, semi_axes2)
+
+    @classmethod
+    def cone(cls, apex: Sequence[Any], direction: Sequence[Any], cos2: Any) -> "Quadric":
+        """The circular cone ``((X − apex)·v)² = cos2·|v|²·|X − apex|²`` (``cos2`` the squared
+        cosine of the half-angle)."""
+        return cls._shape("cone", apex, direction, cos2)
+
+    @classmethod
+    def elliptic_cone(cls, apex: Sequence[Any], semi_axes2: Sequence[Any]) -> "Quadric":
+        """``(x − x₀)²/a2 + (y − y₀)²/b2 = (z − z₀)²``."""
+        return cls._shape("elliptic_cone", apex, semi_axes2)
+
+    @classmethod
+    def elliptic_paraboloid(cls, vertex: Sequence[Any], semi_axes2: Sequence[Any]) -> "Quadric":
+        """``(x − x₀)²/a2 + (y − y₀)²/b2 = z − z₀``."""
+        return cls._shape("elliptic_paraboloid", vertex, semi_axes2)
+
+    @classmethod
+    def hyperbolic_paraboloid(cls, vertex: Sequence[Any], semi_axes2: Sequence[Any]) -> "Quadric":
+        """``(x − x₀)²/a2 − (y − y₀)²/b2 = z − z₀``."""
+        return cls._shape("hyperbolic_paraboloid", vertex, semi_axes2)
+
+    @classmethod
+    def hyperboloid_one_sheet(cls, center: Sequence[Any], semi_axes2: Sequence[Any]) -> "Quadric":
+        """``(x − x₀)²/a2 + (y − y₀)²/b2 − (z − z₀)²/c2 = 1``."""
+        return cls._shape("hyperboloid_one_sheet", center, semi_axes2)
+
+    @classmethod
+    def hyperboloid_two_sheets(cls, center: Sequence[Any], semi_axes2: Sequence[Any]) -> "Quadric":
+        """``(z − z₀)²/c2 − (x − x₀)²/a2 − (y − y₀)²/b2 = 1``."""
+        return cls._shape("hyperboloid_two_sheets", center, semi_axes2)
+
+    @classmethod
+    def plane_pair(cls, n1: Sequence[Any], d1: Any, n2: Sequence[Any], d2: Any) -> "Quadric":
+        """The plane pair ``(n1·X + d1)(n2·X + d2) = 0``."""
+        return cls._shape("plane_pair", n1, d1, n2, d2)
+
+
+class Classification:
+    """The class of a pair of quadrics: the fields of the JSON result object (README,
+    "Result object"), ``affine`` the ``"affine"`` object or None when left out.
+
+    ``str(result)`` is the text report of ``qsic classify A B``; ``to_dict()`` the JSON object
+    of ``qsic classify --json A B``.
+    """
+
+    __slots__ = ("_dict", "_text")
+
+    def __init__(self, fields: Dict[str, Any], text: str = "") -> None:
+        self._dict = fields
+        self._text = text
+
+    pencil = property(lambda self: self._dict["pencil"], doc="regular, singular or single")
+    case = property(lambda self: self._dict["case"], doc="case 1–35 (regular pencils), else None")
+    segre = property(lambda self: self._dict["segre"], doc="Segre characteristic, e.g. [(11)11]_3")
+    signature = property(lambda self: self._dict["signature"], doc="canonical signature sequence")
+    index_sequence = property(lambda self: self._dict["index_sequence"], doc="canonical index sequence")
+    complex_type = property(lambda self: self._dict["complex_type"], doc="type over ℂ")
+    real_type = property(lambda self: self._dict["real_type"], doc="what is real")
+    components = property(lambda self: self._dict["components"], doc="real components, grouped")
+    singular_points = property(lambda self: self._dict["singular_points"], doc="real singular points, grouped")
+    description = property(lambda self: self._dict["description"], doc="one-line summary")
+    affine = property(lambda self: self._dict.get("affine"), doc="the pair in ℝ³, or None")
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The JSON result object as a dict (a fresh copy), keys in schema order."""
+        return json.loads(json.dumps(self._dict))
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Classification) and self._dict == other._dict
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __str__(self) -> str:
+        return self._text.rstrip("\n")
+
+    def __repr__(self) -> str:
+        return (
+            f"Classification(pencil={self.pencil!r}, case={self.case!r}, "
+            f"complex_type={self.complex_type!r}, real_type={self.real_type!r})"
+        )
+
+
+def classify(
+    a: QuadricLike, b: QuadricLike, *, affine: bool = True, chart: Optional[str] = None
+) -> Classification:
+    """Classifies the intersection of ``a`` and ``b`` (each a :class:`Quadric` or anything
+    ``Quadric()`` takes; one of them may be the zero form ``"0"``).
+
+    ``affine=False`` leaves out the affine view (like ``--projective``: it builds the exact
+    curve, far costlier than the classification); ``chart`` is the plane at infinity of the
+    affine view, a linear form ``"a*x+b*y+c*z+d*w"`` (default ``"w"``).
+
+    Raises:
+        QsicError: a bad quadric (message prefixed ``A: ``/``B: ``), or both zero.
+    """
+    na = _side_native("A", a)
+    nb = _side_native("B", b)
+    line, text = _qsic.classify(na, nb, affine=affine, chart=chart)
+    return Classification(json.loads(line), text)
+
+
+def _side_native(name: str, q: Any) -> Optional[_qsic.NativeQuadric]:
+    try:
+        return _native(q)
+    except QsicError as e:
+        raise QsicError(f"{name}: {e}") from None
+
+
+_I64_MAX = np.iinfo(np.int64).max
+
+
+def _batch_side(name: str, m: Any) -> Tuple[str, Any, int]:
+    arr = np.asarray(m)
+    if arr.ndim != 3 or arr.shape[1:] != (4, 4):
+        raise QsicError(f"{name}: expected an array of shape (N, 4, 4), got {arr.shape}")
+    n = arr.shape[0]
+    kind = arr.dtype.kind
+    if kind in "iub" and not (kind == "u" and arr.size and arr.max() > _I64_MAX):
+        return "int64", np.ascontiguousarray(arr, dtype=np.int64).tobytes(), n
+    if kind == "f":
+        return "float64", np.ascontiguousarray(arr, dtype=np.float64).tobytes(), n
+    if kind in "OUSu":
+        return "text", [_entry_text(x) for x in arr.astype(object).ravel()], n
+    raise QsicError(f"{name}: unsupported dtype {arr.dtype}")
+
+
+def classify_many(
+    A: Any,
+    B: Any,
+    *,
+    affine: bool = False,
+    chart: Optional[str] = None,
+    threads: Optional[int] = None,
+) -> Dict[str, np.ndarray]:
+    """Classifies ``A[k]`` against ``B[k]`` for every ``k``, on all cores with the GIL released.
+
+    ``A`` and ``B`` have shape ``(N, 4, 4)``: ``int64`` (or any integer type), ``float64``
+    (floats converted exactly), or ``object`` arrays of ints, ``Fraction``s, floats and number
+    strings. A zero matrix is the zero form (allowed on one side, as in the CLI).
+
+    Returns a dict of NumPy arrays of length N, in the order of the JSON result object:
+    ``pencil``, ``segre``, ``signature``, ``index_sequence``, ``complex_type``,
+    ``real_type``, ``description`` (object arrays of str or None), ``case`` (``int8``, 0
+    where the pencil has no case), ``components``, ``singular_points`` (object arrays of
+    lists of dicts), ``affine`` (dicts, only with ``affine=True``: the ``"affine"`` object of
+    ``qsic classify``, costly) and ``error``: None, or the message of the row's error
+    (``A: …``, ``B: …``, as in ``qsic classify --batch``); a bad row never raises.
+
+    ``threads``: the number of threads (default: all cores).
+
+    Raises:
+        QsicError: only for arrays of the wrong shape or dtype, or lengths that differ.
+    """
+    ka, da, na = _batch_side("A", A)
+    kb, db, nb = _batch_side("B", B)
+    if na != nb:
+        raise QsicError(f"A holds {na} matrices and B {nb}: the lengths must be equal")
+    cols = _qsic.classify_many(ka, da, kb, db, affine=affine, chart=chart, threads=threads)
+    out: Dict[str, np.ndarray] = {}
+    for key in FIELDS:
+        if key == "case":
+            out[key] = np.frombuffer(cols["case"], dtype=np.int8).copy()
+        else:
+            out[key] = _objects(cols[key])
+    if affine:
+        out["affine"] = _objects(
+            [None if t is None else json.loads(t) for t in cols["affine"]]
+        )
+    out["error"] = _objects(cols["error"])
+    return out
+
+
+def _objects(values: List[Any]) -> np.ndarray:
+    return np.fromiter(values, dtype=object, count=len(values))
+
+
+def param(a: QuadricLike, b: QuadricLike) -> Dict[str, Any]:
+    """The exact curve: the JSON object of ``qsic param --json A B`` (README, "qsic param"):
+    the classification's fields, ``numbers``, every component's parameterization as strings
+    that sympy reads, and the real singular points.
+
+    Raises:
+        QsicError: a bad quadric, or ``not yet: …`` for a class whose curve is not built.
+    """
+    return json.loads(_qsic.param(_side_native("A", a), _side_native("B", b)))
+
+
+def sample(
+    a: QuadricLike,
+    b: QuadricLike,
+    *,
+    points: int = 64,
+    tolerance: Optional[float] = None,
+    chart: Optional[str] = None,
+) -> Dict[str, Any]:
+    """Real points on every real piece of the curve: the JSON object of ``qsic sample``, with
+    every polyline a NumPy array.
+
+    Each entry of ``components`` has ``branches`` (a list of ``(n, 4)`` float arrays of unit
+    vectors ``[x, y, z, w]``) and ``affine`` with ``branches`` (``(n, 3)`` arrays in the chart
+    ``chart = 0`` at infinity, default ``w``) and ``points_at_infinity`` (a ``(k, 4)`` array).
+    At least ``points`` points per piece; with ``tolerance``, chords within it in the chart.
+
+    Raises:
+        QsicError: as :func:`param`, and for bad options.
+    """
+    out = json.loads(
+        _qsic.sample(
+            _side_native("A", a),
+            _side_native("B", b),
+            points=points,
+            tolerance=tolerance,
+            chart=chart,
+        )
+    )
+    for piece in out["components"]:
+        piece["branches"] = [np.array(br, dtype=float).reshape(-1, 4) for br in piece["branches"]]
+        aff = piece["affine"]
+        aff["branches"] = [np.array(br, dtype=float).reshape(-1, 3) for br in aff["branches"]]
+        aff["points_at_infinity"] = np.array(aff["points_at_infinity"], dtype=float).reshape(-1, 4)
+    return out
+
+
+MovingLike = Union[str, Sequence[Sequence[Any]], np.ndarray]
+
+
+def _moving(name: str, m: Any) -> List[str]:
+    if isinstance(m, str):
+        return [m]
+    try:
+        return _matrix_texts(m)
+    except QsicError as e:
+        raise QsicError(f"{name}: {e}") from None
+
+
+def _range(r: Optional[Tuple[Any, Any]]) -> Tuple[Optional[str], Optional[str]]:
+    if r is None:
+        return None, None
+    t0, t1 = r
+    return (
+        None if t0 is None else _entry_text(t0),
+        None if t1 is None else _entry_text(t1),
+    )
+
+
+def motion(
+    a: MovingLike, b: MovingLike, range: Optional[Tuple[Any, Any]] = None
+) -> Dict[str, Any]:
+    """The instants where the type of the intersection of moving quadrics ``A(t)``, ``B(t)``
+    changes, and the type on every interval and at every instant: the JSON object of
+    ``qsic motion --json`` (README, "Moving quadrics").
+
+    ``a``, ``b``: a polynomial string in ``x, y, z, w`` whose coefficients are rational
+    functions of ``t`` (``"(x - t)^2 + y^2 + z^2 - 1"``), or a 4×4 array of numbers and
+    strings of rational functions of ``t``. ``range = (t0, t1)``: only ``t`` in
+    ``[t0, t1]``, None for an open side.
+
+    Raises:
+        QsicError: the reader's or the analysis' message.
+    """
+    t0, t1 = _range(range)
+    return json.loads(_qsic.motion(_moving("A", a), _moving("B", b), t0, t1))
+
+
+def first_contact(
+    a: MovingLike, b: MovingLike, range: Optional[Tuple[Any, Any]] = None
+) -> Dict[str, Any]:
+    """The first ``t`` in ``range`` where moving quadrics have a real common point, and the
+    relation of the solids along the motion where both are ellipsoids: the JSON object of
+    ``qsic contact --json`` (``range``, ``first_contact``: None, ``"-inf"``, ``"p/q"`` or
+    ``{"poly", "interval", "approx"}``, ``solids``).
+
+    Raises:
+        QsicError: the reader's or the analysis' message.
+    """
+    t0, t1 = _range(range)
+    return json.loads(_qsic.first_contact(_moving("A", a), _moving("B", b), t0, t1))

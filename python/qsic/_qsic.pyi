@@ -1,0 +1,44 @@
+"""The native half of `qsic` (PyO3). Use the functions of `qsic` itself: they accept
+NumPy arrays and Python numbers and turn them into what these take."""
+
+from typing import Dict, List, Optional, Tuple, Union
+
+class QsicError(ValueError):
+    """Bad input: the library's message."""
+
+class NativeQuadric:
+    def polynomial(self) -> str: ...
+    def entries(self) -> List[str]: ...
+    def is_plane(self) -> bool: ...
+    def equals(self, other: NativeQuadric) -> bool: ...
+
+def quadric_from_text(text: str) -> Optional[NativeQuadric]: ...
+def quadric_from_entries(texts: List[str]) -> Optional[NativeQuadric]: ...
+def quadric_from_shape(name: str, args: List[List[str]]) -> NativeQuadric: ...
+def classify(
+    a: Optional[NativeQuadric],
+    b: Optional[NativeQuadric],
+    affine: bool = True,
+    chart: Optional[str] = None,
+) -> Tuple[str, str]: ...
+def classify_many(
+    a_kind: str,
+    a: Union[bytes, List[str]],
+    b_kind: str,
+    b: Union[bytes, List[str]],
+    affine: bool = False,
+    chart: Optional[str] = None,
+    threads: Optional[int] = None,
+) -> Dict[str, Union[bytes, list]]: ...
+def param(a: Optional[NativeQuadric], b: Optional[NativeQuadric]) -> str: ...
+def sample(
+    a: Optional[NativeQuadric],
+    b: Optional[NativeQuadric],
+    points: int = 64,
+    tolerance: Optional[float] = None,
+    chart: Optional[str] = None,
+) -> str: ...
+def motion(a: List[str], b: List[str], t0: Optional[str] = None, t1: Optional[str] = None) -> str: ...
+def first_contact(
+    a: List[str], b: List[str], t0: Optional[str] = None, t1: Optional[str] = None
+) -> str: ...

@@ -1,0 +1,79 @@
+"""The curve and motion APIs equal the CLI's JSON (`qsic param --json`, `qsic sample`,
+`qsic motion --json`, `qsic contact --json`); sampled points lie on both quadrics."""
+
+from __future__ import annotations
+
+import json
+from fractions import Fraction
+
+import numpy as np
+import pytest
+from conftest import CORPUS, read_jsonl, run_cli
+
+import qsic
+
+PAIRS = [
+    ("x^2+y^2+z^2-w^2", "2*x^2+4*y^2-w^2"),  # case 1: two closed quartic branches
+    ("x^2+y^2+z^2-1", "x^2+y^2-z^2"),  # two circles
+    ("x^2+y^2-1", "x^2+z^2-1"),  # Steinmetz: two crossing ellipses
+]
+
+
+def cli_json(cli, *args):
+    out = run_cli(cli, *args)
+    assert out.returncode == 0, out.stderr.decode()
+    return json.loads(out.stdout)
+
+
+@pytest.mark.parametrize("a,b", PAIRS)
+def test_param_equals_cli(cli, a, b):
+    assert qsic.param(a, b) == cli_json(cli, "param", "--json", a, b)
+
+
+@pytest.mark.parametrize("a,b", PAIRS)
+def test_sample_equals_cli_and_lies_on_both_quadrics(cli, a, b):
+    got = qsic.sample(a, b, points=16)
+    want = cli_json(cli, "sample", "--points", "16", a, b)
+    qa, qb = (np.array(qsic.Quadric(q).matrix, dtype=float) for q in (a, b))
+    assert len(got["components"]) == len(want["components"]) > 0
+    for piece, expected in zip(got["components"], want["components"]):
+        assert len(piece["branches"]) == len(expected["branches"])
+        for branch, exp in zip(piece["branches"], expected["branches"]):
+            assert branch.shape == (len(exp), 4) and branch.shape[0] >= 16
+            assert np.array_equal(branch, np.array(exp))  # floats round-trip exactly
+            assert np.allclose(np.linalg.norm(branch, axis=1), 1)
+            for q in (qa, qb):
+                assert np.abs(np.einsum("ni,ij,nj->n", branch, q, branch)).max() < 1e-9
+        for branch, exp in zip(piece["affine"]["branches"], expected["affine"]["branches"]):
+            assert branch.shape == (len(exp), 3) and np.array_equal(branch, np.array(exp))
+        assert piece["affine"]["points_at_infinity"].shape[1] == 4
+    assert got["connected_components"] == want["connected_components"]
+
+
+def test_not_yet_and_zero_are_errors():
+    with pytest.raises(qsic.QsicError, match="^not yet: the curve of a single quadric"):
+        qsic.param("0", "x^2+y^2-z^2")
+
+
+@pytest.mark.parametrize("line", read_jsonl(CORPUS / "moving.jsonl"), ids=lambda r: r["id"])
+def test_motion_on_the_moving_corpus_equals_cli(cli, line):
+    got = qsic.motion(line["A"], line["B"])
+    assert got == cli_json(cli, "motion", "--json", json.dumps(line["A"]), json.dumps(line["B"]))
+    def value(t):
+        return float(Fraction(t)) if isinstance(t, str) else float(t["approx"])
+
+    instants = [value(i["t"]) for i in got["instants"]]
+    assert instants == pytest.approx([value(t) for t in line["critical_instants"]], abs=1e-12)
+
+
+def test_motion_with_a_range_and_first_contact_equal_cli(cli):
+    a, b = "x^2+y^2+z^2-4", "(x-t)^2+y^2+z^2-1"
+    got = qsic.motion(a, b, range=(-1, 2))
+    assert got == cli_json(cli, "motion", "--json", "--range", "-1", "2", a, b)
+    assert [i["t"] for i in got["instants"]] == ["-1", "0", "1"]
+    contact = qsic.first_contact(a, b)
+    assert contact == cli_json(cli, "contact", "--json", a, b)
+    assert contact["first_contact"] == "-3"  # |t| = 2 + 1
+    later = qsic.first_contact(a, b, range=(0, None))
+    assert later == cli_json(cli, "contact", "--json", "--range", "0", "oo", a, b)
+    assert later["first_contact"] == "1"  # inside (no common point) until |t| = 2 − 1
