@@ -47,7 +47,7 @@ pub struct AffineComponent {
 }
 
 /// A real singular point of the curve seen in the chart.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct AffineSingularPoint {
     /// Its kind.
     pub kind: SingularPointKind,
@@ -58,7 +58,7 @@ pub struct AffineSingularPoint {
 }
 
 /// The curve in ℝ³ (see the module documentation).
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct AffineCurve {
     /// Connected components of the real curve in ℝ³ that are bounded.
     pub curves_bounded: usize,
@@ -286,8 +286,31 @@ impl InfinityEvents<'_> {
         let mut candidates: Vec<ParamValue> =
             r.real_roots().into_iter().map(ParamValue::Finite).collect();
         candidates.push(ParamValue::Infinity);
+        // the primary form vanishes at a finite `t` only where every `aᵢ² − s·dᵢ²` does:
+        // one of them nonzero at `t` (decided by enclosures, no zero test) rules it out
+        let norm = (0..4)
+            .map(|i| &(&primary.a[i] * &primary.a[i]) - &(s * &(&primary.d[i] * &primary.d[i])))
+            .find(|n| !n.is_zero());
         let mut events = Vec::new();
         for at in candidates {
+            if let (ParamValue::Finite(t), Some(norm)) = (&at, &norm) {
+                // the common case: r(t) = 0 is known, so the sheet through the plane at
+                // infinity follows from signs alone (see `sheet_at_root`)
+                let s_sign = s.sign_at(t);
+                if s_sign == Sign::Negative {
+                    continue;
+                }
+                if norm.sign_at(t) != Sign::Zero {
+                    for sheet in sheets_at_root(&wa, &wd, s_sign, t) {
+                        events.push(Event {
+                            at: at.clone(),
+                            sheet,
+                            vertex: self.local(),
+                        });
+                    }
+                    continue;
+                }
+            }
             // the forms and s in the chart of `at`, and the parameter there
             let (t, s_here, here): (AlgebraicReal, NumberPoly, Vec<(PointPoly, PointPoly)>) =
                 match &at {
@@ -349,6 +372,32 @@ impl InfinityEvents<'_> {
             }
         }
         Ok(events)
+    }
+}
+
+/// The sheets on which `wa(t) ± wd(t)·√s(t) = 0` at a root `t` of `r = wa² − s·wd²` with
+/// `s(t) ≥ 0` (sign `s_sign`): `wa(t)² = s(t)·wd(t)²`, so where `s(t)·wd(t) = 0` also
+/// `wa(t) = 0` and the point is at infinity on every sheet there (`None` where `s(t) = 0`,
+/// both sheets otherwise); else `wa(t) ≠ 0` and only the sheet `σ = −sign wa(t)·sign wd(t)`
+/// passes through the plane. [`sheet_value_zero`] at a root of `r`, without its zero test
+/// of `r(t)`.
+fn sheets_at_root(
+    wa: &NumberPoly,
+    wd: &NumberPoly,
+    s_sign: Sign,
+    t: &AlgebraicReal,
+) -> Vec<Option<Sheet>> {
+    if s_sign == Sign::Zero {
+        return vec![None];
+    }
+    let sd = wd.sign_at(t);
+    if sd == Sign::Zero {
+        return vec![Some(Sheet::Plus), Some(Sheet::Minus)];
+    }
+    if wa.sign_at(t) == sd {
+        vec![Some(Sheet::Minus)]
+    } else {
+        vec![Some(Sheet::Plus)]
     }
 }
 

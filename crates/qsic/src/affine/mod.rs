@@ -5,6 +5,7 @@
 //! | [`Chart`] | the plane at infinity `ℓ(X) = 0` (default `w = 0`) and the change of coordinates making it `w = 0` |
 //! | [`AffineSurface`], [`surface_name`] | the affine name of a quadric (sphere, elliptic cylinder, …), exactly |
 //! | [`affine_curve`] | the curve in ℝ³: bounded and unbounded pieces, points and singular points at infinity, conic names |
+//! | [`fast_affine_curve`], [`conic_real_intersections`] | the same without the curve where the class and the conics at infinity decide it (nonsingular quartics) |
 //!
 //! With `M` the 4×4 matrix in coordinates where the plane at infinity is `w = 0` and `Q` its
 //! upper-left 3×3 block (the quadratic part), the affine type is decided by the inertias of
@@ -15,8 +16,10 @@
 //! a cubic characteristic polynomial with zero discriminant.
 
 mod curve;
+mod fast;
 
 pub use curve::{affine_curve, AffineComponent, AffineCurve, AffineSingularPoint};
+pub use fast::{conic_real_intersections, fast_affine_curve};
 
 use crate::error::Error;
 use crate::param::{Number, Point};
@@ -499,9 +502,10 @@ pub fn affine_view(
     };
     let surfaces = [name(a, planes[0]), name(b, planes[1])];
     let curve = match (a, b) {
-        (Some(a), Some(b)) => {
-            crate::param::parameterize(a, b).and_then(|c| affine_curve(&c, a, b, chart))
-        }
+        (Some(a), Some(b)) => match fast_affine_curve(a, b, chart) {
+            Some(c) => Ok(c),
+            None => crate::param::parameterize(a, b).and_then(|c| affine_curve(&c, a, b, chart)),
+        },
         _ => Err(Error::Unsupported("a single quadric: no curve".into())),
     };
     let solids = match (a, b, surfaces) {
