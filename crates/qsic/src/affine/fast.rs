@@ -51,14 +51,18 @@ use qsic_algebra::{IBig, Poly, RBig};
 /// assert_eq!(conic_real_intersections(&m([1, 1, -1]), &m([2, 2, -2])), None);
 /// ```
 pub fn conic_real_intersections(ca: &[[RBig; 3]; 3], cb: &[[RBig; 3]; 3]) -> Option<Vec<usize>> {
+    real_intersections(&super::integral(ca), &super::integral(cb))
+}
+
+/// [`conic_real_intersections`] of integer matrices.
+fn real_intersections(ca: &[[IBig; 3]; 3], cb: &[[IBig; 3]; 3]) -> Option<Vec<usize>> {
     if is_definite(ca) || is_definite(cb) {
         return Some(Vec::new());
     }
-    let (ca, cb) = (integral(ca), integral(cb));
     // at most 16 centres fail (4 common points, 6 lines through two of them, each meeting
     // the parabola (j, j²) at most twice): 17 tries always find a generic one
     for j in 0..=16i64 {
-        let (p, q) = (moved(&ca, j), moved(&cb, j));
+        let (p, q) = (moved(ca, j), moved(cb, j));
         if p[2][2] == IBig::ZERO && q[2][2] == IBig::ZERO {
             continue; // the centre lies on both conics
         }
@@ -100,26 +104,9 @@ pub fn conic_real_intersections(ca: &[[RBig; 3]; 3], cb: &[[RBig; 3]; 3]) -> Opt
 }
 
 /// Whether a symmetric 3×3 matrix is definite (inertia (3, 0) or (0, 3)).
-fn is_definite(m: &[[RBig; 3]; 3]) -> bool {
+fn is_definite(m: &[[IBig; 3]; 3]) -> bool {
     let i = super::inertia(m);
     i.positive == 3 || i.negative == 3
-}
-
-/// A positive multiple of a rational matrix with integer entries.
-fn integral(m: &[[RBig; 3]; 3]) -> [[IBig; 3]; 3] {
-    let mut den = IBig::ONE;
-    for v in m.iter().flatten() {
-        let d = IBig::from(v.denominator().clone());
-        if &den % &d != IBig::ZERO {
-            den *= d;
-        }
-    }
-    std::array::from_fn(|i| {
-        std::array::from_fn(|j| {
-            let v = &m[i][j];
-            v.numerator() * (&den / IBig::from(v.denominator().clone()))
-        })
-    })
 }
 
 /// `TᵀCT` for `T = [[1, 0, j], [0, 1, j²], [0, 0, 1]]`: the conic in coordinates where the
@@ -148,15 +135,11 @@ fn moved(c: &[[IBig; 3]; 3], j: i64) -> [[IBig; 3]; 3] {
     })
 }
 
-/// The conic at infinity of `q` in `chart`: the upper-left 3×3 block of its matrix there.
-fn conic_at_infinity(q: &Quadric, chart: &Chart) -> [[RBig; 3]; 3] {
-    let block =
-        |m: &[[RBig; 4]; 4]| std::array::from_fn(|i| std::array::from_fn(|j| m[i][j].clone()));
-    if chart.is_default() {
-        block(q.matrix())
-    } else {
-        block(&chart.matrix_in_chart(q.matrix()))
-    }
+/// The conic at infinity of `q` in `chart`: the upper-left 3×3 block of its matrix there
+/// (a positive multiple: integers).
+fn conic_at_infinity(q: &Quadric, chart: &Chart) -> [[IBig; 3]; 3] {
+    let m = super::integer_matrix_in_chart(q, chart);
+    std::array::from_fn(|i| std::array::from_fn(|j| m[i][j].clone()))
 }
 
 /// The curve in ℝ³ of a nonsingular quartic (cases 1–4) from its class and its real points
@@ -184,8 +167,7 @@ pub fn fast_affine_curve(a: &Quadric, b: &Quadric, chart: &Chart) -> Option<Affi
     if !(1..=4).contains(&case) {
         return None;
     }
-    let points =
-        conic_real_intersections(&conic_at_infinity(a, chart), &conic_at_infinity(b, chart))?;
+    let points = real_intersections(&conic_at_infinity(a, chart), &conic_at_infinity(b, chart))?;
     let p = points.len();
     let odd = points.iter().all(|m| m % 2 == 1);
     let bounded = match (case, p) {

@@ -28,7 +28,7 @@ use qsic_algebra::field::NumberFieldElement;
 use qsic_algebra::linalg::minors::principal_minor_sums;
 use qsic_algebra::linalg::{Inertia, Matrix};
 use qsic_algebra::Ring;
-use qsic_algebra::{RBig, Sign};
+use qsic_algebra::{IBig, RBig, Sign};
 
 /// The plane at infinity of an affine chart, `a·x + b·y + c·z + d·w = 0`.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -224,9 +224,38 @@ impl AffineSurface {
     }
 }
 
-/// The inertia of a symmetric `N × N` rational matrix, exactly.
-fn inertia<const N: usize>(m: &[[RBig; N]; N]) -> Inertia {
-    Inertia::from_minor_sum_signs(principal_minor_sums(m).map(|e| Sign::of_rational(&e)))
+/// The inertia of a symmetric `N × N` integer matrix, exactly.
+fn inertia<const N: usize>(m: &[[IBig; N]; N]) -> Inertia {
+    Inertia::from_minor_sum_signs(principal_minor_sums(m).map(|e| Sign::of(&e)))
+}
+
+/// A positive multiple of a rational matrix with integer entries (the same quadric: every
+/// inertia, equality and vanishing `surface_name` reads is unchanged).
+fn integral<const N: usize>(m: &[[RBig; N]; N]) -> [[IBig; N]; N] {
+    let mut den = IBig::ONE;
+    for v in m.iter().flatten() {
+        let d = IBig::from(v.denominator().clone());
+        if &den % &d != IBig::ZERO {
+            den *= d;
+        }
+    }
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            let v = &m[i][j];
+            v.numerator() * (&den / IBig::from(v.denominator().clone()))
+        })
+    })
+}
+
+/// The matrix of `q` in the chart's coordinates as integers: the primitive integer matrix
+/// itself in the default chart (no rational arithmetic), else [`Chart::matrix_in_chart`]
+/// scaled.
+fn integer_matrix_in_chart(q: &Quadric, chart: &Chart) -> [[IBig; 4]; 4] {
+    if chart.is_default() {
+        q.integer_matrix().entries().clone()
+    } else {
+        integral(&chart.matrix_in_chart(q.matrix()))
+    }
 }
 
 /// The affine name of `q` in `chart`.
@@ -241,14 +270,14 @@ fn inertia<const N: usize>(m: &[[RBig; N]; N]) -> Inertia {
 /// ```
 pub fn surface_name(q: &Quadric, chart: &Chart) -> AffineSurface {
     use AffineSurface::*;
-    let m = chart.matrix_in_chart(q.matrix());
+    let m = integer_matrix_in_chart(q, chart);
     let mut im = inertia(&m);
     let mut negate = false;
     if im.negative > im.positive {
         im = im.negated();
         negate = true;
     }
-    let block: [[RBig; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| m[i][j].clone()));
+    let block: [[IBig; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| m[i][j].clone()));
     let mut iq = inertia(&block);
     if negate {
         iq = iq.negated();
@@ -257,9 +286,9 @@ pub fn surface_name(q: &Quadric, chart: &Chart) -> AffineSurface {
     // Q = cI: a multiple of the identity
     let scalar = block[0][0] == block[1][1]
         && block[1][1] == block[2][2]
-        && block[0][1] == RBig::ZERO
-        && block[0][2] == RBig::ZERO
-        && block[1][2] == RBig::ZERO;
+        && block[0][1] == IBig::ZERO
+        && block[0][2] == IBig::ZERO
+        && block[1][2] == IBig::ZERO;
     match (im.rank(), iq.rank()) {
         (4, 3) => match (im.positive, iq.positive == 3 || iq.negative == 3) {
             (4, _) => Imaginary,
@@ -279,7 +308,7 @@ pub fn surface_name(q: &Quadric, chart: &Chart) -> AffineSurface {
         (3, 3) => {
             if im.negative == 0 {
                 PointCone
-            } else if cubic_discriminant(&e) == RBig::ZERO {
+            } else if cubic_discriminant(&e) == IBig::ZERO {
                 CircularCone
             } else {
                 EllipticCone
@@ -290,7 +319,7 @@ pub fn surface_name(q: &Quadric, chart: &Chart) -> AffineSurface {
                 HyperbolicCylinder
             } else if im.negative == 0 {
                 Imaginary
-            } else if &e[0] * &e[0] == RBig::from(4) * &e[1] {
+            } else if &e[0] * &e[0] == IBig::from(4) * &e[1] {
                 CircularCylinder
             } else {
                 EllipticCylinder
@@ -319,12 +348,12 @@ pub fn surface_name(q: &Quadric, chart: &Chart) -> AffineSurface {
 }
 
 /// The discriminant of `x³ − E₁x² + E₂x − E₃` (zero iff a repeated eigenvalue).
-fn cubic_discriminant(e: &[RBig; 3]) -> RBig {
+fn cubic_discriminant(e: &[IBig; 3]) -> IBig {
     let (b, c, d) = (-e[0].clone(), e[1].clone(), -e[2].clone());
     // Δ = 18bcd − 4b³d + b²c² − 4c³ − 27d² for x³ + bx² + cx + d
-    RBig::from(18) * &b * &c * &d - RBig::from(4) * &b * &b * &b * &d + &b * &b * &c * &c
-        - RBig::from(4) * &c * &c * &c
-        - RBig::from(27) * &d * &d
+    IBig::from(18) * &b * &c * &d - IBig::from(4) * &b * &b * &b * &d + &b * &b * &c * &c
+        - IBig::from(4) * &c * &c * &c
+        - IBig::from(27) * &d * &d
 }
 
 #[cfg(test)]
