@@ -91,7 +91,7 @@ fn real_intersections(ca: &[[IBig; 3]; 3], cb: &[[IBig; 3]; 3]) -> Option<Vec<us
         let mut out = Vec::new();
         for (f, m) in rf.chart().squarefree_decomposition() {
             if f.degree().unwrap_or(0) > 0 {
-                out.extend(std::iter::repeat(m).take(f.count_real_roots_sturm()));
+                out.extend(std::iter::repeat_n(m, f.count_real_roots_sturm()));
             }
         }
         if rf.multiplicity_at_infinity() > 0 {
