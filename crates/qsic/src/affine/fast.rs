@@ -154,9 +154,13 @@ fn conic_at_infinity(q: &Quadric, chart: &Chart) -> [[IBig; 3]; 3] {
 /// // a sphere and a cylinder crossing it: two bounded loops
 /// let c = fast_affine_curve(&q("x^2+y^2+z^2-4"), &q("x^2+2*y^2-1"), &Chart::default()).unwrap();
 /// assert_eq!((c.curves_bounded, c.curves_unbounded, c.points_at_infinity), (2, 0, 0));
-/// // two hyperboloids of one sheet: branches through infinity
-/// let c = fast_affine_curve(&q("x^2+y^2-z^2-1"), &q("x^2-2*y^2+3*z^2-2*x*z-5"), &Chart::default());
-/// assert!(c.map_or(true, |c| c.curves_unbounded == c.points_at_infinity));
+/// // a hyperboloid of one sheet and a hyperboloid of two sheets (case 3): one branch
+/// // through four points at infinity, four unbounded arcs
+/// let h = q("x^2+y^2-z^2-1");
+/// let c = fast_affine_curve(&h, &q("2*x^2-y^2-z^2+x+z-1"), &Chart::default()).unwrap();
+/// assert_eq!((c.curves_bounded, c.curves_unbounded, c.points_at_infinity), (0, 4, 4));
+/// // case 1 with four points at infinity: on one oval or two? The curve decides.
+/// assert!(fast_affine_curve(&h, &q("x*y-z-1"), &Chart::default()).is_none());
 /// ```
 pub fn fast_affine_curve(a: &Quadric, b: &Quadric, chart: &Chart) -> Option<AffineCurve> {
     let class = classify(a, b);
