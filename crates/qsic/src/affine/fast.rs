@@ -26,9 +26,10 @@ use qsic_algebra::{IBig, Poly, RBig};
 /// share a component (infinitely many common points).
 ///
 /// A definite `C_A` or `C_B` has no real point. Otherwise, projected from a centre `c` on
-/// neither conic's common points nor on a line through two of them (the first of
-/// `(j, j², 1)`, `j = 0, 1, …` that passes the test below: at most 16 fail, as a line meets
-/// the parabola twice), the common points are the roots of the resultant `R` of the two
+/// neither conic nor on a line through two common points (the first of `(j, j³, 1)`,
+/// `j = 0, 1, …` that passes the tests below: at most 30 fail, as the cubic `y = x³` meets a
+/// conic at most 6 times and a line at most 3 times), the common points are the roots of the
+/// resultant `R` of the two
 /// conics along the lines through `c`, a binary quartic, each with its intersection
 /// multiplicity; a real root is a real point because the common point on its line is then the
 /// single root of the first subresultant `G₁z + G₀`, which has real coefficients. The centre
@@ -59,12 +60,12 @@ fn real_intersections(ca: &[[IBig; 3]; 3], cb: &[[IBig; 3]; 3]) -> Option<Vec<us
     if is_definite(ca) || is_definite(cb) {
         return Some(Vec::new());
     }
-    // at most 16 centres fail (4 common points, 6 lines through two of them, each meeting
-    // the parabola (j, j²) at most twice): 17 tries always find a generic one
-    for j in 0..=16i64 {
+    // at most 30 centres fail (the cubic (j, j³) meets each conic at most 6 times and each
+    // of the 6 lines through two common points at most 3 times): 31 tries always succeed
+    for j in 0..=30i64 {
         let (p, q) = (moved(ca, j), moved(cb, j));
-        if p[2][2] == IBig::ZERO && q[2][2] == IBig::ZERO {
-            continue; // the centre lies on both conics
+        if p[2][2] == IBig::ZERO || q[2][2] == IBig::ZERO {
+            continue; // the centre lies on a conic
         }
         // each conic as a₂z² + a₁z + a₀ with a_k binary forms in (x, y), in the chart y = 1
         let along = |c: &[[IBig; 3]; 3]| -> [Poly; 3] {
@@ -100,7 +101,7 @@ fn real_intersections(ca: &[[IBig; 3]; 3], cb: &[[IBig; 3]; 3]) -> Option<Vec<us
         out.sort_unstable();
         return Some(out);
     }
-    unreachable!("at most 16 of 17 centres are special for two conics without common component")
+    unreachable!("at most 30 of 31 centres are special for two conics without common component")
 }
 
 /// Whether a symmetric 3×3 matrix is definite (inertia (3, 0) or (0, 3)).
@@ -109,15 +110,15 @@ fn is_definite(m: &[[IBig; 3]; 3]) -> bool {
     i.positive == 3 || i.negative == 3
 }
 
-/// `TᵀCT` for `T = [[1, 0, j], [0, 1, j²], [0, 0, 1]]`: the conic in coordinates where the
-/// point `(j, j², 1)` is `(0, 0, 1)`.
+/// `TᵀCT` for `T = [[1, 0, j], [0, 1, j³], [0, 0, 1]]`: the conic in coordinates where the
+/// point `(j, j³, 1)` is `(0, 0, 1)`.
 fn moved(c: &[[IBig; 3]; 3], j: i64) -> [[IBig; 3]; 3] {
     if j == 0 {
         return c.clone();
     }
     let t: [[IBig; 3]; 3] = [
         [IBig::ONE, IBig::ZERO, IBig::from(j)],
-        [IBig::ZERO, IBig::ONE, IBig::from(j * j)],
+        [IBig::ZERO, IBig::ONE, IBig::from(j * j * j)],
         [IBig::ZERO, IBig::ZERO, IBig::ONE],
     ];
     std::array::from_fn(|i| {
@@ -243,6 +244,12 @@ mod tests {
         // (0,0,1) twice (both conics pass through it, transversally each: the line pair's
         // vertex is a double point of xy) and two simple points
         assert_eq!(got, vec![1, 1, 2]);
+        // x² = yz and y² = xz, both through the first centre (0, 0, 1): (0, 0, 1) transversally, (1, 1, 1), two complex points
+        let other = conic([[0, 0, -1], [0, 2, 0], [-1, 0, 0]]);
+        assert_eq!(
+            conic_real_intersections(&parabola, &other),
+            Some(vec![1, 1])
+        );
         // a definite conic and anything: none; a circle with itself: a common component
         let definite = conic([[1, 0, 0], [0, 2, 0], [0, 0, 3]]);
         assert_eq!(conic_real_intersections(&definite, &xy), Some(vec![]));
