@@ -47,7 +47,7 @@ pub struct AffineComponent {
 }
 
 /// A real singular point of the curve seen in the chart.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct AffineSingularPoint {
     /// Its kind.
     pub kind: SingularPointKind,
@@ -58,7 +58,7 @@ pub struct AffineSingularPoint {
 }
 
 /// The curve in ℝ³ (see the module documentation).
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct AffineCurve {
     /// Connected components of the real curve in ℝ³ that are bounded.
     pub curves_bounded: usize,
@@ -281,13 +281,67 @@ impl InfinityEvents<'_> {
             chart_form(self.l, &primary.d),
         );
         let r = &(&wa * &wa) - &(s * &(&wd * &wd));
+        // the base points of the primary form: a sheet vanishes at `t` only where every
+        // `aᵢ² − s·dᵢ²` does, a root of their gcd `g` (none when `g` is constant)
+        let mut g = NumberPoly::zero();
+        for i in 0..4 {
+            let n = &(&primary.a[i] * &primary.a[i]) - &(s * &(&primary.d[i] * &primary.d[i]));
+            if !n.is_zero() {
+                g = if g.is_zero() { n } else { g.gcd_monic(&n) };
+            }
+        }
+        let base = (degree(&g) > 0).then_some(g);
         // every parameter where a sheet meets the plane at infinity, or the primary form
-        // vanishes, is a root of r (finite, or v = 0 in the chart v = 1/u)
-        let mut candidates: Vec<ParamValue> =
-            r.real_roots().into_iter().map(ParamValue::Finite).collect();
+        // vanishes, is a root of r (finite, or v = 0 in the chart v = 1/u); r's factor in
+        // common with g (in the chart w = 0, g divides r) and the cofactor prime to it are
+        // isolated apart: lower degrees, the same roots
+        let mut candidates: Vec<ParamValue> = split_roots(&r, base.as_ref())
+            .into_iter()
+            .map(ParamValue::Finite)
+            .collect();
         candidates.push(ParamValue::Infinity);
         let mut events = Vec::new();
         for at in candidates {
+            if let ParamValue::Finite(t) = &at {
+                // r(t) = 0 is known: signs decide (`finite_candidate`)
+                let sheets = finite_candidate(primary, s, (&wa, &wd), base.as_ref(), t);
+                for (sheet, on_primary) in sheets {
+                    let at_infinity = match on_primary {
+                        Some(at_infinity) => at_infinity,
+                        // the primary vanishes on this sheet: the alternate form's point
+                        None => {
+                            let sigma = if sheet == Some(Sheet::Minus) {
+                                Sign::Negative
+                            } else {
+                                Sign::Positive
+                            };
+                            let mut found = None;
+                            if let Some(alt) = alternate {
+                                let vanishes = (0..4)
+                                    .all(|i| sheet_value_zero(&alt.a[i], &alt.d[i], s, t, sigma));
+                                if !vanishes {
+                                    let (wa, wd) =
+                                        (chart_form(self.l, &alt.a), chart_form(self.l, &alt.d));
+                                    found = Some(sheet_value_zero(&wa, &wd, s, t, sigma));
+                                }
+                            }
+                            found.ok_or_else(|| {
+                                Error::Unsupported(
+                                    "affine view: both Levin forms vanish at one parameter".into(),
+                                )
+                            })?
+                        }
+                    };
+                    if at_infinity {
+                        events.push(Event {
+                            at: at.clone(),
+                            sheet,
+                            vertex: self.local(),
+                        });
+                    }
+                }
+                continue;
+            }
             // the forms and s in the chart of `at`, and the parameter there
             let (t, s_here, here): (AlgebraicReal, NumberPoly, Vec<(PointPoly, PointPoly)>) =
                 match &at {
@@ -350,6 +404,93 @@ impl InfinityEvents<'_> {
         }
         Ok(events)
     }
+}
+
+/// The real roots of `r`: those of `h = gcd(r, g)` and those of `r` divided by `h` until
+/// prime to it (disjoint sets).
+fn split_roots(r: &NumberPoly, g: Option<&NumberPoly>) -> Vec<AlgebraicReal> {
+    let h = match g {
+        Some(g) if !r.is_zero() => r.gcd_monic(g),
+        _ => return r.real_roots(),
+    };
+    if degree(&h) == 0 {
+        return r.real_roots();
+    }
+    let mut rest = r.clone();
+    loop {
+        let c = rest.gcd_monic(&h);
+        if degree(&c) == 0 {
+            break;
+        }
+        rest = rest.div_rem(&c).0;
+    }
+    let mut roots = h.real_roots();
+    roots.extend(rest.real_roots());
+    roots
+}
+
+/// At a real root `t` of `r = wa² − s·wd²` (`wa`, `wd` the chart form of the primary
+/// Levin form `a ± d√s`): the sheets there (`None` where `s(t) = 0`; nothing where
+/// `s(t) < 0`), each with whether the primary form's point is at infinity (`None`: the
+/// primary form vanishes on that sheet). Signs decide, with no zero test of a value known
+/// to vanish:
+/// * `wa(t)² = s(t)·wd(t)²`: where `s(t)·wd(t) = 0` also `wa(t) = 0` (at infinity on every
+///   sheet); else `wa(t) ≠ 0` and `wa ± wd√s` vanishes on the sheet `σ` with
+///   `sign wa(t) = −σ·sign wd(t)` only;
+/// * off the roots of `base` (the gcd of the `aᵢ² − s·dᵢ²`) no sheet vanishes; at one, every
+///   `aᵢ(t)² = s(t)·dᵢ(t)²`, so the sheet `σ` vanishes iff `sign aᵢ(t) = −σ·sign dᵢ(t)` for
+///   every `i` (where `s(t) = 0`: every `aᵢ(t) = 0`, it vanishes).
+fn finite_candidate(
+    primary: &LevinForm,
+    s: &NumberPoly,
+    (wa, wd): (&NumberPoly, &NumberPoly),
+    base: Option<&NumberPoly>,
+    t: &AlgebraicReal,
+) -> Vec<(Option<Sheet>, Option<bool>)> {
+    let s_sign = s.sign_at(t);
+    let sheets: Vec<Option<Sheet>> = match s_sign {
+        Sign::Negative => return Vec::new(),
+        Sign::Zero => vec![None],
+        Sign::Positive => vec![Some(Sheet::Plus), Some(Sheet::Minus)],
+    };
+    let at_base = base.is_some_and(|g| g.sign_at(t) == Sign::Zero);
+    let signs: Vec<(Sign, Sign)> = if at_base && s_sign == Sign::Positive {
+        (0..4)
+            .map(|i| (primary.a[i].sign_at(t), primary.d[i].sign_at(t)))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    // the chart form's signs, once: (sign wd(t), sign wa(t)) unless s(t)·wd(t) = 0
+    let mut chart: Option<Option<(Sign, Sign)>> = None;
+    sheets
+        .into_iter()
+        .map(|sheet| {
+            let sigma = if sheet == Some(Sheet::Minus) {
+                Sign::Negative
+            } else {
+                Sign::Positive
+            };
+            let opposite = |x: Sign| if sigma == Sign::Positive { -x } else { x };
+            let vanishes = at_base
+                && (s_sign == Sign::Zero || signs.iter().all(|&(sa, sd)| sa == opposite(sd)));
+            if vanishes {
+                return (sheet, None);
+            }
+            let signs = *chart.get_or_insert_with(|| {
+                if s_sign == Sign::Zero {
+                    return None;
+                }
+                let sd = wd.sign_at(t);
+                (sd != Sign::Zero).then(|| (sd, wa.sign_at(t)))
+            });
+            let at_infinity = match signs {
+                None => true,
+                Some((sd, sa)) => sa == opposite(sd),
+            };
+            (sheet, Some(at_infinity))
+        })
+        .collect()
 }
 
 /// Whether `p(t) + σ·q(t)·√s(t) = 0` (`s(t) ≥ 0`), exactly: with `s(t)q(t) ≠ 0` it needs
@@ -447,6 +588,9 @@ pub fn affine_curve(
     let mut next_local = 0;
     // per piece: its vertices in order, or None at infinity
     let mut piece_vertices: Vec<Option<Vec<Vertex>>> = Vec::new();
+    // the events of a Levin component, computed for its first piece: its other pieces reuse
+    // them with fresh local vertices (as if computed again)
+    let mut levin_events: Vec<Option<Vec<Event>>> = vec![None; curve.components.len()];
     for piece in &curve.pieces {
         let RealPiece::Curve {
             component,
@@ -497,14 +641,28 @@ pub fn affine_curve(
                 s,
                 degree,
                 alternate,
-            } => {
-                let primary = LevinForm {
-                    a: a.clone(),
-                    d: d.clone(),
-                    degree: *degree,
-                };
-                inf.levin(&primary, s, alternate.as_deref())?
-            }
+            } => match &levin_events[*component] {
+                Some(cached) => cached
+                    .iter()
+                    .map(|e| Event {
+                        vertex: match e.vertex {
+                            Vertex::Local(_) => inf.local(),
+                            v => v,
+                        },
+                        ..e.clone()
+                    })
+                    .collect(),
+                None => {
+                    let primary = LevinForm {
+                        a: a.clone(),
+                        d: d.clone(),
+                        degree: *degree,
+                    };
+                    let events = inf.levin(&primary, s, alternate.as_deref())?;
+                    levin_events[*component] = Some(events.clone());
+                    events
+                }
+            },
             ComponentParam::Point(_) => Vec::new(),
         };
         piece_vertices.push(Some(ordered_vertices(arcs, &events)));

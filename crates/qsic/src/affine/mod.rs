@@ -6,6 +6,7 @@
 //! | [`AffineSurface`], [`surface_name`] | the affine name of a quadric (sphere, elliptic cylinder, …), exactly |
 //! | [`affine_curve`] | the curve in ℝ³: bounded and unbounded pieces, points and singular points at infinity, conic names |
 //! | [`affine_conic`] | a conic component's type, centre or vertex, axes, radius, exactly |
+//! | [`fast_affine_curve`], [`conic_real_intersections`] | the same without the curve where the class and the conics at infinity decide it (nonsingular quartics) |
 //!
 //! With `M` the 4×4 matrix in coordinates where the plane at infinity is `w = 0` and `Q` its
 //! upper-left 3×3 block (the quadratic part), the affine type is decided by the inertias of
@@ -17,10 +18,12 @@
 
 mod conic;
 mod curve;
+mod fast;
 mod view;
 
 pub use conic::{affine_conic, approx, AffineConic, Axis, ConicShape, Direction, Surd};
 pub use curve::{affine_curve, AffineComponent, AffineCurve, AffineSingularPoint};
+pub use fast::{conic_real_intersections, fast_affine_curve};
 pub use view::affine_view_of_curve;
 
 use crate::error::Error;
@@ -30,7 +33,7 @@ use qsic_algebra::field::NumberFieldElement;
 use qsic_algebra::linalg::minors::principal_minor_sums;
 use qsic_algebra::linalg::{Inertia, Matrix};
 use qsic_algebra::Ring;
-use qsic_algebra::{RBig, Sign};
+use qsic_algebra::{IBig, RBig, Sign};
 
 /// The plane at infinity of an affine chart, `a·x + b·y + c·z + d·w = 0`.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -226,9 +229,38 @@ impl AffineSurface {
     }
 }
 
-/// The inertia of a symmetric `N × N` rational matrix, exactly.
-fn inertia<const N: usize>(m: &[[RBig; N]; N]) -> Inertia {
-    Inertia::from_minor_sum_signs(principal_minor_sums(m).map(|e| Sign::of_rational(&e)))
+/// The inertia of a symmetric `N × N` integer matrix, exactly.
+fn inertia<const N: usize>(m: &[[IBig; N]; N]) -> Inertia {
+    Inertia::from_minor_sum_signs(principal_minor_sums(m).map(|e| Sign::of(&e)))
+}
+
+/// A positive multiple of a rational matrix with integer entries (the same quadric: every
+/// inertia, equality and vanishing `surface_name` reads is unchanged).
+fn integral<const N: usize>(m: &[[RBig; N]; N]) -> [[IBig; N]; N] {
+    let mut den = IBig::ONE;
+    for v in m.iter().flatten() {
+        let d = IBig::from(v.denominator().clone());
+        if &den % &d != IBig::ZERO {
+            den *= d;
+        }
+    }
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            let v = &m[i][j];
+            v.numerator() * (&den / IBig::from(v.denominator().clone()))
+        })
+    })
+}
+
+/// The matrix of `q` in the chart's coordinates as integers: the primitive integer matrix
+/// itself in the default chart (no rational arithmetic), else [`Chart::matrix_in_chart`]
+/// scaled.
+fn integer_matrix_in_chart(q: &Quadric, chart: &Chart) -> [[IBig; 4]; 4] {
+    if chart.is_default() {
+        q.integer_matrix().entries().clone()
+    } else {
+        integral(&chart.matrix_in_chart(q.matrix()))
+    }
 }
 
 /// The affine name of `q` in `chart`.
@@ -243,14 +275,14 @@ fn inertia<const N: usize>(m: &[[RBig; N]; N]) -> Inertia {
 /// ```
 pub fn surface_name(q: &Quadric, chart: &Chart) -> AffineSurface {
     use AffineSurface::*;
-    let m = chart.matrix_in_chart(q.matrix());
+    let m = integer_matrix_in_chart(q, chart);
     let mut im = inertia(&m);
     let mut negate = false;
     if im.negative > im.positive {
         im = im.negated();
         negate = true;
     }
-    let block: [[RBig; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| m[i][j].clone()));
+    let block: [[IBig; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| m[i][j].clone()));
     let mut iq = inertia(&block);
     if negate {
         iq = iq.negated();
@@ -259,9 +291,9 @@ pub fn surface_name(q: &Quadric, chart: &Chart) -> AffineSurface {
     // Q = cI: a multiple of the identity
     let scalar = block[0][0] == block[1][1]
         && block[1][1] == block[2][2]
-        && block[0][1] == RBig::ZERO
-        && block[0][2] == RBig::ZERO
-        && block[1][2] == RBig::ZERO;
+        && block[0][1] == IBig::ZERO
+        && block[0][2] == IBig::ZERO
+        && block[1][2] == IBig::ZERO;
     match (im.rank(), iq.rank()) {
         (4, 3) => match (im.positive, iq.positive == 3 || iq.negative == 3) {
             (4, _) => Imaginary,
@@ -281,7 +313,7 @@ pub fn surface_name(q: &Quadric, chart: &Chart) -> AffineSurface {
         (3, 3) => {
             if im.negative == 0 {
                 PointCone
-            } else if cubic_discriminant(&e) == RBig::ZERO {
+            } else if cubic_discriminant(&e) == IBig::ZERO {
                 CircularCone
             } else {
                 EllipticCone
@@ -292,7 +324,7 @@ pub fn surface_name(q: &Quadric, chart: &Chart) -> AffineSurface {
                 HyperbolicCylinder
             } else if im.negative == 0 {
                 Imaginary
-            } else if &e[0] * &e[0] == RBig::from(4) * &e[1] {
+            } else if &e[0] * &e[0] == IBig::from(4) * &e[1] {
                 CircularCylinder
             } else {
                 EllipticCylinder
@@ -321,12 +353,12 @@ pub fn surface_name(q: &Quadric, chart: &Chart) -> AffineSurface {
 }
 
 /// The discriminant of `x³ − E₁x² + E₂x − E₃` (zero iff a repeated eigenvalue).
-fn cubic_discriminant(e: &[RBig; 3]) -> RBig {
+fn cubic_discriminant(e: &[IBig; 3]) -> IBig {
     let (b, c, d) = (-e[0].clone(), e[1].clone(), -e[2].clone());
     // Δ = 18bcd − 4b³d + b²c² − 4c³ − 27d² for x³ + bx² + cx + d
-    RBig::from(18) * &b * &c * &d - RBig::from(4) * &b * &b * &b * &d + &b * &b * &c * &c
-        - RBig::from(4) * &c * &c * &c
-        - RBig::from(27) * &d * &d
+    IBig::from(18) * &b * &c * &d - IBig::from(4) * &b * &b * &b * &d + &b * &b * &c * &c
+        - IBig::from(4) * &c * &c * &c
+        - IBig::from(27) * &d * &d
 }
 
 #[cfg(test)]
@@ -526,9 +558,10 @@ pub fn affine_view(
     };
     let surfaces = [name(a, planes[0]), name(b, planes[1])];
     let curve = match (a, b) {
-        (Some(a), Some(b)) => {
-            crate::param::parameterize(a, b).and_then(|c| affine_curve(&c, a, b, chart))
-        }
+        (Some(a), Some(b)) => match fast_affine_curve(a, b, chart) {
+            Some(c) => Ok(c),
+            None => crate::param::parameterize(a, b).and_then(|c| affine_curve(&c, a, b, chart)),
+        },
         _ => Err(Error::Unsupported("a single quadric: no curve".into())),
     };
     let solids = match (a, b, surfaces) {
