@@ -547,16 +547,6 @@ pub fn affine_view(
     chart: &Chart,
     planes: [bool; 2],
 ) -> AffineView {
-    let name = |q: Option<&Quadric>, plane: bool| {
-        q.map(|q| {
-            if plane {
-                AffineSurface::Plane
-            } else {
-                surface_name(q, chart)
-            }
-        })
-    };
-    let surfaces = [name(a, planes[0]), name(b, planes[1])];
     let curve = match (a, b) {
         (Some(a), Some(b)) => match fast_affine_curve(a, b, chart) {
             Some(c) => Ok(c),
@@ -564,17 +554,5 @@ pub fn affine_view(
         },
         _ => Err(Error::Unsupported("a single quadric: no curve".into())),
     };
-    let solids = match (a, b, surfaces) {
-        (Some(a), Some(b), [Some(sa), Some(sb)])
-            if sa.is_ellipsoid() && sb.is_ellipsoid() && chart.is_default() =>
-        {
-            crate::solids::solid_relation(a, b).ok()
-        }
-        _ => None,
-    };
-    AffineView {
-        surfaces,
-        curve,
-        solids,
-    }
+    view::assemble(a, b, chart, planes, curve)
 }

@@ -1,7 +1,9 @@
 //! The affine view of a pair whose curve is already built (`qsic param`, `qsic sample`): no
 //! second parameterization.
 
-use super::{affine_curve, surface_name, AffineSurface, AffineView, Chart};
+use super::{
+    affine_curve, fast_affine_curve, surface_name, AffineCurve, AffineSurface, AffineView, Chart,
+};
 use crate::error::Error;
 use crate::param::Curve;
 use crate::quadric::Quadric;
@@ -25,6 +27,25 @@ pub fn affine_view_of_curve(
     chart: &Chart,
     planes: [bool; 2],
 ) -> AffineView {
+    let curve = match (a, b, curve) {
+        (Some(a), Some(b), Some(c)) => match fast_affine_curve(a, b, chart) {
+            Some(fast) => Ok(fast),
+            None => affine_curve(c, a, b, chart),
+        },
+        _ => Err(Error::Unsupported("a single quadric: no curve".into())),
+    };
+    assemble(a, b, chart, planes, curve)
+}
+
+/// The view from its curve part: the surfaces' names, and the solids' relation of two
+/// ellipsoids in the default chart.
+pub(super) fn assemble(
+    a: Option<&Quadric>,
+    b: Option<&Quadric>,
+    chart: &Chart,
+    planes: [bool; 2],
+    curve: Result<AffineCurve, Error>,
+) -> AffineView {
     let name = |q: Option<&Quadric>, plane: bool| {
         q.map(|q| {
             if plane {
@@ -35,10 +56,6 @@ pub fn affine_view_of_curve(
         })
     };
     let surfaces = [name(a, planes[0]), name(b, planes[1])];
-    let curve = match (a, b, curve) {
-        (Some(a), Some(b), Some(c)) => affine_curve(c, a, b, chart),
-        _ => Err(Error::Unsupported("a single quadric: no curve".into())),
-    };
     let solids = match (a, b, surfaces) {
         (Some(a), Some(b), [Some(sa), Some(sb)])
             if sa.is_ellipsoid() && sb.is_ellipsoid() && chart.is_default() =>
