@@ -458,7 +458,7 @@ pub fn sign_on_interval(q: &Poly, lo: &RBig, hi: &RBig) -> Option<Sign> {
 /// `|p′(x)|` within `2⁻⁵⁰·|x|`.
 fn newton_in(p: &Poly, lo: f64, hi: f64) -> Option<f64> {
     let c: Vec<f64> = p.coeffs().iter().map(|v| v.to_f64().value()).collect();
-    if !c.iter().all(|x| x.is_finite()) || !(lo.is_finite() && hi.is_finite() && lo <= hi) {
+    if !(c.iter().all(|x| x.is_finite()) && lo.is_finite() && hi.is_finite() && lo <= hi) {
         return None;
     }
     let eval = |x: f64| -> (f64, f64) {

@@ -1,7 +1,8 @@
 //! The parameterization surface (Appendix A of the enhanced-Levin paper) and its ruled
 //! parameterization `q(u, v) = b(u) + v·d(u)`.
 //!
-//! * inertia (2, 2): a rational (or ℚ(√δ)) point `P` on `S`, the two lines of `S` through `P`
+//! * inertia (2, 2): a rational (or ℚ(√δ)) point `P` on `S` (a small one by integer search
+//!   first, then by hyperplane sections), the two lines of `S` through `P`
 //!   (roots of the binary form `S` induces on the tangent plane `T_P`, over ℚ(√D) with
 //!   `D ≡ det S` modulo squares), then a hyperbolic basis `e₁, f₁, e₂, f₂` of `S`
 //!   (`eᵢᵀSfᵢ = 1`, all other products zero) in which `S(X) = 2(x₁y₁ + x₂y₂)`, so that
@@ -406,8 +407,9 @@ fn small_point(s: &[[RBig; 4]; 4]) -> Option<[RBig; 4]> {
     None
 }
 
-/// The parameterization of a nonsingular quadric of inertia (2, 2) through a point found on
-/// a hyperplane section. `Ok(None)` if its lines need a biquadratic field (no rational point
+/// The parameterization of a nonsingular quadric of inertia (2, 2) through a small rational
+/// point ([`doubly_ruled_integral`], fraction-free) or else a point found on a hyperplane
+/// section. `Ok(None)` if its lines need a biquadratic field (no rational point
 /// found and `det S` not a square in the point's field).
 pub(crate) fn parameterize_doubly_ruled(
     s: &[[RBig; 4]; 4],
@@ -765,6 +767,56 @@ mod tests {
             assert_ruled(&s, &r);
             assert_eq!(r.delta, want.map(IBig::from), "{d:?}");
         }
+    }
+
+    #[test]
+    fn exact_square_roots_and_small_points() {
+        for n in -5i128..20_000 {
+            let want = (0..=150i128).find(|k| k * k == n);
+            assert_eq!(exact_sqrt(n), want, "{n}");
+        }
+        let big = (1i128 << 50) + 3;
+        assert_eq!(exact_sqrt(big * big), Some(big));
+        assert_eq!(exact_sqrt(big * big + 1), None);
+        // random symmetric integer matrices: every small point is on the quadric, and the
+        // rulings through it (the fraction-free route) lie on it too
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % 19) as i64 - 9
+        };
+        let (mut found, mut ruled) = (0, 0);
+        for _ in 0..200 {
+            let mut m: [[RBig; 4]; 4] = std::array::from_fn(|_| std::array::from_fn(|_| rat(0)));
+            for i in 0..4 {
+                for j in i..4 {
+                    let v = rat(next());
+                    m[i][j] = v.clone();
+                    m[j][i] = v;
+                }
+            }
+            if let Some(p) = small_point(&m) {
+                found += 1;
+                assert!(p.iter().any(|x| !x.is_zero()));
+                let mut acc = RBig::ZERO;
+                for i in 0..4 {
+                    for j in 0..4 {
+                        acc += &p[i] * &m[i][j] * &p[j];
+                    }
+                }
+                assert!(acc.is_zero(), "{p:?}");
+            }
+            if minors::det(&m).is_zero() {
+                continue;
+            }
+            if let Ok(Some(r)) = parameterize_doubly_ruled(&m) {
+                ruled += 1;
+                assert_ruled(&m, &r);
+            }
+        }
+        assert!(found > 50 && ruled > 20, "{found} points, {ruled} rulings");
     }
 
     #[test]
