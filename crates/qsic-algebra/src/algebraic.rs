@@ -455,7 +455,7 @@ pub fn sign_on_interval(q: &Poly, lo: &RBig, hi: &RBig) -> Option<Sign> {
 /// A root of `p` in `[lo, hi]` by Newton's method kept inside a bracket by bisection, all in
 /// floating point; `None` unless the float values of `p` at the ends have opposite signs and
 /// the root is well conditioned: the rounding bound of Horner's rule `2n·ε·Σ|cᵢ||x|ⁱ` over
-/// `|p′(x)|` within `2⁻⁵⁰·|x|`.
+/// `|p′(x)|` within `2⁻⁴²·|x|` (about 12 digits: display and sampling).
 fn newton_in(p: &Poly, lo: f64, hi: f64) -> Option<f64> {
     let c: Vec<f64> = p.coeffs().iter().map(|v| v.to_f64().value()).collect();
     if !(c.iter().all(|x| x.is_finite()) && lo.is_finite() && hi.is_finite() && lo <= hi) {
@@ -477,7 +477,7 @@ fn newton_in(p: &Poly, lo: f64, hi: f64) -> Option<f64> {
             .rev()
             .fold(0.0, |acc: f64, &v| acc * x.abs() + v.abs());
         let err = 2.0 * c.len() as f64 * f64::EPSILON * bound / df.abs();
-        (err.is_finite() && err <= x.abs() * 2f64.powi(-50)).then_some(x)
+        (err.is_finite() && err <= x.abs() * 2f64.powi(-42)).then_some(x)
     };
     let (mut a, mut b) = (lo, hi);
     let mut x = 0.5 * (a + b);

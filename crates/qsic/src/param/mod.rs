@@ -38,7 +38,7 @@ use crate::pencil::{PencilAnalysis, PencilPoint};
 use crate::quadric::Quadric;
 use qsic_algebra::field::Quadratic;
 use qsic_algebra::roots::{isolate_squarefree_real_roots, simplest_between, RootInterval};
-use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring, Sign};
+use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Sign};
 use surface::{parameterize_cone, parameterize_doubly_ruled, poly_form, q, to_quadratic};
 
 /// The kind of a real ruled member of the pencil.
@@ -593,6 +593,18 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
         .iter()
         .map(|c| c.as_rational().cloned())
         .collect();
+    // the exact sign of s at a rational: in integers when s is integral over ℤ[√δ]
+    let delta = s
+        .coeffs()
+        .iter()
+        .find(|c| c.as_rational().is_none())
+        .map(|c| c.radicand().clone())
+        .unwrap_or(IBig::ZERO);
+    let integral = zsqrt::zpoly(s, &delta);
+    let sign_at = |x: &RBig| match &integral {
+        Some(z) => zsqrt::sign_at(z, x, &delta),
+        None => sign(&s.eval(&q(x))),
+    };
     let (roots, squarefree) = match rational {
         Some(c) => {
             let p = Poly::from_rational(&Poly::new(c)).0;
@@ -609,11 +621,10 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
             // each interval holds one root of s·s̄; a simple root of s there changes its
             // sign, and a square-free s has no other kind (else count by Sturm)
             let chain = (!squarefree).then(|| sturm_chain(s));
-            let sign_at = |x: &RBig| sign(&s.eval(&q(x)));
             let roots = isolate_squarefree_real_roots(&sf)
                 .into_iter()
                 .filter(|iv| match (iv, &chain) {
-                    (RootInterval::Exact(r), _) => s.eval(&q(r)).is_zero(),
+                    (RootInterval::Exact(r), _) => sign_at(r) == Sign::Zero,
                     (RootInterval::Open(lo, hi), None) => sign_at(lo) != sign_at(hi),
                     (RootInterval::Open(lo, hi), Some(chain)) => {
                         variations(chain, lo) > variations(chain, hi)
@@ -638,7 +649,7 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
     let arcs = samples
         .into_iter()
         .map(|x| {
-            let sg = sign(&s.eval(&q(&x)));
+            let sg = sign_at(&x);
             (x, sg)
         })
         .collect();
@@ -653,6 +664,7 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use qsic_algebra::Ring;
 
     fn rq(v: i64) -> Quadratic {
         Quadratic::rational(RBig::from(v))

@@ -7,7 +7,7 @@
 //! [`Quadratic`] at the end; the results are identical.
 
 use qsic_algebra::field::Quadratic;
-use qsic_algebra::{IBig, Poly, RBig};
+use qsic_algebra::{IBig, Poly, RBig, Sign};
 
 /// `a + b√δ` with integers `a`, `b` (`δ` held by the caller).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -160,4 +160,34 @@ pub(crate) fn integer_matrix(m: &[[Quadratic; 4]; 4]) -> Option<[[IBig; 4]; 4]> 
         }
     }
     Some(out)
+}
+
+/// The exact sign of `p(x)` for a rational `x = n/m` (`δ > 0` not a square, or `p` rational):
+/// `m^deg·p(n/m) = A + B√δ` by Horner's rule in integers, then the sign of `A + B√δ` from
+/// the signs of `A`, `B` and the comparison of `A²` with `δB²`.
+pub(crate) fn sign_at(p: &[Zq], x: &RBig, delta: &IBig) -> Sign {
+    let (n, m) = (x.numerator().clone(), IBig::from(x.denominator().clone()));
+    let mut acc = Zq::default();
+    let mut scale = IBig::ONE;
+    for c in p.iter().rev() {
+        // acc ← acc·n + c·m^k (k the number of coefficients taken so far)
+        acc = Zq {
+            a: &acc.a * &n + &c.a * &scale,
+            b: &acc.b * &n + &c.b * &scale,
+        };
+        scale *= &m;
+    }
+    let (sa, sb) = (Sign::of(&acc.a), Sign::of(&acc.b));
+    if sb == Sign::Zero || sa == sb {
+        return if sb == Sign::Zero { sa } else { sb };
+    }
+    if sa == Sign::Zero {
+        return sb;
+    }
+    // opposite signs: |A| vs |B|√δ, never equal (δ not a square)
+    if &acc.a * &acc.a > &acc.b * &acc.b * delta {
+        sa
+    } else {
+        sb
+    }
 }
