@@ -329,8 +329,18 @@ impl AlgebraicReal {
         m
     }
 
-    /// A float approximation (for display only).
+    /// A float approximation (for display and sampling only, never for a decision).
+    ///
+    /// Newton's method safeguarded by bisection, in floating point, inside the isolating
+    /// interval (where the float signs of `poly` at the ends differ as the exact ones do);
+    /// otherwise the midpoint of an exactly refined interval of width `2⁻⁶⁰`.
     pub fn to_f64(&self) -> f64 {
+        if let RootInterval::Open(lo, hi) = &self.snapshot().interval {
+            let (l, h) = (lo.to_f64().value(), hi.to_f64().value());
+            if let Some(x) = newton_in(&self.poly, l, h) {
+                return x;
+            }
+        }
         let iv = self.refined_interval(&RBig::from_parts_signed(1.into(), IBig::ONE << 60));
         (iv.lo().to_f64().value() + iv.hi().to_f64().value()) / 2.0
     }
@@ -442,6 +452,62 @@ pub fn sign_on_interval(q: &Poly, lo: &RBig, hi: &RBig) -> Option<Sign> {
     }
 }
 
+/// A root of `p` in `[lo, hi]` by Newton's method kept inside a bracket by bisection, all in
+/// floating point; `None` unless the float values of `p` at the ends have opposite signs and
+/// the root is well conditioned: the rounding bound of Horner's rule `2n·ε·Σ|cᵢ||x|ⁱ` over
+/// `|p′(x)|` within `2⁻⁴²·|x|` (about 12 digits: display and sampling).
+fn newton_in(p: &Poly, lo: f64, hi: f64) -> Option<f64> {
+    let c: Vec<f64> = p.coeffs().iter().map(|v| v.to_f64().value()).collect();
+    if !(c.iter().all(|x| x.is_finite()) && lo.is_finite() && hi.is_finite() && lo <= hi) {
+        return None;
+    }
+    let eval = |x: f64| -> (f64, f64) {
+        c.iter()
+            .rev()
+            .fold((0.0, 0.0), |(f, df), &v| (f * x + v, df * x + f))
+    };
+    let (fl, fh) = (eval(lo).0, eval(hi).0);
+    if lo == hi || fl * fh >= 0.0 || !(fl * fh).is_finite() {
+        return (lo == hi).then_some(lo);
+    }
+    let conditioned = |x: f64| -> Option<f64> {
+        let (_, df) = eval(x);
+        let bound = c
+            .iter()
+            .rev()
+            .fold(0.0, |acc: f64, &v| acc * x.abs() + v.abs());
+        let err = 2.0 * c.len() as f64 * f64::EPSILON * bound / df.abs();
+        (err.is_finite() && err <= x.abs() * 2f64.powi(-42)).then_some(x)
+    };
+    let (mut a, mut b) = (lo, hi);
+    let mut x = 0.5 * (a + b);
+    for _ in 0..200 {
+        let (f, df) = eval(x);
+        if f == 0.0 {
+            return conditioned(x);
+        }
+        if (f < 0.0) == (fl < 0.0) {
+            a = x;
+        } else {
+            b = x;
+        }
+        if b - a <= 4.0 * f64::EPSILON * a.abs().max(b.abs()) {
+            return conditioned(0.5 * (a + b));
+        }
+        let newton = x - f / df;
+        let next = if newton > a && newton < b {
+            newton
+        } else {
+            0.5 * (a + b)
+        };
+        if next == x {
+            return conditioned(x);
+        }
+        x = next;
+    }
+    None
+}
+
 /// `⌊v·2^k⌋`.
 fn floor_scaled(v: &RBig, k: usize) -> IBig {
     let den = IBig::from(v.denominator().clone());
@@ -472,6 +538,24 @@ fn separated(a: &RootInterval, b: &RootInterval) -> Option<Ordering> {
     }
 }
 
+/// Whether the root `α` of `p` isolated by the open interval `a` equals the root `β` of `q`
+/// isolated by the open interval `b` (`p`, `q` square-free, no interval end a root).
+///
+/// `α = β` exactly when `g = gcd(p, q)` changes sign on `I = a ∩ b`: a root `γ ∈ I` of `g`
+/// is a root of `p` in `a`, so `γ = α`, and likewise `γ = β`; conversely a common root lies
+/// in `I` and is a simple root of the square-free `g`, whose only root in `I` it is, while
+/// the ends of `I` (ends of `a` or `b`) are no roots of `g`. Exact, no refinement, whether
+/// or not `p` and `q` are irreducible or equal.
+fn equal_open(p: &Poly, a: &RootInterval, q: &Poly, b: &RootInterval) -> bool {
+    let lo = a.lo().max(b.lo());
+    let hi = a.hi().min(b.hi());
+    if lo >= hi {
+        return false;
+    }
+    let g = if p == q { p.clone() } else { p.gcd(q) };
+    g.degree().unwrap_or(0) > 0 && g.sign_at(lo) * g.sign_at(hi) == Sign::Negative
+}
+
 impl Ord for AlgebraicReal {
     fn cmp(&self, other: &Self) -> Ordering {
         if let Some(v) = other.as_rational() {
@@ -492,16 +576,15 @@ impl Ord for AlgebraicReal {
         if let Some(o) = separated(&a.interval, &b.interval) {
             return o;
         }
-        if other.is_root_of(&self.poly) {
-            // a's interval holds exactly one root of self.poly
-            let lo = AlgebraicReal::from_rational(a.interval.lo().clone());
-            let hi = AlgebraicReal::from_rational(a.interval.hi().clone());
-            if a.interval.as_exact().is_none() && other > &lo && other < &hi {
-                return Ordering::Equal;
-            }
-            if let Some(v) = a.interval.as_exact() {
-                return AlgebraicReal::from_rational(v.clone()).cmp(other);
-            }
+        // a refinement that met a rational root: compare with that rational
+        if let Some(v) = a.interval.as_exact() {
+            return AlgebraicReal::from_rational(v.clone()).cmp(other);
+        }
+        if let Some(v) = b.interval.as_exact() {
+            return self.cmp(&AlgebraicReal::from_rational(v.clone()));
+        }
+        if equal_open(&self.poly, &a.interval, &other.poly, &b.interval) {
+            return Ordering::Equal;
         }
         // different numbers: refinement separates them; only the wider interval is refined,
         // so that one already narrow (a shared refinement) does not grow huge ends in
@@ -742,5 +825,57 @@ mod tests {
         c[0] = -81;
         assert_eq!(a.sign_of(&Poly::from_i64s(&c)), Sign::Negative);
         assert!((a.to_f64() - 2f64.cbrt()).abs() < 1e-12);
+    }
+
+    /// Equal numbers compare `Equal` without refinement, whatever their states: one number
+    /// and its clone refined to `2⁻¹²⁷` (shared state: repeated comparisons did not end
+    /// before, seen on QI's qi-072 via `param::expr`), a fresh copy, the same root of a reducible multiple of its
+    /// polynomial; different roots of one polynomial still order, and `to_f64` is the root.
+    #[test]
+    fn equal_roots_compare_equal_whatever_their_refinement() {
+        let p = Poly::from_i64s(&[128, 0, -32, 0, 1]); // x⁴ − 32x² + 128, roots ±√(16 ± 8√2)
+        let iv = RootInterval::Open(rat(5, 1), rat(21, 4));
+        let a = AlgebraicReal::from_isolating_interval(&p, &iv).expect("a root in (5, 21/4)");
+        let shared = a.clone();
+        let _ = a.refined_interval(&RBig::from_parts_signed(IBig::ONE, IBig::ONE << 127));
+        let fresh = AlgebraicReal::from_isolating_interval(&p, &iv).unwrap();
+        let reducible = &p * &Poly::from_i64s(&[-2, 0, 1]);
+        let wide = RootInterval::Open(rat(4, 1), rat(6, 1));
+        let multiple = AlgebraicReal::from_isolating_interval(&reducible, &wide).unwrap();
+        // before, each comparison refined the shared state past its own end: the bits
+        // doubled at every comparison
+        for _ in 0..64 {
+            for x in [&shared, &fresh, &multiple] {
+                assert_eq!(a.cmp(x), Ordering::Equal);
+                assert_eq!(x.cmp(&a), Ordering::Equal);
+            }
+        }
+        let bits = |x: &AlgebraicReal| {
+            let r = x.refined_interval(&RBig::ONE);
+            r.hi().denominator().bit_len()
+        };
+        assert!(
+            bits(&a) < 200 && bits(&fresh) < 10,
+            "{} {}",
+            bits(&a),
+            bits(&fresh)
+        );
+        let roots = AlgebraicReal::real_roots_of(&reducible);
+        let want = [
+            -(16.0 + 8.0 * 2f64.sqrt()).sqrt(),
+            -(16.0 - 8.0 * 2f64.sqrt()).sqrt(),
+            -2f64.sqrt(),
+            2f64.sqrt(),
+            (16.0 - 8.0 * 2f64.sqrt()).sqrt(),
+            (16.0 + 8.0 * 2f64.sqrt()).sqrt(),
+        ];
+        assert_eq!(roots.len(), 6);
+        for (i, r) in roots.iter().enumerate() {
+            assert!((r.to_f64() - want[i]).abs() < 1e-12, "{r}");
+            assert_eq!(r.cmp(&a), want[i].partial_cmp(&want[5]).unwrap(), "{r}");
+            for (j, o) in roots.iter().enumerate() {
+                assert_eq!(r.cmp(o), i.cmp(&j));
+            }
+        }
     }
 }

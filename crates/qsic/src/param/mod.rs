@@ -22,6 +22,7 @@ mod nodal;
 mod planar;
 pub mod sample;
 mod surface;
+mod zsqrt;
 
 pub use curve::{
     Arc, Component, ComponentParam, Curve, LevinForm, Number, NumberPoly, ParamRange, ParamValue,
@@ -36,8 +37,8 @@ use crate::error::Error;
 use crate::pencil::{PencilAnalysis, PencilPoint};
 use crate::quadric::Quadric;
 use qsic_algebra::field::Quadratic;
-use qsic_algebra::roots::{isolate_real_roots, simplest_between, RootInterval};
-use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring, Sign};
+use qsic_algebra::roots::{isolate_squarefree_real_roots, simplest_between, RootInterval};
+use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Sign};
 use surface::{parameterize_cone, parameterize_doubly_ruled, poly_form, q, to_quadratic};
 
 /// The kind of a real ruled member of the pencil.
@@ -425,30 +426,21 @@ fn choose_surface(
             PencilPoint::Infinity => candidates.push((None, SurfaceKind::Cone)),
         }
     }
-    // more rationals of the (2, 2) arcs, tried only when the first ones give no ruling
-    let primary = candidates.len();
-    let finite: Vec<&RootInterval> = analysis
-        .real_roots
-        .iter()
-        .filter_map(|r| match &r.point {
-            PencilPoint::Finite(v) => Some(v.interval()),
-            PencilPoint::Infinity => None,
-        })
-        .collect();
-    for (i, (sample, inertia)) in analysis.arcs.iter().enumerate() {
-        if inertia.positive == 2 && inertia.negative == 2 {
-            let lo = i.checked_sub(1).map(|k| finite[k].hi().clone());
-            let hi = finite.get(i).map(|r| r.lo().clone());
-            for lambda in more_samples(lo.as_ref(), sample, hi.as_ref()) {
-                candidates.push((Some(lambda), SurfaceKind::DoublyRuled));
-            }
-        }
-    }
     let mut best: Option<ParameterizationSurface> = None;
-    for (k, (lambda, kind)) in candidates.into_iter().enumerate() {
-        if k >= primary && best.is_some() {
-            break;
+    let primary = candidates.len();
+    let mut k = 0;
+    loop {
+        if k == primary {
+            if best.is_some() {
+                break;
+            }
+            // more rationals of the (2, 2) arcs, tried only when the first ones give no ruling
+            candidates.extend(more_candidates(analysis));
         }
+        let Some((lambda, kind)) = candidates.get(k).cloned() else {
+            break;
+        };
+        k += 1;
         let matrix = member(a, b, lambda.as_ref());
         let ruling = match kind {
             SurfaceKind::DoublyRuled => parameterize_doubly_ruled(&matrix)?,
@@ -485,6 +477,29 @@ fn choose_surface(
             "the rulings need a biquadratic field (not yet)".into()
         })
     })
+}
+
+/// More doubly ruled candidates: [`more_samples`] of each (2, 2) arc.
+fn more_candidates(analysis: &PencilAnalysis) -> Vec<(Option<RBig>, SurfaceKind)> {
+    let finite: Vec<&RootInterval> = analysis
+        .real_roots
+        .iter()
+        .filter_map(|r| match &r.point {
+            PencilPoint::Finite(v) => Some(v.interval()),
+            PencilPoint::Infinity => None,
+        })
+        .collect();
+    let mut out = Vec::new();
+    for (i, (sample, inertia)) in analysis.arcs.iter().enumerate() {
+        if inertia.positive == 2 && inertia.negative == 2 {
+            let lo = i.checked_sub(1).map(|k| finite[k].hi().clone());
+            let hi = finite.get(i).map(|r| r.lo().clone());
+            for lambda in more_samples(lo.as_ref(), sample, hi.as_ref()) {
+                out.push((Some(lambda), SurfaceKind::DoublyRuled));
+            }
+        }
+    }
+    out
 }
 
 /// Small-height rationals of the open interval `(lo, hi)` (unbounded for `None`) other than
@@ -539,6 +554,38 @@ fn variations(chain: &[Poly<Quadratic>], x: &RBig) -> usize {
     signs.windows(2).filter(|w| w[0] != w[1]).count()
 }
 
+/// The norm `s·s̄ ∈ ℚ[u]` of `s` over ℚ(√δ) as a primitive integer polynomial: `s_a² − δs_b²`
+/// for `s = s_a + s_b√δ`, fraction-free when the coefficients are integral.
+fn norm_of(s: &Poly<Quadratic>) -> Poly {
+    let delta = s
+        .coeffs()
+        .iter()
+        .find(|c| c.as_rational().is_none())
+        .map(|c| c.radicand().clone())
+        .unwrap_or(IBig::ZERO);
+    let norm: Vec<RBig> = match zsqrt::zpoly(s, &delta) {
+        Some(z) => {
+            let conj: Vec<zsqrt::Zq> = z
+                .iter()
+                .map(|c| zsqrt::Zq {
+                    a: c.a.clone(),
+                    b: -c.b.clone(),
+                })
+                .collect();
+            zsqrt::poly_mul(&z, &conj, &delta)
+                .into_iter()
+                .map(|c| RBig::from(c.a))
+                .collect()
+        }
+        None => (s * &s.map(Quadratic::conjugate))
+            .coeffs()
+            .iter()
+            .map(|c| c.as_rational().cloned().expect("a norm is rational"))
+            .collect(),
+    };
+    Poly::from_rational(&Poly::new(norm)).0
+}
+
 /// The real roots of `s` (see [`DiscriminantRoots`]).
 fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
     let rational: Option<Vec<RBig>> = s
@@ -546,6 +593,18 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
         .iter()
         .map(|c| c.as_rational().cloned())
         .collect();
+    // the exact sign of s at a rational: in integers when s is integral over ℤ[√δ]
+    let delta = s
+        .coeffs()
+        .iter()
+        .find(|c| c.as_rational().is_none())
+        .map(|c| c.radicand().clone())
+        .unwrap_or(IBig::ZERO);
+    let integral = zsqrt::zpoly(s, &delta);
+    let sign_at = |x: &RBig| match &integral {
+        Some(z) => zsqrt::sign_at(z, x, &delta),
+        None => sign(&s.eval(&q(x))),
+    };
     let (roots, squarefree) = match rational {
         Some(c) => {
             let p = Poly::from_rational(&Poly::new(c)).0;
@@ -553,22 +612,19 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
             (AlgebraicReal::real_roots_of(&p), squarefree)
         }
         None => {
-            let conj = s.map(Quadratic::conjugate);
-            let norm: Vec<RBig> = (s * &conj)
-                .coeffs()
-                .iter()
-                .map(|c| c.as_rational().cloned().expect("a norm is rational"))
-                .collect();
-            let sf = Poly::from_rational(&Poly::new(norm)).0.squarefree_part();
-            let squarefree = s.gcd_monic(&s.derivative()).degree() == Some(0);
+            let norm = norm_of(s);
+            let sf = norm.squarefree_part();
+            // s divides its norm: a square-free norm makes s square-free (the common case,
+            // without a gcd over ℚ(√δ))
+            let squarefree =
+                sf.degree() == norm.degree() || s.gcd_monic(&s.derivative()).degree() == Some(0);
             // each interval holds one root of s·s̄; a simple root of s there changes its
             // sign, and a square-free s has no other kind (else count by Sturm)
             let chain = (!squarefree).then(|| sturm_chain(s));
-            let sign_at = |x: &RBig| sign(&s.eval(&q(x)));
-            let roots = isolate_real_roots(&sf)
+            let roots = isolate_squarefree_real_roots(&sf)
                 .into_iter()
                 .filter(|iv| match (iv, &chain) {
-                    (RootInterval::Exact(r), _) => s.eval(&q(r)).is_zero(),
+                    (RootInterval::Exact(r), _) => sign_at(r) == Sign::Zero,
                     (RootInterval::Open(lo, hi), None) => sign_at(lo) != sign_at(hi),
                     (RootInterval::Open(lo, hi), Some(chain)) => {
                         variations(chain, lo) > variations(chain, hi)
@@ -593,7 +649,7 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
     let arcs = samples
         .into_iter()
         .map(|x| {
-            let sg = sign(&s.eval(&q(&x)));
+            let sg = sign_at(&x);
             (x, sg)
         })
         .collect();
@@ -608,6 +664,7 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use qsic_algebra::Ring;
 
     fn rq(v: i64) -> Quadratic {
         Quadratic::rational(RBig::from(v))

@@ -1,7 +1,8 @@
 //! The parameterization surface (Appendix A of the enhanced-Levin paper) and its ruled
 //! parameterization `q(u, v) = b(u) + v·d(u)`.
 //!
-//! * inertia (2, 2): a rational (or ℚ(√δ)) point `P` on `S`, the two lines of `S` through `P`
+//! * inertia (2, 2): a rational (or ℚ(√δ)) point `P` on `S` (a small one by integer search
+//!   first, then by hyperplane sections), the two lines of `S` through `P`
 //!   (roots of the binary form `S` induces on the tangent plane `T_P`, over ℚ(√D) with
 //!   `D ≡ det S` modulo squares), then a hyperbolic basis `e₁, f₁, e₂, f₂` of `S`
 //!   (`eᵢᵀSfᵢ = 1`, all other products zero) in which `S(X) = 2(x₁y₁ + x₂y₂)`, so that
@@ -13,6 +14,7 @@
 //!
 //! Linear algebra over ℚ(√δ) on 4-vectors lives here until `qsic_algebra::linalg` lands.
 
+use super::zsqrt;
 use crate::error::Error;
 use qsic_algebra::conic::{find_point, ConicPoint};
 use qsic_algebra::factor::factorize;
@@ -76,13 +78,64 @@ fn scaled(a: &Quadratic, x: &Vec4) -> Vec4 {
     std::array::from_fn(|i| a.mul(&x[i]))
 }
 
+/// The positive rational `k` making `k·x` integral (`aᵢ, bᵢ ∈ ℤ` for every `aᵢ + bᵢ√δ`) with
+/// coprime integers; one for all zeros. A projective point, a line's direction or a whole
+/// ruling may be scaled by it: smaller numbers everywhere downstream.
+fn primitive_scale<'a>(xs: impl IntoIterator<Item = &'a Quadratic>) -> RBig {
+    use dashu_int::ops::Gcd;
+    let xs: Vec<&Quadratic> = xs.into_iter().collect();
+    let parts = || {
+        xs.iter()
+            .flat_map(|x| [x.rational_part(), x.radical_part()])
+            .filter(|v| !v.is_zero())
+    };
+    let mut l = IBig::ONE;
+    for v in parts() {
+        let d = IBig::from(v.denominator().clone());
+        let g = IBig::from(l.clone().gcd(&d));
+        l = &l / &g * d;
+    }
+    let mut g = IBig::ZERO;
+    for v in parts() {
+        let n = v.numerator() * &l / IBig::from(v.denominator().clone());
+        g = IBig::from(g.gcd(&n));
+    }
+    if g.is_zero() {
+        RBig::ONE
+    } else {
+        RBig::from_parts_signed(l, g)
+    }
+}
+
+/// `x` scaled to coprime integer coordinates (see [`primitive_scale`]).
+fn primitive(x: &Vec4) -> Vec4 {
+    let k = primitive_scale(x);
+    if k == RBig::ONE {
+        return x.clone();
+    }
+    std::array::from_fn(|i| x[i].scale(&k))
+}
+
+/// A polynomial vector scaled by a positive rational to coprime integer coefficients.
+pub(crate) fn primitive_poly(v: &PolyVector) -> PolyVector {
+    let k = primitive_scale(v.iter().flat_map(|p| p.coeffs()));
+    if k == RBig::ONE {
+        return v.clone();
+    }
+    std::array::from_fn(|i| v[i].map(|c| c.scale(&k)))
+}
+
 /// `x + u·y` as a vector of polynomials in `u`.
 fn line(x: &Vec4, y: &Vec4) -> PolyVector {
     std::array::from_fn(|i| Poly::new(vec![x[i].clone(), y[i].clone()]))
 }
 
-/// The bilinear form `xᵀ M y` of two polynomial vectors.
+/// The bilinear form `xᵀ M y` of two polynomial vectors (fraction-free in ℤ[√δ] when `M` is
+/// an integer matrix and the coefficients are integral, [`zsqrt`]).
 pub(crate) fn poly_form(m: &Mat4, x: &PolyVector, y: &PolyVector) -> Poly<Quadratic> {
+    if let Some(v) = integral_poly_form(m, x, y) {
+        return v;
+    }
     let mut acc = Poly::zero();
     for i in 0..4 {
         let mut row = Poly::zero();
@@ -96,6 +149,25 @@ pub(crate) fn poly_form(m: &Mat4, x: &PolyVector, y: &PolyVector) -> Poly<Quadra
         }
     }
     acc
+}
+
+/// [`poly_form`] over ℤ[√δ], `None` unless everything is integral.
+fn integral_poly_form(m: &Mat4, x: &PolyVector, y: &PolyVector) -> Option<Poly<Quadratic>> {
+    let mi = zsqrt::integer_matrix(m)?;
+    let delta =
+        radicand_of(x.iter().chain(y.iter()).flat_map(|p| p.coeffs())).unwrap_or(IBig::ZERO);
+    let conv = |v: &PolyVector| -> Option<[zsqrt::ZPoly; 4]> {
+        let out: Vec<zsqrt::ZPoly> = v
+            .iter()
+            .map(|p| zsqrt::zpoly(p, &delta))
+            .collect::<Option<_>>()?;
+        out.try_into().ok()
+    };
+    let (xz, yz) = (conv(x)?, conv(y)?);
+    Some(zsqrt::to_poly(
+        &zsqrt::poly_form(&mi, &xz, &yz, &delta),
+        &delta,
+    ))
 }
 
 /// The radicand of a vector's coordinates, `None` if all are rational.
@@ -198,11 +270,12 @@ fn point_on(s: &[[RBig; 4]; 4], avoid: Option<&[RBig; 4]>) -> Result<Option<Sect
                 continue;
             }
         }
+        // basis entries are 0 and ±1: only the nonzero ones count
         let c: [[RBig; 3]; 3] = std::array::from_fn(|i| {
             std::array::from_fn(|j| {
                 let mut acc = RBig::ZERO;
-                for k in 0..4 {
-                    for l in 0..4 {
+                for k in (0..4).filter(|&k| !basis[i][k].is_zero()) {
+                    for l in (0..4).filter(|&l| !basis[j][l].is_zero() && !s[k][l].is_zero()) {
                         acc += &basis[i][k] * &s[k][l] * &basis[j][l];
                     }
                 }
@@ -250,17 +323,111 @@ fn contains(basis: &[[RBig; 4]; 3], v: &[RBig; 4]) -> bool {
     minors::det(&m).is_zero()
 }
 
-/// The parameterization of a nonsingular quadric of inertia (2, 2) through a point found on
-/// a hyperplane section. `Ok(None)` if its lines need a biquadratic field (no rational point
+/// The integer matrix `k·S` (`k > 0` the least common denominator) if its entries are below
+/// `2⁴⁰` in absolute value.
+fn small_integer_matrix(s: &[[RBig; 4]; 4]) -> Option<[[i128; 4]; 4]> {
+    use dashu_int::ops::Gcd;
+    let mut l = IBig::ONE;
+    for v in s.iter().flatten() {
+        let d = IBig::from(v.denominator().clone());
+        let g = IBig::from(l.clone().gcd(&d));
+        l = &l / &g * d;
+    }
+    let bound = IBig::ONE << 40;
+    let mut out = [[0i128; 4]; 4];
+    for i in 0..4 {
+        for j in 0..4 {
+            let v = &s[i][j];
+            let n = v.numerator() * &l / IBig::from(v.denominator().clone());
+            if n.clone() * n.signum() >= bound {
+                return None;
+            }
+            out[i][j] = i128::try_from(&n).ok()?;
+        }
+    }
+    Some(out)
+}
+
+/// `⌊√n⌋` if `n ≥ 0` is a perfect square.
+fn exact_sqrt(n: i128) -> Option<i128> {
+    if n < 0 {
+        return None;
+    }
+    // squares are 0, 1, 4, 9, 16, 17, 25, 33, 36, 41, 49, 57 modulo 64
+    if (0x0202_0212_0203_0213u64 >> (n & 63)) & 1 == 0 {
+        return None;
+    }
+    let mut r = (n as f64).sqrt() as i128;
+    while r * r > n {
+        r -= 1;
+    }
+    while (r + 1) * (r + 1) <= n {
+        r += 1;
+    }
+    (r * r == n).then_some(r)
+}
+
+/// A rational point of `XᵀSX = 0` found cheaply, `None` if none of the tried ones is: the
+/// vectors with entries in {−1, 0, 1}, then the rational points of the lines joining two of
+/// them (`S` restricted to `P + t·Q` has rational roots iff `S(P,Q)² − S(P,P)S(Q,Q)` is a
+/// square). Exact integer arithmetic on `k·S` (entries below `2⁴⁰`, products below `2¹²⁰`).
+fn small_point(s: &[[RBig; 4]; 4]) -> Option<[RBig; 4]> {
+    let m = small_integer_matrix(s)?;
+    // the 40 projective classes of nonzero vectors in {−1, 0, 1}⁴, first nonzero entry 1
+    let mut vs: Vec<[i128; 4]> = Vec::with_capacity(40);
+    for code in 0..81 {
+        let v: [i128; 4] = std::array::from_fn(|i| (code / 3i128.pow(i as u32)) % 3 - 1);
+        if v.iter().find(|&&x| x != 0) == Some(&1) {
+            vs.push(v);
+        }
+    }
+    let mv: Vec<[i128; 4]> = vs
+        .iter()
+        .map(|v| std::array::from_fn(|i| (0..4).map(|j| m[i][j] * v[j]).sum()))
+        .collect();
+    let dot = |x: &[i128; 4], y: &[i128; 4]| -> i128 { (0..4).map(|i| x[i] * y[i]).sum() };
+    let diag: Vec<i128> = vs.iter().zip(&mv).map(|(v, w)| dot(v, w)).collect();
+    let rational = |v: [i128; 4]| -> [RBig; 4] { std::array::from_fn(|i| RBig::from(v[i])) };
+    if let Some(k) = diag.iter().position(|&x| x == 0) {
+        return Some(rational(vs[k]));
+    }
+    for p in 0..vs.len() {
+        for q in p + 1..vs.len() {
+            let spq = dot(&vs[p], &mv[q]);
+            let Some(r) = exact_sqrt(spq * spq - diag[p] * diag[q]) else {
+                continue;
+            };
+            // S(P + tQ) = 0 at t = (−S(P,Q) + r)/S(Q,Q): the point S(Q,Q)·P + (r − S(P,Q))·Q
+            let (a, b) = (diag[q], r - spq);
+            return Some(rational(std::array::from_fn(|i| {
+                a * vs[p][i] + b * vs[q][i]
+            })));
+        }
+    }
+    None
+}
+
+/// The parameterization of a nonsingular quadric of inertia (2, 2) through a small rational
+/// point ([`doubly_ruled_integral`], fraction-free) or else a point found on a hyperplane
+/// section. `Ok(None)` if its lines need a biquadratic field (no rational point
 /// found and `det S` not a square in the point's field).
 pub(crate) fn parameterize_doubly_ruled(
     s: &[[RBig; 4]; 4],
 ) -> Result<Option<RuledParameterization>, Error> {
-    let Some(found) = point_on(s, None)? else {
-        return Ok(None);
+    let p = match small_point(s) {
+        Some(p) => {
+            if let Some(r) = doubly_ruled_integral(s, &p)? {
+                return Ok(Some(r));
+            }
+            std::array::from_fn(|i| q(&p[i]))
+        }
+        None => match point_on(s, None)? {
+            Some(found) => found.point,
+            None => return Ok(None),
+        },
     };
     let sm = to_quadratic(s);
-    let p = found.point;
+    let p = primitive(&p);
     let delta0 = radicand_of(&p);
     let r = mat_vec(&sm, &p);
     let j = (0..4)
@@ -308,6 +475,7 @@ pub(crate) fn parameterize_doubly_ruled(
             combine(&s12.neg().sub(&root), e1, &s11, e2),
         )
     };
+    let (plus, minus) = (primitive(&plus), primitive(&minus));
     // hyperbolic basis: e₁ = P, e₂ = E₊, f₂ = E₋/(E₊ᵀSE₋), f₁ from the unit vector e_j
     let c = form(&sm, &plus, &minus);
     let c_inv = c
@@ -331,10 +499,190 @@ pub(crate) fn parameterize_doubly_ruled(
         &form(&sm, &g, &g).mul(&half).neg(),
         &p,
     );
-    let b = line(&p, &scaled(&Quadratic::one().neg(), &plus));
-    let d = line(&f2, &f1);
+    // b and d each scaled as a whole: the same lines, v rescaled
+    let b = primitive_poly(&line(&p, &scaled(&Quadratic::one().neg(), &plus)));
+    let d = primitive_poly(&line(&f2, &f1));
     let delta = radicand_of(b.iter().chain(d.iter()).flat_map(|x| x.coeffs()));
     Ok(Some(RuledParameterization { b, d, delta }))
+}
+
+/// [`parameterize_doubly_ruled`] through an integer point `p` of `S`, fraction-free in ℤ[√δ]
+/// on `M = k·S` (integer): `r = Mp`, the tangent plane `Kₖ = rⱼeₖ − rₖeⱼ`, the lines
+/// `E± = (−s₁₂ ± √(s₁₂² − s₁₁s₂₂))·e₁ + s₁₁·e₂`, `c = E₊ᵀME₋`; `g₀ = c·eⱼ − (ME₋)ⱼ·E₊`,
+/// `g₁ = c·g₀ − (g₀ᵀME₊)·E₋` (orthogonal to `E₊` and `E₋`), `ρ = pᵀMg₁`,
+/// `f = 2ρ·g₁ − (g₁ᵀMg₁)·p` (isotropic, `pᵀMf = 2ρ²`); then `b = p − u·E₊` and
+/// `d = 2ρ²·E₋ + u·c·f` (`pᵀMf·c = E₊ᵀM(2ρ²E₋)`, so `bᵀMd ≡ 0`). `Ok(None)` when a step
+/// leaves ℤ[√δ] (a non-integral square root): the caller takes the rational route.
+fn doubly_ruled_integral(
+    s: &[[RBig; 4]; 4],
+    p: &[RBig; 4],
+) -> Result<Option<RuledParameterization>, Error> {
+    use zsqrt::Zq;
+    let Some(m) = scaled_integer_matrix(s) else {
+        return Ok(None);
+    };
+    let int = |v: &RBig| -> Option<IBig> {
+        (*v.denominator() == dashu_int::UBig::ONE).then(|| v.numerator().clone())
+    };
+    let Some(p) = p.iter().map(int).collect::<Option<Vec<IBig>>>() else {
+        return Ok(None);
+    };
+    let mv = |x: &[IBig]| -> Vec<IBig> {
+        (0..4)
+            .map(|i| (0..4).map(|j| &m[i][j] * &x[j]).sum())
+            .collect()
+    };
+    let idot = |x: &[IBig], y: &[IBig]| -> IBig { (0..4).map(|i| &x[i] * &y[i]).sum() };
+    let r = mv(&p);
+    let j = (0..4)
+        .find(|&k| !r[k].is_zero())
+        .ok_or_else(|| Error::Algebra("a point in the kernel of a nonsingular quadric".into()))?;
+    let k0 = (0..4)
+        .find(|&k| k != j && !p[k].is_zero())
+        .ok_or_else(|| Error::Algebra("tangent plane basis".into()))?;
+    let kernel: Vec<Vec<IBig>> = (0..4)
+        .filter(|&k| k != j && k != k0)
+        .map(|k| {
+            let mut v = vec![IBig::ZERO; 4];
+            v[k] = r[j].clone();
+            v[j] = -r[k].clone();
+            v
+        })
+        .collect();
+    let (e1, e2) = (&kernel[0], &kernel[1]);
+    let (me1, me2) = (mv(e1), mv(e2));
+    let (s11, s12, s22) = (idot(e1, &me1), idot(e1, &me2), idot(e2, &me2));
+    let zvec = |x: &[IBig]| -> Vec<Zq> { x.iter().cloned().map(Zq::int).collect() };
+    let (plus, minus, delta) = if s11.is_zero() {
+        let minus: Vec<IBig> = (0..4)
+            .map(|i| &s22 * &e1[i] - IBig::from(2) * &s12 * &e2[i])
+            .collect();
+        (zvec(e1), zvec(&minus), IBig::ZERO)
+    } else {
+        let disc = &s12 * &s12 - &s11 * &s22;
+        if disc <= IBig::ZERO {
+            return Err(Error::Algebra(
+                "no real lines through a point of an inertia (2, 2) member".into(),
+            ));
+        }
+        let Some(root) = sqrt_in_field(&Quadratic::rational(RBig::from(disc)), None) else {
+            return Ok(None);
+        };
+        let delta = root.radicand().clone();
+        let Some(root) = Zq::from_quadratic(&root, &delta) else {
+            return Ok(None);
+        };
+        let line = |sign: bool| -> Vec<Zq> {
+            let rt = if sign { root.clone() } else { root.neg() };
+            let k1 = Zq::int(-s12.clone()).add(&rt);
+            (0..4)
+                .map(|i| {
+                    k1.mul(&Zq::int(e1[i].clone()), &delta)
+                        .add(&Zq::int(&s11 * &e2[i]))
+                })
+                .collect()
+        };
+        (line(true), line(false), delta)
+    };
+    // balance the parameter: |E₊| about |p| (a power of two, exact), so that u has the
+    // scale of the point and the roots of s(u) are neither huge nor tiny
+    let size = |v: &[Zq]| -> f64 {
+        let r = delta.to_f64().value().abs().sqrt();
+        v.iter()
+            .map(|x| x.a.to_f64().value().abs() + x.b.to_f64().value().abs() * r)
+            .fold(0.0, f64::max)
+    };
+    let ratio = size(&zvec(&p)) / size(&plus);
+    let plus: Vec<Zq> = if ratio.is_finite() && ratio >= 2.0 {
+        let k = Zq::int(IBig::ONE << (ratio.log2().floor() as usize));
+        plus.iter().map(|x| x.mul(&k, &delta)).collect()
+    } else {
+        plus
+    };
+    let p: Vec<IBig> = if ratio.is_finite() && ratio > 0.0 && ratio <= 0.5 {
+        let k = IBig::ONE << ((1.0 / ratio).log2().floor() as usize);
+        p.iter().map(|x| x * &k).collect()
+    } else {
+        p
+    };
+    let zm: Vec<Vec<Zq>> = m
+        .iter()
+        .map(|row| row.iter().cloned().map(Zq::int).collect())
+        .collect();
+    let zmv = |x: &[Zq]| -> Vec<Zq> {
+        (0..4)
+            .map(|i| {
+                let mut acc = Zq::default();
+                for k in 0..4 {
+                    acc.add_mul(&zm[i][k], &x[k], &delta);
+                }
+                acc
+            })
+            .collect()
+    };
+    let zdot = |x: &[Zq], y: &[Zq]| -> Zq {
+        let mut acc = Zq::default();
+        for i in 0..4 {
+            acc.add_mul(&x[i], &y[i], &delta);
+        }
+        acc
+    };
+    // a·x + b·y
+    let comb = |a: &Zq, x: &[Zq], b: &Zq, y: &[Zq]| -> Vec<Zq> {
+        (0..4)
+            .map(|i| a.mul(&x[i], &delta).add(&b.mul(&y[i], &delta)))
+            .collect()
+    };
+    let m_minus = zmv(&minus);
+    let c = zdot(&plus, &m_minus);
+    if c.is_zero() {
+        return Err(Error::Algebra(
+            "the two lines through a point are not distinct".into(),
+        ));
+    }
+    let mut ej = vec![Zq::default(); 4];
+    ej[j] = Zq::int(IBig::ONE);
+    let g0 = comb(&c, &ej, &m_minus[j].neg(), &plus);
+    let g0_plus = zdot(&g0, &zmv(&plus));
+    let g1 = comb(&c, &g0, &g0_plus.neg(), &minus);
+    let zp = zvec(&p);
+    let mg1 = zmv(&g1);
+    let rho = zdot(&zp, &mg1);
+    let g1g1 = zdot(&g1, &mg1);
+    let two = Zq::int(IBig::from(2));
+    let f = comb(&two.mul(&rho, &delta), &g1, &g1g1.neg(), &zp);
+    let two_rho2 = two.mul(&rho.mul(&rho, &delta), &delta);
+    let back = |x: &Zq| x.to_quadratic(&delta);
+    let b: PolyVector =
+        std::array::from_fn(|i| Poly::new(vec![back(&zp[i]), back(&plus[i].neg())]));
+    let d: PolyVector = std::array::from_fn(|i| {
+        Poly::new(vec![
+            back(&two_rho2.mul(&minus[i], &delta)),
+            back(&c.mul(&f[i], &delta)),
+        ])
+    });
+    let (b, d) = (primitive_poly(&b), primitive_poly(&d));
+    let delta = radicand_of(b.iter().chain(d.iter()).flat_map(|x| x.coeffs()));
+    Ok(Some(RuledParameterization { b, d, delta }))
+}
+
+/// `k·S` with integer entries, `k > 0` the least common denominator.
+fn scaled_integer_matrix(s: &[[RBig; 4]; 4]) -> Option<[[IBig; 4]; 4]> {
+    use dashu_int::ops::Gcd;
+    let mut l = IBig::ONE;
+    for v in s.iter().flatten() {
+        let d = IBig::from(v.denominator().clone());
+        let g = IBig::from(l.clone().gcd(&d));
+        l = &l / &g * d;
+    }
+    let mut out: [[IBig; 4]; 4] = Default::default();
+    for i in 0..4 {
+        for j in 0..4 {
+            let v = &s[i][j];
+            out[i][j] = v.numerator() * &l / IBig::from(v.denominator().clone());
+        }
+    }
+    Some(out)
 }
 
 /// The parameterization of a cone or cylinder `S` (rank 3, indefinite): the vertex and a
@@ -377,7 +725,8 @@ pub(crate) fn parameterize_cone(
     let py = poly_form(&sm, &pv, &y);
     let minus_two_py = py.scale(&Quadratic::from_int(&IBig::from(-2)));
     let d: PolyVector = std::array::from_fn(|i| &(&yy * &pv[i]) + &(&minus_two_py * &y[i]));
-    let b: PolyVector = std::array::from_fn(|i| Poly::constant(vertex[i].clone()));
+    let d = primitive_poly(&d);
+    let b = primitive_poly(&std::array::from_fn(|i| Poly::constant(vertex[i].clone())));
     let delta = radicand_of(d.iter().flat_map(|x| x.coeffs()));
     Ok(Some(RuledParameterization { b, d, delta }))
 }
@@ -418,6 +767,56 @@ mod tests {
             assert_ruled(&s, &r);
             assert_eq!(r.delta, want.map(IBig::from), "{d:?}");
         }
+    }
+
+    #[test]
+    fn exact_square_roots_and_small_points() {
+        for n in -5i128..20_000 {
+            let want = (0..=150i128).find(|k| k * k == n);
+            assert_eq!(exact_sqrt(n), want, "{n}");
+        }
+        let big = (1i128 << 50) + 3;
+        assert_eq!(exact_sqrt(big * big), Some(big));
+        assert_eq!(exact_sqrt(big * big + 1), None);
+        // random symmetric integer matrices: every small point is on the quadric, and the
+        // rulings through it (the fraction-free route) lie on it too
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % 19) as i64 - 9
+        };
+        let (mut found, mut ruled) = (0, 0);
+        for _ in 0..200 {
+            let mut m: [[RBig; 4]; 4] = std::array::from_fn(|_| std::array::from_fn(|_| rat(0)));
+            for i in 0..4 {
+                for j in i..4 {
+                    let v = rat(next());
+                    m[i][j] = v.clone();
+                    m[j][i] = v;
+                }
+            }
+            if let Some(p) = small_point(&m) {
+                found += 1;
+                assert!(p.iter().any(|x| !x.is_zero()));
+                let mut acc = RBig::ZERO;
+                for i in 0..4 {
+                    for j in 0..4 {
+                        acc += &p[i] * &m[i][j] * &p[j];
+                    }
+                }
+                assert!(acc.is_zero(), "{p:?}");
+            }
+            if minors::det(&m).is_zero() {
+                continue;
+            }
+            if let Ok(Some(r)) = parameterize_doubly_ruled(&m) {
+                ruled += 1;
+                assert_ruled(&m, &r);
+            }
+        }
+        assert!(found > 50 && ruled > 20, "{found} points, {ruled} rulings");
     }
 
     #[test]

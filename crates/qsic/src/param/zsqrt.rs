@@ -1,0 +1,193 @@
+//! Fraction-free arithmetic in ℤ[√δ]: the integer fast path of [`super::surface`].
+//!
+//! `ℚ(√δ)` elements as [`Quadratic`] normalise two rationals (two gcds) at every operation;
+//! the rulings, the forms `c₀, c₁, c₂` and `s(u)` only need sums and products of integral
+//! elements `a + b√δ` (`a, b ∈ ℤ`), which here cost a few integer products and no gcd:
+//! `(a + b√δ)(c + e√δ) = (ac + δbe) + (ae + bc)√δ`. Values are converted back to
+//! [`Quadratic`] at the end; the results are identical.
+
+use qsic_algebra::field::Quadratic;
+use qsic_algebra::{IBig, Poly, RBig, Sign};
+
+/// `a + b√δ` with integers `a`, `b` (`δ` held by the caller).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Zq {
+    pub(crate) a: IBig,
+    pub(crate) b: IBig,
+}
+
+impl Zq {
+    pub(crate) fn int(a: IBig) -> Zq {
+        Zq { a, b: IBig::ZERO }
+    }
+
+    pub(crate) fn is_zero(&self) -> bool {
+        self.a.is_zero() && self.b.is_zero()
+    }
+
+    /// `x` if it is integral (`a, b ∈ ℤ`) and its radicand is `δ` (or it is rational).
+    pub(crate) fn from_quadratic(x: &Quadratic, delta: &IBig) -> Option<Zq> {
+        let int = |v: &RBig| -> Option<IBig> {
+            (*v.denominator() == dashu_int::UBig::ONE).then(|| v.numerator().clone())
+        };
+        if x.as_rational().is_none() && x.radicand() != delta {
+            return None;
+        }
+        Some(Zq {
+            a: int(x.rational_part())?,
+            b: int(x.radical_part())?,
+        })
+    }
+
+    pub(crate) fn to_quadratic(&self, delta: &IBig) -> Quadratic {
+        if self.b.is_zero() {
+            return Quadratic::rational(RBig::from(self.a.clone()));
+        }
+        Quadratic::new(
+            RBig::from(self.a.clone()),
+            RBig::from(self.b.clone()),
+            delta.clone(),
+        )
+        .expect("δ is not a square")
+    }
+
+    pub(crate) fn add(&self, o: &Zq) -> Zq {
+        Zq {
+            a: &self.a + &o.a,
+            b: &self.b + &o.b,
+        }
+    }
+
+    pub(crate) fn neg(&self) -> Zq {
+        Zq {
+            a: -&self.a,
+            b: -&self.b,
+        }
+    }
+
+    pub(crate) fn mul(&self, o: &Zq, delta: &IBig) -> Zq {
+        if self.b.is_zero() && o.b.is_zero() {
+            return Zq::int(&self.a * &o.a);
+        }
+        Zq {
+            a: &self.a * &o.a + &self.b * &o.b * delta,
+            b: &self.a * &o.b + &self.b * &o.a,
+        }
+    }
+
+    /// `self += x·y`.
+    pub(crate) fn add_mul(&mut self, x: &Zq, y: &Zq, delta: &IBig) {
+        if x.is_zero() || y.is_zero() {
+            return;
+        }
+        let p = x.mul(y, delta);
+        self.a += p.a;
+        self.b += p.b;
+    }
+}
+
+/// A polynomial in `u` over ℤ[√δ], increasing powers (trailing zeros allowed).
+pub(crate) type ZPoly = Vec<Zq>;
+
+/// `p` over ℤ[√δ], `None` if a coefficient is not integral in ℚ(√δ).
+pub(crate) fn zpoly(p: &Poly<Quadratic>, delta: &IBig) -> Option<ZPoly> {
+    p.coeffs()
+        .iter()
+        .map(|c| Zq::from_quadratic(c, delta))
+        .collect()
+}
+
+/// Back to a polynomial over ℚ(√δ).
+pub(crate) fn to_poly(p: &[Zq], delta: &IBig) -> Poly<Quadratic> {
+    Poly::new(p.iter().map(|c| c.to_quadratic(delta)).collect())
+}
+
+pub(crate) fn poly_mul(x: &[Zq], y: &[Zq], delta: &IBig) -> ZPoly {
+    if x.is_empty() || y.is_empty() {
+        return Vec::new();
+    }
+    let mut out = vec![Zq::default(); x.len() + y.len() - 1];
+    for (i, a) in x.iter().enumerate() {
+        if a.is_zero() {
+            continue;
+        }
+        for (j, b) in y.iter().enumerate() {
+            out[i + j].add_mul(a, b, delta);
+        }
+    }
+    out
+}
+
+/// `x + k·y` for a scalar `k`.
+pub(crate) fn poly_add_scaled(x: &mut ZPoly, k: &Zq, y: &[Zq], delta: &IBig) {
+    if x.len() < y.len() {
+        x.resize(y.len(), Zq::default());
+    }
+    for (i, b) in y.iter().enumerate() {
+        x[i].add_mul(k, b, delta);
+    }
+}
+
+/// `xᵀMy` for an integer matrix `M` and polynomial vectors over ℤ[√δ].
+pub(crate) fn poly_form(m: &[[IBig; 4]; 4], x: &[ZPoly; 4], y: &[ZPoly; 4], delta: &IBig) -> ZPoly {
+    let mut acc: ZPoly = Vec::new();
+    for i in 0..4 {
+        if x[i].iter().all(Zq::is_zero) {
+            continue;
+        }
+        let mut row: ZPoly = Vec::new();
+        for j in 0..4 {
+            if !m[i][j].is_zero() {
+                poly_add_scaled(&mut row, &Zq::int(m[i][j].clone()), &y[j], delta);
+            }
+        }
+        let prod = poly_mul(&x[i], &row, delta);
+        poly_add_scaled(&mut acc, &Zq::int(IBig::ONE), &prod, delta);
+    }
+    acc
+}
+
+/// The integer matrix if every entry of `m` is an integer.
+pub(crate) fn integer_matrix(m: &[[Quadratic; 4]; 4]) -> Option<[[IBig; 4]; 4]> {
+    let mut out: [[IBig; 4]; 4] = Default::default();
+    for i in 0..4 {
+        for j in 0..4 {
+            let v = m[i][j].as_rational()?;
+            if *v.denominator() != dashu_int::UBig::ONE {
+                return None;
+            }
+            out[i][j] = v.numerator().clone();
+        }
+    }
+    Some(out)
+}
+
+/// The exact sign of `p(x)` for a rational `x = n/m` (`δ > 0` not a square, or `p` rational):
+/// `m^deg·p(n/m) = A + B√δ` by Horner's rule in integers, then the sign of `A + B√δ` from
+/// the signs of `A`, `B` and the comparison of `A²` with `δB²`.
+pub(crate) fn sign_at(p: &[Zq], x: &RBig, delta: &IBig) -> Sign {
+    let (n, m) = (x.numerator().clone(), IBig::from(x.denominator().clone()));
+    let mut acc = Zq::default();
+    let mut scale = IBig::ONE;
+    for c in p.iter().rev() {
+        // acc ← acc·n + c·m^k (k the number of coefficients taken so far)
+        acc = Zq {
+            a: &acc.a * &n + &c.a * &scale,
+            b: &acc.b * &n + &c.b * &scale,
+        };
+        scale *= &m;
+    }
+    let (sa, sb) = (Sign::of(&acc.a), Sign::of(&acc.b));
+    if sb == Sign::Zero || sa == sb {
+        return if sb == Sign::Zero { sa } else { sb };
+    }
+    if sa == Sign::Zero {
+        return sb;
+    }
+    // opposite signs: |A| vs |B|√δ, never equal (δ not a square)
+    if &acc.a * &acc.a > &acc.b * &acc.b * delta {
+        sa
+    } else {
+        sb
+    }
+}
