@@ -8,7 +8,10 @@
 //!   sign of `2m₂α + m₁` (exact); so `c = p + q·sqrt(n)` with `D = k²n` (small square
 //!   factors taken out), or a rational when `D` is a square;
 //! - degree > 2: a polynomial in a name `a1`, `a2`, … — one per distinct `α` met by a
-//!   [`Names`] — listed by [`Names::numbers`] with `m` and an isolating interval.
+//!   [`Names`] — listed by [`Names::numbers`] with `m` and an isolating interval. A number
+//!   beyond `2^±16` in size is named scaled, `β = α/2ᵉ` near 1 (its polynomial `m(2ᵉx)`,
+//!   and `2^(ej)` in the coefficient of `αʲ`), so that a checker evaluating the polynomial
+//!   near the root in floating point meets terms near 1, not `|α|⁴ ≈ 10¹⁶⁶`.
 
 use super::curve::{Number, NumberPoly};
 use qsic_algebra::poly::sturm::SturmSequence;
@@ -32,7 +35,35 @@ pub struct NamedNumber {
 /// The names given to algebraic numbers of degree > 2 while printing one answer.
 #[derive(Clone, Debug, Default)]
 pub struct Names {
-    named: Vec<AlgebraicReal>,
+    /// Each named number `α` with its binary exponent `e`: the name stands for `α/2ᵉ`.
+    named: Vec<(AlgebraicReal, i64)>,
+}
+
+/// Numbers beyond `2^±SCALE_BITS` are named scaled by a power of two (module docs).
+const SCALE_BITS: i64 = 16;
+
+/// The exponent `e` with `α/2ᵉ` near 1 when `|α|` is beyond `2^±SCALE_BITS`, else 0.
+fn scale_exponent(alpha: &AlgebraicReal) -> i64 {
+    let v = alpha.to_f64().abs();
+    if v == 0.0 || !v.is_finite() {
+        return 0;
+    }
+    let e = v.log2().floor() as i64;
+    if e.abs() > SCALE_BITS {
+        e
+    } else {
+        0
+    }
+}
+
+/// `2ᵉ` as a rational.
+fn power_of_two(e: i64) -> RBig {
+    let p = RBig::from(IBig::ONE << e.unsigned_abs() as usize);
+    if e >= 0 {
+        p
+    } else {
+        RBig::ONE / p
+    }
 }
 
 /// `p/q` (or `p`), with a leading `-` when negative.
@@ -105,21 +136,21 @@ impl Names {
     }
 
     /// The name of `alpha` (a new one if it is new).
-    fn name_of(&mut self, alpha: &AlgebraicReal) -> String {
+    fn name_of(&mut self, alpha: &AlgebraicReal) -> (String, i64) {
         let k = match self
             .named
             .iter()
             // roots of one square-free polynomial are equal iff their isolating intervals
             // meet (no refinement, no comparison that could be costly)
-            .position(|a| a.poly() == alpha.poly() && intervals_meet(a, alpha))
+            .position(|(a, _)| a.poly() == alpha.poly() && intervals_meet(a, alpha))
         {
             Some(k) => k,
             None => {
-                self.named.push(alpha.clone());
+                self.named.push((alpha.clone(), scale_exponent(alpha)));
                 self.named.len() - 1
             }
         };
-        format!("a{}", k + 1)
+        (format!("a{}", k + 1), self.named[k].1)
     }
 
     /// The exact number `c` as an expression.
@@ -162,8 +193,16 @@ impl Names {
                 }
             }
             _ => {
-                let name = self.name_of(&alpha);
-                rep.to_string().replace('x', &name)
+                let (name, e) = self.name_of(&alpha);
+                // α = 2ᵉ·β with β the name: the coefficient of αʲ times 2^(ej)
+                let scaled = Poly::new(
+                    rep.coeffs()
+                        .iter()
+                        .enumerate()
+                        .map(|(j, c)| c * power_of_two(e * j as i64))
+                        .collect(),
+                );
+                scaled.to_string().replace('x', &name)
             }
         }
     }
@@ -222,17 +261,28 @@ impl Names {
         self.named
             .iter()
             .enumerate()
-            .map(|(k, a)| {
-                let iv = a.refined_interval(&width);
-                let (lo, hi) = short_ends(a, iv.lo(), iv.hi());
+            .map(|(k, (a, e))| {
+                let scale = power_of_two(*e);
+                // β = α/2ᵉ is a root of m(2ᵉx)
+                let poly = Poly::new(
+                    a.poly()
+                        .to_rational()
+                        .coeffs()
+                        .iter()
+                        .enumerate()
+                        .map(|(i, c)| c * power_of_two(e * i as i64))
+                        .collect(),
+                );
+                let iv = a.refined_interval(&(&width * &scale));
+                let (lo, hi) = short_ends(&poly, &(iv.lo() / &scale), &(iv.hi() / &scale));
                 NamedNumber {
                     name: format!("a{}", k + 1),
                     // monic: a checker evaluating it near the root in floating point
                     // sees terms of the size of the root's powers, not of the integer
                     // content (which can be 10⁶⁰ for a disguised pencil)
-                    poly: a.poly().to_rational().monic().to_string(),
+                    poly: poly.monic().to_string(),
                     interval: [lo.to_string(), hi.to_string()],
-                    approx: a.to_f64(),
+                    approx: a.to_f64() / 2f64.powi(*e as i32),
                 }
             })
             .collect()
@@ -243,17 +293,18 @@ impl Names {
 /// be far finer, with ends of thousands of digits): rounded outward to multiples of `2⁻ᵏ`,
 /// the least `k ≥ 48` for which the rounded interval still holds exactly one root of `a`'s
 /// polynomial (Sturm), else the ends as they are.
-fn short_ends(a: &AlgebraicReal, lo: &RBig, hi: &RBig) -> (RBig, RBig) {
+fn short_ends(poly: &Poly<RBig>, lo: &RBig, hi: &RBig) -> (RBig, RBig) {
     if lo == hi {
         return (lo.clone(), hi.clone());
     }
-    let sturm = SturmSequence::new(a.poly());
+    let (int_poly, _) = Poly::from_rational(poly);
+    let sturm = SturmSequence::new(&int_poly);
     for k in [48usize, 64, 96, 128, 192, 256] {
         let scale = RBig::from(IBig::ONE << k);
         let down = RBig::from((lo * &scale).floor()) / &scale;
         let up = RBig::from((hi * &scale).ceil()) / &scale;
         let ends_not_roots =
-            !a.poly().eval_rational(&down).is_zero() && !a.poly().eval_rational(&up).is_zero();
+            !int_poly.eval_rational(&down).is_zero() && !int_poly.eval_rational(&up).is_zero();
         if ends_not_roots && sturm.count_roots_in(&down, &up) == 1 {
             return (down, up);
         }
@@ -398,6 +449,45 @@ mod tests {
         let mut names = Names::new();
         assert_eq!(names.number(&NumberField::new(&alpha).generator()), "a1");
         assert_eq!(names.numbers()[0].poly, "x^3 - 2/3");
+    }
+
+    #[test]
+    fn large_and_small_numbers_are_named_scaled_by_a_power_of_two() {
+        // α = 2²⁰·∛2, a root of x³ − 2⁶¹: named β = α/2²⁰ = ∛2, α written 2²⁰·β
+        let big = AlgebraicReal::real_roots_of(&Poly::new(vec![
+            -(IBig::ONE << 61),
+            IBig::ZERO,
+            IBig::ZERO,
+            IBig::ONE,
+        ]))
+        .pop()
+        .unwrap();
+        let mut names = Names::new();
+        assert_eq!(
+            names.number(&NumberField::new(&big).generator()),
+            "1048576*a1"
+        );
+        let listed = &names.numbers()[0];
+        assert_eq!(listed.poly, "x^3 - 2");
+        assert!((listed.approx - 2f64.cbrt()).abs() < 1e-12);
+        let lo: RBig = listed.interval[0].parse().unwrap();
+        let hi: RBig = listed.interval[1].parse().unwrap();
+        assert!(lo.to_f64().value() <= 2f64.cbrt() && 2f64.cbrt() <= hi.to_f64().value());
+        // α = ∛2/2²⁰: β = 2²⁰α, α written β/2²⁰ (exponent −20)
+        let small = AlgebraicReal::real_roots_of(&Poly::new(vec![
+            IBig::from(-2),
+            IBig::ZERO,
+            IBig::ZERO,
+            IBig::ONE << 60,
+        ]))
+        .pop()
+        .unwrap();
+        let mut names = Names::new();
+        assert_eq!(
+            names.number(&NumberField::new(&small).generator()),
+            "1/1048576*a1"
+        );
+        assert_eq!(names.numbers()[0].poly, "x^3 - 2");
     }
 
     #[test]
