@@ -276,3 +276,31 @@ fn a_line_dominated_by_its_direction_is_sampled_without_a_jump() {
         }
     }
 }
+
+/// Rotated and shifted CAD shapes with decimal data (a cylinder and a cone, an ellipsoid and a
+/// hyperboloid): Levin's `s(u)` came out with coefficients 10⁸⁶ apart, its real roots near
+/// 10⁻²¹, where floats in θ cannot follow the curve; the parameter is now scaled by a power of
+/// two so that the roots of `s` are near 1.
+#[test]
+fn real_world_pairs_with_unbalanced_levin_forms_are_sampled() {
+    let pairs = [
+        (
+            "5*x^2/9 + 8*x*y/9 + 4*x*z/9 - 21*x/5 + 5*y^2/9 - 4*y*z/9 - 2*y + 8*z^2/9 - z/2 + 162/25",
+            "9961*x^2/10609 + 4752*x*y/10609 + 5544*x*z/10609 - 95595*x/10609 + 1897*y^2/10609 - 20328*y*z/10609 + 256706*y/53045 - 1249*z^2/10609 - 17194*z/10609 + 19998053/1060900",
+        ),
+        (
+            "85*x^2/121 + 72*x*y/121 - 84*x*z/121 + 174*x/121 + 85*y^2/121 + 84*y*z/121 - 1233*y/605 + 72*z^2/121 - 8739*z/1210 + 8001/1210",
+            "49*x^2/121 + 1008*x*y/605 - 456*x*z/605 + 9027*x/3025 - 503*y^2/3025 + 3192*y*z/3025 - 49274*y/15125 + 2303*z^2/3025 + 108143*z/15125 - 670348/75625",
+        ),
+    ];
+    for (a, b) in pairs {
+        let (a, b) = (parse_quadric(a).unwrap(), parse_quadric(b).unwrap());
+        let curve = parameterize(&a, &b).unwrap();
+        let ms = [float_matrix(&a), float_matrix(&b)];
+        let s = sample(&curve, &SampleOptions::default()).unwrap();
+        assert_eq!(s.pieces.len(), curve.pieces.len());
+        for p in &s.pieces {
+            check_piece(p, &ms, 64).unwrap();
+        }
+    }
+}

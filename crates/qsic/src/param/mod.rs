@@ -192,16 +192,72 @@ pub fn parameterize_smooth_quartic(
         return Err(Error::Algebra("s(u) vanishes identically".into()));
     }
     let av: PolyVector = std::array::from_fn(|i| &(&c2 * &bv[i]) - &(&c1 * &dv[i]));
+    // u ↦ 2ᵏu with the extreme coefficients of s of one size: the real roots of s (the arc
+    // ends) near 1 in size, which the floats of `sample` need (a substitution: the identities
+    // hold as they are)
+    let k = balancing_exponent(&s);
+    let (av, dv, s) = if k == 0 {
+        (av, dv.clone(), s)
+    } else {
+        let scaled = |p: &Poly<Quadratic>| -> Poly<Quadratic> {
+            Poly::new(
+                p.coeffs()
+                    .iter()
+                    .enumerate()
+                    .map(|(i, c)| c.scale(&power_of_two(k * i as i64)))
+                    .collect(),
+            )
+        };
+        (
+            std::array::from_fn(|i| scaled(&av[i])),
+            std::array::from_fn(|i| scaled(&dv[i])),
+            scaled(&s),
+        )
+    };
     let discriminant = discriminant_roots(&s);
     Ok(LevinParameterization {
         delta: surface.ruling.delta.clone(),
         substituted,
         a: av,
-        d: dv.clone(),
+        d: dv,
         s,
         discriminant,
         surface,
     })
+}
+
+/// `2ᵉ` as a rational.
+fn power_of_two(e: i64) -> RBig {
+    let p = RBig::from(IBig::ONE << e.unsigned_abs() as usize);
+    if e >= 0 {
+        p
+    } else {
+        RBig::ONE / p
+    }
+}
+
+/// The `k` for which `u ↦ 2ᵏu` brings the lowest and highest nonzero coefficients of `s` to
+/// one size (`|s_lo|·2^(k·lo) ≈ |s_hi|·2^(k·hi)`); 0 when they are within `2⁸` per degree.
+fn balancing_exponent(s: &Poly<Quadratic>) -> i64 {
+    let sizes: Vec<(usize, f64)> = s
+        .coeffs()
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| !qsic_algebra::Ring::is_zero(*c))
+        .map(|(i, c)| (i, c.to_f64().abs()))
+        .collect();
+    let (Some(&(lo, slo)), Some(&(hi, shi))) = (sizes.first(), sizes.last()) else {
+        return 0;
+    };
+    if hi == lo || !(slo > 0.0 && shi > 0.0 && slo.is_finite() && shi.is_finite()) {
+        return 0;
+    }
+    let k = ((slo.log2() - shi.log2()) / (hi - lo) as f64).round();
+    if k.abs() <= 8.0 {
+        0
+    } else {
+        k as i64
+    }
 }
 
 /// The intersection curve of `a` and `b`: every component exactly, the pieces of its real
