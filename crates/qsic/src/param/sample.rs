@@ -405,7 +405,8 @@ fn sqrt_field_dd(c: &Number, max_loss: i32) -> Option<Dd> {
         v = v.mul(root).add(term);
         size = size * root.0.abs() + term.0.abs();
     }
-    if !(v.0.abs() * 2f64.powi(max_loss) >= size) {
+    let kept = v.0.abs() * 2f64.powi(max_loss);
+    if kept.is_nan() || kept < size {
         return None;
     }
     Some(v.div_f64_int(c.denominator()))
