@@ -177,28 +177,28 @@ pub fn parameterize_smooth_quartic(
     }
     // the pencil analysis works on the primitive integer matrices: so does λ
     let (am, bm) = (integer_matrix(a), integer_matrix(b));
-    let surface = choose_surface(&am, &bm, &analysis)?;
+    let mut surface = choose_surface(&am, &bm, &analysis)?;
     let (qm, substituted) = match surface.lambda {
         Some(_) => (&am, Substituted::A),
         None => (&bm, Substituted::B),
     };
     let qm = to_quadratic(qm);
-    let (bv, dv) = (&surface.ruling.b, &surface.ruling.d);
-    let c2 = poly_form(&qm, dv, dv);
-    let c1 = poly_form(&qm, bv, dv);
-    let c0 = poly_form(&qm, bv, bv);
-    let s = &(&c1 * &c1) - &(&c0 * &c2);
+    let forms = |b: &PolyVector, d: &PolyVector| {
+        let c2 = poly_form(&qm, d, d);
+        let c1 = poly_form(&qm, b, d);
+        let c0 = poly_form(&qm, b, b);
+        let s = &(&c1 * &c1) - &(&c0 * &c2);
+        (c1, c2, s)
+    };
+    let (mut c1, mut c2, mut s) = forms(&surface.ruling.b, &surface.ruling.d);
     if s.is_zero() {
         return Err(Error::Algebra("s(u) vanishes identically".into()));
     }
-    let av: PolyVector = std::array::from_fn(|i| &(&c2 * &bv[i]) - &(&c1 * &dv[i]));
-    // u ↦ 2ᵏu with the extreme coefficients of s of one size: the real roots of s (the arc
-    // ends) near 1 in size, which the floats of `sample` need (a substitution: the identities
-    // hold as they are)
+    // u ↦ 2ᵏu in the ruling, with the extreme coefficients of s of one size: the real roots
+    // of s (the arc ends) near 1 in size, which the floats of `sample` need (a substitution:
+    // every identity holds as it is)
     let k = balancing_exponent(&s);
-    let (av, dv, s) = if k == 0 {
-        (av, dv.clone(), s)
-    } else {
+    if k != 0 {
         let scaled = |p: &Poly<Quadratic>| -> Poly<Quadratic> {
             Poly::new(
                 p.coeffs()
@@ -208,12 +208,13 @@ pub fn parameterize_smooth_quartic(
                     .collect(),
             )
         };
-        (
-            std::array::from_fn(|i| scaled(&av[i])),
-            std::array::from_fn(|i| scaled(&dv[i])),
-            scaled(&s),
-        )
-    };
+        surface.ruling.b = std::array::from_fn(|i| scaled(&surface.ruling.b[i]));
+        surface.ruling.d = std::array::from_fn(|i| scaled(&surface.ruling.d[i]));
+        (c1, c2, s) = forms(&surface.ruling.b, &surface.ruling.d);
+    }
+    let (bv, dv) = (&surface.ruling.b, &surface.ruling.d);
+    let av: PolyVector = std::array::from_fn(|i| &(&c2 * &bv[i]) - &(&c1 * &dv[i]));
+    let dv = dv.clone();
     let discriminant = discriminant_roots(&s);
     Ok(LevinParameterization {
         delta: surface.ruling.delta.clone(),
