@@ -364,15 +364,22 @@ def _objects(values: List[Any]) -> np.ndarray:
     return np.fromiter(values, dtype=object, count=len(values))
 
 
-def param(a: QuadricLike, b: QuadricLike) -> Dict[str, Any]:
+def param(
+    a: QuadricLike, b: QuadricLike, *, affine: bool = True, chart: Optional[str] = None
+) -> Dict[str, Any]:
     """The exact curve: the JSON object of ``qsic param --json A B`` (README, "qsic param"):
     the classification's fields, ``numbers``, every component's parameterization as strings
-    that sympy reads, and the real singular points.
+    that sympy reads, and the real singular points; with ``affine`` (the default) each real
+    conic's ``affine`` data (type, centre or vertex, axes) and the pair's ``affine`` object in
+    the chart ``chart = 0`` at infinity (default ``w``), as ``--chart``; ``affine=False`` is
+    ``--projective``.
 
     Raises:
         QsicError: a bad quadric, or ``not yet: …`` for a class whose curve is not built.
     """
-    return json.loads(_qsic.param(_side_native("A", a), _side_native("B", b)))
+    return json.loads(
+        _qsic.param(_side_native("A", a), _side_native("B", b), affine=affine, chart=chart)
+    )
 
 
 def sample(
@@ -382,6 +389,7 @@ def sample(
     points: int = 64,
     tolerance: Optional[float] = None,
     chart: Optional[str] = None,
+    affine: bool = True,
 ) -> Dict[str, Any]:
     """Real points on every real piece of the curve: the JSON object of ``qsic sample``, with
     every polyline a NumPy array.
@@ -401,6 +409,7 @@ def sample(
             points=points,
             tolerance=tolerance,
             chart=chart,
+            affine=affine,
         )
     )
     for piece in out["components"]:

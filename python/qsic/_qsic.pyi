@@ -30,13 +30,19 @@ def classify_many(
     chart: Optional[str] = None,
     threads: Optional[int] = None,
 ) -> Dict[str, Union[bytes, list]]: ...
-def param(a: Optional[NativeQuadric], b: Optional[NativeQuadric]) -> str: ...
+def param(
+    a: Optional[NativeQuadric],
+    b: Optional[NativeQuadric],
+    affine: bool = True,
+    chart: Optional[str] = None,
+) -> str: ...
 def sample(
     a: Optional[NativeQuadric],
     b: Optional[NativeQuadric],
     points: int = 64,
     tolerance: Optional[float] = None,
     chart: Optional[str] = None,
+    affine: bool = True,
 ) -> str: ...
 def motion(a: List[str], b: List[str], t0: Optional[str] = None, t1: Optional[str] = None) -> str: ...
 def first_contact(

@@ -23,6 +23,7 @@ use qsic::io::{moving_matrix_from_polynomial, moving_matrix_from_rows, MovingMat
 use qsic::param::sample::SampleOptions;
 use qsic::{classify_allowing_zero, Error, Quadric};
 use qsic_algebra::RBig;
+use qsic_cli::batch::Answer;
 use qsic_cli::output::{classification_to_json_line, human_report, ClassificationJson};
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -508,25 +509,26 @@ fn columns<'py>(py: Python<'py>, rows: &[Row], affine: bool) -> PyResult<Bound<'
     Ok(out)
 }
 
-/// Both quadrics or the CLI's message for a missing one.
-fn curve_pair<'a>(pair: Pair<'a>) -> (Option<&'a Quadric>, Option<&'a Quadric>) {
-    let (a, b, _) = quadrics(pair);
-    (a, b)
-}
-
-/// The JSON object of `qsic param --json`.
+/// The JSON object of `qsic param --json` (`affine = false`: `--projective`; `chart`: `--chart`).
 #[pyfunction]
+#[pyo3(signature = (a, b, affine = true, chart = None))]
 fn param(
     py: Python<'_>,
     a: Option<PyRef<'_, NativeQuadric>>,
     b: Option<PyRef<'_, NativeQuadric>>,
+    affine: bool,
+    chart: Option<&str>,
 ) -> PyResult<String> {
-    let (qa, qb) = curve_pair((a.as_deref(), b.as_deref()));
+    let answer = qsic_cli::param::Param {
+        projective_only: !affine,
+        chart: Some(chart_of(chart)?),
+    };
+    let (qa, qb, planes) = quadrics((a.as_deref(), b.as_deref()));
     py.detach(|| {
         catch_panic(|| {
-            let curve = qsic_cli::param::curve_of(qa, qb)?;
-            serde_json::to_string(&qsic_cli::param::ParamJson::from(&curve))
-                .map_err(|e| e.to_string())
+            answer
+                .answer(qa, qb, planes)
+                .map(|fields| format!("{{{fields}}}"))
         })
         .and_then(|r| r)
     })
@@ -534,9 +536,10 @@ fn param(
 }
 
 /// The JSON object of `qsic sample --format json` with at least `points` points per piece,
-/// chords within `tolerance` in the chart, and `chart = 0` at infinity (`None`: `w`).
+/// chords within `tolerance` in the chart, and `chart = 0` at infinity (`None`: `w`);
+/// `affine = false`: `--projective`.
 #[pyfunction]
-#[pyo3(signature = (a, b, points = 64, tolerance = None, chart = None))]
+#[pyo3(signature = (a, b, points = 64, tolerance = None, chart = None, affine = true))]
 fn sample(
     py: Python<'_>,
     a: Option<PyRef<'_, NativeQuadric>>,
@@ -544,6 +547,7 @@ fn sample(
     points: usize,
     tolerance: Option<f64>,
     chart: Option<&str>,
+    affine: bool,
 ) -> PyResult<String> {
     let mut options = SampleOptions {
         points,
@@ -553,12 +557,17 @@ fn sample(
     if let Some(text) = chart {
         options.chart = qsic_cli::sample::parse_chart(text).map_err(err)?;
     }
-    let (qa, qb) = curve_pair((a.as_deref(), b.as_deref()));
+    let answer = qsic_cli::sample::Sample {
+        options,
+        projective_only: !affine,
+        chart_text: chart.unwrap_or("w").to_owned(),
+    };
+    let (qa, qb, planes) = quadrics((a.as_deref(), b.as_deref()));
     py.detach(|| {
         catch_panic(|| {
-            let (curve, sampled) = qsic_cli::sample::sample_of(qa, qb, &options)?;
-            serde_json::to_string(&qsic_cli::sample::SampleJson::new(&curve, &sampled))
-                .map_err(|e| e.to_string())
+            answer
+                .answer(qa, qb, planes)
+                .map(|fields| format!("{{{fields}}}"))
         })
         .and_then(|r| r)
     })

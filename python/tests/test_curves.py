@@ -31,6 +31,16 @@ def test_param_equals_cli(cli, a, b):
 
 
 @pytest.mark.parametrize("a,b", PAIRS)
+def test_param_options_equal_the_cli_flags(cli, a, b):
+    projective = qsic.param(a, b, affine=False)
+    assert projective == cli_json(cli, "param", "--json", "--projective", a, b)
+    assert "affine" not in projective
+    charted = qsic.param(a, b, chart="z")
+    assert charted == cli_json(cli, "param", "--json", "--chart", "z", a, b)
+    assert charted["affine"]["chart"] == "z"
+
+
+@pytest.mark.parametrize("a,b", PAIRS)
 def test_sample_equals_cli_and_lies_on_both_quadrics(cli, a, b):
     got = qsic.sample(a, b, points=16)
     want = cli_json(cli, "sample", "--points", "16", a, b)
