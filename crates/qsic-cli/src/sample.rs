@@ -108,7 +108,7 @@ impl SampleJson {
                 PieceJson {
                     kind: if p.isolated { "point" } else { comp.kind.key() },
                     multiplicity: comp.multiplicity,
-                    branches: vec![p.points.clone()],
+                    branches: p.branches(),
                     affine: AffineJson {
                         branches: p.affine.branches.clone(),
                         bounded: p.affine.bounded,

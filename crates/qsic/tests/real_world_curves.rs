@@ -165,3 +165,51 @@ fn real_world_configurations_give_the_curves_worked_out_by_hand() {
         }
     }
 }
+
+/// The polylines end at the singular points: Viviani's figure-eight is two loops from the node
+/// back to it; each of two crossing ellipses is two arcs between the crunodes; a smooth
+/// quartic is not cut.
+#[test]
+fn branches_end_at_the_singular_points() {
+    let node = |p: &[f64; 4], e: [f64; 4]| {
+        let n = e.iter().map(|v| v * v).sum::<f64>().sqrt();
+        let d: f64 = (0..4).map(|i| p[i] * e[i] / n).sum();
+        d.abs() > 1.0 - 1e-12
+    };
+    for (a, b, pieces, per_piece, nodes) in [
+        (
+            "x^2+y^2+z^2-4",
+            "(x-1)^2+y^2-1",
+            1,
+            2,
+            vec![[2.0, 0.0, 0.0, 1.0]],
+        ),
+        (
+            "y^2+z^2-1",
+            "x^2+z^2-1",
+            2,
+            2,
+            vec![[0.0, 0.0, 1.0, 1.0], [0.0, 0.0, -1.0, 1.0]],
+        ),
+        ("x^2+y^2-4", "x^2+z^2-1", 2, 1, vec![]),
+    ] {
+        let (qa, qb) = (parse_quadric(a).unwrap(), parse_quadric(b).unwrap());
+        let c = parameterize(&qa, &qb).unwrap();
+        let s = sample(&c, &SampleOptions::default()).unwrap();
+        assert_eq!(s.pieces.len(), pieces, "{a} ∩ {b}");
+        for p in &s.pieces {
+            let branches = p.branches();
+            assert_eq!(branches.len(), per_piece, "{a} ∩ {b}: {:?}", p.breaks);
+            let total: usize = branches.iter().map(|br| br.len() - 1).sum();
+            assert_eq!(total, p.points.len() - 1, "{a} ∩ {b}: every segment once");
+            for br in &branches {
+                for end in [br[0], br[br.len() - 1]] {
+                    assert!(
+                        nodes.is_empty() || nodes.iter().any(|&e| node(&end, e)),
+                        "{a} ∩ {b}: a branch ends at {end:?}"
+                    );
+                }
+            }
+        }
+    }
+}

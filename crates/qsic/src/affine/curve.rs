@@ -193,7 +193,11 @@ fn same_value(a: &ParamValue, b: &ParamValue) -> bool {
 }
 
 /// The parameter values at which the rational `X(u)` (degree `k`) passes through `p`.
-fn params_of_point(x: &PointPoly, k: usize, p: &Point) -> Result<Vec<ParamValue>, Error> {
+pub(crate) fn params_of_point(
+    x: &PointPoly,
+    k: usize,
+    p: &Point,
+) -> Result<Vec<ParamValue>, Error> {
     let mut items: Vec<&Number> = p.iter().collect();
     let coeffs: Vec<Number> = x.iter().flat_map(|c| c.coeffs().to_vec()).collect();
     items.extend(coeffs.iter());

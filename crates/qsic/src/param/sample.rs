@@ -130,8 +130,46 @@ pub struct SampledPiece {
     pub points: Vec<[f64; 4]>,
     /// The piece is a closed curve.
     pub closed: bool,
+    /// Indices into `points` of the real singular points of the curve met along the piece
+    /// (nodes, meeting points of components, cusps), ascending: the ends of its branches. A
+    /// node of the piece itself appears twice. For a closed piece, index 0 stands for the
+    /// repeated last point too.
+    pub breaks: Vec<usize>,
     /// The view in the affine chart.
     pub affine: AffinePiece,
+}
+
+impl SampledPiece {
+    /// The polyline cut at its [`breaks`](SampledPiece::breaks): each branch runs from one
+    /// singular point to the next (both ends included); with no break, the whole polyline.
+    pub fn branches(&self) -> Vec<Vec<[f64; 4]>> {
+        let p = &self.points;
+        if self.breaks.is_empty() || p.len() < 2 {
+            return vec![p.clone()];
+        }
+        let b = &self.breaks;
+        let mut out: Vec<Vec<[f64; 4]>> = b.windows(2).map(|w| p[w[0]..=w[1]].to_vec()).collect();
+        let (first, last) = (b[0], b[b.len() - 1]);
+        if self.closed {
+            // from the last break round through the repeated first point to the first break
+            let mut wrap = p[last..].to_vec();
+            wrap.extend_from_slice(&p[1..=first]);
+            if wrap.len() > 1 && !(b.len() == 1 && first == 0) {
+                out.push(wrap);
+            } else if b.len() == 1 {
+                out.push(p.clone());
+            }
+        } else {
+            if first > 0 {
+                out.insert(0, p[..=first].to_vec());
+            }
+            if last + 1 < p.len() {
+                out.push(p[last..].to_vec());
+            }
+        }
+        out.retain(|br| br.len() > 1);
+        out
+    }
 }
 
 /// Points on every real piece of a curve, in the order of [`Curve::pieces`].
@@ -204,6 +242,7 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
                     } else {
                         exact_crossings(&ExactParam::new(param), &chart.exact)
                     },
+                    singular: singular_params(curve, param),
                     chart: &chart,
                     tolerance: options.tolerance,
                 };
@@ -213,6 +252,22 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
         pieces.push(sampled);
     }
     Ok(Sampled { pieces })
+}
+
+/// The exact parameters at which a rational component passes through the curve's real
+/// singular points (none for Levin's form: a nonsingular quartic has none; none either when a
+/// point and the component live in fields made separately — the polyline is then not split
+/// there).
+fn singular_params(curve: &Curve, param: &ComponentParam) -> Vec<ParamValue> {
+    let ComponentParam::Rational { x, degree } = param else {
+        return Vec::new();
+    };
+    curve
+        .singular_points
+        .iter()
+        .filter_map(|s| crate::affine::params_of_point(x, *degree, &s.point).ok())
+        .flatten()
+        .collect()
 }
 
 /// The plane at infinity, exactly and as floats, and the affine coordinate dropped.
@@ -300,6 +355,7 @@ fn point_piece(
         isolated: true,
         points: vec![x],
         closed: false,
+        breaks: Vec::new(),
         affine,
     })
 }
@@ -611,6 +667,8 @@ struct Sample {
     x: [f64; 4],
     /// A crossing of the plane at infinity found exactly.
     at_infinity: bool,
+    /// A real singular point of the curve, at its exact parameter.
+    singular: bool,
 }
 
 /// The ends of an arc in `θ` and their exact points on ℙ¹.
@@ -927,6 +985,8 @@ fn exact_crossings_of(exact: &ExactParam, h: &[RBig; 4]) -> Option<Vec<Crossing>
 struct Sampler<'a> {
     eval: Evaluator<'a>,
     crossings: Crossings,
+    /// The exact parameters of the curve's real singular points on this component.
+    singular: Vec<ParamValue>,
     chart: &'a Chart,
     tolerance: Option<f64>,
 }
@@ -946,6 +1006,7 @@ impl Sampler<'_> {
                     theta: t,
                     x,
                     at_infinity: false,
+                    singular: false,
                 });
             }
         }
@@ -961,6 +1022,7 @@ impl Sampler<'_> {
                 theta,
                 x,
                 at_infinity: false,
+                singular: false,
             });
         }
         for f in [1e-9, 1e-6, 1e-3] {
@@ -970,6 +1032,7 @@ impl Sampler<'_> {
                     theta: t,
                     x,
                     at_infinity: false,
+                    singular: false,
                 });
             }
         }
@@ -1029,12 +1092,22 @@ impl Sampler<'_> {
             grid.push(self.at(th, t0, t1, sheet)?);
         }
         grid.push(self.at_end(sp.ends.1, t1, t0, sheet)?);
+        // exact events on this arc: crossings of the plane at infinity, singular points
+        let mut events: Vec<(&ParamValue, bool)> = Vec::new();
         if let Crossings::Exact(crossings) = &self.crossings {
             for c in crossings {
-                if !c.sheets.contains(&sheet) || !in_range(&c.value, &arc.range) {
+                if c.sheets.contains(&sheet) {
+                    events.push((&c.value, false));
+                }
+            }
+        }
+        events.extend(self.singular.iter().map(|v| (v, true)));
+        {
+            for (value, singular) in events {
+                if !in_range(value, &arc.range) {
                     continue;
                 }
-                let (u, mut th) = match &c.value {
+                let (u, mut th) = match value {
                     ParamValue::Infinity => ((1.0, 0.0), FRAC_PI_2),
                     ParamValue::Finite(r) => {
                         let v = r.to_f64();
@@ -1050,13 +1123,27 @@ impl Sampler<'_> {
                 let th = th.clamp(t0, t1);
                 let other = if th - t0 < t1 - th { t1 } else { t0 };
                 let mut s = self.at_end(u, th, other, sheet)?;
-                s.at_infinity = true;
+                let mark = |g: &mut Sample| {
+                    if singular {
+                        g.singular = true;
+                    } else {
+                        g.at_infinity = true;
+                    }
+                };
+                mark(&mut s);
                 // an end of the arc, or a new point in order
                 if (th - t0).abs() <= 1e-12 {
-                    grid[0].at_infinity = true;
+                    mark(&mut grid[0]);
                 } else if (th - t1).abs() <= 1e-12 {
                     let last = grid.len() - 1;
-                    grid[last].at_infinity = true;
+                    mark(&mut grid[last]);
+                } else if let Some(g) = grid
+                    .iter_mut()
+                    .find(|g| (g.at_infinity || g.singular) && (g.theta - s.theta).abs() <= 1e-12)
+                {
+                    // the same parameter as an event already placed (a singular point at
+                    // infinity): one point with both marks
+                    mark(g);
                 } else {
                     let at = grid.partition_point(|g| g.theta < s.theta);
                     grid.insert(at, s);
@@ -1109,6 +1196,7 @@ impl Sampler<'_> {
                 // consecutive arcs share their end point (unless one end was nudged)
                 if dot(&last.x, &first.x).abs() >= 1.0 - 1e-12 {
                     last.at_infinity |= first.at_infinity;
+                    last.singular |= first.singular;
                     part.remove(0);
                 }
             }
@@ -1117,6 +1205,7 @@ impl Sampler<'_> {
         if closed && line.len() > 1 {
             let last = line.len() - 1;
             line[0].at_infinity |= line[last].at_infinity;
+            line[0].singular |= line[last].singular;
             line.pop();
         }
         // orient: consecutive dot products nonnegative
@@ -1145,11 +1234,18 @@ impl Sampler<'_> {
                 first
             });
         }
+        let breaks = line
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| s.singular)
+            .map(|(k, _)| k)
+            .collect();
         Ok(SampledPiece {
             component,
             isolated: false,
             points: pts,
             closed,
+            breaks,
             affine,
         })
     }
