@@ -509,6 +509,25 @@ fn columns<'py>(py: Python<'py>, rows: &[Row], affine: bool) -> PyResult<Bound<'
     Ok(out)
 }
 
+/// The JSON object a CLI answer (`qsic param`, `qsic sample`) gives for the pair, computed
+/// without the GIL; a panic becomes an error.
+fn answer_json(
+    py: Python<'_>,
+    answer: &(impl Answer + ?Sized),
+    pair: Pair<'_>,
+) -> PyResult<String> {
+    let (qa, qb, planes) = quadrics(pair);
+    py.detach(|| {
+        catch_panic(|| {
+            answer
+                .answer(qa, qb, planes)
+                .map(|fields| format!("{{{fields}}}"))
+        })
+        .and_then(|r| r)
+    })
+    .map_err(err)
+}
+
 /// The JSON object of `qsic param --json` (`affine = false`: `--projective`; `chart`: `--chart`).
 #[pyfunction]
 #[pyo3(signature = (a, b, affine = true, chart = None))]
@@ -523,16 +542,7 @@ fn param(
         projective_only: !affine,
         chart: Some(chart_of(chart)?),
     };
-    let (qa, qb, planes) = quadrics((a.as_deref(), b.as_deref()));
-    py.detach(|| {
-        catch_panic(|| {
-            answer
-                .answer(qa, qb, planes)
-                .map(|fields| format!("{{{fields}}}"))
-        })
-        .and_then(|r| r)
-    })
-    .map_err(err)
+    answer_json(py, &answer, (a.as_deref(), b.as_deref()))
 }
 
 /// The JSON object of `qsic sample --format json` with at least `points` points per piece,
@@ -562,16 +572,7 @@ fn sample(
         projective_only: !affine,
         chart_text: chart.unwrap_or("w").to_owned(),
     };
-    let (qa, qb, planes) = quadrics((a.as_deref(), b.as_deref()));
-    py.detach(|| {
-        catch_panic(|| {
-            answer
-                .answer(qa, qb, planes)
-                .map(|fields| format!("{{{fields}}}"))
-        })
-        .and_then(|r| r)
-    })
-    .map_err(err)
+    answer_json(py, &answer, (a.as_deref(), b.as_deref()))
 }
 
 /// A moving quadric: one polynomial text with coefficients rational in `t`, or 16 texts.

@@ -11,7 +11,11 @@
 
 mod common;
 
+#[path = "common/geometry.rs"]
+mod geometry;
+
 use common::read_form;
+use geometry::moved;
 use qsic::affine::{
     affine_curve, affine_view, conic_real_intersections, fast_affine_curve, AffineCurve, Chart,
 };
@@ -69,23 +73,6 @@ impl Tally {
         }
         Some(fast)
     }
-}
-
-/// `TᵀQT`.
-fn moved(q: &Quadric, t: &[[RBig; 4]; 4]) -> Quadric {
-    let m = q.matrix();
-    Quadric::from_matrix(std::array::from_fn(|i| {
-        std::array::from_fn(|j| {
-            let mut acc = RBig::ZERO;
-            for k in 0..4 {
-                for l in 0..4 {
-                    acc += &t[k][i] * &m[k][l] * &t[l][j];
-                }
-            }
-            acc
-        })
-    }))
-    .unwrap()
 }
 
 /// A random invertible affine map `[[M, t], [0, 1]]`: `M` a product of integer shears and

@@ -9,7 +9,11 @@
 
 mod common;
 
+#[path = "common/geometry.rs"]
+mod geometry;
+
 use common::read_form;
+use geometry::moved;
 use qsic::affine::{affine_curve, surface_name, AffineCurve, Chart};
 use qsic::classify::PencilKind;
 use qsic::param::{parameterize, Curve, RealPiece};
@@ -169,23 +173,6 @@ fn every_curve_of_the_corpora_lies_on_both_quadrics_and_has_the_class_topology()
     }
     // the supported classes grow: this bound only ever rises
     assert!(done >= 345, "{done} curves checked");
-}
-
-/// `TᵀQT` for the affine map `T = [[M, t], [0, 1]]`.
-fn moved(q: &Quadric, t: &[[RBig; 4]; 4]) -> Quadric {
-    let m = q.matrix();
-    Quadric::from_matrix(std::array::from_fn(|i| {
-        std::array::from_fn(|j| {
-            let mut acc = RBig::ZERO;
-            for k in 0..4 {
-                for l in 0..4 {
-                    acc += &t[k][i] * &m[k][l] * &t[l][j];
-                }
-            }
-            acc
-        })
-    }))
-    .unwrap()
 }
 
 /// A random invertible affine map: small integer `M` with `det M = ±1` (a product of

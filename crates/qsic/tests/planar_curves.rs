@@ -1,10 +1,13 @@
 //! Curves made of conics and lines from hand geometry: each configuration's components,
 //! meeting points (exact coordinates) and connected real pieces are known by construction.
 
+#[path = "common/geometry.rs"]
+mod geometry;
+
+use geometry::{is_point, topology};
 use qsic::classify::{ComponentKind, SingularPointKind};
 use qsic::io::parse_quadric;
-use qsic::param::{parameterize, ComponentParam, Curve, Number, RealPiece};
-use qsic_algebra::{IBig, Ring};
+use qsic::param::{parameterize, ComponentParam, Curve};
 
 fn curve(a: &str, b: &str) -> Curve {
     let (qa, qb) = (parse_quadric(a).unwrap(), parse_quadric(b).unwrap());
@@ -34,15 +37,6 @@ fn components(c: &Curve) -> Vec<Kind> {
     v
 }
 
-/// Whether the homogeneous point `x` is `(e)` up to a factor, exactly.
-fn is_point(x: &[Number; 4], e: [i64; 4]) -> bool {
-    let e: Vec<Number> = e
-        .iter()
-        .map(|&v| Number::from_int(&IBig::from(v)))
-        .collect();
-    (0..4).all(|i| (0..4).all(|j| x[i].mul(&e[j]).sub(&x[j].mul(&e[i])).is_zero()))
-}
-
 /// The singular points as `(kind, point)`, each matched to one expected point.
 fn assert_singular(c: &Curve, want: &[(SingularPointKind, [i64; 4])]) {
     assert_eq!(
@@ -60,19 +54,6 @@ fn assert_singular(c: &Curve, want: &[(SingularPointKind, [i64; 4])]) {
             c.singular_points
         );
     }
-}
-
-/// `(curves, isolated points)` among the connected groups.
-fn topology(c: &Curve) -> (usize, usize) {
-    let points = c
-        .connected
-        .iter()
-        .filter(|g| {
-            g.iter()
-                .all(|&i| matches!(c.pieces[i], RealPiece::Point { .. }))
-        })
-        .count();
-    (c.connected.len() - points, points)
 }
 
 #[test]

@@ -4,11 +4,14 @@
 //! kind, the connected real pieces, and real points on both surfaces — is worked out by hand
 //! in the test's comment.
 
+#[path = "common/geometry.rs"]
+mod geometry;
+
+use geometry::{is_point, topology};
 use qsic::classify::SingularPointKind;
 use qsic::io::parse_quadric;
+use qsic::param::parameterize;
 use qsic::param::sample::{sample, SampleOptions};
-use qsic::param::{parameterize, Curve, Number, RealPiece};
-use qsic_algebra::{IBig, Ring};
 
 struct Case {
     a: &'static str,
@@ -18,27 +21,6 @@ struct Case {
     singular: Vec<(SingularPointKind, [i64; 4])>,
     /// Connected real components: curves, isolated points.
     topology: (usize, usize),
-}
-
-/// Whether the homogeneous point `x` is `e` up to a factor, exactly.
-fn is_point(x: &[Number; 4], e: [i64; 4]) -> bool {
-    let e: Vec<Number> = e
-        .iter()
-        .map(|&v| Number::from_int(&IBig::from(v)))
-        .collect();
-    (0..4).all(|i| (0..4).all(|j| x[i].mul(&e[j]).sub(&x[j].mul(&e[i])).is_zero()))
-}
-
-fn topology(c: &Curve) -> (usize, usize) {
-    let points = c
-        .connected
-        .iter()
-        .filter(|g| {
-            g.iter()
-                .all(|&i| matches!(c.pieces[i], RealPiece::Point { .. }))
-        })
-        .count();
-    (c.connected.len() - points, points)
 }
 
 fn cases() -> Vec<Case> {
