@@ -57,7 +57,7 @@ fn scale_exponent(alpha: &AlgebraicReal) -> i64 {
 }
 
 /// `2ᵉ` as a rational.
-fn power_of_two(e: i64) -> RBig {
+pub(crate) fn power_of_two(e: i64) -> RBig {
     let p = RBig::from(IBig::ONE << e.unsigned_abs() as usize);
     if e >= 0 {
         p

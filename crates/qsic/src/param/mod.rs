@@ -204,7 +204,7 @@ pub fn parameterize_smooth_quartic(
                 p.coeffs()
                     .iter()
                     .enumerate()
-                    .map(|(i, c)| c.scale(&power_of_two(k * i as i64)))
+                    .map(|(i, c)| c.scale(&expr::power_of_two(k * i as i64)))
                     .collect(),
             )
         };
@@ -225,16 +225,6 @@ pub fn parameterize_smooth_quartic(
         discriminant,
         surface,
     })
-}
-
-/// `2ᵉ` as a rational.
-fn power_of_two(e: i64) -> RBig {
-    let p = RBig::from(IBig::ONE << e.unsigned_abs() as usize);
-    if e >= 0 {
-        p
-    } else {
-        RBig::ONE / p
-    }
 }
 
 /// The `k` for which `u ↦ 2ᵏu` brings the lowest and highest nonzero coefficients of `s` to
