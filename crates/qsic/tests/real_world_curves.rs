@@ -195,3 +195,55 @@ fn branches_end_at_the_singular_points() {
         }
     }
 }
+
+/// The affine polylines end at the singular points too, and at infinity: Viviani's
+/// figure-eight is two affine loops from the node back to it; the two-sheeted hyperboloid
+/// `z² = x² + y² + 1` cut by the planes `x = ±y` is two hyperbolas crossing at `(0, 0, ±1)`, each
+/// hyperbola four affine branches, each from a crossing point out to infinity.
+#[test]
+fn affine_branches_end_at_the_singular_points_and_at_infinity() {
+    let at = |p: &[f64; 3], e: [f64; 3]| (0..3).all(|i| (p[i] - e[i]).abs() < 1e-9);
+    for (a, b, pieces, per_piece, at_infinity, nodes) in [
+        (
+            "x^2+y^2+z^2-4",
+            "(x-1)^2+y^2-1",
+            1,
+            2,
+            0,
+            vec![[2.0, 0.0, 0.0]],
+        ),
+        (
+            "x^2-y^2",
+            "x^2+y^2-z^2+1",
+            2,
+            4,
+            2,
+            vec![[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]],
+        ),
+    ] {
+        let (qa, qb) = (parse_quadric(a).unwrap(), parse_quadric(b).unwrap());
+        let c = parameterize(&qa, &qb).unwrap();
+        let s = sample(&c, &SampleOptions::default()).unwrap();
+        assert_eq!(s.pieces.len(), pieces, "{a} ∩ {b}");
+        for p in &s.pieces {
+            let affine = &p.affine;
+            assert_eq!(affine.points_at_infinity.len(), at_infinity, "{a} ∩ {b}");
+            assert_eq!(affine.branches.len(), per_piece, "{a} ∩ {b}");
+            for br in &affine.branches {
+                assert!(br.len() > 1, "{a} ∩ {b}: a branch of one point");
+                let ends = [br[0], br[br.len() - 1]];
+                let on_node = ends
+                    .iter()
+                    .filter(|e| nodes.iter().any(|&n| at(e, n)))
+                    .count();
+                // a loop starts and ends at the node; a branch to infinity starts at one
+                let expected = if at_infinity == 0 { 2 } else { 1 };
+                assert_eq!(on_node, expected, "{a} ∩ {b}: ends {ends:?}");
+                // no singular point inside a branch
+                for x in &br[1..br.len() - 1] {
+                    assert!(!nodes.iter().any(|&n| at(x, n)), "{a} ∩ {b}: {x:?} inside");
+                }
+            }
+        }
+    }
+}

@@ -114,14 +114,17 @@ fn check_piece(p: &SampledPiece, ms: &[[[f64; 4]; 4]; 2], points: usize) -> Resu
         return Err("a piece at infinity with affine points".into());
     }
     let crossings = p.affine.points_at_infinity.len();
-    let want = if p.closed {
-        crossings.max(1)
-    } else {
-        crossings + 1
-    };
+    // the affine branches also end at the finite singular points met along the piece
+    let finite_breaks = p
+        .breaks
+        .iter()
+        .filter(|&&k| p.points[k][3].abs() > 1e-12)
+        .count();
+    let cuts = crossings + finite_breaks;
+    let want = if p.closed { cuts.max(1) } else { cuts + 1 };
     if !p.isolated && !p.affine.at_infinity && p.affine.branches.len() != want {
         return Err(format!(
-            "{} affine branches for {crossings} points at infinity",
+            "{} affine branches for {crossings} points at infinity and {finite_breaks} singular points",
             p.affine.branches.len()
         ));
     }

@@ -112,7 +112,7 @@ fn chart_form(l: &[RBig; 4], x: &PointPoly) -> NumberPoly {
 }
 
 /// `ℓ·P`.
-fn chart_value(l: &[RBig; 4], p: &Point) -> Number {
+pub(crate) fn chart_value(l: &[RBig; 4], p: &Point) -> Number {
     let mut acc = Number::zero();
     for i in 0..4 {
         if l[i] != RBig::ZERO {

@@ -22,8 +22,8 @@ mod fast;
 mod view;
 
 pub use conic::{affine_conic, approx, AffineConic, Axis, ConicShape, Direction, Surd};
-pub(crate) use curve::params_of_point;
 pub use curve::{affine_curve, AffineComponent, AffineCurve, AffineSingularPoint};
+pub(crate) use curve::{chart_value, params_of_point};
 pub use fast::{conic_real_intersections, fast_affine_curve};
 pub use view::affine_view_of_curve;
 

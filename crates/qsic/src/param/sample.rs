@@ -242,7 +242,7 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
                     } else {
                         exact_crossings(&ExactParam::new(param), &chart.exact)
                     },
-                    singular: singular_params(curve, param),
+                    singular: singular_params(curve, param, &chart.exact),
                     chart: &chart,
                     tolerance: options.tolerance,
                 };
@@ -255,17 +255,27 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
 }
 
 /// The exact parameters at which a rational component passes through the curve's real
-/// singular points (none for Levin's form: a nonsingular quartic has none; none either when a
-/// point and the component live in fields made separately — the polyline is then not split
+/// singular points, each with whether the point lies on the chart's plane at infinity
+/// (decided exactly); none for Levin's form (a nonsingular quartic has none), none either when
+/// a point and the component live in fields made separately (the polyline is then not split
 /// there).
-fn singular_params(curve: &Curve, param: &ComponentParam) -> Vec<ParamValue> {
+fn singular_params(
+    curve: &Curve,
+    param: &ComponentParam,
+    h: &[RBig; 4],
+) -> Vec<(ParamValue, bool)> {
     let ComponentParam::Rational { x, degree } = param else {
         return Vec::new();
     };
     curve
         .singular_points
         .iter()
-        .filter_map(|s| crate::affine::params_of_point(x, *degree, &s.point).ok())
+        .filter_map(|s| {
+            let at_infinity = crate::affine::chart_value(h, &s.point).is_zero();
+            crate::affine::params_of_point(x, *degree, &s.point)
+                .ok()
+                .map(|params| params.into_iter().map(move |v| (v, at_infinity)))
+        })
         .flatten()
         .collect()
 }
@@ -986,7 +996,8 @@ struct Sampler<'a> {
     eval: Evaluator<'a>,
     crossings: Crossings,
     /// The exact parameters of the curve's real singular points on this component.
-    singular: Vec<ParamValue>,
+    /// The singular points' parameters, and whether each point is at infinity.
+    singular: Vec<(ParamValue, bool)>,
     chart: &'a Chart,
     tolerance: Option<f64>,
 }
@@ -1093,17 +1104,18 @@ impl Sampler<'_> {
         }
         grid.push(self.at_end(sp.ends.1, t1, t0, sheet)?);
         // exact events on this arc: crossings of the plane at infinity, singular points
-        let mut events: Vec<(&ParamValue, bool)> = Vec::new();
+        // (parameter, singular, at infinity)
+        let mut events: Vec<(&ParamValue, bool, bool)> = Vec::new();
         if let Crossings::Exact(crossings) = &self.crossings {
             for c in crossings {
                 if c.sheets.contains(&sheet) {
-                    events.push((&c.value, false));
+                    events.push((&c.value, false, true));
                 }
             }
         }
-        events.extend(self.singular.iter().map(|v| (v, true)));
+        events.extend(self.singular.iter().map(|(v, inf)| (v, true, *inf)));
         {
-            for (value, singular) in events {
+            for (value, singular, at_infinity) in events {
                 if !in_range(value, &arc.range) {
                     continue;
                 }
@@ -1124,11 +1136,8 @@ impl Sampler<'_> {
                 let other = if th - t0 < t1 - th { t1 } else { t0 };
                 let mut s = self.at_end(u, th, other, sheet)?;
                 let mark = |g: &mut Sample| {
-                    if singular {
-                        g.singular = true;
-                    } else {
-                        g.at_infinity = true;
-                    }
+                    g.singular |= singular;
+                    g.at_infinity |= at_infinity;
                 };
                 mark(&mut s);
                 // an end of the arc, or a new point in order
@@ -1149,6 +1158,31 @@ impl Sampler<'_> {
                     grid.insert(at, s);
                 }
             }
+        }
+        // a point between any two consecutive events, so that every branch they cut has a
+        // point of its own besides its ends; on the whole line the two ends are one point
+        if matches!(arc.range, ParamRange::All) && grid.len() > 1 {
+            let last = grid.len() - 1;
+            let (inf, sing) = (
+                grid[0].at_infinity | grid[last].at_infinity,
+                grid[0].singular | grid[last].singular,
+            );
+            for k in [0, last] {
+                grid[k].at_infinity = inf;
+                grid[k].singular = sing;
+            }
+        }
+        let mut k = 0;
+        while k + 1 < grid.len() {
+            let (p, q) = (&grid[k], &grid[k + 1]);
+            let event = |g: &Sample| g.at_infinity || g.singular;
+            if event(p) && event(q) && q.theta > p.theta {
+                let th = 0.5 * (p.theta + q.theta);
+                let m = self.at(th, p.theta, q.theta, sheet)?;
+                grid.insert(k + 1, m);
+                k += 1;
+            }
+            k += 1;
         }
         *budget = budget.checked_sub(grid.len()).ok_or_else(too_many_points)?;
         let mut out = vec![grid[0]];
@@ -1268,7 +1302,10 @@ impl Sampler<'_> {
             if hp == 0.0 {
                 line[k].at_infinity = true;
             }
-            if hp == 0.0 || hq == 0.0 || (hp > 0.0) == (hq > 0.0) {
+            // a point known exactly to be at infinity (a singular point there) is the
+            // crossing: the rounding of h near it says nothing
+            let exact_end = p.at_infinity || q.at_infinity;
+            if exact_end || hp == 0.0 || hq == 0.0 || (hp > 0.0) == (hq > 0.0) {
                 k += 1;
                 continue;
             }
@@ -1292,37 +1329,65 @@ impl Sampler<'_> {
                 hi
             };
             c.at_infinity = true;
-            line.insert(k + 1, c);
-            k += 2;
+            // a singular point next to the crossing keeps a point of its own between them,
+            // so that the affine branch it starts has one besides its end
+            let mid = |a: &Sample, b: &Sample| -> Result<Sample, Error> {
+                let (lo, hi) = (a.theta.min(b.theta), a.theta.max(b.theta));
+                self.at(0.5 * (lo + hi), lo, hi, sheet)
+            };
+            let before = if p.singular && p.theta != c.theta {
+                Some(mid(&p, &c)?)
+            } else {
+                None
+            };
+            let after = if q.singular && q.theta != c.theta {
+                Some(mid(&c, &q)?)
+            } else {
+                None
+            };
+            let mut added = vec![c];
+            if let Some(m) = before {
+                added.insert(0, m);
+            }
+            if let Some(m) = after {
+                added.push(m);
+            }
+            let n = added.len();
+            line.splice(k + 1..k + 1, added);
+            k += n + 1;
         }
         Ok(())
     }
 
-    /// Splits the oriented polyline at its crossings with the plane at infinity.
+    /// Splits the oriented polyline at its crossings with the plane at infinity (the branches
+    /// end before and start after them) and at its real singular points (both branches keep
+    /// the point).
     fn affine(&self, line: &[Sample], closed: bool) -> AffinePiece {
-        let mut breaks: Vec<usize> = Vec::new();
         let n = line.len();
-        for k in 0..n {
-            if line[k].at_infinity {
-                breaks.push(k);
-            }
-        }
+        let breaks: Vec<usize> = (0..n).filter(|&k| line[k].at_infinity).collect();
+        let cuts: Vec<usize> = (0..n)
+            .filter(|&k| line[k].at_infinity || line[k].singular)
+            .collect();
         let points_at_infinity: Vec<[f64; 4]> = breaks.iter().map(|&k| line[k].x).collect();
         let mut branches = Vec::new();
         let mut current: Vec<[f64; 3]> = Vec::new();
-        let order: Vec<usize> = if closed && !breaks.is_empty() {
-            (0..=n).map(|k| (k + breaks[0]) % n).collect()
+        let order: Vec<usize> = if closed && !cuts.is_empty() {
+            (0..=n).map(|k| (k + cuts[0]) % n).collect()
         } else {
             (0..n).collect()
         };
         // the previous point, oriented along the walk (a loop may come back reversed)
         let mut prev: Option<[f64; 4]> = None;
+        // `current` holds only the singular point it restarts from
+        let mut restarted = false;
         for &k in &order {
             let s = &line[k];
             if s.at_infinity {
-                if !current.is_empty() {
+                if !current.is_empty() && !restarted {
                     branches.push(std::mem::take(&mut current));
                 }
+                current.clear();
+                restarted = false;
                 prev = None;
                 continue;
             }
@@ -1337,12 +1402,22 @@ impl Sampler<'_> {
             prev = Some(x);
             if let Some(a) = self.chart.affine(&s.x) {
                 current.push(a);
+                if s.singular {
+                    // the branch ends at the singular point and the next one starts there
+                    if current.len() > 1 {
+                        branches.push(std::mem::take(&mut current));
+                    }
+                    current = vec![a];
+                    restarted = true;
+                } else {
+                    restarted = false;
+                }
             }
         }
-        if closed && breaks.is_empty() && !current.is_empty() {
+        if closed && cuts.is_empty() && !current.is_empty() {
             current.push(current[0]);
         }
-        if !current.is_empty() {
+        if !current.is_empty() && !restarted {
             branches.push(current);
         }
         AffinePiece {
