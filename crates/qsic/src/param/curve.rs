@@ -211,7 +211,7 @@ pub fn poly_from_quadratic(p: &Poly<Quadratic>, field: Option<&NumberField>) -> 
 }
 
 /// `xᵀMy` for polynomial points.
-fn poly_form(m: &[[RBig; 4]; 4], x: &PointPoly, y: &PointPoly) -> NumberPoly {
+pub(crate) fn poly_form(m: &[[RBig; 4]; 4], x: &PointPoly, y: &PointPoly) -> NumberPoly {
     let mut acc = NumberPoly::zero();
     for i in 0..4 {
         let mut row = NumberPoly::zero();

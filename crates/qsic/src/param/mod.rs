@@ -15,6 +15,7 @@
 //! `s = c₁² − c₀c₂`; identically `aᵀQa + s·dᵀQd = 0` and `aᵀQd = 0` for every member `Q`.
 //! `u` runs over ℝ ∪ {∞}: `s` is a binary quartic, its degree drop a root at `u = ∞`.
 
+mod biquadratic;
 pub mod curve;
 pub mod expr;
 mod line_cubic;
@@ -230,12 +231,27 @@ pub fn parameterize_smooth_quartic(
 /// The `k` for which `u ↦ 2ᵏu` brings the lowest and highest nonzero coefficients of `s` to
 /// one size (`|s_lo|·2^(k·lo) ≈ |s_hi|·2^(k·hi)`); 0 when they are within `2⁸` per degree.
 fn balancing_exponent(s: &Poly<Quadratic>) -> i64 {
-    let sizes: Vec<(usize, f64)> = s
+    let sizes: Vec<f64> = s
         .coeffs()
         .iter()
+        .map(|c| {
+            if qsic_algebra::Ring::is_zero(c) {
+                0.0
+            } else {
+                c.to_f64()
+            }
+        })
+        .collect();
+    balancing_exponent_of(&sizes)
+}
+
+/// [`balancing_exponent`] from the coefficients as floats (zero for a zero coefficient).
+fn balancing_exponent_of(coefficients: &[f64]) -> i64 {
+    let sizes: Vec<(usize, f64)> = coefficients
+        .iter()
         .enumerate()
-        .filter(|(_, c)| !qsic_algebra::Ring::is_zero(*c))
-        .map(|(i, c)| (i, c.to_f64().abs()))
+        .filter(|(_, c)| **c != 0.0)
+        .map(|(i, c)| (i, c.abs()))
         .collect();
     let (Some(&(lo, slo)), Some(&(hi, shi))) = (sizes.first(), sizes.last()) else {
         return 0;
@@ -270,10 +286,14 @@ fn balancing_exponent(s: &Poly<Quadratic>) -> i64 {
 pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
     let classification = classify(a, b);
     match (classification.pencil, classification.case) {
-        (PencilKind::Regular, Some(1..=4)) => {
-            let levin = parameterize_smooth_quartic(a, b)?;
-            levin_curve(classification, &levin, a, b)
-        }
+        (PencilKind::Regular, Some(1..=4)) => match parameterize_smooth_quartic(a, b) {
+            Ok(levin) => levin_curve(classification, &levin, a, b),
+            // no ruling over one square root at the tried members: a biquadratic one
+            Err(Error::Unsupported(why)) => {
+                biquadratic::biquadratic_curve(classification, a, b)?.ok_or(Error::Unsupported(why))
+            }
+            Err(e) => Err(e),
+        },
         (PencilKind::Regular, Some(5..=8 | 11)) => {
             nodal::singular_quartic_curve(classification, a, b)
         }
@@ -366,45 +386,7 @@ fn levin_curve(
         ends.push(ParamValue::Infinity);
         after.push(dr.arcs[0].1);
     }
-    let mut pieces = Vec::new();
-    let loop_over = |range: ParamRange| RealPiece::Curve {
-        component: 0,
-        arcs: vec![
-            Arc {
-                range: range.clone(),
-                sheet: Sheet::Plus,
-                reversed: false,
-            },
-            Arc {
-                range,
-                sheet: Sheet::Minus,
-                reversed: true,
-            },
-        ],
-        closed: true,
-    };
-    if ends.is_empty() {
-        if dr.arcs[0].1 == Sign::Positive {
-            for sheet in [Sheet::Plus, Sheet::Minus] {
-                pieces.push(RealPiece::Curve {
-                    component: 0,
-                    arcs: vec![Arc {
-                        range: ParamRange::All,
-                        sheet,
-                        reversed: false,
-                    }],
-                    closed: true,
-                });
-            }
-        }
-    } else {
-        for i in 0..ends.len() {
-            if after[i] == Sign::Positive {
-                let next = ends[(i + 1) % ends.len()].clone();
-                pieces.push(loop_over(ParamRange::Between(ends[i].clone(), next)));
-            }
-        }
-    }
+    let pieces = levin_pieces(&ends, &after, dr.arcs[0].1);
     if pieces.len() != usize::from(n) {
         return Err(Error::Algebra(format!(
             "{} real pieces from the arcs of s(u), Theorem 12 says {n}",
@@ -425,6 +407,53 @@ fn levin_curve(
         pieces,
         connected,
     })
+}
+
+/// The real pieces of a Levin component: `ends` the real roots of `s` on ℝ ∪ {∞} in cyclic
+/// order, `after[i]` the sign of `s` on the arc after `ends[i]`, `everywhere` its sign when it
+/// has no real root. One closed piece per positive arc (the sheets `+` and `−` joined at its
+/// ends), two (the two sheets) when `s > 0` everywhere.
+fn levin_pieces(ends: &[ParamValue], after: &[Sign], everywhere: Sign) -> Vec<RealPiece> {
+    let mut pieces = Vec::new();
+    let loop_over = |range: ParamRange| RealPiece::Curve {
+        component: 0,
+        arcs: vec![
+            Arc {
+                range: range.clone(),
+                sheet: Sheet::Plus,
+                reversed: false,
+            },
+            Arc {
+                range,
+                sheet: Sheet::Minus,
+                reversed: true,
+            },
+        ],
+        closed: true,
+    };
+    if ends.is_empty() {
+        if everywhere == Sign::Positive {
+            for sheet in [Sheet::Plus, Sheet::Minus] {
+                pieces.push(RealPiece::Curve {
+                    component: 0,
+                    arcs: vec![Arc {
+                        range: ParamRange::All,
+                        sheet,
+                        reversed: false,
+                    }],
+                    closed: true,
+                });
+            }
+        }
+    } else {
+        for i in 0..ends.len() {
+            if after[i] == Sign::Positive {
+                let next = ends[(i + 1) % ends.len()].clone();
+                pieces.push(loop_over(ParamRange::Between(ends[i].clone(), next)));
+            }
+        }
+    }
+    pieces
 }
 
 /// The primitive integer matrix of `q` (a positive multiple of its matrix), as rationals.

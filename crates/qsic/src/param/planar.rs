@@ -103,14 +103,14 @@ fn real_normalized(x: &[Quadratic]) -> Option<Vq> {
 
 /// A real field ℚ(θ) holding ℚ(√δ) (`δ > 0`) and possibly one more square root `√r`: the images
 /// of `√δ` and `√r` there.
-struct Ext {
-    sqrt_delta: Option<Number>,
-    root: Option<Number>,
+pub(super) struct Ext {
+    pub(super) sqrt_delta: Option<Number>,
+    pub(super) root: Option<Number>,
 }
 
 impl Ext {
     /// ℚ, ℚ(√δ), ℚ(√r) or ℚ(√δ, √r) (module docs); `r > 0` is not a square in ℚ(√δ).
-    fn new(delta: Option<&IBig>, r: Option<&Quadratic>) -> Ext {
+    pub(super) fn new(delta: Option<&IBig>, r: Option<&Quadratic>) -> Ext {
         match (delta, r) {
             (None, None) => Ext {
                 sqrt_delta: None,
@@ -192,7 +192,7 @@ impl Ext {
     }
 
     /// `a + b√δ` in ℚ(θ).
-    fn embed(&self, q: &Quadratic) -> Number {
+    pub(super) fn embed(&self, q: &Quadratic) -> Number {
         match (q.as_rational(), &self.sqrt_delta) {
             (Some(r), _) => curve::rational(r.clone()),
             (None, Some(s)) => curve::rational(q.rational_part().clone())

@@ -48,7 +48,7 @@ pub(crate) fn to_quadratic(m: &[[RBig; 4]; 4]) -> Mat4 {
     std::array::from_fn(|i| std::array::from_fn(|j| q(&m[i][j])))
 }
 
-fn mat_vec(m: &Mat4, x: &Vec4) -> Vec4 {
+pub(super) fn mat_vec(m: &Mat4, x: &Vec4) -> Vec4 {
     std::array::from_fn(|i| {
         let mut acc = Quadratic::zero();
         for j in 0..4 {
@@ -66,7 +66,7 @@ fn dot(x: &Vec4, y: &Vec4) -> Quadratic {
     acc
 }
 
-fn form(m: &Mat4, x: &Vec4, y: &Vec4) -> Quadratic {
+pub(super) fn form(m: &Mat4, x: &Vec4, y: &Vec4) -> Quadratic {
     dot(x, &mat_vec(m, y))
 }
 
@@ -270,18 +270,7 @@ fn point_on(s: &[[RBig; 4]; 4], avoid: Option<&[RBig; 4]>) -> Result<Option<Sect
                 continue;
             }
         }
-        // basis entries are 0 and ±1: only the nonzero ones count
-        let c: [[RBig; 3]; 3] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| {
-                let mut acc = RBig::ZERO;
-                for k in (0..4).filter(|&k| !basis[i][k].is_zero()) {
-                    for l in (0..4).filter(|&l| !basis[j][l].is_zero() && !s[k][l].is_zero()) {
-                        acc += &basis[i][k] * &s[k][l] * &basis[j][l];
-                    }
-                }
-                acc
-            })
-        });
+        let c = section(s, &basis);
         if c.iter().flatten().all(|v| v.is_zero()) {
             continue;
         }
@@ -414,22 +403,77 @@ fn small_point(s: &[[RBig; 4]; 4]) -> Option<[RBig; 4]> {
 pub(crate) fn parameterize_doubly_ruled(
     s: &[[RBig; 4]; 4],
 ) -> Result<Option<RuledParameterization>, Error> {
-    let p = match small_point(s) {
+    let points: Vec<Vec4> = match small_point(s) {
         Some(p) => {
             if let Some(r) = doubly_ruled_integral(s, &p)? {
                 return Ok(Some(r));
             }
-            std::array::from_fn(|i| q(&p[i]))
+            vec![std::array::from_fn(|i| q(&p[i]))]
         }
-        None => match point_on(s, None)? {
-            Some(found) => found.point,
-            None => return Ok(None),
-        },
+        None => points_on(s)?,
     };
     let sm = to_quadratic(s);
+    for p in points {
+        if let Some(r) = doubly_ruled_through(&sm, p)? {
+            return Ok(Some(r));
+        }
+    }
+    Ok(None)
+}
+
+/// Points of `S` to build the ruling from: the rational point of the first section that has
+/// one, else a point over ℚ(√e) from each section with real points, those with `e ≡ det S`
+/// modulo squares first (their lines stay in ℚ(√e): the tangent plane's binary form has
+/// discriminant `det S` up to squares).
+pub(super) fn points_on(s: &[[RBig; 4]; 4]) -> Result<Vec<Vec4>, Error> {
+    let mut quadratic: Vec<(bool, Vec4)> = Vec::new();
+    let det = minors::det(s);
+    for basis in hyperplanes() {
+        let c = section(s, &basis);
+        if c.iter().flatten().all(|v| v.is_zero()) {
+            continue;
+        }
+        match find_point(&c).map_err(|e| Error::Algebra(e.to_string()))? {
+            ConicPoint::Rational(p) => {
+                let coords = std::array::from_fn(|i| q(&p[i]));
+                return Ok(vec![section_point(basis, coords).point]);
+            }
+            ConicPoint::NoRationalPoint(p) => {
+                // det S a square in ℚ(√e): det·e a rational square
+                let same = Quadratic::sqrt(&(det.numerator() * det.denominator() * &p.delta))
+                    .as_rational()
+                    .is_some();
+                quadratic.push((same, section_point(basis, p.coords.clone()).point));
+            }
+            ConicPoint::NoRealPoint => {}
+        }
+    }
+    quadratic.sort_by_key(|(same, _)| !same);
+    Ok(quadratic.into_iter().map(|(_, p)| p).collect())
+}
+
+/// The conic `S` cuts on the plane spanned by `basis` (entries 0 and ±1: only the nonzero
+/// ones count).
+fn section(s: &[[RBig; 4]; 4], basis: &[[RBig; 4]; 3]) -> [[RBig; 3]; 3] {
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            let mut acc = RBig::ZERO;
+            for k in (0..4).filter(|&k| !basis[i][k].is_zero()) {
+                for l in (0..4).filter(|&l| !basis[j][l].is_zero() && !s[k][l].is_zero()) {
+                    acc += &basis[i][k] * &s[k][l] * &basis[j][l];
+                }
+            }
+            acc
+        })
+    })
+}
+
+/// The ruling of `S` through the point `p` of `S` (see [`parameterize_doubly_ruled`]);
+/// `Ok(None)` when the lines through `p` need a biquadratic field.
+fn doubly_ruled_through(sm: &Mat4, p: Vec4) -> Result<Option<RuledParameterization>, Error> {
     let p = primitive(&p);
     let delta0 = radicand_of(&p);
-    let r = mat_vec(&sm, &p);
+    let r = mat_vec(sm, &p);
     let j = (0..4)
         .find(|&k| !r[k].is_zero())
         .ok_or_else(|| Error::Algebra("a point in the kernel of a nonsingular quadric".into()))?;
@@ -455,7 +499,7 @@ pub(crate) fn parameterize_doubly_ruled(
         .map(|(_, v)| v)
         .collect();
     let (e1, e2) = (rest[0], rest[1]);
-    let (s11, s12, s22) = (form(&sm, e1, e1), form(&sm, e1, e2), form(&sm, e2, e2));
+    let (s11, s12, s22) = (form(sm, e1, e1), form(sm, e1, e2), form(sm, e2, e2));
     let two = Quadratic::from_int(&IBig::from(2));
     // the two lines through P: P + t·E±, E± the roots of s11β² + 2s12βγ + s22γ²
     let (plus, minus) = if s11.is_zero() {
@@ -477,7 +521,7 @@ pub(crate) fn parameterize_doubly_ruled(
     };
     let (plus, minus) = (primitive(&plus), primitive(&minus));
     // hyperbolic basis: e₁ = P, e₂ = E₊, f₂ = E₋/(E₊ᵀSE₋), f₁ from the unit vector e_j
-    let c = form(&sm, &plus, &minus);
+    let c = form(sm, &plus, &minus);
     let c_inv = c
         .inv()
         .ok_or_else(|| Error::Algebra("the two lines through a point are not distinct".into()))?;
@@ -489,14 +533,14 @@ pub(crate) fn parameterize_doubly_ruled(
             Quadratic::zero()
         }
     });
-    let g = combine(&Quadratic::one(), &g, &form(&sm, &g, &f2).neg(), &plus);
-    let g = combine(&Quadratic::one(), &g, &form(&sm, &g, &plus).neg(), &f2);
+    let g = combine(&Quadratic::one(), &g, &form(sm, &g, &f2).neg(), &plus);
+    let g = combine(&Quadratic::one(), &g, &form(sm, &g, &plus).neg(), &f2);
     let g = scaled(&r[j].inv().expect("nonzero pivot"), &g);
     let half = Quadratic::rational(RBig::from_parts_signed(IBig::ONE, IBig::from(2)));
     let f1 = combine(
         &Quadratic::one(),
         &g,
-        &form(&sm, &g, &g).mul(&half).neg(),
+        &form(sm, &g, &g).mul(&half).neg(),
         &p,
     );
     // b and d each scaled as a whole: the same lines, v rescaled
