@@ -17,7 +17,12 @@ use serde_json::Value;
 /// The corpus pairs whose curve is parameterized, with their ids.
 fn curves() -> Vec<(String, Quadric, Quadric, Curve)> {
     let mut out = Vec::new();
-    for name in ["cases.jsonl", "seed_examples.jsonl", "qi-quadrics.jsonl"] {
+    for name in [
+        "cases.jsonl",
+        "seed_examples.jsonl",
+        "qi-quadrics.jsonl",
+        "no_rational_ruling.jsonl",
+    ] {
         let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
         let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
         for (i, raw) in text.lines().enumerate() {
