@@ -1,17 +1,17 @@
 //! Levin's parameterization of a nonsingular quartic when no tried member of inertia (2, 2)
 //! has a rational point (`choose_surface` found no ruling over ℚ or ℚ(√δ)).
 //!
-//! A member `S` of inertia (2, 2) without a rational point has no point over `ℚ(√det S)`
-//! either (a quaternary form of discriminant `D` is isotropic over ℚ iff it is over
-//! `ℚ(√D)`, `D` not a square), so its lines are never over a single quadratic field: the
-//! smallest field holding a ruling is biquadratic. A hyperplane section gives a point `P` over
-//! `ℚ(√e)`; the two lines through `P` are the isotropic directions `E± = (−s₁₂ ± √r)e₁ +
-//! s₁₁e₂` of the tangent plane, `r = s₁₂² − s₁₁s₂₂ ∈ ℚ(√e)` (`r ≡ det S` modulo squares there).
-//! Everything is then computed in `ℚ(γ) = ℚ(√e, √r)` with an explicit primitive element (the
-//! one `planar` uses for conics): the hyperbolic basis and the ruling `b(u) = P − u·E₊`,
-//! `d(u) = f₂ + u·f₁` as in `surface`, the forms `c₀, c₁, c₂`, `s = c₁² − c₀c₂`, and the real
-//! roots of `s` (isolated through its norm to ℚ). Rare (about one random pair in 4 000 with
-//! rational entries of two digits) and not fast: no integral arithmetic here.
+//! A member `S` of inertia (2, 2) without a rational point (none found: `small_point` and the
+//! sections of `surface::points_on`, each decided by Legendre's theorem) and without a point
+//! over a field `ℚ(√e)` that also holds `√det S` gets its lines over a biquadratic field. A
+//! hyperplane section gives a point `P` over `ℚ(√e)`; the two lines through `P` are the
+//! isotropic directions `E± = (−s₁₂ ± √r)e₁ + s₁₁e₂` of the tangent plane,
+//! `r = s₁₂² − s₁₁s₂₂ ∈ ℚ(√e)` (`r ≡ det S` modulo squares there). Everything is then computed
+//! in `ℚ(γ) = ℚ(√e, √r)` with an explicit primitive element (the one `planar` uses for conics):
+//! the hyperbolic basis and the ruling `b(u) = P − u·E₊`, `d(u) = f₂ + u·f₁` as in `surface`,
+//! the forms `c₀, c₁, c₂`, `s = c₁² − c₀c₂`, and the real
+//! roots of `s` (isolated through its norm to ℚ). Rare (5 of 40 000 random pairs with rational
+//! entries of two or three digits) and not fast: no integral arithmetic here.
 
 use super::curve::{
     self, Component, ComponentParam, Curve, LevinForm, Number, NumberPoly, ParamValue, PointPoly,
