@@ -639,6 +639,14 @@ impl Poly<NumberFieldElement> {
             .iter()
             .find_map(|c| c.field_if_irrational())
             .cloned();
+        if let Some(sign) = self.float_sign_at(field.as_ref(), t) {
+            return sign;
+        }
+        self.exact_sign_at(field.as_ref(), t)
+    }
+
+    /// [`Self::sign_at`] by rational enclosures and the exact zero test (no float filter).
+    fn exact_sign_at(&self, field: Option<&NumberField>, t: &AlgebraicReal) -> Sign {
         // boxes rounded outward to dyadic ends of `bits` bits: the shared refinements may be
         // far narrower, with ends of huge height that would make the arithmetic crawl; the
         // exact zero test (costly: a norm and its roots) only once an enclosure at 64 bits
@@ -647,7 +655,7 @@ impl Poly<NumberFieldElement> {
         let mut zero_tested = false;
         loop {
             if bits > 64 && !zero_tested {
-                let quadratic = field.as_ref().map_or(QuadraticTest::NotQuadratic, |k| {
+                let quadratic = field.map_or(QuadraticTest::NotQuadratic, |k| {
                     quadratic_zero_test(self, k, t)
                 });
                 match quadratic {
@@ -670,6 +678,40 @@ impl Poly<NumberFieldElement> {
             }
             bits *= 2;
         }
+    }
+
+    /// The sign of `p(t)` by floating-point interval arithmetic (every operation widened by
+    /// one unit in the last place each way, which covers a rounding to nearest) on the boxes
+    /// of `α` and `t` refined below `2⁻⁴⁸`; `None` when the enclosure holds zero or a value
+    /// leaves the range of `f64` (the caller's exact route decides then).
+    fn float_sign_at(&self, field: Option<&NumberField>, t: &AlgebraicReal) -> Option<Sign> {
+        let width = RBig::from_parts(IBig::ONE, dashu_int::UBig::ONE << 48);
+        let alpha = match field {
+            Some(k) => Some(Fi::of_interval(
+                &k.snapshot().alpha.refined_interval(&width),
+            )?),
+            None => None,
+        };
+        let tv = Fi::of_interval(&t.refined_interval(&width))?;
+        let mut acc = Fi::point(0.0);
+        for c in self.coeffs().iter().rev() {
+            let cv = match (alpha, c.field_if_irrational()) {
+                (Some(a), Some(_)) => {
+                    let mut num = Fi::point(0.0);
+                    for v in c.num.coeffs().iter().rev() {
+                        num = num.mul(a).add(Fi::of_int(v)?);
+                    }
+                    num.div_positive(Fi::of_int(&c.den)?)?
+                }
+                _ => {
+                    let v = c.representative().coeff(0);
+                    Fi::of_int(v.numerator())?
+                        .div_positive(Fi::of_int(&IBig::from(v.denominator().clone()))?)?
+                }
+            };
+            acc = acc.mul(tv).add(cv);
+        }
+        acc.sign()
     }
 
     pub fn real_roots(&self) -> Vec<AlgebraicReal> {
@@ -806,6 +848,92 @@ fn dyadic_outward(lo: &RBig, hi: &RBig, k: usize) -> (RBig, RBig) {
     (down, up)
 }
 
+/// A closed interval of floats `[lo, hi]` holding an exact real; each operation rounds to
+/// nearest and then steps one float outward, so the exact result stays inside.
+#[derive(Clone, Copy, Debug)]
+struct Fi {
+    lo: f64,
+    hi: f64,
+}
+
+impl Fi {
+    fn point(v: f64) -> Fi {
+        Fi { lo: v, hi: v }
+    }
+
+    fn widened(lo: f64, hi: f64) -> Fi {
+        Fi {
+            lo: lo.next_down(),
+            hi: hi.next_up(),
+        }
+    }
+
+    /// An integer's enclosure (its conversion is within one unit in the last place).
+    fn of_int(v: &IBig) -> Option<Fi> {
+        let f = v.to_f64().value();
+        f.is_finite().then(|| Fi::widened(f, f))
+    }
+
+    /// A rational interval's enclosure.
+    fn of_interval(iv: &crate::roots::RootInterval) -> Option<Fi> {
+        let (lo, hi) = (iv.lo().to_f64().value(), iv.hi().to_f64().value());
+        (lo.is_finite() && hi.is_finite()).then(|| Fi::widened(lo, hi))
+    }
+
+    fn add(self, o: Fi) -> Fi {
+        Fi::widened(self.lo + o.lo, self.hi + o.hi)
+    }
+
+    fn mul(self, o: Fi) -> Fi {
+        if !(self.is_finite() && o.is_finite()) {
+            // ∞·0 is NaN, which min and max would skip: no enclosure
+            return Fi::point(f64::NAN);
+        }
+        let p = [
+            self.lo * o.lo,
+            self.lo * o.hi,
+            self.hi * o.lo,
+            self.hi * o.hi,
+        ];
+        let lo = p.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = p.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Fi::widened(lo, hi)
+    }
+
+    /// `self / d` for `d > 0` (`None` if `d` may be zero or negative).
+    fn div_positive(self, d: Fi) -> Option<Fi> {
+        if !(d.lo > 0.0 && self.is_finite() && d.is_finite()) {
+            return None;
+        }
+        let q = [
+            self.lo / d.lo,
+            self.lo / d.hi,
+            self.hi / d.lo,
+            self.hi / d.hi,
+        ];
+        let lo = q.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = q.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Some(Fi::widened(lo, hi))
+    }
+
+    fn is_finite(self) -> bool {
+        self.lo.is_finite() && self.hi.is_finite()
+    }
+
+    /// The sign of every real inside, `None` if zero is inside or an end is not finite.
+    fn sign(self) -> Option<Sign> {
+        if !self.is_finite() {
+            None
+        } else if self.lo > 0.0 {
+            Some(Sign::Positive)
+        } else if self.hi < 0.0 {
+            Some(Sign::Negative)
+        } else {
+            None
+        }
+    }
+}
+
 /// The product of two rational intervals `[a₀, a₁]·[b₀, b₁]`.
 fn interval_mul(a: &(RBig, RBig), b: &(RBig, RBig)) -> (RBig, RBig) {
     let p = [&a.0 * &b.0, &a.0 * &b.1, &a.1 * &b.0, &a.1 * &b.1];
@@ -829,6 +957,46 @@ fn interval_horner(
 
 #[cfg(test)]
 mod tests {
+    /// The float filter of `sign_at` agrees with the exact route wherever it answers, and
+    /// does not answer at a zero: random polynomials over ℚ(∛2) and ℚ(√2), at real roots of
+    /// random integer quadratics and cubics and at exact roots of the polynomial itself.
+    #[test]
+    fn the_float_sign_filter_agrees_with_the_exact_sign() {
+        let mut rng = crate::testing::SplitMix(0x51_6e);
+        let fields = [
+            NumberField::new(&AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 0, 1]))[0]),
+            NumberField::new(&AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 1]))[1]),
+        ];
+        let (mut answered, mut zeros) = (0, 0);
+        for round in 0..300 {
+            let k = &fields[round % 2];
+            let element = |rng: &mut crate::testing::SplitMix| {
+                k.integer_element(&Poly::from_i64s(&[
+                    rng.int(-9, 9),
+                    rng.int(-9, 9),
+                    rng.int(-9, 9),
+                ]))
+            };
+            let p = Poly::new((0..4).map(|_| element(&mut rng)).collect());
+            let q = Poly::from_i64s(&[rng.int(-20, 20), rng.int(-5, 5), rng.int(-3, 3), 1]);
+            let mut points = AlgebraicReal::real_roots_of(&q);
+            points.extend(p.real_roots());
+            for t in &points {
+                let exact = p.exact_sign_at(Some(k), t);
+                match p.float_sign_at(Some(k), t) {
+                    Some(sign) => {
+                        assert_eq!(sign, exact, "{p:?} at {t}");
+                        answered += 1;
+                    }
+                    None => zeros += usize::from(exact == Sign::Zero),
+                }
+                assert_eq!(p.sign_at(t), exact);
+            }
+        }
+        // the filter answers the common case, and every root of p reached the exact route
+        assert!(answered > 300 && zeros > 100, "{answered} {zeros}");
+    }
+
     #[test]
     fn real_roots_over_a_cubic_field_are_the_roots_not_their_conjugates() {
         // α the real root of x³ − 2; p = (u − α)(u − α² + 1)(u² + α) has the real roots
