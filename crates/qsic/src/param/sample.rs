@@ -476,9 +476,9 @@ struct Evaluator<'a> {
     s_desc: [f64; 5],
     /// Levin's form (else rational).
     levin: bool,
-    /// `Σₖ|xₖᵢ|` and `Σₖ|dₖᵢ|` per coordinate.
-    x_abs: Lanes,
-    d_abs: Lanes,
+    /// The largest `Σₖ|xₖᵢ|` and `Σₖ|dₖᵢ|` over the coordinates `i`.
+    x_abs_max: f64,
+    d_abs_max: f64,
     /// Relative rounding of one evaluation, per unit of the bound.
     gamma: f64,
     /// The double-double coefficients made with the floats, when all came cheaply.
@@ -737,8 +737,10 @@ impl<'a> Evaluator<'a> {
                 put(c, &mut sv[k], &mut dd.s[k])?;
             }
         }
-        let abs_sum = |c: &[Lanes]| -> Lanes {
-            std::array::from_fn(|i| c.iter().map(|k| k[i].abs()).sum::<f64>())
+        let abs_sum = |c: &[Lanes]| -> f64 {
+            (0..4)
+                .map(|i| c.iter().map(|k| k[i].abs()).sum::<f64>())
+                .fold(0.0, f64::max)
         };
         let n = big_d + 1;
         let mut x_desc = [[0.0; 4]; MAX_TERMS];
@@ -754,8 +756,8 @@ impl<'a> Evaluator<'a> {
         let mut s_desc = sv;
         s_desc.reverse();
         Ok(Evaluator {
-            x_abs: abs_sum(&x),
-            d_abs: abs_sum(&dv),
+            x_abs_max: abs_sum(&x),
+            d_abs_max: abs_sum(&dv),
             x_desc,
             d_desc,
             s_desc,
@@ -792,9 +794,7 @@ impl<'a> Evaluator<'a> {
         };
         let norm = x.iter().map(|v| v * v).sum::<f64>().sqrt();
         // the majorant Σ|cₖ| first, the bound at |t| where it does not certify
-        let cheap = (0..4)
-            .map(|i| self.x_abs[i] + self.d_abs[i] * root)
-            .fold(0.0, f64::max);
+        let cheap = self.x_abs_max + self.d_abs_max * root;
         if norm.is_finite() && norm > 0.0 && self.gamma * cheap <= 1e-10 * norm {
             return Some(x.map(|v| v / norm));
         }
@@ -1350,6 +1350,8 @@ fn exact_crossings_of(exact: &ExactParam, h: &[RBig; 4]) -> Option<Vec<Crossing>
 /// The state of the walk along one arc: the last point and the segments still to check.
 struct Walk {
     prev: Sample,
+    /// `h` at `prev`.
+    h_prev: f64,
     stack: Vec<(Sample, u32)>,
     /// Crossings of the plane at infinity located along the walk (not known exactly).
     unknown: bool,
@@ -1583,6 +1585,7 @@ impl Sampler<'_> {
         }
         let mut walk = Walk {
             prev: first,
+            h_prev: self.chart.value(&first.x),
             stack: Vec::new(),
             unknown: matches!(self.crossings, Crossings::Unknown),
         };
@@ -1632,6 +1635,7 @@ impl Sampler<'_> {
     /// Extends the polyline from `walk.prev` to `q`: bisected until [`Sampler::split`] is
     /// satisfied, and, where the crossings are not known exactly, with the crossings of the
     /// plane at infinity located between consecutive points.
+    #[inline(always)]
     fn walk_to(
         &self,
         walk: &mut Walk,
@@ -1640,11 +1644,24 @@ impl Sampler<'_> {
         budget: &mut usize,
         line: &mut Vec<Sample>,
     ) -> Result<(), Error> {
-        if self.tolerance.is_none() && dot(&walk.prev.x, &q.x) >= MAX_ANGLE.cos() {
+        let d = dot(&walk.prev.x, &q.x);
+        if self.tolerance.is_none() && d >= MAX_ANGLE.cos() {
             // close enough and not opposite: the usual case, no split
-            self.accept(walk, q, sheet, line)?;
-            return Ok(());
+            return self.accept(walk, q, d, sheet, line);
         }
+        self.walk_split(walk, q, sheet, budget, line)
+    }
+
+    /// [`Sampler::walk_to`] where the segment may need points.
+    #[inline(never)]
+    fn walk_split(
+        &self,
+        walk: &mut Walk,
+        q: Sample,
+        sheet: Sheet,
+        budget: &mut usize,
+        line: &mut Vec<Sample>,
+    ) -> Result<(), Error> {
         walk.stack.push((q, 0));
         while let Some((q, depth)) = walk.stack.pop() {
             let p = walk.prev;
@@ -1660,32 +1677,39 @@ impl Sampler<'_> {
                         p.theta
                     )))
                 }
-                None => self.accept(walk, q, sheet, line)?,
+                None => self.accept(walk, q, dot(&p.x, &q.x), sheet, line)?,
             }
         }
         Ok(())
     }
 
-    /// Appends `q` after `walk.prev`, with the crossing between them where they are not known
-    /// exactly.
+    /// Appends `q` after `walk.prev` (`d` their dot product), with the crossing between
+    /// them where the crossings are not known exactly.
     #[inline(always)]
     fn accept(
         &self,
         walk: &mut Walk,
         q: Sample,
+        d: f64,
         sheet: Sheet,
         line: &mut Vec<Sample>,
     ) -> Result<(), Error> {
         if walk.unknown {
-            let p = walk.prev;
-            let hp = self.chart.value(&p.x);
+            let hp = walk.h_prev;
+            let hq = self.chart.value(&q.x);
             if hp == 0.0 {
                 if let Some(l) = line.last_mut() {
                     l.at_infinity = true;
                 }
-            } else if let Some(c) = self.float_crossing(&p, hp, &q, sheet)? {
-                line.push(c);
+            } else {
+                let hq_along = if d < 0.0 { -hq } else { hq };
+                if hq_along != 0.0 && (hp > 0.0) != (hq_along > 0.0) {
+                    if let Some(c) = self.float_crossing(&walk.prev, hp, &q, sheet)? {
+                        line.push(c);
+                    }
+                }
             }
+            walk.h_prev = hq;
         }
         line.push(q);
         walk.prev = q;
