@@ -1923,3 +1923,143 @@ fn chord_deviation(a: &[f64; 3], b: &[f64; 3], c: &[f64; 3]) -> f64 {
         .sum::<f64>()
         .sqrt()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::param::curve::sqrt_field;
+    use crate::Quadric;
+    use qsic_algebra::testing::SplitMix;
+
+    /// Levin parameterizations of random generic pairs (coefficients in ℚ(√δ)).
+    fn levin_params(seed: u64, count: usize) -> Vec<ComponentParam> {
+        let mut rng = SplitMix(seed);
+        let mut out = Vec::new();
+        while out.len() < count {
+            let mut m = [[[0i64; 4]; 4]; 2];
+            for q in &mut m {
+                for i in 0..4 {
+                    for j in i..4 {
+                        let c = rng.int(-10, 10);
+                        q[i][j] = if i == j { 2 * c } else { c };
+                        q[j][i] = q[i][j];
+                    }
+                }
+            }
+            let (Ok(a), Ok(b)) = (Quadric::from_integers(m[0]), Quadric::from_integers(m[1]))
+            else {
+                continue;
+            };
+            let Ok(curve) = crate::param::parameterize(&a, &b) else {
+                continue;
+            };
+            for c in curve.components {
+                if let Some(p @ ComponentParam::Levin { .. }) = c.param {
+                    out.push(p);
+                }
+            }
+        }
+        out
+    }
+
+    /// `x − y√2` for the solutions of Pell's equation `x² − 2y² = 1`: the terms cancel to
+    /// `1/(x + y√2)`, by up to ~200 bits; the float must keep its full precision.
+    #[test]
+    fn conversion_keeps_precision_through_cancellation() {
+        let k = sqrt_field(&IBig::from(2));
+        let (mut x, mut y) = (IBig::from(3), IBig::from(2));
+        let mut conv = Converter::default();
+        for _ in 0..40 {
+            for den in [1, 3] {
+                let c = k.element(&Poly::new(vec![
+                    RBig::from_parts_signed(x.clone(), den.into()),
+                    RBig::from_parts_signed(-y.clone(), den.into()),
+                ]));
+                let v = conv.convert(&c).unwrap();
+                let conjugate = x.to_f64().value() + y.to_f64().value() * std::f64::consts::SQRT_2;
+                let product = v.value * conjugate * den as f64;
+                assert!((product - 1.0).abs() < 1e-14, "x = {x}: {product}");
+                let dd = v.dd.expect("ℚ(√2) has a double-double");
+                assert!(((dd.0 + dd.1) * conjugate * den as f64 - 1.0).abs() < 1e-14);
+            }
+            // the next solution: (x, y) → (3x + 4y, 2x + 3y)
+            (x, y) = (&x * 3 + &y * 4, &x * 2 + &y * 3);
+        }
+        assert_eq!(conv.roots.len(), 1, "√2 made once");
+    }
+
+    #[test]
+    fn integers_split_exactly_into_double_doubles() {
+        let mut rng = SplitMix(11);
+        for bits in [10, 52, 53, 54, 64, 100, 106, 150, 400] {
+            for _ in 0..20 {
+                let v = (IBig::from(rng.next_u64()) << bits) >> 64;
+                let v = if rng.next_u64() % 2 == 0 { -v } else { v };
+                let d = int_dd(&v);
+                let rest = &v - integral_f64_to_ibig(d.0);
+                // lo is the rest rounded: exact below 2¹⁰⁶
+                let err = if d.1 == 0.0 {
+                    rest.clone()
+                } else {
+                    &rest - integral_f64_to_ibig(d.1.trunc())
+                };
+                let tolerance = IBig::ONE << bits.saturating_sub(100);
+                assert!(&err * &err <= &tolerance * &tolerance, "{v}: {d:?}");
+            }
+        }
+    }
+
+    /// The float evaluation (majorant certificate, unrolled Horner) against the double-double
+    /// one from coefficients made by the refined route ([`to_dd`], not the [`Converter`]),
+    /// on both sheets, at parameters all round ℙ¹.
+    #[test]
+    fn fast_evaluation_matches_double_double_from_refined_coefficients() {
+        let mut rng = SplitMix(7);
+        let (mut checked, mut unrolled) = (0, 0);
+        for param in levin_params(0x1e_71, 6) {
+            let eval = Evaluator::new(&param).unwrap();
+            let ComponentParam::Levin { a, d, s, .. } = &param else {
+                unreachable!()
+            };
+            let mut refined = Box::<DdCoeffs>::default();
+            for i in 0..4 {
+                for (k, c) in a[i].coeffs().iter().enumerate() {
+                    refined.x[k][i] = to_dd(c);
+                }
+                for (k, c) in d[i].coeffs().iter().enumerate() {
+                    refined.d[k][i] = to_dd(c);
+                }
+            }
+            for (k, c) in s.coeffs().iter().enumerate() {
+                refined.s[k] = to_dd(c);
+            }
+            let reference = Evaluator {
+                quick_dd: Some(refined),
+                ..Evaluator::new(&param).unwrap()
+            };
+            for _ in 0..200 {
+                let theta = (rng.next_u64() as f64 / u64::MAX as f64 - 0.5) * PI;
+                let u = theta.sin_cos();
+                let (t, rev) = reduced_parameter(u);
+                for sheet in [Sheet::Plus, Sheet::Minus] {
+                    let Some(x) = eval.eval_unit(u, sheet) else {
+                        continue;
+                    };
+                    let y = reference
+                        .eval_dd(t, rev, sheet, 0.0)
+                        .and_then(unit)
+                        .expect("double-double evaluates where floats do");
+                    // the unrolled Horner is the general one, operation for operation
+                    if eval.big_d == 3 {
+                        let fixed = eval.values::<4, 2>(t, rev, sheet);
+                        assert_eq!(fixed, eval.values_any(t, rev, sheet));
+                        unrolled += 1;
+                    }
+                    assert!(dot(&x, &y) > 1.0 - 1e-12, "{x:?} {y:?}");
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 2000 && unrolled > 0, "{checked} {unrolled}");
+    }
+}
