@@ -14,18 +14,24 @@
 //! The homogenized parameterization is evaluated at `t = U₀/U₁` when `|t| ≤ 1`, else with
 //! the reversed coefficients at `1/t`: Horner's rule always runs on `[−1, 1]`. Levin's form
 //! `a ± d√s` is homogeneous of degree `D = max(deg a, deg d + 2)` with `s` a quartic form.
-//! Arc ends are the exact roots of `s`, approximated by [`AlgebraicReal::to_f64`] (Newton's
-//! method inside the isolating interval; exact refinement to `2⁻⁶⁰` when floats cannot
-//! bracket the root); coefficients over ℚ(√δ) go to floats through `√δ` in double-double,
-//! never through a refined rational (the double-double copies for retries are made on the
-//! first retry only). `s` is clamped at 0, which moves
+//! Arc ends are the exact roots of `s`, approximated by Newton's method on the float `s`
+//! inside the root's isolating interval (one simple root there), by
+//! [`AlgebraicReal::to_f64`] where floats do not bracket it. Coefficients go to floats
+//! once, through double-double: over ℚ(√δ) `c₀ + c₁√δ` is summed where the terms agree in
+//! sign, else computed as `(c₀² − c₁²δ)/(c₀ − c₁√δ)` with the integer norm exact, so that
+//! no cancellation costs precision (the same double-doubles serve the retries). `s` is
+//! clamped at 0, which moves
 //! a point off the curve by `O(|s|)` only, because `aᵀMd ≡ 0` cancels the first-order error
 //! of `√s`. An evaluation whose rounding bound exceeds `10⁻¹⁰·‖X‖` (a sheet passing through
-//! the zero vector, a removable zero of Levin's form) is retried at a nearby parameter.
+//! the zero vector, a removable zero of Levin's form) is retried in double-double, then at a
+//! nearby parameter; the bound `Σₖ|cₖ||t|ᵏ` is first majorized by the precomputed `Σₖ|cₖ|`
+//! and computed only where that does not certify. Horner's rule runs on fixed-size arrays,
+//! unrolled for the usual degrees.
 //!
 //! # Density
 //! Each arc starts from a uniform grid in `θ` (together at least
-//! [`SampleOptions::points`] points per piece) and segments are bisected, from a work list,
+//! [`SampleOptions::points`] points per piece; `(sin θ, cos θ)` by rotations of the step,
+//! exact every 64 points), walked in one pass: segments are bisected, from a work list,
 //! until consecutive unit vectors are within [`MAX_ANGLE`] radians up to sign and, with a
 //! tolerance, the chord deviation in the chart is at most the tolerance (checked where the
 //! three points lie within [`AFFINE_RADIUS`] of the origin). At most [`MAX_DEPTH`] bisections
@@ -36,7 +42,7 @@
 //! coefficient of a component is rational, the crossings are the exact real roots of `h(X(u))`
 //! (for Levin's form of `h(a)² − h(d)²s`, the sheet from the signs of `h(a)` and `h(d)`),
 //! tangential touches included; otherwise the sign changes of `h` along the polyline,
-//! located by bisection. Affine coordinates are those of `X/h(X)` without the last
+//! located by regula falsi (Illinois). Affine coordinates are those of `X/h(X)` without the last
 //! coordinate whose coefficient in `h` is nonzero (`(x/w, y/w, z/w)` for the default).
 
 use super::curve::{Arc, ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue};
@@ -187,7 +193,8 @@ pub struct Sampled {
 /// [`Error::Limit`] when more than [`MAX_POINTS`] points are requested or needed;
 /// [`Error::InvalidShape`] for a zero chart, a non-positive tolerance or zero points;
 /// [`Error::Algebra`] when a coefficient is beyond the range of `f64`, a piece has no
-/// parameterization, or the refinement does not converge within [`MAX_DEPTH`].
+/// parameterization (or one of degree above 8), or the refinement does not converge within
+/// [`MAX_DEPTH`].
 ///
 /// # Examples
 /// ```
@@ -289,8 +296,9 @@ struct Chart {
 }
 
 impl Chart {
+    #[inline(always)]
     fn value(&self, x: &[f64; 4]) -> f64 {
-        (0..4).map(|i| self.h[i] * x[i]).sum()
+        dot(&self.h, x)
     }
 
     /// Affine coordinates of `x`, `None` at infinity.
@@ -303,15 +311,8 @@ impl Chart {
         if h == 0.0 {
             return None;
         }
-        let mut out = [0.0; 3];
-        let mut k = 0;
-        for (i, v) in x.iter().enumerate() {
-            if i != self.drop {
-                out[k] = v / h;
-                k += 1;
-            }
-        }
-        Some(out)
+        let keep = |k: usize| if k < self.drop { k } else { k + 1 };
+        Some([x[keep(0)] / h, x[keep(1)] / h, x[keep(2)] / h])
     }
 }
 
@@ -392,8 +393,9 @@ fn unit(x: [f64; 4]) -> Option<[f64; 4]> {
     (n > 0.0 && n.is_finite()).then(|| x.map(|v| v / n))
 }
 
+#[inline(always)]
 fn dot(a: &[f64; 4], b: &[f64; 4]) -> f64 {
-    (0..4).map(|i| a[i] * b[i]).sum()
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]
 }
 
 fn point_piece(
@@ -792,7 +794,7 @@ impl<'a> Evaluator<'a> {
             (false, 4) => self.values::<5, 0>(t, rev, sheet),
             _ => self.values_any(t, rev, sheet),
         };
-        let norm = x.iter().map(|v| v * v).sum::<f64>().sqrt();
+        let norm = dot(&x, &x).sqrt();
         // the majorant Σ|cₖ| first, the bound at |t| where it does not certify
         let cheap = self.x_abs_max + self.d_abs_max * root;
         if norm.is_finite() && norm > 0.0 && self.gamma * cheap <= 1e-10 * norm {
@@ -1598,7 +1600,7 @@ impl Sampler<'_> {
         let mut u = (0.0, 1.0);
         for k in 1..=n {
             let g = if k < n {
-                let th = t0 + (t1 - t0) * (k as f64) / (n as f64);
+                let th = t0 + step * (k as f64);
                 u = if k % RESYNC == 1 {
                     th.sin_cos()
                 } else {
@@ -1726,7 +1728,7 @@ impl Sampler<'_> {
         budget: &mut usize,
     ) -> Result<SampledPiece, Error> {
         let n = points.div_ceil(arcs.len().max(1)).max(8) + 1;
-        let mut line: Vec<Sample> = Vec::new();
+        let mut line: Vec<Sample> = Vec::with_capacity(arcs.len() * (n + n / 8 + 8));
         for arc in arcs {
             self.arc_into(arc, n, budget, &mut line)?;
         }
@@ -1752,7 +1754,8 @@ impl Sampler<'_> {
         } else {
             self.affine(&line, closed)
         };
-        let mut pts: Vec<[f64; 4]> = line.iter().map(|s| s.x).collect();
+        let mut pts: Vec<[f64; 4]> = Vec::with_capacity(line.len() + 1);
+        pts.extend(line.iter().map(|s| s.x));
         if closed && !pts.is_empty() {
             let first = pts[0];
             let last = pts[pts.len() - 1];
