@@ -401,5 +401,8 @@ fn random_generic_pairs_are_sampled_densely_on_both_quadrics() {
         }
     }
     // the family crosses the planes: the located crossings were exercised
-    assert!(crossings_seen > 0 && pieces_seen >= 8, "{crossings_seen} {pieces_seen}");
+    assert!(
+        crossings_seen > 0 && pieces_seen >= 8,
+        "{crossings_seen} {pieces_seen}"
+    );
 }

@@ -901,7 +901,8 @@ impl<'a> Evaluator<'a> {
                 .fold((0.0, 0.0), |(v, dv), &k| (v * u + k, dv * u + v))
         };
         let (flo, fhi) = (f(lo).0, f(hi).0);
-        if !(flo * fhi < 0.0) {
+        let brackets = flo * fhi < 0.0;
+        if !brackets {
             return close(lo, hi).then_some(0.5 * (lo + hi));
         }
         let (mut a, mut b) = (lo, hi);
@@ -1030,7 +1031,12 @@ struct Approximations(RefCell<Vec<(AlgebraicReal, f64)>>);
 
 impl Approximations {
     fn of(&self, r: &AlgebraicReal) -> f64 {
-        if let Some((_, v)) = self.0.borrow().iter().find(|(q, _)| q.poly() == r.poly() && q.interval() == r.interval()) {
+        if let Some((_, v)) = self
+            .0
+            .borrow()
+            .iter()
+            .find(|(q, _)| q.poly() == r.poly() && q.interval() == r.interval())
+        {
             return *v;
         }
         let v = r.to_f64();
@@ -1375,8 +1381,13 @@ impl Sampler<'_> {
     /// the float `s` inside the isolating interval of `r` (one simple root of `s` there);
     /// [`AlgebraicReal::to_f64`] (once per call) where floats do not bracket it.
     fn end_value(&self, r: &AlgebraicReal) -> f64 {
-        if let (true, qsic_algebra::roots::RootInterval::Open(lo, hi)) = (self.eval.levin, r.interval()) {
-            if let Some(v) = self.eval.root_of_s(lo.to_f64().value(), hi.to_f64().value()) {
+        if let (true, qsic_algebra::roots::RootInterval::Open(lo, hi)) =
+            (self.eval.levin, r.interval())
+        {
+            if let Some(v) = self
+                .eval
+                .root_of_s(lo.to_f64().value(), hi.to_f64().value())
+            {
                 return v;
             }
         }
@@ -1525,7 +1536,10 @@ impl Sampler<'_> {
             let s = self.at_end(u, th, other, sheet)?;
             let mut m = (false, false);
             mark(&mut m);
-            if let Some(g) = inner.iter_mut().find(|g| (g.theta - s.theta).abs() <= 1e-12) {
+            if let Some(g) = inner
+                .iter_mut()
+                .find(|g| (g.theta - s.theta).abs() <= 1e-12)
+            {
                 // the same parameter as an event already placed (a singular point at
                 // infinity): one point with both marks
                 g.at_infinity |= m.0;
