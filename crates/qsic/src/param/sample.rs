@@ -563,9 +563,11 @@ fn integral_f64_to_ibig(x: f64) -> IBig {
 
 /// An integer in double-double (exact below `2¹⁰⁶` in magnitude, rounded beyond).
 fn int_dd(v: &IBig) -> Dd {
-    if let Ok(small) = i64::try_from(v) {
-        if small.unsigned_abs() < 1 << 53 {
-            return Dd(small as f64, 0.0);
+    if let Ok(small) = i128::try_from(v) {
+        // hi rounds to nearest; for |v| < 2¹²⁷ the rest is exact in i128
+        let hi = small as f64;
+        if hi.abs() < 1.0e38 {
+            return Dd::two_sum(hi, (small - hi as i128) as f64);
         }
     }
     let hi = v.to_f64().value();
