@@ -305,6 +305,28 @@ fn real_world_pairs_with_unbalanced_levin_forms_are_sampled() {
     }
 }
 
+/// A CAD pair (rotated and shifted) whose `s(u)` has two real roots `10⁻⁴` apart: the float `s`
+/// cannot place its arc ends (Newton on it lands `10⁻⁷` off, and the ends were `10⁻⁴` off
+/// the quadrics); the exact refinement must take over there.
+#[test]
+fn arc_ends_at_a_near_double_root_of_s_stay_on_the_quadrics() {
+    let a = parse_quadric("49*x^2/81 - 128*x*y/81 + 16*x*z/81 - 3064*x/405 - 47*y^2/81 + 32*y*z/81 - 458*y/405 + 79*z^2/81 + 1981*z/405 + 917/162").unwrap();
+    let b = parse_quadric("10649*x^2/22201 + 36480*x*y/22201 + 13680*x*z/22201 - 121591*x/22201 - 6599*y^2/22201 - 21600*y*z/22201 + 313763*y/111005 + 18151*z^2/22201 + 470102*z/111005 - 14796651/2220100").unwrap();
+    let curve = parameterize(&a, &b).unwrap();
+    let ms = [float_matrix(&a), float_matrix(&b)];
+    for points in [5, 64, 1000] {
+        let options = SampleOptions {
+            points,
+            ..SampleOptions::default()
+        };
+        let s = sample(&curve, &options).unwrap();
+        assert_eq!(s.pieces.len(), 1);
+        for p in &s.pieces {
+            check_piece(p, &ms, points).unwrap();
+        }
+    }
+}
+
 #[path = "../benches/inputs/mod.rs"]
 mod inputs;
 

@@ -890,7 +890,8 @@ impl<'a> Evaluator<'a> {
 
     /// The root of the float `s` in `(lo, hi)` by Newton's method safeguarded by bisection,
     /// `None` unless `s` has opposite signs at the ends (or the interval is below the float
-    /// resolution: its midpoint).
+    /// resolution: its midpoint) and the root is well conditioned (rounding moves it by at
+    /// most `2⁻⁴²` relative).
     fn root_of_s(&self, lo: f64, hi: f64) -> Option<f64> {
         let close = |a: f64, b: f64| b - a <= 4.0 * f64::EPSILON * a.abs().max(b.abs());
         if !(lo.is_finite() && hi.is_finite() && lo < hi) {
@@ -907,12 +908,23 @@ impl<'a> Evaluator<'a> {
         if !brackets {
             return close(lo, hi).then_some(0.5 * (lo + hi));
         }
+        // accepted where the rounding of s moves the root by at most |x|·2⁻⁴² (a near-double
+        // root, where s′ is small, goes to the exact refinement)
+        let conditioned = |x: f64| -> Option<f64> {
+            let size = self
+                .s
+                .iter()
+                .rev()
+                .fold(0.0, |v: f64, k| v * x.abs() + k.abs());
+            let err = 10.0 * f64::EPSILON * size / f(x).1.abs();
+            (err.is_finite() && err <= x.abs() * 2f64.powi(-42)).then_some(x)
+        };
         let (mut a, mut b) = (lo, hi);
         let mut x = 0.5 * (a + b);
         for _ in 0..200 {
             let (fx, dfx) = f(x);
             if fx == 0.0 {
-                return Some(x);
+                return conditioned(x);
             }
             if !fx.is_finite() {
                 return None;
@@ -923,7 +935,7 @@ impl<'a> Evaluator<'a> {
                 b = x;
             }
             if close(a, b) {
-                return Some(0.5 * (a + b));
+                return conditioned(0.5 * (a + b));
             }
             let newton = x - fx / dfx;
             let next = if a < newton && newton < b {
@@ -932,7 +944,7 @@ impl<'a> Evaluator<'a> {
                 0.5 * (a + b)
             };
             if next == x || (next - x).abs() <= 2.0 * f64::EPSILON * x.abs() {
-                return Some(next);
+                return conditioned(next);
             }
             x = next;
         }
