@@ -14,9 +14,9 @@
 //! The homogenized parameterization is evaluated at `t = U₀/U₁` when `|t| ≤ 1`, else with
 //! the reversed coefficients at `1/t`: Horner's rule always runs on `[−1, 1]`. Levin's form
 //! `a ± d√s` is homogeneous of degree `D = max(deg a, deg d + 2)` with `s` a quartic form.
-//! Arc ends are the exact roots of `s`, approximated by Newton's method on the float `s`
-//! inside the root's isolating interval (one simple root there), by
-//! [`AlgebraicReal::to_f64`] where floats do not bracket it. Coefficients go to floats
+//! Arc ends are the exact roots of `s`, approximated by Newton's method on `s` (evaluated in
+//! double-double) inside the root's isolating interval (one simple root there), by
+//! [`AlgebraicReal::to_f64`] where that does not bracket it or the root is ill-conditioned. Coefficients go to floats
 //! once, through double-double: over ℚ(√δ) `c₀ + c₁√δ` is summed where the terms agree in
 //! sign, else computed as `(c₀² − c₁²δ)/(c₀ − c₁√δ)` with the integer norm exact, so that
 //! no cancellation costs precision (the same double-doubles serve the retries). `s` is
@@ -667,6 +667,38 @@ fn horner_dd(c: &[Dd], t: f64, rev: bool) -> Dd {
     v
 }
 
+/// Newton's method on `f` (value, derivative) safeguarded by bisection in `(lo, hi)`, where
+/// `f(lo) = flo` and `f(hi)` have opposite signs: a float near the root.
+fn newton_bracketed(f: &dyn Fn(f64) -> (f64, f64), lo: f64, hi: f64, flo: f64) -> f64 {
+    let (mut a, mut b) = (lo, hi);
+    let mut x = 0.5 * (a + b);
+    for _ in 0..200 {
+        let (fx, dfx) = f(x);
+        if fx == 0.0 || !fx.is_finite() {
+            return x;
+        }
+        if (fx < 0.0) == (flo < 0.0) {
+            a = x;
+        } else {
+            b = x;
+        }
+        let newton = x - fx / dfx;
+        let next = if a < newton && newton < b {
+            newton
+        } else {
+            0.5 * (a + b)
+        };
+        if next == x
+            || (next - x).abs() <= 2.0 * f64::EPSILON * x.abs()
+            || b - a <= 4.0 * f64::EPSILON * a.abs().max(b.abs())
+        {
+            return next;
+        }
+        x = next;
+    }
+    x
+}
+
 /// `X(U₀, U₁)` as `t = U₀/U₁` (`|t| ≤ 1`) or `t = U₁/U₀` with the coefficients reversed.
 fn reduced_parameter(u: (f64, f64)) -> (f64, bool) {
     if u.1.abs() >= u.0.abs() {
@@ -888,35 +920,71 @@ impl<'a> Evaluator<'a> {
         self.eval_dd(t, rev, sheet, bound).and_then(unit)
     }
 
-    /// The root of the float `s` in `(lo, hi)` by Newton's method safeguarded by bisection,
-    /// `None` unless `s` has opposite signs at the ends (or the interval is below the float
-    /// resolution: its midpoint) and the root is well conditioned (rounding moves it by at
-    /// most `2⁻⁴²` relative).
+    /// The root of `s` in `(lo, hi)` by Newton's method safeguarded by bisection, `s`
+    /// evaluated in double-double: `None` unless `s` has opposite signs at the ends (or the
+    /// interval is below the float resolution: its midpoint) and the root is well
+    /// conditioned (rounding moves it by at most `2⁻⁴²` relative).
     fn root_of_s(&self, lo: f64, hi: f64) -> Option<f64> {
         let close = |a: f64, b: f64| b - a <= 4.0 * f64::EPSILON * a.abs().max(b.abs());
         if !(lo.is_finite() && hi.is_finite() && lo < hi) {
             return None;
         }
-        let f = |u: f64| -> (f64, f64) {
+        let sd = &self.dd().s;
+        // s(u) and s′(u) in floats; s(u) in double-double
+        let float = |u: f64| -> (f64, f64) {
             self.s
                 .iter()
                 .rev()
                 .fold((0.0, 0.0), |(v, dv), &k| (v * u + k, dv * u + v))
         };
+        let f = |u: f64| -> (f64, f64) {
+            let v = sd
+                .iter()
+                .rev()
+                .fold(Dd::default(), |v, k| v.mul_f64(u).add(*k));
+            (v.0 + v.1, float(u).1)
+        };
+        // a float Newton start where the floats bracket the root, polished in double-double
+        let (glo, ghi) = (float(lo).0, float(hi).0);
+        if glo * ghi < 0.0 {
+            let start = newton_bracketed(&float, lo, hi, glo);
+            let mut x = start;
+            for _ in 0..3 {
+                let (fx, dfx) = f(x);
+                let next = x - fx / dfx;
+                if !(lo < next && next < hi) {
+                    break;
+                }
+                let done = (next - x).abs() <= 2.0 * f64::EPSILON * x.abs();
+                x = next;
+                if done {
+                    let size = self
+                        .s
+                        .iter()
+                        .rev()
+                        .fold(0.0, |v: f64, k| v * x.abs() + k.abs());
+                    let err = 16.0 * 2f64.powi(-104) * size / f(x).1.abs();
+                    if err.is_finite() && err <= x.abs() * 2f64.powi(-42) {
+                        return Some(x);
+                    }
+                    break;
+                }
+            }
+        }
         let (flo, fhi) = (f(lo).0, f(hi).0);
         let brackets = flo * fhi < 0.0;
         if !brackets {
             return close(lo, hi).then_some(0.5 * (lo + hi));
         }
-        // accepted where the rounding of s moves the root by at most |x|·2⁻⁴² (a near-double
-        // root, where s′ is small, goes to the exact refinement)
+        // accepted where the rounding of s (about 2⁻¹⁰⁴ of its terms) moves the root by at
+        // most |x|·2⁻⁴²
         let conditioned = |x: f64| -> Option<f64> {
             let size = self
                 .s
                 .iter()
                 .rev()
                 .fold(0.0, |v: f64, k| v * x.abs() + k.abs());
-            let err = 10.0 * f64::EPSILON * size / f(x).1.abs();
+            let err = 16.0 * 2f64.powi(-104) * size / f(x).1.abs();
             (err.is_finite() && err <= x.abs() * 2f64.powi(-42)).then_some(x)
         };
         let (mut a, mut b) = (lo, hi);
@@ -1392,8 +1460,9 @@ struct Sampler<'a> {
 
 impl Sampler<'_> {
     /// A float of an arc end `r`: on Levin's form a root of `s`, found by Newton's method on
-    /// the float `s` inside the isolating interval of `r` (one simple root of `s` there);
-    /// [`AlgebraicReal::to_f64`] (once per call) where floats do not bracket it.
+    /// `s` inside the isolating interval of `r` (one simple root of `s` there);
+    /// [`AlgebraicReal::to_f64`] (once per call) where that does not bracket it or is
+    /// ill-conditioned.
     fn end_value(&self, r: &AlgebraicReal) -> f64 {
         if let (true, qsic_algebra::roots::RootInterval::Open(lo, hi)) =
             (self.eval.levin, r.interval())
