@@ -312,3 +312,127 @@ fn real_world_pairs_with_unbalanced_levin_forms_are_sampled() {
         }
     }
 }
+
+/// A CAD pair (rotated and shifted) whose `s(u)` has two real roots `10⁻⁴` apart: the float `s`
+/// cannot place its arc ends (Newton on it lands `10⁻⁷` off, and the ends were `10⁻⁴` off
+/// the quadrics); the exact refinement must take over there.
+#[test]
+fn arc_ends_at_a_near_double_root_of_s_stay_on_the_quadrics() {
+    let a = parse_quadric("49*x^2/81 - 128*x*y/81 + 16*x*z/81 - 3064*x/405 - 47*y^2/81 + 32*y*z/81 - 458*y/405 + 79*z^2/81 + 1981*z/405 + 917/162").unwrap();
+    let b = parse_quadric("10649*x^2/22201 + 36480*x*y/22201 + 13680*x*z/22201 - 121591*x/22201 - 6599*y^2/22201 - 21600*y*z/22201 + 313763*y/111005 + 18151*z^2/22201 + 470102*z/111005 - 14796651/2220100").unwrap();
+    let curve = parameterize(&a, &b).unwrap();
+    let ms = [float_matrix(&a), float_matrix(&b)];
+    for points in [5, 64, 1000] {
+        let options = SampleOptions {
+            points,
+            ..SampleOptions::default()
+        };
+        let s = sample(&curve, &options).unwrap();
+        assert_eq!(s.pieces.len(), 1);
+        for p in &s.pieces {
+            check_piece(p, &ms, points).unwrap();
+        }
+    }
+}
+
+#[path = "../benches/inputs/mod.rs"]
+mod inputs;
+
+/// Random generic pairs (cases 1–4, the `param_cost` family, irrational Levin forms): about
+/// 1000 points per curve, every piece checked as on the corpus; in the default chart and in an
+/// oblique one the points at infinity (located along the polyline) lie on the plane, and
+/// their number is the exact count of `affine_view_of_curve`; with a tolerance the chords
+/// near the origin stay within it.
+#[test]
+fn random_generic_pairs_are_sampled_densely_on_both_quadrics() {
+    use qsic::affine::{affine_view_of_curve, Chart};
+    let mut rng = inputs::SplitMix(0x5a_3b_1e);
+    let pairs: Vec<(Quadric, Quadric)> = inputs::random_pairs(&mut rng, 120)
+        .into_iter()
+        .filter(|(a, b)| matches!(qsic::classify(a, b).case, Some(1..=4)))
+        .take(10)
+        .collect();
+    assert_eq!(pairs.len(), 10);
+    let r = |v: i64| RBig::from(v);
+    let charts = [[r(0), r(0), r(0), r(1)], [r(1), r(-2), r(3), r(5)]];
+    let (mut crossings_seen, mut pieces_seen) = (0, 0);
+    for (k, (a, b)) in pairs.iter().enumerate() {
+        let curve = parameterize(a, b).unwrap();
+        let ms = [float_matrix(a), float_matrix(b)];
+        let points = 1000usize.div_ceil(curve.pieces.len().max(1));
+        let options = SampleOptions {
+            points,
+            ..SampleOptions::default()
+        };
+        let s = sample(&curve, &options).unwrap();
+        assert_eq!(s.pieces.len(), curve.pieces.len(), "pair {k}");
+        for p in &s.pieces {
+            check_piece(p, &ms, points).unwrap_or_else(|e| panic!("pair {k}: {e}"));
+        }
+        for chart in &charts {
+            let options = SampleOptions {
+                points: 40,
+                chart: chart.clone(),
+                ..SampleOptions::default()
+            };
+            let s = sample(&curve, &options).unwrap();
+            let norm = chart.iter().map(|c| c.to_f64().value().abs()).sum::<f64>();
+            let mut at_infinity = 0;
+            for p in &s.pieces {
+                for x in &p.affine.points_at_infinity {
+                    let h: f64 = (0..4).map(|i| chart[i].to_f64().value() * x[i]).sum();
+                    assert!(h.abs() <= 1e-12 * norm, "pair {k}: h = {h} at infinity");
+                }
+                at_infinity += p.affine.points_at_infinity.len();
+                let want = if p.closed {
+                    p.affine.points_at_infinity.len().max(1)
+                } else {
+                    p.affine.points_at_infinity.len() + 1
+                };
+                assert_eq!(p.affine.branches.len(), want, "pair {k}");
+            }
+            let exact = affine_view_of_curve(
+                Some(a),
+                Some(b),
+                Some(&curve),
+                &Chart::new(chart.clone()).unwrap(),
+                [false; 2],
+            )
+            .curve
+            .unwrap()
+            .points_at_infinity;
+            assert_eq!(at_infinity, exact, "pair {k}, chart {chart:?}");
+            crossings_seen += at_infinity;
+        }
+        // a chord tolerance refines the polyline (every curve has affine extent ≫ 10⁻³)
+        let with = |tolerance: Option<f64>| {
+            sample(
+                &curve,
+                &SampleOptions {
+                    points: 16,
+                    tolerance,
+                    ..SampleOptions::default()
+                },
+            )
+            .unwrap()
+        };
+        let (coarse, fine) = (with(None), with(Some(1e-3)));
+        let count = |s: &qsic::param::sample::Sampled| -> usize {
+            s.pieces.iter().map(|p| p.points.len()).sum()
+        };
+        // (a curve with no real point has no piece)
+        assert!(
+            coarse.pieces.is_empty() || count(&fine) > count(&coarse),
+            "pair {k}"
+        );
+        pieces_seen += coarse.pieces.len();
+        for p in &fine.pieces {
+            check_piece(p, &ms, 16).unwrap_or_else(|e| panic!("pair {k}, tolerance: {e}"));
+        }
+    }
+    // the family crosses the planes: the located crossings were exercised
+    assert!(
+        crossings_seen > 0 && pieces_seen >= 8,
+        "{crossings_seen} {pieces_seen}"
+    );
+}

@@ -848,6 +848,18 @@ fn dyadic_outward(lo: &RBig, hi: &RBig, k: usize) -> (RBig, RBig) {
     (down, up)
 }
 
+/// The least float above `x` (`f64::next_up`, stable only after this crate's MSRV).
+fn next_up(x: f64) -> f64 {
+    if x.is_nan() || x == f64::INFINITY {
+        return x;
+    }
+    if x == 0.0 {
+        return f64::from_bits(1);
+    }
+    let bits = x.to_bits();
+    f64::from_bits(if x > 0.0 { bits + 1 } else { bits - 1 })
+}
+
 /// A closed interval of floats `[lo, hi]` holding an exact real; each operation rounds to
 /// nearest and then steps one float outward, so the exact result stays inside.
 #[derive(Clone, Copy, Debug)]
@@ -863,8 +875,8 @@ impl Fi {
 
     fn widened(lo: f64, hi: f64) -> Fi {
         Fi {
-            lo: lo.next_down(),
-            hi: hi.next_up(),
+            lo: -next_up(-lo),
+            hi: next_up(hi),
         }
     }
 
@@ -993,6 +1005,11 @@ mod tests {
                 assert_eq!(p.sign_at(t), exact);
             }
         }
+        // one float outward, both ways
+        assert_eq!(next_up(1.0), 1.0 + f64::EPSILON);
+        assert_eq!(-next_up(-1.0), 1.0 - f64::EPSILON / 2.0);
+        assert_eq!(next_up(-0.0), f64::from_bits(1));
+        assert_eq!(next_up(f64::MAX), f64::INFINITY);
         // the filter answers the common case, and every root of p reached the exact route
         assert!(answered > 300 && zeros > 100, "{answered} {zeros}");
     }

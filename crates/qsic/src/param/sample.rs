@@ -14,18 +14,24 @@
 //! The homogenized parameterization is evaluated at `t = U₀/U₁` when `|t| ≤ 1`, else with
 //! the reversed coefficients at `1/t`: Horner's rule always runs on `[−1, 1]`. Levin's form
 //! `a ± d√s` is homogeneous of degree `D = max(deg a, deg d + 2)` with `s` a quartic form.
-//! Arc ends are the exact roots of `s`, approximated by [`AlgebraicReal::to_f64`] (Newton's
-//! method inside the isolating interval; exact refinement to `2⁻⁶⁰` when floats cannot
-//! bracket the root); coefficients over ℚ(√δ) go to floats through `√δ` in double-double,
-//! never through a refined rational (the double-double copies for retries are made on the
-//! first retry only). `s` is clamped at 0, which moves
+//! Arc ends are the exact roots of `s`, approximated by Newton's method on `s` (evaluated in
+//! double-double) inside the root's isolating interval (one simple root there), by
+//! [`AlgebraicReal::to_f64`] where that does not bracket it or the root is ill-conditioned. Coefficients go to floats
+//! once, through double-double: over ℚ(√δ) `c₀ + c₁√δ` is summed where the terms agree in
+//! sign, else computed as `(c₀² − c₁²δ)/(c₀ − c₁√δ)` with the integer norm exact, so that
+//! no cancellation costs precision (the same double-doubles serve the retries). `s` is
+//! clamped at 0, which moves
 //! a point off the curve by `O(|s|)` only, because `aᵀMd ≡ 0` cancels the first-order error
 //! of `√s`. An evaluation whose rounding bound exceeds `10⁻¹⁰·‖X‖` (a sheet passing through
-//! the zero vector, a removable zero of Levin's form) is retried at a nearby parameter.
+//! the zero vector, a removable zero of Levin's form) is retried in double-double, then at a
+//! nearby parameter; the bound `Σₖ|cₖ||t|ᵏ` is first majorized by the precomputed `Σₖ|cₖ|`
+//! and computed only where that does not certify. Horner's rule runs on fixed-size arrays,
+//! unrolled for the usual degrees.
 //!
 //! # Density
 //! Each arc starts from a uniform grid in `θ` (together at least
-//! [`SampleOptions::points`] points per piece) and segments are bisected, from a work list,
+//! [`SampleOptions::points`] points per piece; `(sin θ, cos θ)` by rotations of the step,
+//! exact every 64 points), walked in one pass: segments are bisected, from a work list,
 //! until consecutive unit vectors are within [`MAX_ANGLE`] radians up to sign and, with a
 //! tolerance, the chord deviation in the chart is at most the tolerance (checked where the
 //! three points lie within [`AFFINE_RADIUS`] of the origin). At most [`MAX_DEPTH`] bisections
@@ -36,13 +42,15 @@
 //! coefficient of a component is rational, the crossings are the exact real roots of `h(X(u))`
 //! (for Levin's form of `h(a)² − h(d)²s`, the sheet from the signs of `h(a)` and `h(d)`),
 //! tangential touches included; otherwise the sign changes of `h` along the polyline,
-//! located by bisection. Affine coordinates are those of `X/h(X)` without the last
+//! located by regula falsi (Illinois). Affine coordinates are those of `X/h(X)` without the last
 //! coordinate whose coefficient in `h` is nonzero (`(x/w, y/w, z/w)` for the default).
 
 use super::curve::{Arc, ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue};
 use super::curve::{RealPiece, Sheet};
 use crate::error::Error;
+use qsic_algebra::field::NumberField;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring, Sign};
+use std::cell::RefCell;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Largest angle (radians) between consecutive unit vectors of a polyline, up to sign.
@@ -185,7 +193,8 @@ pub struct Sampled {
 /// [`Error::Limit`] when more than [`MAX_POINTS`] points are requested or needed;
 /// [`Error::InvalidShape`] for a zero chart, a non-positive tolerance or zero points;
 /// [`Error::Algebra`] when a coefficient is beyond the range of `f64`, a piece has no
-/// parameterization, or the refinement does not converge within [`MAX_DEPTH`].
+/// parameterization (or one of degree above 8), or the refinement does not converge within
+/// [`MAX_DEPTH`].
 ///
 /// # Examples
 /// ```
@@ -218,8 +227,12 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
         return Err(Error::InvalidShape("the tolerance must be positive".into()));
     }
     let chart = options.chart()?;
+    let approx = Approximations::default();
     let mut budget = MAX_POINTS;
     let mut pieces = Vec::with_capacity(curve.pieces.len());
+    // one sampler per component, made when its first piece is met
+    let mut samplers: Vec<Option<Sampler>> = Vec::new();
+    samplers.resize_with(curve.components.len(), || None);
     for piece in &curve.pieces {
         let sampled = match piece {
             RealPiece::Point { component, point } => point_piece(*component, point, &chart)?,
@@ -235,17 +248,22 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
                     .ok_or_else(|| {
                         Error::Algebra(format!("real piece of component {component} has no param"))
                     })?;
-                let sampler = Sampler {
-                    eval: Evaluator::new(param)?,
-                    crossings: if lies_in_plane(param, &chart.exact) {
-                        Crossings::InPlane
-                    } else {
-                        exact_crossings(&ExactParam::new(param), &chart.exact)
-                    },
-                    singular: singular_params(curve, param, &chart.exact),
-                    chart: &chart,
-                    tolerance: options.tolerance,
-                };
+                let slot = &mut samplers[*component];
+                if slot.is_none() {
+                    *slot = Some(Sampler {
+                        eval: Evaluator::new(param)?,
+                        crossings: if lies_in_plane(param, &chart.exact) {
+                            Crossings::InPlane
+                        } else {
+                            exact_crossings(&ExactParam::new(param), &chart.exact)
+                        },
+                        singular: singular_params(curve, param, &chart.exact),
+                        chart: &chart,
+                        tolerance: options.tolerance,
+                        approx: &approx,
+                    });
+                }
+                let sampler = slot.as_ref().expect("made above");
                 sampler.piece(*component, arcs, *closed, options.points, &mut budget)?
             }
         };
@@ -288,39 +306,96 @@ struct Chart {
 }
 
 impl Chart {
+    #[inline(always)]
     fn value(&self, x: &[f64; 4]) -> f64 {
-        (0..4).map(|i| self.h[i] * x[i]).sum()
+        dot(&self.h, x)
     }
 
     /// Affine coordinates of `x`, `None` at infinity.
     fn affine(&self, x: &[f64; 4]) -> Option<[f64; 3]> {
-        let h = self.value(x);
+        self.affine_with(x, self.value(x))
+    }
+
+    /// [`Chart::affine`] with `h = self.value(x)` given.
+    fn affine_with(&self, x: &[f64; 4], h: f64) -> Option<[f64; 3]> {
         if h == 0.0 {
             return None;
         }
-        let mut out = [0.0; 3];
-        let mut k = 0;
-        for (i, v) in x.iter().enumerate() {
-            if i != self.drop {
-                out[k] = v / h;
-                k += 1;
-            }
-        }
-        Some(out)
+        let keep = |k: usize| if k < self.drop { k } else { k + 1 };
+        Some([x[keep(0)] / h, x[keep(1)] / h, x[keep(2)] / h])
     }
 }
 
-fn to_f64(c: &Number) -> Result<f64, Error> {
-    // double-double keeps ~106 bits of the terms: enough for a double unless they cancel
-    // by more than 2⁵⁰
-    let v = sqrt_field_dd(c, 50).map_or_else(|| c.to_f64(), |d| d.0 + d.1);
-    if v.is_finite() {
-        Ok(v)
-    } else {
-        Err(Error::Algebra(format!(
-            "coefficient {c} is beyond the range of f64"
-        )))
+/// Converts coefficients to floats, `√δ` in double-double made once per field.
+#[derive(Default)]
+struct Converter {
+    /// Each field met, with `α = ±√δ` in double-double and `δ` (`None`: not a field
+    /// `ℚ(√δ)`).
+    roots: Vec<(NumberField, Option<(Dd, IBig)>)>,
+}
+
+/// A coefficient as a float, and in double-double (about 104 bits) where that is cheap:
+/// rationals and ℚ(√δ).
+struct Converted {
+    value: f64,
+    dd: Option<Dd>,
+}
+
+impl Converter {
+    /// `α` in double-double and `δ` when the field of `c` is ℚ(√δ) generated by a root of
+    /// `x² − δ` (the fields of Levin's form, [`super::curve::sqrt_field`]).
+    fn root(&mut self, c: &Number) -> Option<(Dd, IBig)> {
+        let k = c.field().filter(|_| !c.numerator().is_constant())?;
+        if let Some((_, r)) = self.roots.iter().find(|(f, _)| f.same_as(k)) {
+            return r.clone();
+        }
+        let r = sqrt_generator_dd(k);
+        self.roots.push((k.clone(), r.clone()));
+        r
     }
+
+    /// `c` as a float and in double-double (module docs); [`Number::to_f64`] where the
+    /// double-double is not finite or not available.
+    fn convert(&mut self, c: &Number) -> Result<Converted, Error> {
+        let num = c.numerator();
+        let dd = if num.is_constant() {
+            let n = num.coeffs().first().map_or(Dd::default(), int_dd);
+            Some(n.div(int_dd(c.denominator())))
+        } else {
+            self.root(c)
+                .and_then(|(r, delta)| sqrt_field_value(num, r, &delta))
+                .map(|v| v.div(int_dd(c.denominator())))
+        }
+        .filter(|v| v.0.is_finite() && v.1.is_finite());
+        let value = dd.map_or_else(|| c.to_f64(), |v| v.0 + v.1);
+        if !value.is_finite() {
+            return Err(Error::Algebra(format!(
+                "coefficient {c} is beyond the range of f64"
+            )));
+        }
+        Ok(Converted { value, dd })
+    }
+}
+
+/// `c₀ + c₁α` with `α = ±√δ` given in double-double: the sum where the terms agree in sign,
+/// else `(c₀² − c₁²δ)/(c₀ − c₁α)` with the integer norm exact, so that no cancellation
+/// costs precision. `None` for a representative of higher degree.
+fn sqrt_field_value(num: &Poly, root: Dd, delta: &IBig) -> Option<Dd> {
+    let (c0, c1) = match num.coeffs() {
+        [c0] => (c0, &IBig::ZERO),
+        [c0, c1] => (c0, c1),
+        _ => return None,
+    };
+    let (t0, t1) = (int_dd(c0), int_dd(c1).mul(root));
+    if t0.0 == 0.0 || t1.0 == 0.0 || (t0.0 > 0.0) == (t1.0 > 0.0) {
+        return Some(t0.add(t1));
+    }
+    let norm = c0 * c0 - c1 * c1 * delta;
+    Some(int_dd(&norm).div(t0.add(t1.neg())))
+}
+
+fn to_f64(c: &Number) -> Result<f64, Error> {
+    Converter::default().convert(c).map(|c| c.value)
 }
 
 fn unit(x: [f64; 4]) -> Option<[f64; 4]> {
@@ -328,8 +403,9 @@ fn unit(x: [f64; 4]) -> Option<[f64; 4]> {
     (n > 0.0 && n.is_finite()).then(|| x.map(|v| v / n))
 }
 
+#[inline(always)]
 fn dot(a: &[f64; 4], b: &[f64; 4]) -> f64 {
-    (0..4).map(|i| a[i] * b[i]).sum()
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]
 }
 
 fn point_piece(
@@ -370,20 +446,58 @@ fn point_piece(
     })
 }
 
+/// Most coefficients of one coordinate: homogeneous degree at most 8 (a quartic has 4).
+const MAX_TERMS: usize = 9;
+
+/// Four coordinates at once.
+type Lanes = [f64; 4];
+
+/// The coefficients in double-double, laid out as in [`Evaluator`].
+#[derive(Clone)]
+struct DdCoeffs {
+    x: [[Dd; 4]; MAX_TERMS],
+    d: [[Dd; 4]; MAX_TERMS],
+    s: [Dd; 5],
+}
+
+impl Default for DdCoeffs {
+    fn default() -> Self {
+        DdCoeffs {
+            x: [[Dd::default(); 4]; MAX_TERMS],
+            d: [[Dd::default(); 4]; MAX_TERMS],
+            s: [Dd::default(); 5],
+        }
+    }
+}
+
 /// Homogeneous float coefficients of a parameterization (increasing powers of `u`, padded
-/// to the homogeneous degree) and their absolute values for rounding bounds.
+/// to the homogeneous degree `D`), one [`Lanes`] per power, and the sums of their absolute
+/// values: `Σₖ|cₖ|` bounds the Horner bound `Σₖ|cₖ||t|ᵏ` on `[−1, 1]`, so that one
+/// comparison certifies most evaluations and the exact bound is computed only where it
+/// fails.
 struct Evaluator<'a> {
-    /// `X` (rational) or `a` (Levin), `D + 1` coefficients each.
-    x: [Vec<f64>; 4],
-    /// `d` (Levin), `D − 1` coefficients each; empty for a rational param.
-    d: [Vec<f64>; 4],
-    /// `s`, five coefficients (Levin); empty for a rational param.
-    s: Vec<f64>,
+    /// `X` (rational) or `a` (Levin), `D + 1` powers used.
+    x: [Lanes; MAX_TERMS],
+    /// `d` (Levin), `D − 1` powers used.
+    d: [Lanes; MAX_TERMS],
+    /// `s` (Levin), five coefficients.
+    s: [f64; 5],
+    /// `x`, `d`, `s` from the highest power down (Horner's order for `|t| ≤ 1`).
+    x_desc: [Lanes; MAX_TERMS],
+    d_desc: [Lanes; MAX_TERMS],
+    s_desc: [f64; 5],
+    /// Levin's form (else rational).
+    levin: bool,
+    /// The largest `Σₖ|xₖᵢ|` and `Σₖ|dₖᵢ|` over the coordinates `i`.
+    x_abs_max: f64,
+    d_abs_max: f64,
     /// Relative rounding of one evaluation, per unit of the bound.
     gamma: f64,
-    /// The same coefficients in double-double (`hi + lo`), for the retry of an
-    /// ill-conditioned evaluation: `[x₀…x₃, d₀…d₃, s]`, computed on the first retry.
-    dd: std::cell::OnceCell<Vec<Vec<Dd>>>,
+    /// The double-double coefficients made with the floats, when all came cheaply.
+    quick_dd: Option<Box<DdCoeffs>>,
+    /// The double-double coefficients for the retry of an ill-conditioned evaluation when
+    /// `quick_dd` is missing, computed on the first retry.
+    dd: std::cell::OnceCell<Box<DdCoeffs>>,
     /// The parameterization (for `dd`).
     param: &'a ComponentParam,
     /// The homogeneous degree `D`.
@@ -417,12 +531,14 @@ impl Dd {
         let e = self.0.mul_add(o.0, -p);
         Dd::two_sum(p, e + self.0 * o.1 + self.1 * o.0)
     }
-    /// `self / n` for a positive integer `n` (two quotient digits).
-    fn div_f64_int(self, n: &IBig) -> Dd {
-        let d = int_dd(n);
-        let q1 = self.0 / d.0;
-        let r = self.add(d.mul_f64(-q1));
-        let q2 = r.0 / d.0;
+    fn neg(self) -> Dd {
+        Dd(-self.0, -self.1)
+    }
+    /// `self / o` (two quotient digits).
+    fn div(self, o: Dd) -> Dd {
+        let q1 = self.0 / o.0;
+        let r = self.add(o.mul_f64(-q1));
+        let q2 = r.0 / o.0;
         Dd::two_sum(q1, q2)
     }
     /// `√self` (0 for a negative value: `s` clamped at its roots).
@@ -433,56 +549,66 @@ impl Dd {
         let r = self.0.sqrt();
         // one Newton step: r + (self − r²)/(2r)
         let sq = Dd(r, 0.0).mul(Dd(r, 0.0));
-        let diff = self.add(Dd(-sq.0, -sq.1));
+        let diff = self.add(sq.neg());
         Dd::two_sum(r, diff.0 / (2.0 * r))
+    }
+}
+
+/// The integer value of a finite, integral `x`, exactly.
+fn integral_f64_to_ibig(x: f64) -> IBig {
+    let bits = x.to_bits();
+    let exp = ((bits >> 52) & 0x7ff) as i64 - 1075;
+    let mantissa = IBig::from((bits & ((1u64 << 52) - 1)) | (1u64 << 52));
+    let m = if exp >= 0 {
+        mantissa << exp as usize
+    } else {
+        mantissa >> (-exp) as usize
+    };
+    if x < 0.0 {
+        -m
+    } else {
+        m
     }
 }
 
 /// An integer in double-double (exact below `2¹⁰⁶` in magnitude, rounded beyond).
 fn int_dd(v: &IBig) -> Dd {
+    if let Ok(small) = i128::try_from(v) {
+        // hi rounds to nearest; for |v| < 2¹²⁷ the rest is exact in i128
+        let hi = small as f64;
+        if hi.abs() < 1.0e38 {
+            return Dd::two_sum(hi, (small - hi as i128) as f64);
+        }
+    }
     let hi = v.to_f64().value();
-    if hi.abs() < 9.0e15 {
+    if hi.abs() < 9.0e15 || !hi.is_finite() {
         return Dd(hi, 0.0);
     }
-    let lo = RBig::try_from(hi).map_or(0.0, |h| (RBig::from(v.clone()) - h).to_f64().value());
+    // |hi| ≥ 2⁵³: an integer, so the remainder is exact
+    let lo = (v - integral_f64_to_ibig(hi)).to_f64().value();
     Dd(hi, lo)
 }
 
-/// `c` in double-double when its field is ℚ(√δ) generated by a root of `x² − δ` (the fields
-/// of Levin's form, [`super::curve::sqrt_field`]): `±√δ` by a Newton step in double-double,
-/// the representative by Horner's rule; `None` for other fields, and when the terms cancel
-/// by more than `2^max_loss` (the ~106 bits kept are relative to the terms, not the sum).
-fn sqrt_field_dd(c: &Number, max_loss: i32) -> Option<Dd> {
-    let k = c.field().filter(|_| !c.numerator().is_constant())?;
+/// `α` in double-double and `δ` when `α = ±√δ`, a root of `x² − δ` (Newton step in
+/// double-double).
+fn sqrt_generator_dd(k: &NumberField) -> Option<(Dd, IBig)> {
     let alpha = k.alpha();
-    let m = alpha.poly();
-    let delta = match m.coeffs() {
+    let delta = match alpha.poly().coeffs() {
         [c0, c1, c2] if c1.is_zero() && *c2 == IBig::ONE && *c0 < IBig::ZERO => -c0.clone(),
         _ => return None,
     };
-    let mut root = int_dd(&delta).sqrt();
-    if alpha.interval().hi() <= &RBig::ZERO {
-        root = Dd(-root.0, -root.1);
-    }
-    let mut v = Dd::default();
-    let mut size = 0.0f64;
-    for coef in c.numerator().coeffs().iter().rev() {
-        let term = int_dd(coef);
-        v = v.mul(root).add(term);
-        size = size * root.0.abs() + term.0.abs();
-    }
-    let kept = v.0.abs() * 2f64.powi(max_loss);
-    if kept.is_nan() || kept < size {
-        return None;
-    }
-    Some(v.div_f64_int(c.denominator()))
+    let root = int_dd(&delta).sqrt();
+    let root = if alpha.interval().hi() <= &RBig::ZERO {
+        root.neg()
+    } else {
+        root
+    };
+    Some((root, delta))
 }
 
-/// `c` to about 106 bits: its value at a rational within `2⁻¹²⁰` of `α`, split in two floats.
+/// `c` to about 106 bits where [`Converter`] has no double-double: its value at a rational
+/// within `2⁻¹²⁰` of `α`, split in two floats.
 fn to_dd(c: &Number) -> Dd {
-    if let Some(v) = sqrt_field_dd(c, 2) {
-        return v;
-    }
     let v = match c.field().filter(|_| !c.numerator().is_constant()) {
         None => RBig::from(c.numerator().leading()) / RBig::from(c.denominator().clone()),
         Some(k) => {
@@ -497,44 +623,113 @@ fn to_dd(c: &Number) -> Dd {
     Dd(hi, lo)
 }
 
-fn dd_padded(p: &NumberPoly, len: usize) -> Vec<Dd> {
-    let mut c: Vec<Dd> = p.coeffs().iter().map(to_dd).collect();
-    c.resize(len, Dd::default());
-    c
+/// Horner's rule on four coordinates at once: `Σₖ cₖ tᵏ`, or `Σₖ cₖ t^(n−1−k)` reversed.
+#[inline(always)]
+fn horner_lanes(c: &[Lanes], t: f64, rev: bool) -> Lanes {
+    let mut v = [0.0; 4];
+    let mut step = |k: &Lanes| {
+        for i in 0..4 {
+            v[i] = v[i] * t + k[i];
+        }
+    };
+    if rev {
+        c.iter().for_each(&mut step);
+    } else {
+        c.iter().rev().for_each(&mut step);
+    }
+    v
 }
 
-fn padded(p: &NumberPoly, len: usize) -> Result<Vec<f64>, Error> {
-    let mut c = p
-        .coeffs()
-        .iter()
-        .map(to_f64)
-        .collect::<Result<Vec<_>, _>>()?;
-    c.resize(len, 0.0);
-    Ok(c)
+/// [`horner_lanes`] of the absolute values at `|t|`: the rounding bound's majorant.
+fn horner_lanes_abs(c: &[Lanes], t: f64, rev: bool) -> Lanes {
+    let at = t.abs();
+    let mut v = [0.0; 4];
+    let mut step = |k: &Lanes| {
+        for i in 0..4 {
+            v[i] = v[i] * at + k[i].abs();
+        }
+    };
+    if rev {
+        c.iter().for_each(&mut step);
+    } else {
+        c.iter().rev().for_each(&mut step);
+    }
+    v
+}
+
+#[inline(always)]
+fn horner_scalar(c: &[f64; 5], t: f64, rev: bool) -> f64 {
+    if rev {
+        c.iter().fold(0.0, |v, k| v * t + k)
+    } else {
+        c.iter().rev().fold(0.0, |v, k| v * t + k)
+    }
+}
+
+fn horner_dd(c: &[Dd], t: f64, rev: bool) -> Dd {
+    let mut v = Dd::default();
+    let mut step = |k: &Dd| v = v.mul_f64(t).add(*k);
+    if rev {
+        c.iter().for_each(&mut step);
+    } else {
+        c.iter().rev().for_each(&mut step);
+    }
+    v
+}
+
+/// Newton's method on `f` (value, derivative) safeguarded by bisection in `(lo, hi)`, where
+/// `f(lo) = flo` and `f(hi)` have opposite signs: a float near the root.
+fn newton_bracketed(f: &dyn Fn(f64) -> (f64, f64), lo: f64, hi: f64, flo: f64) -> f64 {
+    let (mut a, mut b) = (lo, hi);
+    let mut x = 0.5 * (a + b);
+    for _ in 0..200 {
+        let (fx, dfx) = f(x);
+        if fx == 0.0 || !fx.is_finite() {
+            return x;
+        }
+        if (fx < 0.0) == (flo < 0.0) {
+            a = x;
+        } else {
+            b = x;
+        }
+        let newton = x - fx / dfx;
+        let next = if a < newton && newton < b {
+            newton
+        } else {
+            0.5 * (a + b)
+        };
+        if next == x
+            || (next - x).abs() <= 2.0 * f64::EPSILON * x.abs()
+            || b - a <= 4.0 * f64::EPSILON * a.abs().max(b.abs())
+        {
+            return next;
+        }
+        x = next;
+    }
+    x
+}
+
+/// `X(U₀, U₁)` as `t = U₀/U₁` (`|t| ≤ 1`) or `t = U₁/U₀` with the coefficients reversed.
+fn reduced_parameter(u: (f64, f64)) -> (f64, bool) {
+    if u.1.abs() >= u.0.abs() {
+        (u.0 / u.1, false)
+    } else {
+        (u.1 / u.0, true)
+    }
 }
 
 impl<'a> Evaluator<'a> {
     fn new(param: &'a ComponentParam) -> Result<Evaluator<'a>, Error> {
         let deg = |p: &NumberPoly| p.degree().unwrap_or(0);
-        match param {
-            ComponentParam::Point(_) => Err(Error::Algebra(
-                "a curve piece with a point parameterization".into(),
-            )),
+        let (a, d, s, big_d, levin) = match param {
+            ComponentParam::Point(_) => {
+                return Err(Error::Algebra(
+                    "a curve piece with a point parameterization".into(),
+                ))
+            }
             ComponentParam::Rational { x, .. } => {
-                let len = x.iter().map(deg).max().unwrap_or(0) + 1;
-                let mut out: [Vec<f64>; 4] = Default::default();
-                for i in 0..4 {
-                    out[i] = padded(&x[i], len)?;
-                }
-                Ok(Evaluator {
-                    x: out,
-                    d: Default::default(),
-                    s: Vec::new(),
-                    gamma: 4.0 * (len as f64 + 2.0) * f64::EPSILON,
-                    dd: std::cell::OnceCell::new(),
-                    param,
-                    big_d: len - 1,
-                })
+                let big_d = x.iter().map(deg).max().unwrap_or(0);
+                (x, None, None, big_d, false)
             }
             ComponentParam::Levin {
                 a, d, s, degree, ..
@@ -549,100 +744,331 @@ impl<'a> Evaluator<'a> {
                     .unwrap_or(0)
                     .max(d.iter().map(deg).max().unwrap_or(0) + 2)
                     .max(*degree);
-                let mut xa: [Vec<f64>; 4] = Default::default();
-                let mut xd: [Vec<f64>; 4] = Default::default();
-                for i in 0..4 {
-                    xa[i] = padded(&a[i], big_d + 1)?;
-                    xd[i] = padded(&d[i], big_d - 1)?;
+                (a, Some(d), Some(s), big_d, true)
+            }
+        };
+        if big_d >= MAX_TERMS {
+            return Err(Error::Algebra(format!(
+                "a parameterization of degree {big_d} (at most {} sampled)",
+                MAX_TERMS - 1
+            )));
+        }
+        let mut conv = Converter::default();
+        let mut dd = Box::<DdCoeffs>::default();
+        let mut all_dd = true;
+        let mut put = |c: &Number, f: &mut f64, g: &mut Dd| -> Result<(), Error> {
+            let v = conv.convert(c)?;
+            *f = v.value;
+            match v.dd {
+                Some(x) => *g = x,
+                None => all_dd = false,
+            }
+            Ok(())
+        };
+        let mut x = [[0.0; 4]; MAX_TERMS];
+        let mut dv = [[0.0; 4]; MAX_TERMS];
+        let mut sv = [0.0; 5];
+        for i in 0..4 {
+            for (k, c) in a[i].coeffs().iter().enumerate() {
+                put(c, &mut x[k][i], &mut dd.x[k][i])?;
+            }
+            if let Some(d) = d {
+                for (k, c) in d[i].coeffs().iter().enumerate() {
+                    put(c, &mut dv[k][i], &mut dd.d[k][i])?;
                 }
-                Ok(Evaluator {
-                    x: xa,
-                    d: xd,
-                    s: padded(s, 5)?,
-                    gamma: 8.0 * (big_d as f64 + 4.0) * f64::EPSILON,
-                    dd: std::cell::OnceCell::new(),
-                    param,
-                    big_d,
-                })
             }
         }
+        if let Some(s) = s {
+            for (k, c) in s.coeffs().iter().enumerate() {
+                put(c, &mut sv[k], &mut dd.s[k])?;
+            }
+        }
+        let abs_sum = |c: &[Lanes]| -> f64 {
+            (0..4)
+                .map(|i| c.iter().map(|k| k[i].abs()).sum::<f64>())
+                .fold(0.0, f64::max)
+        };
+        let n = big_d + 1;
+        let mut x_desc = [[0.0; 4]; MAX_TERMS];
+        let mut d_desc = [[0.0; 4]; MAX_TERMS];
+        for k in 0..n {
+            x_desc[k] = x[n - 1 - k];
+        }
+        if levin {
+            for k in 0..n - 2 {
+                d_desc[k] = dv[n - 3 - k];
+            }
+        }
+        let mut s_desc = sv;
+        s_desc.reverse();
+        Ok(Evaluator {
+            x_abs_max: abs_sum(&x),
+            d_abs_max: abs_sum(&dv),
+            x_desc,
+            d_desc,
+            s_desc,
+            x,
+            d: dv,
+            s: sv,
+            levin,
+            gamma: if levin {
+                8.0 * (big_d as f64 + 4.0) * f64::EPSILON
+            } else {
+                4.0 * (big_d as f64 + 3.0) * f64::EPSILON
+            },
+            quick_dd: all_dd.then_some(dd),
+            dd: std::cell::OnceCell::new(),
+            param,
+            big_d,
+        })
     }
 
-    /// `X(U₀, U₁)` on `sheet` up to a nonzero factor, `None` where rounding could exceed
-    /// `10⁻¹⁰·‖X‖`.
-    fn eval(&self, u: (f64, f64), sheet: Sheet) -> Option<[f64; 4]> {
-        let (t, rev) = if u.1.abs() >= u.0.abs() {
-            (u.0 / u.1, false)
-        } else {
-            (u.1 / u.0, true)
+    /// The unit vector of `X(U₀, U₁)` on `sheet` (up to sign), `None` where rounding could
+    /// exceed `10⁻¹⁰·‖X‖` even in double-double.
+    fn eval_unit(&self, u: (f64, f64), sheet: Sheet) -> Option<[f64; 4]> {
+        let (t, rev) = reduced_parameter(u);
+        // the usual degrees with their sizes known at compile time (unrolled Horner)
+        let (x, root) = match (self.levin, self.big_d) {
+            (true, 2) => self.values::<3, 1>(t, rev, sheet),
+            (true, 3) => self.values::<4, 2>(t, rev, sheet),
+            (true, 4) => self.values::<5, 3>(t, rev, sheet),
+            (false, 1) => self.values::<2, 0>(t, rev, sheet),
+            (false, 2) => self.values::<3, 0>(t, rev, sheet),
+            (false, 3) => self.values::<4, 0>(t, rev, sheet),
+            (false, 4) => self.values::<5, 0>(t, rev, sheet),
+            _ => self.values_any(t, rev, sheet),
         };
-        let at = t.abs();
-        let horner = |c: &[f64]| -> (f64, f64) {
-            let (mut v, mut b) = (0.0, 0.0);
-            let mut step = |k: f64| {
-                v = v * t + k;
-                b = b * at + k.abs();
-            };
-            if rev {
-                c.iter().copied().for_each(&mut step);
-            } else {
-                c.iter().rev().copied().for_each(&mut step);
-            }
-            (v, b)
-        };
-        let mut x = [0.0; 4];
-        let mut bound = 0.0f64;
-        let root = if self.s.is_empty() {
-            None
-        } else {
-            let (s, _) = horner(&self.s);
-            Some(s.max(0.0).sqrt())
-        };
-        for i in 0..4 {
-            let (v, b) = horner(&self.x[i]);
-            x[i] = v;
-            let mut bi = b;
-            if let Some(r) = root {
-                let (dv, db) = horner(&self.d[i]);
-                let sign = if sheet == Sheet::Minus { -1.0 } else { 1.0 };
-                x[i] += sign * dv * r;
-                bi += db * r;
-            }
-            bound = bound.max(bi);
+        let norm = dot(&x, &x).sqrt();
+        // the majorant Σ|cₖ| first, the bound at |t| where it does not certify
+        let cheap = self.x_abs_max + self.d_abs_max * root;
+        if norm.is_finite() && norm > 0.0 && self.gamma * cheap <= 1e-10 * norm {
+            return Some(x.map(|v| v / norm));
         }
-        let norm = x.iter().map(|v| v * v).sum::<f64>().sqrt();
+        self.certify(t, rev, sheet, x, norm, root)
+    }
+
+    /// `X` (and `√s`, 0 for a rational param) by Horner's rule with `NA` coefficients of `x`
+    /// and `ND` of `d` (`ND = 0`: rational).
+    #[inline(always)]
+    fn values<const NA: usize, const ND: usize>(
+        &self,
+        t: f64,
+        rev: bool,
+        sheet: Sheet,
+    ) -> (Lanes, f64) {
+        let (xc, dc, sc) = if rev {
+            (&self.x, &self.d, &self.s)
+        } else {
+            (&self.x_desc, &self.d_desc, &self.s_desc)
+        };
+        let mut v = [0.0; 4];
+        for c in &xc[..NA] {
+            for i in 0..4 {
+                v[i] = v[i] * t + c[i];
+            }
+        }
+        if ND == 0 {
+            return (v, 0.0);
+        }
+        let s = sc.iter().fold(0.0, |acc, c| acc * t + c);
+        let root = s.max(0.0).sqrt();
+        let mut w = [0.0; 4];
+        for c in &dc[..ND] {
+            for i in 0..4 {
+                w[i] = w[i] * t + c[i];
+            }
+        }
+        let sr = if sheet == Sheet::Minus { -root } else { root };
+        for i in 0..4 {
+            v[i] += sr * w[i];
+        }
+        (v, root)
+    }
+
+    /// [`Evaluator::values`] for any degree.
+    fn values_any(&self, t: f64, rev: bool, sheet: Sheet) -> (Lanes, f64) {
+        let n = self.big_d + 1;
+        let mut x = horner_lanes(&self.x[..n], t, rev);
+        let mut root = 0.0;
+        if self.levin {
+            root = horner_scalar(&self.s, t, rev).max(0.0).sqrt();
+            let dv = horner_lanes(&self.d[..n - 2], t, rev);
+            let sr = if sheet == Sheet::Minus { -root } else { root };
+            for i in 0..4 {
+                x[i] += sr * dv[i];
+            }
+        }
+        (x, root)
+    }
+
+    /// The rounding bound of `x` at `|t|`; the double-double evaluation where it is too
+    /// large.
+    #[cold]
+    fn certify(
+        &self,
+        t: f64,
+        rev: bool,
+        sheet: Sheet,
+        x: Lanes,
+        norm: f64,
+        root: f64,
+    ) -> Option<[f64; 4]> {
+        let n = self.big_d + 1;
+        let bx = horner_lanes_abs(&self.x[..n], t, rev);
+        let bd = if self.levin {
+            horner_lanes_abs(&self.d[..n - 2], t, rev)
+        } else {
+            [0.0; 4]
+        };
+        let bound = (0..4).map(|i| bx[i] + bd[i] * root).fold(0.0, f64::max);
         if norm.is_finite() && norm > 0.0 && self.gamma * bound <= 1e-10 * norm {
-            return Some(x);
+            return Some(x.map(|v| v / norm));
         }
         if !bound.is_finite() {
             return None;
         }
-        self.eval_dd(t, rev, sheet, bound)
+        self.eval_dd(t, rev, sheet, bound).and_then(unit)
     }
 
-    /// The double-double coefficients `[x₀…x₃, d₀…d₃, s]` (see `dd`).
-    fn dd(&self) -> &[Vec<Dd>] {
-        self.dd.get_or_init(|| match self.param {
-            ComponentParam::Rational { x, .. } => {
-                x.iter().map(|p| dd_padded(p, self.big_d + 1)).collect()
+    /// The root of `s` in `(lo, hi)` by Newton's method safeguarded by bisection, `s`
+    /// evaluated in double-double: `None` unless `s` has opposite signs at the ends (or the
+    /// interval is below the float resolution: its midpoint) and the root is well
+    /// conditioned (rounding moves it by at most `2⁻⁴²` relative).
+    fn root_of_s(&self, lo: f64, hi: f64) -> Option<f64> {
+        let close = |a: f64, b: f64| b - a <= 4.0 * f64::EPSILON * a.abs().max(b.abs());
+        if !(lo.is_finite() && hi.is_finite() && lo < hi) {
+            return None;
+        }
+        let sd = &self.dd().s;
+        // s(u) and s′(u) in floats; s(u) in double-double
+        let float = |u: f64| -> (f64, f64) {
+            self.s
+                .iter()
+                .rev()
+                .fold((0.0, 0.0), |(v, dv), &k| (v * u + k, dv * u + v))
+        };
+        let f = |u: f64| -> (f64, f64) {
+            let v = sd
+                .iter()
+                .rev()
+                .fold(Dd::default(), |v, k| v.mul_f64(u).add(*k));
+            (v.0 + v.1, float(u).1)
+        };
+        // a float Newton start where the floats bracket the root, polished in double-double
+        let (glo, ghi) = (float(lo).0, float(hi).0);
+        if glo * ghi < 0.0 {
+            let start = newton_bracketed(&float, lo, hi, glo);
+            let mut x = start;
+            for _ in 0..3 {
+                let (fx, dfx) = f(x);
+                let next = x - fx / dfx;
+                if !(lo < next && next < hi) {
+                    break;
+                }
+                let done = (next - x).abs() <= 2.0 * f64::EPSILON * x.abs();
+                x = next;
+                if done {
+                    let size = self
+                        .s
+                        .iter()
+                        .rev()
+                        .fold(0.0, |v: f64, k| v * x.abs() + k.abs());
+                    let err = 16.0 * 2f64.powi(-104) * size / f(x).1.abs();
+                    if err.is_finite() && err <= x.abs() * 2f64.powi(-42) {
+                        return Some(x);
+                    }
+                    break;
+                }
             }
-            ComponentParam::Levin { a, d, s, .. } => {
-                let mut dd: Vec<Vec<Dd>> = a.iter().map(|p| dd_padded(p, self.big_d + 1)).collect();
-                dd.extend(d.iter().map(|p| dd_padded(p, self.big_d - 1)));
-                dd.push(dd_padded(s, 5));
-                dd
+        }
+        let (flo, fhi) = (f(lo).0, f(hi).0);
+        let brackets = flo * fhi < 0.0;
+        if !brackets {
+            return close(lo, hi).then_some(0.5 * (lo + hi));
+        }
+        // accepted where the rounding of s (about 2⁻¹⁰⁴ of its terms) moves the root by at
+        // most |x|·2⁻⁴²
+        let conditioned = |x: f64| -> Option<f64> {
+            let size = self
+                .s
+                .iter()
+                .rev()
+                .fold(0.0, |v: f64, k| v * x.abs() + k.abs());
+            let err = 16.0 * 2f64.powi(-104) * size / f(x).1.abs();
+            (err.is_finite() && err <= x.abs() * 2f64.powi(-42)).then_some(x)
+        };
+        let (mut a, mut b) = (lo, hi);
+        let mut x = 0.5 * (a + b);
+        for _ in 0..200 {
+            let (fx, dfx) = f(x);
+            if fx == 0.0 {
+                return conditioned(x);
             }
-            ComponentParam::Point(_) => Vec::new(),
+            if !fx.is_finite() {
+                return None;
+            }
+            if (fx < 0.0) == (flo < 0.0) {
+                a = x;
+            } else {
+                b = x;
+            }
+            if close(a, b) {
+                return conditioned(0.5 * (a + b));
+            }
+            let newton = x - fx / dfx;
+            let next = if a < newton && newton < b {
+                newton
+            } else {
+                0.5 * (a + b)
+            };
+            if next == x || (next - x).abs() <= 2.0 * f64::EPSILON * x.abs() {
+                return conditioned(next);
+            }
+            x = next;
+        }
+        None
+    }
+
+    /// The double-double coefficients (see `quick_dd`, `dd`).
+    fn dd(&self) -> &DdCoeffs {
+        if let Some(q) = &self.quick_dd {
+            return q;
+        }
+        self.dd.get_or_init(|| {
+            let mut out = Box::<DdCoeffs>::default();
+            let (a, d, s) = match self.param {
+                ComponentParam::Rational { x, .. } => (x, None, None),
+                ComponentParam::Levin { a, d, s, .. } => (a, Some(d), Some(s)),
+                ComponentParam::Point(_) => return out,
+            };
+            for i in 0..4 {
+                for (k, c) in a[i].coeffs().iter().enumerate() {
+                    out.x[k][i] = to_dd(c);
+                }
+                if let Some(d) = d {
+                    for (k, c) in d[i].coeffs().iter().enumerate() {
+                        out.d[k][i] = to_dd(c);
+                    }
+                }
+            }
+            if let Some(s) = s {
+                for (k, c) in s.coeffs().iter().enumerate() {
+                    out.s[k] = to_dd(c);
+                }
+            }
+            out
         })
     }
 
-    /// [`Evaluator::eval`] in double-double arithmetic (`t` is exact), `None` where even
-    /// that rounding could exceed `10⁻¹⁰·‖X‖`.
+    /// `X` in double-double arithmetic (`t` is exact), `None` where even that rounding could
+    /// exceed `10⁻¹⁰·‖X‖`.
     fn eval_dd(&self, t: f64, rev: bool, sheet: Sheet, bound: f64) -> Option<[f64; 4]> {
         let dd = self.dd();
-        let horner = |c: &[Dd]| -> Dd {
+        let n = self.big_d + 1;
+        let root = self.levin.then(|| horner_dd(&dd.s, t, rev).sqrt());
+        let column = |c: &[[Dd; 4]], i: usize| -> Dd {
             let mut v = Dd::default();
-            let mut step = |k: &Dd| v = v.mul_f64(t).add(*k);
+            let mut step = |k: &[Dd; 4]| v = v.mul_f64(t).add(k[i]);
             if rev {
                 c.iter().for_each(&mut step);
             } else {
@@ -650,15 +1076,13 @@ impl<'a> Evaluator<'a> {
             }
             v
         };
-        let levin = !self.s.is_empty();
-        let root = levin.then(|| horner(&dd[8]).sqrt());
         let mut x = [0.0; 4];
         for i in 0..4 {
-            let mut v = horner(&dd[i]);
+            let mut v = column(&dd.x[..n], i);
             if let Some(r) = root {
-                let mut dr = horner(&dd[4 + i]).mul(r);
+                let mut dr = column(&dd.d[..n - 2], i).mul(r);
                 if sheet == Sheet::Minus {
-                    dr = Dd(-dr.0, -dr.1);
+                    dr = dr.neg();
                 }
                 v = v.add(dr);
             }
@@ -681,6 +1105,38 @@ struct Sample {
     singular: bool,
 }
 
+impl Sample {
+    fn new(theta: f64, x: [f64; 4]) -> Sample {
+        Sample {
+            theta,
+            x,
+            at_infinity: false,
+            singular: false,
+        }
+    }
+}
+
+/// Floats of the exact parameters met (arc ends, events), each approximated once per call
+/// (the same defining polynomial and isolating interval: the same number).
+#[derive(Default)]
+struct Approximations(RefCell<Vec<(AlgebraicReal, f64)>>);
+
+impl Approximations {
+    fn of(&self, r: &AlgebraicReal) -> f64 {
+        if let Some((_, v)) = self
+            .0
+            .borrow()
+            .iter()
+            .find(|(q, _)| q.poly() == r.poly() && q.interval() == r.interval())
+        {
+            return *v;
+        }
+        let v = r.to_f64();
+        self.0.borrow_mut().push((r.clone(), v));
+        v
+    }
+}
+
 /// The ends of an arc in `θ` and their exact points on ℙ¹.
 struct ArcSpan {
     theta: (f64, f64),
@@ -696,7 +1152,7 @@ fn projective(u: f64) -> (f64, f64) {
     }
 }
 
-fn span(range: &ParamRange) -> Result<ArcSpan, Error> {
+fn span(range: &ParamRange, approx: &dyn Fn(&AlgebraicReal) -> f64) -> Result<ArcSpan, Error> {
     let whole = ArcSpan {
         theta: (-FRAC_PI_2, FRAC_PI_2),
         ends: ((-1.0, 0.0), (1.0, 0.0)),
@@ -705,21 +1161,21 @@ fn span(range: &ParamRange) -> Result<ArcSpan, Error> {
         ParamRange::All => whole,
         ParamRange::Between(ParamValue::Infinity, ParamValue::Infinity) => whole,
         ParamRange::Between(ParamValue::Infinity, ParamValue::Finite(hi)) => {
-            let h = hi.to_f64();
+            let h = approx(hi);
             ArcSpan {
                 theta: (-FRAC_PI_2, h.atan()),
                 ends: ((-1.0, 0.0), projective(h)),
             }
         }
         ParamRange::Between(ParamValue::Finite(lo), ParamValue::Infinity) => {
-            let l = lo.to_f64();
+            let l = approx(lo);
             ArcSpan {
                 theta: (l.atan(), FRAC_PI_2),
                 ends: (projective(l), (1.0, 0.0)),
             }
         }
         ParamRange::Between(ParamValue::Finite(lo), ParamValue::Finite(hi)) => {
-            let (l, h) = (lo.to_f64(), hi.to_f64());
+            let (l, h) = (approx(lo), approx(hi));
             let mut end = h.atan();
             if hi <= lo {
                 end += PI;
@@ -991,34 +1447,74 @@ fn exact_crossings_of(exact: &ExactParam, h: &[RBig; 4]) -> Option<Vec<Crossing>
     }
 }
 
+/// The state of the walk along one arc: the last point and the segments still to check.
+struct Walk {
+    prev: Sample,
+    /// `h` at `prev`.
+    h_prev: f64,
+    stack: Vec<(Sample, u32)>,
+    /// Crossings of the plane at infinity located along the walk (not known exactly).
+    unknown: bool,
+}
+
 /// Samples the pieces of one component.
 struct Sampler<'a> {
     eval: Evaluator<'a>,
     crossings: Crossings,
-    /// The exact parameters of the curve's real singular points on this component.
-    /// The singular points' parameters, and whether each point is at infinity.
+    /// The exact parameters of the curve's real singular points on this component, and
+    /// whether each point is at infinity.
     singular: Vec<(ParamValue, bool)>,
     chart: &'a Chart,
     tolerance: Option<f64>,
+    approx: &'a Approximations,
 }
 
 impl Sampler<'_> {
+    /// A float of an arc end `r`: on Levin's form a root of `s`, found by Newton's method on
+    /// `s` inside the isolating interval of `r` (one simple root of `s` there);
+    /// [`AlgebraicReal::to_f64`] (once per call) where that does not bracket it or is
+    /// ill-conditioned.
+    fn end_value(&self, r: &AlgebraicReal) -> f64 {
+        if let (true, qsic_algebra::roots::RootInterval::Open(lo, hi)) =
+            (self.eval.levin, r.interval())
+        {
+            if let Some(v) = self
+                .eval
+                .root_of_s(lo.to_f64().value(), hi.to_f64().value())
+            {
+                return v;
+            }
+        }
+        self.approx.of(r)
+    }
+
     /// The point at `θ` on `sheet`, retried at nearby parameters inside `(lo, hi)` where
     /// rounding is too large.
     fn at(&self, theta: f64, lo: f64, hi: f64, sheet: Sheet) -> Result<Sample, Error> {
-        let offsets = [0.0, 1e-6, -1e-6, 1e-3, -1e-3, 0.03, -0.03, 0.2, -0.2];
+        let (s, c) = theta.sin_cos();
+        self.at_u(theta, (s, c), lo, hi, sheet)
+    }
+
+    /// [`Sampler::at`] with `u ≈ (sin θ, cos θ)` given (up to a positive factor).
+    fn at_u(
+        &self,
+        theta: f64,
+        u: (f64, f64),
+        lo: f64,
+        hi: f64,
+        sheet: Sheet,
+    ) -> Result<Sample, Error> {
+        if let Some(x) = self.eval.eval_unit(u, sheet) {
+            return Ok(Sample::new(theta, x));
+        }
+        let offsets = [1e-6, -1e-6, 1e-3, -1e-3, 0.03, -0.03, 0.2, -0.2];
         for f in offsets {
             let t = theta + f * (hi - lo);
-            if f != 0.0 && !(lo < t && t < hi) {
+            if !(lo < t && t < hi) {
                 continue;
             }
-            if let Some(x) = self.eval.eval((t.sin(), t.cos()), sheet).and_then(unit) {
-                return Ok(Sample {
-                    theta: t,
-                    x,
-                    at_infinity: false,
-                    singular: false,
-                });
+            if let Some(x) = self.eval.eval_unit(t.sin_cos(), sheet) {
+                return Ok(Sample::new(t, x));
             }
         }
         Err(Error::Algebra(format!(
@@ -1028,23 +1524,13 @@ impl Sampler<'_> {
 
     /// The point at an exact end of an arc (`u` on ℙ¹), nudged inwards if needed.
     fn at_end(&self, u: (f64, f64), theta: f64, other: f64, sheet: Sheet) -> Result<Sample, Error> {
-        if let Some(x) = self.eval.eval(u, sheet).and_then(unit) {
-            return Ok(Sample {
-                theta,
-                x,
-                at_infinity: false,
-                singular: false,
-            });
+        if let Some(x) = self.eval.eval_unit(u, sheet) {
+            return Ok(Sample::new(theta, x));
         }
         for f in [1e-9, 1e-6, 1e-3] {
             let t = theta + f * (other - theta);
-            if let Some(x) = self.eval.eval((t.sin(), t.cos()), sheet).and_then(unit) {
-                return Ok(Sample {
-                    theta: t,
-                    x,
-                    at_infinity: false,
-                    singular: false,
-                });
+            if let Some(x) = self.eval.eval_unit(t.sin_cos(), sheet) {
+                return Ok(Sample::new(t, x));
             }
         }
         Err(Error::Algebra(format!(
@@ -1085,115 +1571,247 @@ impl Sampler<'_> {
         Ok((chord_deviation(&a, &b, &c) > tol).then_some(m))
     }
 
-    /// The polyline of one arc, in increasing `θ`, with its exact crossings inserted.
-    fn arc(&self, arc: &Arc, n: usize, budget: &mut usize) -> Result<Vec<Sample>, Error> {
-        let sp = span(&arc.range)?;
+    /// The exact events on one arc (crossings of the plane at infinity, singular points),
+    /// as marked samples in increasing `θ` strictly inside `(t0, t1)`, and the marks of the
+    /// two ends `(first, last)`.
+    #[allow(clippy::type_complexity)]
+    fn events(
+        &self,
+        arc: &Arc,
+        (t0, t1): (f64, f64),
+        n: usize,
+        sheet: Sheet,
+    ) -> Result<(Vec<Sample>, [(bool, bool); 2]), Error> {
+        // (parameter, singular, at infinity)
+        let mut values: Vec<(&ParamValue, bool, bool)> = Vec::new();
+        if let Crossings::Exact(crossings) = &self.crossings {
+            for c in crossings {
+                if c.sheets.contains(&sheet) {
+                    values.push((&c.value, false, true));
+                }
+            }
+        }
+        values.extend(self.singular.iter().map(|(v, inf)| (v, true, *inf)));
+        let mut inner: Vec<Sample> = Vec::new();
+        let mut ends = [(false, false); 2];
+        for (value, singular, at_infinity) in values {
+            if !in_range(value, &arc.range) {
+                continue;
+            }
+            let (u, mut th) = match value {
+                ParamValue::Infinity => ((1.0, 0.0), FRAC_PI_2),
+                ParamValue::Finite(r) => {
+                    let v = self.approx.of(r);
+                    (projective(v), v.atan())
+                }
+            };
+            if th < t0 - 1e-12 {
+                th += PI;
+            }
+            if th > t1 + 1e-12 && (th - PI) >= t0 - 1e-12 {
+                th -= PI;
+            }
+            let th = th.clamp(t0, t1);
+            let mark = |g: &mut (bool, bool)| {
+                g.0 |= at_infinity;
+                g.1 |= singular;
+            };
+            // an end of the arc, or a new point in order
+            if (th - t0).abs() <= 1e-12 {
+                mark(&mut ends[0]);
+                continue;
+            }
+            if (th - t1).abs() <= 1e-12 {
+                mark(&mut ends[1]);
+                continue;
+            }
+            let other = if th - t0 < t1 - th { t1 } else { t0 };
+            let s = self.at_end(u, th, other, sheet)?;
+            let mut m = (false, false);
+            mark(&mut m);
+            if let Some(g) = inner
+                .iter_mut()
+                .find(|g| (g.theta - s.theta).abs() <= 1e-12)
+            {
+                // the same parameter as an event already placed (a singular point at
+                // infinity): one point with both marks
+                g.at_infinity |= m.0;
+                g.singular |= m.1;
+            } else {
+                let at = inner.partition_point(|g| g.theta <= s.theta);
+                inner.insert(
+                    at,
+                    Sample {
+                        at_infinity: m.0,
+                        singular: m.1,
+                        ..s
+                    },
+                );
+            }
+        }
+        // on the whole line the two ends are one point
+        if matches!(arc.range, ParamRange::All) {
+            let both = (ends[0].0 | ends[1].0, ends[0].1 | ends[1].1);
+            ends = [both, both];
+        }
+        // a point between two consecutive events with no grid point between them, so that
+        // every branch they cut has a point of its own besides its ends
+        let step = (t1 - t0) / (n as f64);
+        let grid_between = |a: f64, b: f64| {
+            let k = ((a - t0) / step).floor() + 1.0;
+            t0 + k * step < b - 1e-12 && k < n as f64
+        };
+        let mut marked: Vec<f64> = Vec::with_capacity(inner.len() + 2);
+        if ends[0] != (false, false) {
+            marked.push(t0);
+        }
+        marked.extend(inner.iter().map(|g| g.theta));
+        if ends[1] != (false, false) {
+            marked.push(t1);
+        }
+        for w in marked.windows(2) {
+            if w[1] > w[0] && !grid_between(w[0], w[1]) {
+                let th = 0.5 * (w[0] + w[1]);
+                let m = self.at(th, w[0], w[1], sheet)?;
+                let at = inner.partition_point(|g| g.theta <= m.theta);
+                inner.insert(at, m);
+            }
+        }
+        Ok((inner, ends))
+    }
+
+    /// Appends the polyline of one arc to `line`, in increasing `θ` (reversed for a reversed
+    /// arc), with its exact crossings inserted; its first point is left out when it is the
+    /// point `line` ends with (consecutive arcs share their end point unless one end was
+    /// nudged), the marks joined.
+    fn arc_into(
+        &self,
+        arc: &Arc,
+        n: usize,
+        budget: &mut usize,
+        line: &mut Vec<Sample>,
+    ) -> Result<(), Error> {
+        let sp = span(&arc.range, &|r| self.end_value(r))?;
         let (t0, t1) = sp.theta;
         let sheet = arc.sheet;
-        let levin = !self.eval.s.is_empty();
-        if levin == (sheet == Sheet::Only) {
+        if self.eval.levin == (sheet == Sheet::Only) {
             return Err(Error::Algebra(
                 "an arc's sheet does not match its parameterization".into(),
             ));
         }
-        let mut grid = Vec::with_capacity(n + 2);
-        grid.push(self.at_end(sp.ends.0, t0, t1, sheet)?);
-        for k in 1..n {
-            let th = t0 + (t1 - t0) * (k as f64) / (n as f64);
-            grid.push(self.at(th, t0, t1, sheet)?);
-        }
-        grid.push(self.at_end(sp.ends.1, t1, t0, sheet)?);
-        // exact events on this arc: crossings of the plane at infinity, singular points
-        // (parameter, singular, at infinity)
-        let mut events: Vec<(&ParamValue, bool, bool)> = Vec::new();
-        if let Crossings::Exact(crossings) = &self.crossings {
-            for c in crossings {
-                if c.sheets.contains(&sheet) {
-                    events.push((&c.value, false, true));
-                }
+        let (events, ends) = self.events(arc, sp.theta, n, sheet)?;
+        *budget = budget
+            .checked_sub(n + 1 + events.len())
+            .ok_or_else(too_many_points)?;
+        let marked = |mut s: Sample, (inf, sing): (bool, bool)| {
+            s.at_infinity |= inf;
+            s.singular |= sing;
+            s
+        };
+        let first = marked(self.at_end(sp.ends.0, t0, t1, sheet)?, ends[0]);
+        let last = marked(self.at_end(sp.ends.1, t1, t0, sheet)?, ends[1]);
+        let start = line.len();
+        line.reserve(n + n / 8 + events.len() + 4);
+        let joins = |a: &Sample, b: &Sample| dot(&a.x, &b.x).abs() >= 1.0 - 1e-12;
+        match line.last_mut() {
+            Some(l) if !arc.reversed && joins(l, &first) => {
+                l.at_infinity |= first.at_infinity;
+                l.singular |= first.singular;
             }
+            _ => line.push(first),
         }
-        events.extend(self.singular.iter().map(|(v, inf)| (v, true, *inf)));
-        {
-            for (value, singular, at_infinity) in events {
-                if !in_range(value, &arc.range) {
-                    continue;
-                }
-                let (u, mut th) = match value {
-                    ParamValue::Infinity => ((1.0, 0.0), FRAC_PI_2),
-                    ParamValue::Finite(r) => {
-                        let v = r.to_f64();
-                        (projective(v), v.atan())
-                    }
-                };
-                if th < t0 - 1e-12 {
-                    th += PI;
-                }
-                if th > t1 + 1e-12 && (th - PI) >= t0 - 1e-12 {
-                    th -= PI;
-                }
-                let th = th.clamp(t0, t1);
-                let other = if th - t0 < t1 - th { t1 } else { t0 };
-                let mut s = self.at_end(u, th, other, sheet)?;
-                let mark = |g: &mut Sample| {
-                    g.singular |= singular;
-                    g.at_infinity |= at_infinity;
-                };
-                mark(&mut s);
-                // an end of the arc, or a new point in order
-                if (th - t0).abs() <= 1e-12 {
-                    mark(&mut grid[0]);
-                } else if (th - t1).abs() <= 1e-12 {
-                    let last = grid.len() - 1;
-                    mark(&mut grid[last]);
-                } else if let Some(g) = grid
-                    .iter_mut()
-                    .find(|g| (g.at_infinity || g.singular) && (g.theta - s.theta).abs() <= 1e-12)
-                {
-                    // the same parameter as an event already placed (a singular point at
-                    // infinity): one point with both marks
-                    mark(g);
+        let mut walk = Walk {
+            prev: first,
+            h_prev: self.chart.value(&first.x),
+            stack: Vec::new(),
+            unknown: matches!(self.crossings, Crossings::Unknown),
+        };
+        let mut next_event = events.iter().peekable();
+        // (sin θ, cos θ) on the uniform grid by rotations of the step, exact sines every
+        // RESYNC steps: the drift stays within a few hundred ulps
+        const RESYNC: usize = 64;
+        let step = (t1 - t0) / (n as f64);
+        let (sh, ch) = step.sin_cos();
+        let mut u = (0.0, 1.0);
+        for k in 1..=n {
+            let g = if k < n {
+                let th = t0 + step * (k as f64);
+                u = if k % RESYNC == 1 {
+                    th.sin_cos()
                 } else {
-                    let at = grid.partition_point(|g| g.theta < s.theta);
-                    grid.insert(at, s);
+                    (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh)
+                };
+                match self.eval.eval_unit(u, sheet) {
+                    Some(x) => Sample::new(th, x),
+                    None => self.at_u(th, u, t0, t1, sheet)?,
                 }
+            } else {
+                last
+            };
+            // an event goes before the first grid point at or after it; a grid point at the
+            // event's parameter is the same point (left out: its rounding could mark it)
+            let mut same = false;
+            while let Some(e) = next_event.next_if(|e| e.theta <= g.theta + 1e-12) {
+                same |= k < n && (g.theta - e.theta).abs() <= 1e-12;
+                self.walk_to(&mut walk, *e, sheet, budget, line)?;
+            }
+            if !same {
+                self.walk_to(&mut walk, g, sheet, budget, line)?;
             }
         }
-        // a point between any two consecutive events, so that every branch they cut has a
-        // point of its own besides its ends; on the whole line the two ends are one point
-        if matches!(arc.range, ParamRange::All) && grid.len() > 1 {
-            let last = grid.len() - 1;
-            let (inf, sing) = (
-                grid[0].at_infinity | grid[last].at_infinity,
-                grid[0].singular | grid[last].singular,
-            );
-            for k in [0, last] {
-                grid[k].at_infinity = inf;
-                grid[k].singular = sing;
-            }
+        for e in next_event {
+            self.walk_to(&mut walk, *e, sheet, budget, line)?;
         }
-        let mut k = 0;
-        while k + 1 < grid.len() {
-            let (p, q) = (&grid[k], &grid[k + 1]);
-            let event = |g: &Sample| g.at_infinity || g.singular;
-            if event(p) && event(q) && q.theta > p.theta {
-                let th = 0.5 * (p.theta + q.theta);
-                let m = self.at(th, p.theta, q.theta, sheet)?;
-                grid.insert(k + 1, m);
-                k += 1;
+        if arc.reversed {
+            if start > 0 && line.len() > start + 1 && joins(&line[start - 1], &line[line.len() - 1])
+            {
+                let l = line.pop().expect("nonempty");
+                line[start - 1].at_infinity |= l.at_infinity;
+                line[start - 1].singular |= l.singular;
             }
-            k += 1;
+            line[start..].reverse();
         }
-        *budget = budget.checked_sub(grid.len()).ok_or_else(too_many_points)?;
-        let mut out = vec![grid[0]];
-        let mut stack: Vec<(Sample, u32)> = grid[1..].iter().rev().map(|s| (*s, 0)).collect();
-        while let Some((q, depth)) = stack.pop() {
-            let p = out[out.len() - 1];
+        Ok(())
+    }
+
+    /// Extends the polyline from `walk.prev` to `q`: bisected until [`Sampler::split`] is
+    /// satisfied, and, where the crossings are not known exactly, with the crossings of the
+    /// plane at infinity located between consecutive points.
+    #[inline(always)]
+    fn walk_to(
+        &self,
+        walk: &mut Walk,
+        q: Sample,
+        sheet: Sheet,
+        budget: &mut usize,
+        line: &mut Vec<Sample>,
+    ) -> Result<(), Error> {
+        let d = dot(&walk.prev.x, &q.x);
+        if self.tolerance.is_none() && d >= MAX_ANGLE.cos() {
+            // close enough and not opposite: the usual case, no split
+            return self.accept(walk, q, d, sheet, line);
+        }
+        self.walk_split(walk, q, sheet, budget, line)
+    }
+
+    /// [`Sampler::walk_to`] where the segment may need points.
+    #[inline(never)]
+    fn walk_split(
+        &self,
+        walk: &mut Walk,
+        q: Sample,
+        sheet: Sheet,
+        budget: &mut usize,
+        line: &mut Vec<Sample>,
+    ) -> Result<(), Error> {
+        walk.stack.push((q, 0));
+        while let Some((q, depth)) = walk.stack.pop() {
+            let p = walk.prev;
             match self.split(&p, &q, sheet)? {
                 Some(m) if depth < MAX_DEPTH => {
                     *budget = budget.checked_sub(1).ok_or_else(too_many_points)?;
-                    stack.push((q, depth + 1));
-                    stack.push((m, depth + 1));
+                    walk.stack.push((q, depth + 1));
+                    walk.stack.push((m, depth + 1));
                 }
                 Some(_) => {
                     return Err(Error::Algebra(format!(
@@ -1201,16 +1819,65 @@ impl Sampler<'_> {
                         p.theta
                     )))
                 }
-                None => out.push(q),
+                None => self.accept(walk, q, dot(&p.x, &q.x), sheet, line)?,
             }
         }
-        if matches!(self.crossings, Crossings::Unknown) {
-            self.float_crossings(&mut out, sheet)?;
+        Ok(())
+    }
+
+    /// Appends `q` after `walk.prev` (`d` their dot product), with the crossing between
+    /// them where the crossings are not known exactly.
+    #[inline(always)]
+    fn accept(
+        &self,
+        walk: &mut Walk,
+        q: Sample,
+        d: f64,
+        sheet: Sheet,
+        line: &mut Vec<Sample>,
+    ) -> Result<(), Error> {
+        if walk.unknown {
+            let hp = walk.h_prev;
+            let hq = self.chart.value(&q.x);
+            // a point known exactly to be at infinity (a singular point there) is the
+            // crossing: the rounding of h near it says nothing
+            let exact_end = walk.prev.at_infinity || q.at_infinity;
+            if hp == 0.0 {
+                if let Some(l) = line.last_mut() {
+                    l.at_infinity = true;
+                }
+            } else if !exact_end {
+                let hq_along = if d < 0.0 { -hq } else { hq };
+                if hq_along != 0.0 && (hp > 0.0) != (hq_along > 0.0) {
+                    if let Some(c) = self.float_crossing(&walk.prev, hp, &q, sheet)? {
+                        // a singular point next to the crossing keeps a point of its own
+                        // between them: the affine branch it starts has one besides its end
+                        let mid = |a: &Sample, b: &Sample| -> Result<Option<Sample>, Error> {
+                            if a.theta == b.theta {
+                                return Ok(None);
+                            }
+                            let (lo, hi) = (a.theta.min(b.theta), a.theta.max(b.theta));
+                            self.at(0.5 * (lo + hi), lo, hi, sheet).map(Some)
+                        };
+                        if walk.prev.singular {
+                            if let Some(m) = mid(&walk.prev, &c)? {
+                                line.push(m);
+                            }
+                        }
+                        line.push(c);
+                        if q.singular {
+                            if let Some(m) = mid(&c, &q)? {
+                                line.push(m);
+                            }
+                        }
+                    }
+                }
+            }
+            walk.h_prev = hq;
         }
-        if arc.reversed {
-            out.reverse();
-        }
-        Ok(out)
+        line.push(q);
+        walk.prev = q;
+        Ok(())
     }
 
     /// The sampled piece: its arcs joined, oriented, closed, and its affine view.
@@ -1223,18 +1890,9 @@ impl Sampler<'_> {
         budget: &mut usize,
     ) -> Result<SampledPiece, Error> {
         let n = points.div_ceil(arcs.len().max(1)).max(8) + 1;
-        let mut line: Vec<Sample> = Vec::new();
+        let mut line: Vec<Sample> = Vec::with_capacity(arcs.len() * (n + n / 8 + 8));
         for arc in arcs {
-            let mut part = self.arc(arc, n, budget)?;
-            if let (Some(last), Some(first)) = (line.last_mut(), part.first()) {
-                // consecutive arcs share their end point (unless one end was nudged)
-                if dot(&last.x, &first.x).abs() >= 1.0 - 1e-12 {
-                    last.at_infinity |= first.at_infinity;
-                    last.singular |= first.singular;
-                    part.remove(0);
-                }
-            }
-            line.extend(part);
+            self.arc_into(arc, n, budget, &mut line)?;
         }
         if closed && line.len() > 1 {
             let last = line.len() - 1;
@@ -1258,7 +1916,8 @@ impl Sampler<'_> {
         } else {
             self.affine(&line, closed)
         };
-        let mut pts: Vec<[f64; 4]> = line.iter().map(|s| s.x).collect();
+        let mut pts: Vec<[f64; 4]> = Vec::with_capacity(line.len() + 1);
+        pts.extend(line.iter().map(|s| s.x));
         if closed && !pts.is_empty() {
             let first = pts[0];
             let last = pts[pts.len() - 1];
@@ -1284,79 +1943,68 @@ impl Sampler<'_> {
         })
     }
 
-    /// Inserts, between consecutive points of one arc where `h` changes sign (up to the
-    /// sign of the vectors), the crossing located by bisection on the parameter.
-    fn float_crossings(&self, line: &mut Vec<Sample>, sheet: Sheet) -> Result<(), Error> {
-        let mut k = 0;
-        while k + 1 < line.len() {
-            let (p, q) = (line[k], line[k + 1]);
-            let oriented = |x: [f64; 4], to: &[f64; 4]| {
-                if dot(&x, to) < 0.0 {
-                    x.map(|v| -v)
-                } else {
-                    x
-                }
-            };
-            let hp = self.chart.value(&p.x);
-            let hq = self.chart.value(&oriented(q.x, &p.x));
-            if hp == 0.0 {
-                line[k].at_infinity = true;
-            }
-            // a point known exactly to be at infinity (a singular point there) is the
-            // crossing: the rounding of h near it says nothing
-            let exact_end = p.at_infinity || q.at_infinity;
-            if exact_end || hp == 0.0 || hq == 0.0 || (hp > 0.0) == (hq > 0.0) {
-                k += 1;
-                continue;
-            }
-            let (mut lo, mut hi) = (p, q);
-            for _ in 0..60 {
-                let (a, b) = (lo.theta.min(hi.theta), lo.theta.max(hi.theta));
-                if b - a <= 1e-15 * (1.0 + a.abs()) {
-                    break;
-                }
-                let m = self.at(0.5 * (a + b), a, b, sheet)?;
-                let hm = self.chart.value(&oriented(m.x, &p.x));
-                if (hm > 0.0) == (hp > 0.0) {
-                    lo = m;
-                } else {
-                    hi = m;
-                }
-            }
-            let mut c = if self.chart.value(&lo.x).abs() <= self.chart.value(&hi.x).abs() {
-                lo
+    /// The crossing of the plane at infinity between consecutive points `p` (where
+    /// `h = hp ≠ 0`) and `q` of one arc, if `h` changes sign there (up to the sign of the
+    /// vectors), located by regula falsi on the parameter with the Illinois weighting
+    /// (bisection where the secant leaves the bracket), until the bracket or `h` is at the
+    /// rounding level.
+    fn float_crossing(
+        &self,
+        p: &Sample,
+        hp: f64,
+        q: &Sample,
+        sheet: Sheet,
+    ) -> Result<Option<Sample>, Error> {
+        let oriented = |x: [f64; 4]| {
+            if dot(&x, &p.x) < 0.0 {
+                x.map(|v| -v)
             } else {
-                hi
-            };
-            c.at_infinity = true;
-            // a singular point next to the crossing keeps a point of its own between them,
-            // so that the affine branch it starts has one besides its end
-            let mid = |a: &Sample, b: &Sample| -> Result<Sample, Error> {
-                let (lo, hi) = (a.theta.min(b.theta), a.theta.max(b.theta));
-                self.at(0.5 * (lo + hi), lo, hi, sheet)
-            };
-            let before = if p.singular && p.theta != c.theta {
-                Some(mid(&p, &c)?)
-            } else {
-                None
-            };
-            let after = if q.singular && q.theta != c.theta {
-                Some(mid(&c, &q)?)
-            } else {
-                None
-            };
-            let mut added = vec![c];
-            if let Some(m) = before {
-                added.insert(0, m);
+                x
             }
-            if let Some(m) = after {
-                added.push(m);
-            }
-            let n = added.len();
-            line.splice(k + 1..k + 1, added);
-            k += n + 1;
+        };
+        let hq = self.chart.value(&oriented(q.x));
+        if hq == 0.0 || (hp > 0.0) == (hq > 0.0) {
+            return Ok(None);
         }
-        Ok(())
+        let noise = 8.0 * f64::EPSILON * self.chart.h.iter().map(|v| v.abs()).sum::<f64>();
+        let (mut lo, mut hi) = (*p, *q);
+        let (mut flo, mut fhi) = (hp, hq);
+        let mut kept = 0i8;
+        for _ in 0..100 {
+            let (a, b) = (lo.theta.min(hi.theta), lo.theta.max(hi.theta));
+            if b - a <= 1e-15 * (1.0 + a.abs()) {
+                break;
+            }
+            let mut th = (lo.theta * fhi - hi.theta * flo) / (fhi - flo);
+            if !(a < th && th < b) {
+                th = 0.5 * (a + b);
+            }
+            let m = self.at(th, a, b, sheet)?;
+            let hm = self.chart.value(&oriented(m.x));
+            if (hm > 0.0) == (hp > 0.0) {
+                (lo, flo) = (m, hm);
+                if kept == 1 {
+                    fhi *= 0.5;
+                }
+                kept = 1;
+            } else {
+                (hi, fhi) = (m, hm);
+                if kept == -1 {
+                    flo *= 0.5;
+                }
+                kept = -1;
+            }
+            if hm.abs() <= noise {
+                break;
+            }
+        }
+        let mut c = if self.chart.value(&lo.x).abs() <= self.chart.value(&hi.x).abs() {
+            lo
+        } else {
+            hi
+        };
+        c.at_infinity = true;
+        Ok(Some(c))
     }
 
     /// Splits the oriented polyline at its crossings with the plane at infinity (the branches
@@ -1364,24 +2012,23 @@ impl Sampler<'_> {
     /// the point).
     fn affine(&self, line: &[Sample], closed: bool) -> AffinePiece {
         let n = line.len();
-        let breaks: Vec<usize> = (0..n).filter(|&k| line[k].at_infinity).collect();
-        let cuts: Vec<usize> = (0..n)
-            .filter(|&k| line[k].at_infinity || line[k].singular)
-            .collect();
-        let points_at_infinity: Vec<[f64; 4]> = breaks.iter().map(|&k| line[k].x).collect();
+        let points_at_infinity: Vec<[f64; 4]> =
+            line.iter().filter(|s| s.at_infinity).map(|s| s.x).collect();
+        let first_cut = line.iter().position(|s| s.at_infinity || s.singular);
         let mut branches = Vec::new();
         let mut current: Vec<[f64; 3]> = Vec::new();
-        let order: Vec<usize> = if closed && !cuts.is_empty() {
-            (0..=n).map(|k| (k + cuts[0]) % n).collect()
-        } else {
-            (0..n).collect()
+        let (first, count) = match first_cut {
+            Some(k) if closed => (k, n + 1),
+            _ => (0, n),
         };
-        // the previous point, oriented along the walk (a loop may come back reversed)
-        let mut prev: Option<[f64; 4]> = None;
+        current.reserve(n);
+        // the previous point oriented along the walk (a loop may come back reversed), and
+        // its h
+        let mut prev: Option<([f64; 4], f64)> = None;
         // `current` holds only the singular point it restarts from
         let mut restarted = false;
-        for &k in &order {
-            let s = &line[k];
+        for j in 0..count {
+            let s = &line[(j + first) % n];
             if s.at_infinity {
                 if !current.is_empty() && !restarted {
                     branches.push(std::mem::take(&mut current));
@@ -1391,30 +2038,32 @@ impl Sampler<'_> {
                 prev = None;
                 continue;
             }
-            let x = match prev {
-                Some(p) if dot(&p, &s.x) < 0.0 => s.x.map(|v| -v),
-                _ => s.x,
+            let h = self.chart.value(&s.x);
+            let (x, hx) = match prev {
+                Some((p, _)) if dot(&p, &s.x) < 0.0 => (s.x.map(|v| -v), -h),
+                _ => (s.x, h),
             };
-            if prev.is_some_and(|p| (self.chart.value(&p) > 0.0) != (self.chart.value(&x) > 0.0)) {
+            if prev.is_some_and(|(_, hp)| (hp > 0.0) != (hx > 0.0)) {
                 // a sign change of h without a crossing point: the branch breaks here
                 branches.push(std::mem::take(&mut current));
             }
-            prev = Some(x);
-            if let Some(a) = self.chart.affine(&s.x) {
+            prev = Some((x, hx));
+            if let Some(a) = self.chart.affine_with(&s.x, h) {
                 current.push(a);
                 if s.singular {
                     // the branch ends at the singular point and the next one starts there
                     if current.len() > 1 {
                         branches.push(std::mem::take(&mut current));
                     }
-                    current = vec![a];
+                    current.clear();
+                    current.push(a);
                     restarted = true;
                 } else {
                     restarted = false;
                 }
             }
         }
-        if closed && cuts.is_empty() && !current.is_empty() {
+        if closed && first_cut.is_none() && !current.is_empty() {
             current.push(current[0]);
         }
         if !current.is_empty() && !restarted {
@@ -1450,4 +2099,144 @@ fn chord_deviation(a: &[f64; 3], b: &[f64; 3], c: &[f64; 3]) -> f64 {
         .map(|i| (ac[i] - t * ab[i]).powi(2))
         .sum::<f64>()
         .sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::param::curve::sqrt_field;
+    use crate::Quadric;
+    use qsic_algebra::testing::SplitMix;
+
+    /// Levin parameterizations of random generic pairs (coefficients in ℚ(√δ)).
+    fn levin_params(seed: u64, count: usize) -> Vec<ComponentParam> {
+        let mut rng = SplitMix(seed);
+        let mut out = Vec::new();
+        while out.len() < count {
+            let mut m = [[[0i64; 4]; 4]; 2];
+            for q in &mut m {
+                for i in 0..4 {
+                    for j in i..4 {
+                        let c = rng.int(-10, 10);
+                        q[i][j] = if i == j { 2 * c } else { c };
+                        q[j][i] = q[i][j];
+                    }
+                }
+            }
+            let (Ok(a), Ok(b)) = (Quadric::from_integers(m[0]), Quadric::from_integers(m[1]))
+            else {
+                continue;
+            };
+            let Ok(curve) = crate::param::parameterize(&a, &b) else {
+                continue;
+            };
+            for c in curve.components {
+                if let Some(p @ ComponentParam::Levin { .. }) = c.param {
+                    out.push(p);
+                }
+            }
+        }
+        out
+    }
+
+    /// `x − y√2` for the solutions of Pell's equation `x² − 2y² = 1`: the terms cancel to
+    /// `1/(x + y√2)`, by up to ~200 bits; the float must keep its full precision.
+    #[test]
+    fn conversion_keeps_precision_through_cancellation() {
+        let k = sqrt_field(&IBig::from(2));
+        let (mut x, mut y) = (IBig::from(3), IBig::from(2));
+        let mut conv = Converter::default();
+        for _ in 0..40 {
+            for den in [1, 3] {
+                let c = k.element(&Poly::new(vec![
+                    RBig::from_parts_signed(x.clone(), den.into()),
+                    RBig::from_parts_signed(-y.clone(), den.into()),
+                ]));
+                let v = conv.convert(&c).unwrap();
+                let conjugate = x.to_f64().value() + y.to_f64().value() * std::f64::consts::SQRT_2;
+                let product = v.value * conjugate * den as f64;
+                assert!((product - 1.0).abs() < 1e-14, "x = {x}: {product}");
+                let dd = v.dd.expect("ℚ(√2) has a double-double");
+                assert!(((dd.0 + dd.1) * conjugate * den as f64 - 1.0).abs() < 1e-14);
+            }
+            // the next solution: (x, y) → (3x + 4y, 2x + 3y)
+            (x, y) = (&x * 3 + &y * 4, &x * 2 + &y * 3);
+        }
+        assert_eq!(conv.roots.len(), 1, "√2 made once");
+    }
+
+    #[test]
+    fn integers_split_exactly_into_double_doubles() {
+        let mut rng = SplitMix(11);
+        for bits in [10, 52, 53, 54, 64, 100, 106, 150, 400] {
+            for _ in 0..20 {
+                let v = (IBig::from(rng.next_u64()) << bits) >> 64;
+                let v = if rng.next_u64() % 2 == 0 { -v } else { v };
+                let d = int_dd(&v);
+                let rest = &v - integral_f64_to_ibig(d.0);
+                // lo is the rest rounded: exact below 2¹⁰⁶
+                let err = if d.1 == 0.0 {
+                    rest.clone()
+                } else {
+                    &rest - integral_f64_to_ibig(d.1.trunc())
+                };
+                let tolerance = IBig::ONE << bits.saturating_sub(100);
+                assert!(&err * &err <= &tolerance * &tolerance, "{v}: {d:?}");
+            }
+        }
+    }
+
+    /// The float evaluation (majorant certificate, unrolled Horner) against the double-double
+    /// one from coefficients made by the refined route ([`to_dd`], not the [`Converter`]),
+    /// on both sheets, at parameters all round ℙ¹.
+    #[test]
+    fn fast_evaluation_matches_double_double_from_refined_coefficients() {
+        let mut rng = SplitMix(7);
+        let (mut checked, mut unrolled) = (0, 0);
+        for param in levin_params(0x1e_71, 6) {
+            let eval = Evaluator::new(&param).unwrap();
+            let ComponentParam::Levin { a, d, s, .. } = &param else {
+                unreachable!()
+            };
+            let mut refined = Box::<DdCoeffs>::default();
+            for i in 0..4 {
+                for (k, c) in a[i].coeffs().iter().enumerate() {
+                    refined.x[k][i] = to_dd(c);
+                }
+                for (k, c) in d[i].coeffs().iter().enumerate() {
+                    refined.d[k][i] = to_dd(c);
+                }
+            }
+            for (k, c) in s.coeffs().iter().enumerate() {
+                refined.s[k] = to_dd(c);
+            }
+            let reference = Evaluator {
+                quick_dd: Some(refined),
+                ..Evaluator::new(&param).unwrap()
+            };
+            for _ in 0..200 {
+                let theta = (rng.next_u64() as f64 / u64::MAX as f64 - 0.5) * PI;
+                let u = theta.sin_cos();
+                let (t, rev) = reduced_parameter(u);
+                for sheet in [Sheet::Plus, Sheet::Minus] {
+                    let Some(x) = eval.eval_unit(u, sheet) else {
+                        continue;
+                    };
+                    let y = reference
+                        .eval_dd(t, rev, sheet, 0.0)
+                        .and_then(unit)
+                        .expect("double-double evaluates where floats do");
+                    // the unrolled Horner is the general one, operation for operation
+                    if eval.big_d == 3 {
+                        let fixed = eval.values::<4, 2>(t, rev, sheet);
+                        assert_eq!(fixed, eval.values_any(t, rev, sheet));
+                        unrolled += 1;
+                    }
+                    assert!(dot(&x, &y) > 1.0 - 1e-12, "{x:?} {y:?}");
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 2000 && unrolled > 0, "{checked} {unrolled}");
+    }
 }
