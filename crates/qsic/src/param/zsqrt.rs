@@ -191,3 +191,81 @@ pub(crate) fn sign_at(p: &[Zq], x: &RBig, delta: &IBig) -> Sign {
         sb
     }
 }
+
+/// `x − y`.
+pub(crate) fn poly_sub(x: &[Zq], y: &[Zq]) -> ZPoly {
+    let mut out: ZPoly = x.to_vec();
+    if out.len() < y.len() {
+        out.resize(y.len(), Zq::default());
+    }
+    for (o, c) in out.iter_mut().zip(y) {
+        o.a -= &c.a;
+        o.b -= &c.b;
+    }
+    out
+}
+
+/// `p(2ᵏu)` for `k ≥ 0`: coefficient `i` times `2^(k·i)`.
+pub(crate) fn substitute_power_of_two(p: &mut [Zq], k: usize) {
+    for (i, c) in p.iter_mut().enumerate() {
+        if i > 0 && k > 0 {
+            c.a <<= k * i;
+            c.b <<= k * i;
+        }
+    }
+}
+
+/// `x` as a [`super::Number`] in `field` = ℚ(√δ) (rational when `b = 0`): the same element
+/// as [`super::curve::from_quadratic`] of [`Zq::to_quadratic`], without the rational gcds.
+pub(crate) fn to_number(
+    x: &Zq,
+    field: Option<&qsic_algebra::field::NumberField>,
+) -> super::Number {
+    match field {
+        Some(k) if !x.b.is_zero() => k.integer_element(&Poly::new(vec![x.a.clone(), x.b.clone()])),
+        _ => {
+            debug_assert!(x.b.is_zero(), "an irrational coefficient needs its field");
+            super::curve::rational(RBig::from(x.a.clone()))
+        }
+    }
+}
+
+/// `p(u/2ᵐ)` over ℚ(√δ): coefficient `i` divided by `2^(m·i)`.
+pub(crate) fn to_poly_down(p: &[Zq], delta: &IBig, m: usize) -> Poly<Quadratic> {
+    if m == 0 {
+        return to_poly(p, delta);
+    }
+    Poly::new(
+        p.iter()
+            .enumerate()
+            .map(|(i, c)| {
+                let den = dashu_int::UBig::ONE << (m * i);
+                let part = |v: &IBig| RBig::from_parts(v.clone(), den.clone());
+                if c.b.is_zero() {
+                    Quadratic::rational(part(&c.a))
+                } else {
+                    Quadratic::new(part(&c.a), part(&c.b), delta.clone()).expect("δ is not a square")
+                }
+            })
+            .collect(),
+    )
+}
+
+/// `p(u/2ᵐ)` as a [`super::NumberPoly`]: by [`to_number`] for `m = 0`, else through
+/// [`super::curve::poly_from_quadratic`].
+pub(crate) fn to_number_poly(
+    p: &[Zq],
+    delta: &IBig,
+    m: usize,
+    field: Option<&qsic_algebra::field::NumberField>,
+) -> super::NumberPoly {
+    if m > 0 {
+        return super::curve::poly_from_quadratic(&to_poly_down(p, delta, m), field);
+    }
+    Poly::new(p.iter().map(|c| to_number(c, field)).collect())
+}
+
+/// The degree of `p` (trailing zeros ignored), `None` for zero.
+pub(crate) fn degree(p: &[Zq]) -> Option<usize> {
+    p.iter().rposition(|c| !c.is_zero())
+}
