@@ -595,12 +595,83 @@ pub(super) fn member(
     })
 }
 
-/// Picks the parameterization surface (see [`parameterize_smooth_quartic`]).
+/// Picks the parameterization surface (see [`parameterize_smooth_quartic`]): the choice of
+/// [`choose_surface_full`], with the ruling computed for the chosen candidate only when the
+/// radicand of the others can be told in advance ([`surface::doubly_ruled_radicand`]).
 fn choose_surface(
     a: &[[RBig; 4]; 4],
     b: &[[RBig; 4]; 4],
     analysis: &PencilAnalysis,
 ) -> Result<ParameterizationSurface, Error> {
+    let (candidates, _) = primary_candidates(analysis);
+    // (lambda, kind, matrix, ruling or its predicted radicand)
+    type Pick = (Option<RBig>, SurfaceKind, [[RBig; 4]; 4], Result<RuledParameterization, Option<IBig>>);
+    let mut best: Option<Pick> = None;
+    let delta_of = |p: &Pick| -> Option<IBig> {
+        match &p.3 {
+            Ok(r) => r.delta.clone(),
+            Err(d) => d.clone(),
+        }
+    };
+    for (lambda, kind) in candidates {
+        let matrix = member(a, b, lambda.as_ref());
+        let predicted = match kind {
+            SurfaceKind::DoublyRuled => surface::doubly_ruled_radicand(&matrix),
+            SurfaceKind::Cone => None,
+        };
+        let ruling = match predicted {
+            Some(delta) => Err(delta),
+            None => {
+                let ruling = match kind {
+                    SurfaceKind::DoublyRuled => parameterize_doubly_ruled(&matrix)?,
+                    SurfaceKind::Cone => parameterize_cone(&matrix)?,
+                };
+                match ruling {
+                    Some(r) => Ok(r),
+                    None => continue,
+                }
+            }
+        };
+        let candidate: Pick = (lambda, kind, matrix, ruling);
+        let size = |d: Option<IBig>| d.map(|d| d.clone() * d);
+        let better = match &best {
+            None => true,
+            Some(old) => match (size(delta_of(old)), size(delta_of(&candidate))) {
+                (Some(o), Some(n)) => n < o,
+                (Some(_), None) => true,
+                _ => false,
+            },
+        };
+        if better {
+            let rational = delta_of(&candidate).is_none();
+            best = Some(candidate);
+            if rational {
+                break;
+            }
+        }
+    }
+    let Some((lambda, kind, matrix, ruling)) = best else {
+        return choose_surface_full(a, b, analysis);
+    };
+    let ruling = match ruling {
+        Ok(r) => r,
+        Err(delta) => match parameterize_doubly_ruled(&matrix)? {
+            Some(r) if r.delta == delta => r,
+            // not as predicted (never seen): the choice without predictions
+            _ => return choose_surface_full(a, b, analysis),
+        },
+    };
+    Ok(ParameterizationSurface {
+        lambda,
+        matrix,
+        kind,
+        ruling,
+    })
+}
+
+/// The candidates in order: the sample of each (2, 2) arc, then the cones at rational
+/// roots; with the number of cones at irrational roots.
+fn primary_candidates(analysis: &PencilAnalysis) -> (Vec<(Option<RBig>, SurfaceKind)>, usize) {
     let mut candidates: Vec<(Option<RBig>, SurfaceKind)> = Vec::new();
     for (sample, inertia) in &analysis.arcs {
         if inertia.positive == 2 && inertia.negative == 2 {
@@ -621,6 +692,17 @@ fn choose_surface(
             PencilPoint::Infinity => candidates.push((None, SurfaceKind::Cone)),
         }
     }
+    (candidates, irrational_cones)
+}
+
+/// Picks the parameterization surface by computing the ruling of each candidate in order
+/// (see [`parameterize_smooth_quartic`]).
+fn choose_surface_full(
+    a: &[[RBig; 4]; 4],
+    b: &[[RBig; 4]; 4],
+    analysis: &PencilAnalysis,
+) -> Result<ParameterizationSurface, Error> {
+    let (mut candidates, irrational_cones) = primary_candidates(analysis);
     let mut best: Option<ParameterizationSurface> = None;
     let primary = candidates.len();
     let mut k = 0;
@@ -979,6 +1061,39 @@ mod tests {
             }
         }
         assert!(total >= 100 && fast_used * 10 >= total * 9, "{fast_used}/{total}");
+    }
+
+    /// The surface chosen with predicted radicands is the one chosen by computing every
+    /// candidate's ruling, and each prediction is the radicand of that ruling.
+    #[test]
+    fn predicted_radicands_choose_the_same_surface() {
+        let (mut predicted, mut total) = (0, 0);
+        for (seed, bound) in [(4u64, 10i64), (5, 1000), (6, 2)] {
+            for (a, b) in smooth_pairs(seed, 40, bound) {
+                let analysis = analyze_pencil(&a, &b).expect("regular");
+                let (am, bm) = (integer_matrix(&a), integer_matrix(&b));
+                let fast = choose_surface(&am, &bm, &analysis);
+                let full = choose_surface_full(&am, &bm, &analysis);
+                match (&fast, &full) {
+                    (Ok(x), Ok(y)) => assert_eq!(x, y),
+                    (Err(x), Err(y)) => assert_eq!(x.to_string(), y.to_string()),
+                    _ => panic!("{fast:?} vs {full:?}"),
+                }
+                for (lambda, kind) in primary_candidates(&analysis).0 {
+                    if kind != SurfaceKind::DoublyRuled {
+                        continue;
+                    }
+                    let m = member(&am, &bm, lambda.as_ref());
+                    total += 1;
+                    if let Some(delta) = surface::doubly_ruled_radicand(&m) {
+                        predicted += 1;
+                        let ruling = parameterize_doubly_ruled(&m).expect("ruling").expect("lines");
+                        assert_eq!(ruling.delta, delta);
+                    }
+                }
+            }
+        }
+        assert!(predicted * 10 >= total * 7, "{predicted}/{total}");
     }
 
     #[test]

@@ -506,18 +506,22 @@ pub(crate) fn parameterize_doubly_ruled(
     Ok(Some(RuledParameterization { b, d, delta }))
 }
 
-/// [`parameterize_doubly_ruled`] through an integer point `p` of `S`, fraction-free in ℤ[√δ]
-/// on `M = k·S` (integer): `r = Mp`, the tangent plane `Kₖ = rⱼeₖ − rₖeⱼ`, the lines
-/// `E± = (−s₁₂ ± √(s₁₂² − s₁₁s₂₂))·e₁ + s₁₁·e₂`, `c = E₊ᵀME₋`; `g₀ = c·eⱼ − (ME₋)ⱼ·E₊`,
-/// `g₁ = c·g₀ − (g₀ᵀME₊)·E₋` (orthogonal to `E₊` and `E₋`), `ρ = pᵀMg₁`,
-/// `f = 2ρ·g₁ − (g₁ᵀMg₁)·p` (isotropic, `pᵀMf = 2ρ²`); then `b = p − u·E₊` and
-/// `d = 2ρ²·E₋ + u·c·f` (`pᵀMf·c = E₊ᵀM(2ρ²E₋)`, so `bᵀMd ≡ 0`). `Ok(None)` when a step
-/// leaves ℤ[√δ] (a non-integral square root): the caller takes the rational route.
-fn doubly_ruled_integral(
-    s: &[[RBig; 4]; 4],
-    p: &[RBig; 4],
-) -> Result<Option<RuledParameterization>, Error> {
-    use zsqrt::Zq;
+/// The tangent plane of `S` at an integer point `p`, on `M = k·S` (integer): `r = Mp`, its
+/// first nonzero entry `j`, the kernel vectors `e₁`, `e₂` (`Kₖ = rⱼeₖ − rₖeⱼ`, the one with
+/// the first `pₖ ≠ 0`, `k ≠ j`, left out) and the binary form `sᵢⱼ = eᵢᵀMeⱼ` on them.
+struct Tangent {
+    m: [[IBig; 4]; 4],
+    p: Vec<IBig>,
+    j: usize,
+    e1: Vec<IBig>,
+    e2: Vec<IBig>,
+    s11: IBig,
+    s12: IBig,
+    s22: IBig,
+}
+
+/// [`Tangent`] at `p`; `Ok(None)` if `p` is not integral.
+fn tangent_plane(s: &[[RBig; 4]; 4], p: &[RBig; 4]) -> Result<Option<Tangent>, Error> {
     let Some(m) = scaled_integer_matrix(s) else {
         return Ok(None);
     };
@@ -540,18 +544,75 @@ fn doubly_ruled_integral(
     let k0 = (0..4)
         .find(|&k| k != j && !p[k].is_zero())
         .ok_or_else(|| Error::Algebra("tangent plane basis".into()))?;
-    let kernel: Vec<Vec<IBig>> = (0..4)
-        .filter(|&k| k != j && k != k0)
-        .map(|k| {
-            let mut v = vec![IBig::ZERO; 4];
-            v[k] = r[j].clone();
-            v[j] = -r[k].clone();
-            v
-        })
-        .collect();
-    let (e1, e2) = (&kernel[0], &kernel[1]);
-    let (me1, me2) = (mv(e1), mv(e2));
-    let (s11, s12, s22) = (idot(e1, &me1), idot(e1, &me2), idot(e2, &me2));
+    let mut kernel = (0..4).filter(|&k| k != j && k != k0).map(|k| {
+        let mut v = vec![IBig::ZERO; 4];
+        v[k] = r[j].clone();
+        v[j] = -r[k].clone();
+        v
+    });
+    let (e1, e2) = (
+        kernel.next().expect("two kernel vectors"),
+        kernel.next().expect("two kernel vectors"),
+    );
+    let (me1, me2) = (mv(&e1), mv(&e2));
+    let (s11, s12, s22) = (idot(&e1, &me1), idot(&e1, &me2), idot(&e2, &me2));
+    Ok(Some(Tangent {
+        m,
+        p,
+        j,
+        e1,
+        e2,
+        s11,
+        s12,
+        s22,
+    }))
+}
+
+/// The radicand [`parameterize_doubly_ruled`] gives `S` (`Some(None)`: rational lines,
+/// `Some(Some(δ))`: over ℚ(√δ)) without computing the ruling, when it goes through
+/// [`small_point`] (always with [`doubly_ruled_integral`]); `None` when it does not (no small
+/// point, or no real lines: the full computation then says what happens). The lines through
+/// `p` are over ℚ(√(s₁₂² − s₁₁s₂₂)), rational when `s₁₁ = 0`.
+pub(crate) fn doubly_ruled_radicand(s: &[[RBig; 4]; 4]) -> Option<Option<IBig>> {
+    let p = small_point(s)?;
+    let t = tangent_plane(s, &p).ok()??;
+    if t.s11.is_zero() {
+        return Some(None);
+    }
+    let disc = &t.s12 * &t.s12 - &t.s11 * &t.s22;
+    if disc <= IBig::ZERO {
+        return None;
+    }
+    let root = sqrt_in_field(&Quadratic::rational(RBig::from(disc)), None)?;
+    Some(root.as_rational().is_none().then(|| root.radicand().clone()))
+}
+
+/// [`parameterize_doubly_ruled`] through an integer point `p` of `S`, fraction-free in ℤ[√δ]
+/// on `M = k·S` (integer): `r = Mp`, the tangent plane `Kₖ = rⱼeₖ − rₖeⱼ`, the lines
+/// `E± = (−s₁₂ ± √(s₁₂² − s₁₁s₂₂))·e₁ + s₁₁·e₂`, `c = E₊ᵀME₋`; `g₀ = c·eⱼ − (ME₋)ⱼ·E₊`,
+/// `g₁ = c·g₀ − (g₀ᵀME₊)·E₋` (orthogonal to `E₊` and `E₋`), `ρ = pᵀMg₁`,
+/// `f = 2ρ·g₁ − (g₁ᵀMg₁)·p` (isotropic, `pᵀMf = 2ρ²`); then `b = p − u·E₊` and
+/// `d = 2ρ²·E₋ + u·c·f` (`pᵀMf·c = E₊ᵀM(2ρ²E₋)`, so `bᵀMd ≡ 0`). `Ok(None)` when a step
+/// leaves ℤ[√δ] (a non-integral square root): the caller takes the rational route.
+fn doubly_ruled_integral(
+    s: &[[RBig; 4]; 4],
+    p: &[RBig; 4],
+) -> Result<Option<RuledParameterization>, Error> {
+    use zsqrt::Zq;
+    let Some(t) = tangent_plane(s, p)? else {
+        return Ok(None);
+    };
+    let Tangent {
+        m,
+        p,
+        j,
+        e1,
+        e2,
+        s11,
+        s12,
+        s22,
+    } = t;
+    let (e1, e2) = (&e1, &e2);
     let zvec = |x: &[IBig]| -> Vec<Zq> { x.iter().cloned().map(Zq::int).collect() };
     let (plus, minus, delta) = if s11.is_zero() {
         let minus: Vec<IBig> = (0..4)
@@ -652,16 +713,15 @@ fn doubly_ruled_integral(
     let two = Zq::int(IBig::from(2));
     let f = comb(&two.mul(&rho, &delta), &g1, &g1g1.neg(), &zp);
     let two_rho2 = two.mul(&rho.mul(&rho, &delta), &delta);
-    let back = |x: &Zq| x.to_quadratic(&delta);
-    let b: PolyVector =
-        std::array::from_fn(|i| Poly::new(vec![back(&zp[i]), back(&plus[i].neg())]));
-    let d: PolyVector = std::array::from_fn(|i| {
-        Poly::new(vec![
-            back(&two_rho2.mul(&minus[i], &delta)),
-            back(&c.mul(&f[i], &delta)),
-        ])
+    // b and d each scaled to coprime integers (as `primitive_poly` would, without rationals)
+    let mut bz: [zsqrt::ZPoly; 4] = std::array::from_fn(|i| vec![zp[i].clone(), plus[i].neg()]);
+    let mut dz: [zsqrt::ZPoly; 4] = std::array::from_fn(|i| {
+        vec![two_rho2.mul(&minus[i], &delta), c.mul(&f[i], &delta)]
     });
-    let (b, d) = (primitive_poly(&b), primitive_poly(&d));
+    zsqrt::make_primitive(&mut bz);
+    zsqrt::make_primitive(&mut dz);
+    let b: PolyVector = std::array::from_fn(|i| zsqrt::to_poly(&bz[i], &delta));
+    let d: PolyVector = std::array::from_fn(|i| zsqrt::to_poly(&dz[i], &delta));
     let delta = radicand_of(b.iter().chain(d.iter()).flat_map(|x| x.coeffs()));
     Ok(Some(RuledParameterization { b, d, delta }))
 }
@@ -749,6 +809,34 @@ mod tests {
         assert!(poly_form(&sm, &r.b, &r.d).is_zero());
         assert!(poly_form(&sm, &r.d, &r.d).is_zero());
         assert!(r.d.iter().any(|x| !x.is_constant()), "d(u) moves");
+    }
+
+    /// The integral `make_primitive` scales like `primitive_poly`.
+    #[test]
+    fn integral_primitive_is_primitive_poly() {
+        let mut rng = qsic_algebra::testing::SplitMix(9);
+        for delta in [0i64, 2, 6, 15] {
+            let delta = IBig::from(delta);
+            for _ in 0..50 {
+                let k = rng.int(1, 12);
+                let mut v: [zsqrt::ZPoly; 4] = std::array::from_fn(|_| {
+                    (0..2)
+                        .map(|_| zsqrt::Zq {
+                            a: IBig::from(k * rng.int(-20, 20)),
+                            b: if delta.is_zero() {
+                                IBig::ZERO
+                            } else {
+                                IBig::from(k * rng.int(-3, 3))
+                            },
+                        })
+                        .collect()
+                });
+                let before: PolyVector = std::array::from_fn(|i| zsqrt::to_poly(&v[i], &delta));
+                zsqrt::make_primitive(&mut v);
+                let after: PolyVector = std::array::from_fn(|i| zsqrt::to_poly(&v[i], &delta));
+                assert_eq!(after, primitive_poly(&before));
+            }
+        }
     }
 
     #[test]

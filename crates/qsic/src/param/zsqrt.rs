@@ -269,3 +269,24 @@ pub(crate) fn to_number_poly(
 pub(crate) fn degree(p: &[Zq]) -> Option<usize> {
     p.iter().rposition(|c| !c.is_zero())
 }
+
+/// `v` divided by the gcd of all the integers `a`, `b` of its coefficients (the positive
+/// rational scale of [`super::surface`]'s `primitive_poly` on integral coordinates).
+pub(crate) fn make_primitive(v: &mut [ZPoly]) {
+    use dashu_int::ops::Gcd;
+    let mut g = IBig::ZERO;
+    for x in v.iter().flatten() {
+        for part in [&x.a, &x.b] {
+            if !part.is_zero() && !g.is_one() {
+                g = IBig::from(g.gcd(part));
+            }
+        }
+    }
+    if g.is_zero() || g.is_one() {
+        return;
+    }
+    for x in v.iter_mut().flatten() {
+        x.a = &x.a / &g;
+        x.b = &x.b / &g;
+    }
+}
