@@ -605,12 +605,17 @@ fn choose_surface(
 ) -> Result<ParameterizationSurface, Error> {
     let (candidates, _) = primary_candidates(analysis);
     // (lambda, kind, matrix, ruling or its predicted radicand)
-    type Pick = (Option<RBig>, SurfaceKind, [[RBig; 4]; 4], Result<RuledParameterization, Option<IBig>>);
+    type Pick = (
+        Option<RBig>,
+        SurfaceKind,
+        [[RBig; 4]; 4],
+        Result<RuledParameterization, (Option<IBig>, surface::Prepared)>,
+    );
     let mut best: Option<Pick> = None;
     let delta_of = |p: &Pick| -> Option<IBig> {
         match &p.3 {
             Ok(r) => r.delta.clone(),
-            Err(d) => d.clone(),
+            Err((d, _)) => d.clone(),
         }
     };
     for (lambda, kind) in candidates {
@@ -620,7 +625,7 @@ fn choose_surface(
             SurfaceKind::Cone => None,
         };
         let ruling = match predicted {
-            Some(delta) => Err(delta),
+            Some(prepared) => Err((prepared.radicand(), prepared)),
             None => {
                 let ruling = match kind {
                     SurfaceKind::DoublyRuled => parameterize_doubly_ruled(&matrix)?,
@@ -655,7 +660,7 @@ fn choose_surface(
     };
     let ruling = match ruling {
         Ok(r) => r,
-        Err(delta) => match parameterize_doubly_ruled(&matrix)? {
+        Err((delta, prepared)) => match surface::doubly_ruled_prepared(prepared)? {
             Some(r) if r.delta == delta => r,
             // not as predicted (never seen): the choice without predictions
             _ => return choose_surface_full(a, b, analysis),
@@ -1060,7 +1065,10 @@ mod tests {
                 assert_eq!(c1.pieces.len(), c2.pieces.len());
             }
         }
-        assert!(total >= 100 && fast_used * 10 >= total * 9, "{fast_used}/{total}");
+        assert!(
+            total >= 100 && fast_used * 10 >= total * 9,
+            "{fast_used}/{total}"
+        );
     }
 
     /// The surface chosen with predicted radicands is the one chosen by computing every
@@ -1085,10 +1093,15 @@ mod tests {
                     }
                     let m = member(&am, &bm, lambda.as_ref());
                     total += 1;
-                    if let Some(delta) = surface::doubly_ruled_radicand(&m) {
+                    if let Some(prepared) = surface::doubly_ruled_radicand(&m) {
+                        let delta = prepared.radicand();
                         predicted += 1;
-                        let ruling = parameterize_doubly_ruled(&m).expect("ruling").expect("lines");
+                        let ruling = parameterize_doubly_ruled(&m)
+                            .expect("ruling")
+                            .expect("lines");
                         assert_eq!(ruling.delta, delta);
+                        let again = surface::doubly_ruled_prepared(prepared).expect("ruling");
+                        assert_eq!(again, Some(ruling));
                     }
                 }
             }

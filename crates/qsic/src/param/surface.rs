@@ -416,8 +416,10 @@ pub(crate) fn parameterize_doubly_ruled(
 ) -> Result<Option<RuledParameterization>, Error> {
     let p = match small_point(s) {
         Some(p) => {
-            if let Some(r) = doubly_ruled_integral(s, &p)? {
-                return Ok(Some(r));
+            if let Some(prepared) = prepare(s, &p)? {
+                if let Some(r) = doubly_ruled_integral(prepared)? {
+                    return Ok(Some(r));
+                }
             }
             std::array::from_fn(|i| q(&p[i]))
         }
@@ -568,23 +570,71 @@ fn tangent_plane(s: &[[RBig; 4]; 4], p: &[RBig; 4]) -> Result<Option<Tangent>, E
     }))
 }
 
-/// The radicand [`parameterize_doubly_ruled`] gives `S` (`Some(None)`: rational lines,
-/// `Some(Some(δ))`: over ℚ(√δ)) without computing the ruling, when it goes through
-/// [`small_point`] (always with [`doubly_ruled_integral`]); `None` when it does not (no small
-/// point, or no real lines: the full computation then says what happens). The lines through
-/// `p` are over ℚ(√(s₁₂² − s₁₁s₂₂)), rational when `s₁₁ = 0`.
-pub(crate) fn doubly_ruled_radicand(s: &[[RBig; 4]; 4]) -> Option<Option<IBig>> {
-    let p = small_point(s)?;
-    let t = tangent_plane(s, &p).ok()??;
-    if t.s11.is_zero() {
-        return Some(None);
+/// The tangent data at a point and `√(s₁₂² − s₁₁s₂₂)` (`None` when `s₁₁ = 0`): what
+/// [`doubly_ruled_integral`] needs before its lines.
+pub(crate) struct Prepared {
+    tangent: Tangent,
+    root: Option<Quadratic>,
+}
+
+impl Prepared {
+    /// The radicand of the lines: `None` when they are rational.
+    pub(crate) fn radicand(&self) -> Option<IBig> {
+        self.root
+            .as_ref()
+            .filter(|r| r.as_rational().is_none())
+            .map(|r| r.radicand().clone())
     }
-    let disc = &t.s12 * &t.s12 - &t.s11 * &t.s22;
+}
+
+/// [`Prepared`] at an integer point `p` of `S`; `Ok(None)` if `p` is not integral or the
+/// square root is not in a quadratic field.
+///
+/// # Errors
+/// [`Error::Algebra`] when the lines through `p` are not real or `p` is in the kernel.
+fn prepare(s: &[[RBig; 4]; 4], p: &[RBig; 4]) -> Result<Option<Prepared>, Error> {
+    let Some(tangent) = tangent_plane(s, p)? else {
+        return Ok(None);
+    };
+    if tangent.s11.is_zero() {
+        return Ok(Some(Prepared {
+            tangent,
+            root: None,
+        }));
+    }
+    let disc = &tangent.s12 * &tangent.s12 - &tangent.s11 * &tangent.s22;
     if disc <= IBig::ZERO {
-        return None;
+        return Err(Error::Algebra(
+            "no real lines through a point of an inertia (2, 2) member".into(),
+        ));
     }
-    let root = sqrt_in_field(&Quadratic::rational(RBig::from(disc)), None)?;
-    Some(root.as_rational().is_none().then(|| root.radicand().clone()))
+    let Some(root) = sqrt_in_field(&Quadratic::rational(RBig::from(disc)), None) else {
+        return Ok(None);
+    };
+    Ok(Some(Prepared {
+        tangent,
+        root: Some(root),
+    }))
+}
+
+/// What [`parameterize_doubly_ruled`] finds before the ruling when it goes through
+/// [`small_point`] (always with [`doubly_ruled_integral`]): the ruling's radicand is then
+/// [`Prepared::radicand`] (the lines through `p` are over ℚ(√(s₁₂² − s₁₁s₂₂)), rational when
+/// `s₁₁ = 0`), and [`doubly_ruled_prepared`] finishes it. `None` when it does not go that
+/// way (no small point, no real lines: the full computation then says what happens).
+pub(crate) fn doubly_ruled_radicand(s: &[[RBig; 4]; 4]) -> Option<Prepared> {
+    let p = small_point(s)?;
+    prepare(s, &p).ok()?
+}
+
+/// [`parameterize_doubly_ruled`] from what [`doubly_ruled_radicand`] found: the same ruling.
+///
+/// # Errors
+/// As [`parameterize_doubly_ruled`].
+pub(crate) fn doubly_ruled_prepared(
+    prepared: Prepared,
+) -> Result<Option<RuledParameterization>, Error> {
+    doubly_ruled_integral(prepared)
 }
 
 /// [`parameterize_doubly_ruled`] through an integer point `p` of `S`, fraction-free in ℤ[√δ]
@@ -594,14 +644,9 @@ pub(crate) fn doubly_ruled_radicand(s: &[[RBig; 4]; 4]) -> Option<Option<IBig>> 
 /// `f = 2ρ·g₁ − (g₁ᵀMg₁)·p` (isotropic, `pᵀMf = 2ρ²`); then `b = p − u·E₊` and
 /// `d = 2ρ²·E₋ + u·c·f` (`pᵀMf·c = E₊ᵀM(2ρ²E₋)`, so `bᵀMd ≡ 0`). `Ok(None)` when a step
 /// leaves ℤ[√δ] (a non-integral square root): the caller takes the rational route.
-fn doubly_ruled_integral(
-    s: &[[RBig; 4]; 4],
-    p: &[RBig; 4],
-) -> Result<Option<RuledParameterization>, Error> {
+fn doubly_ruled_integral(prepared: Prepared) -> Result<Option<RuledParameterization>, Error> {
     use zsqrt::Zq;
-    let Some(t) = tangent_plane(s, p)? else {
-        return Ok(None);
-    };
+    let Prepared { tangent, root } = prepared;
     let Tangent {
         m,
         p,
@@ -611,24 +656,10 @@ fn doubly_ruled_integral(
         s11,
         s12,
         s22,
-    } = t;
+    } = tangent;
     let (e1, e2) = (&e1, &e2);
     let zvec = |x: &[IBig]| -> Vec<Zq> { x.iter().cloned().map(Zq::int).collect() };
-    let (plus, minus, delta) = if s11.is_zero() {
-        let minus: Vec<IBig> = (0..4)
-            .map(|i| &s22 * &e1[i] - IBig::from(2) * &s12 * &e2[i])
-            .collect();
-        (zvec(e1), zvec(&minus), IBig::ZERO)
-    } else {
-        let disc = &s12 * &s12 - &s11 * &s22;
-        if disc <= IBig::ZERO {
-            return Err(Error::Algebra(
-                "no real lines through a point of an inertia (2, 2) member".into(),
-            ));
-        }
-        let Some(root) = sqrt_in_field(&Quadratic::rational(RBig::from(disc)), None) else {
-            return Ok(None);
-        };
+    let (plus, minus, delta) = if let Some(root) = root {
         let delta = root.radicand().clone();
         let Some(root) = Zq::from_quadratic(&root, &delta) else {
             return Ok(None);
@@ -644,6 +675,11 @@ fn doubly_ruled_integral(
                 .collect()
         };
         (line(true), line(false), delta)
+    } else {
+        let minus: Vec<IBig> = (0..4)
+            .map(|i| &s22 * &e1[i] - IBig::from(2) * &s12 * &e2[i])
+            .collect();
+        (zvec(e1), zvec(&minus), IBig::ZERO)
     };
     // balance the parameter: |E₊| about |p| (a power of two, exact), so that u has the
     // scale of the point and the roots of s(u) are neither huge nor tiny
@@ -715,9 +751,8 @@ fn doubly_ruled_integral(
     let two_rho2 = two.mul(&rho.mul(&rho, &delta), &delta);
     // b and d each scaled to coprime integers (as `primitive_poly` would, without rationals)
     let mut bz: [zsqrt::ZPoly; 4] = std::array::from_fn(|i| vec![zp[i].clone(), plus[i].neg()]);
-    let mut dz: [zsqrt::ZPoly; 4] = std::array::from_fn(|i| {
-        vec![two_rho2.mul(&minus[i], &delta), c.mul(&f[i], &delta)]
-    });
+    let mut dz: [zsqrt::ZPoly; 4] =
+        std::array::from_fn(|i| vec![two_rho2.mul(&minus[i], &delta), c.mul(&f[i], &delta)]);
     zsqrt::make_primitive(&mut bz);
     zsqrt::make_primitive(&mut dz);
     let b: PolyVector = std::array::from_fn(|i| zsqrt::to_poly(&bz[i], &delta));

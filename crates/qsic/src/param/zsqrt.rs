@@ -217,10 +217,7 @@ pub(crate) fn substitute_power_of_two(p: &mut [Zq], k: usize) {
 
 /// `x` as a [`super::Number`] in `field` = ℚ(√δ) (rational when `b = 0`): the same element
 /// as [`super::curve::from_quadratic`] of [`Zq::to_quadratic`], without the rational gcds.
-pub(crate) fn to_number(
-    x: &Zq,
-    field: Option<&qsic_algebra::field::NumberField>,
-) -> super::Number {
+pub(crate) fn to_number(x: &Zq, field: Option<&qsic_algebra::field::NumberField>) -> super::Number {
     match field {
         Some(k) if !x.b.is_zero() => k.integer_element(&Poly::new(vec![x.a.clone(), x.b.clone()])),
         _ => {
@@ -244,7 +241,8 @@ pub(crate) fn to_poly_down(p: &[Zq], delta: &IBig, m: usize) -> Poly<Quadratic> 
                 if c.b.is_zero() {
                     Quadratic::rational(part(&c.a))
                 } else {
-                    Quadratic::new(part(&c.a), part(&c.b), delta.clone()).expect("δ is not a square")
+                    Quadratic::new(part(&c.a), part(&c.b), delta.clone())
+                        .expect("δ is not a square")
                 }
             })
             .collect(),
