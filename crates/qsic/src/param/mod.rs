@@ -986,7 +986,7 @@ mod tests {
     fn smooth_pairs(seed: u64, n: usize, bound: i64) -> Vec<(Quadric, Quadric)> {
         let mut rng = qsic_algebra::testing::SplitMix(seed);
         let mut out = Vec::new();
-        let mut random = |rng: &mut qsic_algebra::testing::SplitMix| {
+        let random = |rng: &mut qsic_algebra::testing::SplitMix| {
             let mut m = [[0i64; 4]; 4];
             for i in 0..4 {
                 for j in i..4 {
