@@ -300,13 +300,7 @@ fn integral_levin(
     let (Some(mut b), Some(mut d)) = (conv(&ruling.b), conv(&ruling.d)) else {
         return Ok(None);
     };
-    let mut c2 = zsqrt::poly_form(qm, &d, &d, &delta);
-    let mut c1 = zsqrt::poly_form(qm, &b, &d, &delta);
-    let mut c0 = zsqrt::poly_form(qm, &b, &b, &delta);
-    let mut s = zsqrt::poly_sub(
-        &zsqrt::poly_mul(&c1, &c1, &delta),
-        &zsqrt::poly_mul(&c0, &c2, &delta),
-    );
+    let [mut c0, mut c1, mut c2, mut s] = zsqrt::levin_forms(qm, &b, &d, &delta);
     if zsqrt::degree(&s).is_none() {
         return Err(Error::Algebra("s(u) vanishes identically".into()));
     }
@@ -320,15 +314,8 @@ fn integral_levin(
             zsqrt::substitute_power_of_two(p, k);
         }
     }
-    let combine = |x: &zsqrt::ZPoly, y: &zsqrt::ZPoly| -> [zsqrt::ZPoly; 4] {
-        std::array::from_fn(|i| {
-            zsqrt::poly_sub(
-                &zsqrt::poly_mul(x, &b[i], &delta),
-                &zsqrt::poly_mul(y, &d[i], &delta),
-            )
-        })
-    };
-    let (a, alt) = (combine(&c2, &c1), combine(&c1, &c0));
+    let a = zsqrt::combine(&c2, &b, &c1, &d, &delta);
+    let alt = zsqrt::combine(&c1, &b, &c0, &d, &delta);
     Ok(Some(IntegralLevin {
         delta,
         down,
