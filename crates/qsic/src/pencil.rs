@@ -50,7 +50,11 @@ pub struct PencilAnalysis {
 pub(crate) struct PencilData {
     pub a: SymMatrix4,
     pub b: SymMatrix4,
-    pub pencil: MatrixPencil,
+    /// Every minor of `λA − B`, made on first use (only non-simple roots need them).
+    pencil: std::sync::OnceLock<MatrixPencil>,
+    /// `E₁(λ), …, E₄(λ)` of `λA − B` ([`principal_minor_sums_of_pencil`]).
+    pub e: [Poly; 4],
+    /// `f(λ) = det(λA − B) = E₄`.
     pub f: Poly,
 }
 
@@ -58,10 +62,58 @@ impl PencilData {
     pub fn new(qa: &Quadric, qb: &Quadric) -> PencilData {
         let a = qa.integer_matrix().clone();
         let b = qb.integer_matrix().clone();
-        let pencil = MatrixPencil::new(a.clone(), b.clone());
-        let f = pencil.det_poly();
-        PencilData { a, b, pencil, f }
+        let e = principal_minor_sums_of_pencil(a.entries(), b.entries());
+        let f = e[3].clone();
+        PencilData {
+            a,
+            b,
+            pencil: std::sync::OnceLock::new(),
+            e,
+            f,
+        }
     }
+
+    /// The pencil with all its minors.
+    pub fn pencil(&self) -> &MatrixPencil {
+        self.pencil
+            .get_or_init(|| MatrixPencil::new(self.a.clone(), self.b.clone()))
+    }
+}
+
+/// `[E₁(λ), …, E₄(λ)]`, the sums of the principal minors of each order of `λA − B`, from
+/// their values at `λ = 0, 1, −1, 2` and their leading coefficients `E_k(A)` (`λ = ∞`):
+/// `q = E_k − E_k(A)·λᵏ` has degree ≤ 3, `q = a₀ + a₁λ + a₂λ² + a₃λ³` with `a₀ = q(0)`,
+/// `a₂ = (q(1) + q(−1))/2 − a₀`, `t = a₁ + a₃ = (q(1) − q(−1))/2`,
+/// `a₃ = (q(2) − a₀ − 4a₂ − 2t)/6`, `a₁ = t − a₃` (exact divisions: the `aᵢ` are integers).
+/// Five 4×4 principal-minor evaluations instead of every minor of the pencil.
+pub(crate) fn principal_minor_sums_of_pencil(a: &[[IBig; 4]; 4], b: &[[IBig; 4]; 4]) -> [Poly; 4] {
+    use qsic_algebra::linalg::minors::principal_minor_sums;
+    let at = |l: i64| -> [IBig; 4] {
+        let l = IBig::from(l);
+        let m: [[IBig; 4]; 4] =
+            std::array::from_fn(|i| std::array::from_fn(|j| &l * &a[i][j] - &b[i][j]));
+        principal_minor_sums(&m)
+    };
+    let lead = principal_minor_sums(a);
+    let (v0, v1, vm1, v2) = (at(0), at(1), at(-1), at(2));
+    std::array::from_fn(|k| {
+        let deg = k + 1;
+        let c = &lead[k];
+        // q(λ) = E_k(λ) − c·λ^deg at the four nodes
+        let pow = |l: i64| IBig::from(l).pow(deg);
+        let q0 = v0[k].clone();
+        let q1 = &v1[k] - c * pow(1);
+        let qm1 = &vm1[k] - c * pow(-1);
+        let q2 = &v2[k] - c * pow(2);
+        let a0 = q0;
+        let a2 = (&q1 + &qm1) / IBig::from(2) - &a0;
+        let t = (&q1 - &qm1) / IBig::from(2);
+        let a3 = (&q2 - &a0 - IBig::from(4) * &a2 - IBig::from(2) * &t) / IBig::from(6);
+        let a1 = &t - &a3;
+        let mut coeffs = vec![a0, a1, a2, a3, IBig::ZERO];
+        coeffs[deg] += c;
+        Poly::new(coeffs)
+    })
 }
 
 /// `D_k`, the gcd of the `k×k` minors of `λA − μB` as binary forms of degree `k`, for
@@ -162,7 +214,7 @@ impl PencilAnalysis {
         let gcds = if simple {
             None
         } else {
-            Some(MinorGcds::new(&data.pencil))
+            Some(MinorGcds::new(data.pencil()))
         };
 
         // The pieces of f: square-free, pairwise coprime forms on which the multiplicity
@@ -196,7 +248,7 @@ impl PencilAnalysis {
             orders.push((m_inf, gcds.as_ref().map_or([0; 3], MinorGcds::at_infinity)));
         }
 
-        let e = data.pencil.principal_minor_sums();
+        let e = &data.e;
         let roots = BinaryForm::real_roots_of_coprime(&forms);
         let mut real_count = vec![0usize; forms.len()];
         let mut real_roots: Vec<PencilRoot> = Vec::with_capacity(roots.len());
@@ -339,6 +391,30 @@ mod tests {
             positive: p,
             negative: n,
             zero: 4 - p - n,
+        }
+    }
+
+    /// The sums by interpolation are those of the pencil's minors, for small and big entries.
+    #[test]
+    fn interpolated_minor_sums_equal_the_pencils() {
+        let mut rng = qsic_algebra::testing::SplitMix(23);
+        for shift in [0usize, 3, 40, 100] {
+            for _ in 0..30 {
+                let mut sym = || -> [[IBig; 4]; 4] {
+                    let mut m: [[IBig; 4]; 4] = Default::default();
+                    for i in 0..4 {
+                        for j in i..4 {
+                            m[i][j] =
+                                IBig::from(rng.int(-9, 9)) << rng.int(0, shift as i64) as usize;
+                            m[j][i] = m[i][j].clone();
+                        }
+                    }
+                    m
+                };
+                let (a, b) = (sym(), sym());
+                let want = MatrixPencil::from_entries(a.clone(), b.clone()).principal_minor_sums();
+                assert_eq!(principal_minor_sums_of_pencil(&a, &b), want);
+            }
         }
     }
 

@@ -370,10 +370,6 @@ fn zi_sub(x: &[Zi], y: &[Zi]) -> Option<Vec<Zi>> {
     zi_zip(x, y, Zi::sub)
 }
 
-fn zi_add(x: &[Zi], y: &[Zi]) -> Option<Vec<Zi>> {
-    zi_zip(x, y, Zi::add)
-}
-
 fn zi_zip(x: &[Zi], y: &[Zi], f: impl Fn(Zi, Zi) -> Option<Zi>) -> Option<Vec<Zi>> {
     (0..x.len().max(y.len()))
         .map(|i| {
