@@ -50,7 +50,11 @@ pub struct PencilAnalysis {
 pub(crate) struct PencilData {
     pub a: SymMatrix4,
     pub b: SymMatrix4,
-    pub pencil: MatrixPencil,
+    /// Every minor of `λA − B`, made on first use (only non-simple roots need them).
+    pencil: std::sync::OnceLock<MatrixPencil>,
+    /// `E₁(λ), …, E₄(λ)` of `λA − B` ([`principal_minor_sums_of_pencil`]).
+    pub e: [Poly; 4],
+    /// `f(λ) = det(λA − B) = E₄`.
     pub f: Poly,
 }
 
@@ -58,10 +62,83 @@ impl PencilData {
     pub fn new(qa: &Quadric, qb: &Quadric) -> PencilData {
         let a = qa.integer_matrix().clone();
         let b = qb.integer_matrix().clone();
-        let pencil = MatrixPencil::new(a.clone(), b.clone());
-        let f = pencil.det_poly();
-        PencilData { a, b, pencil, f }
+        let e = principal_minor_sums_of_pencil(a.entries(), b.entries());
+        let f = e[3].clone();
+        PencilData {
+            a,
+            b,
+            pencil: std::sync::OnceLock::new(),
+            e,
+            f,
+        }
     }
+
+    /// The pencil with all its minors.
+    pub fn pencil(&self) -> &MatrixPencil {
+        self.pencil
+            .get_or_init(|| MatrixPencil::new(self.a.clone(), self.b.clone()))
+    }
+}
+
+/// `[E₁(λ), …, E₄(λ)]`, the sums of the principal minors of each order of `λA − B`, from
+/// their values at `λ = 0, 1, −1, 2` and their leading coefficients `E_k(A)` (`λ = ∞`):
+/// `q = E_k − E_k(A)·λᵏ` has degree ≤ 3, `q = a₀ + a₁λ + a₂λ² + a₃λ³` with `a₀ = q(0)`,
+/// `a₂ = (q(1) + q(−1))/2 − a₀`, `t = a₁ + a₃ = (q(1) − q(−1))/2`,
+/// `a₃ = (q(2) − a₀ − 4a₂ − 2t)/6`, `a₁ = t − a₃` (exact divisions: the `aᵢ` are integers).
+/// Five 4×4 principal-minor evaluations instead of every minor of the pencil.
+pub(crate) fn principal_minor_sums_of_pencil(a: &[[IBig; 4]; 4], b: &[[IBig; 4]; 4]) -> [Poly; 4] {
+    use qsic_algebra::linalg::minors::principal_minor_sums;
+    // entries below 2²² in A and B: those of λA − B (|λ| ≤ 2) below 2²⁴, every minor below
+    // 2¹⁰⁸, so i128 (the bound of `minors`' machine path)
+    let small = |m: &[[IBig; 4]; 4]| -> Option<[[i128; 4]; 4]> {
+        let mut out = [[0i128; 4]; 4];
+        for i in 0..4 {
+            for j in 0..4 {
+                let v = i64::try_from(&m[i][j]).ok()?;
+                if v.unsigned_abs() >= 1 << 22 {
+                    return None;
+                }
+                out[i][j] = i128::from(v);
+            }
+        }
+        Some(out)
+    };
+    let machine = small(a).zip(small(b));
+    let at = |l: i64| -> [IBig; 4] {
+        if let Some((ai, bi)) = &machine {
+            let l = i128::from(l);
+            let m: [[i128; 4]; 4] =
+                std::array::from_fn(|i| std::array::from_fn(|j| l * ai[i][j] - bi[i][j]));
+            return principal_minor_sums(&m).map(IBig::from);
+        }
+        let l = IBig::from(l);
+        let m: [[IBig; 4]; 4] =
+            std::array::from_fn(|i| std::array::from_fn(|j| &l * &a[i][j] - &b[i][j]));
+        principal_minor_sums(&m)
+    };
+    let lead = match &machine {
+        Some((ai, _)) => principal_minor_sums(ai).map(IBig::from),
+        None => principal_minor_sums(a),
+    };
+    let (v0, v1, vm1, v2) = (at(0), at(1), at(-1), at(2));
+    std::array::from_fn(|k| {
+        let deg = k + 1;
+        let c = &lead[k];
+        // q(λ) = E_k(λ) − c·λ^deg at the four nodes
+        let pow = |l: i64| IBig::from(l).pow(deg);
+        let q0 = v0[k].clone();
+        let q1 = &v1[k] - c * pow(1);
+        let qm1 = &vm1[k] - c * pow(-1);
+        let q2 = &v2[k] - c * pow(2);
+        let a0 = q0;
+        let a2 = (&q1 + &qm1) / IBig::from(2) - &a0;
+        let t = (&q1 - &qm1) / IBig::from(2);
+        let a3 = (&q2 - &a0 - IBig::from(4) * &a2 - IBig::from(2) * &t) / IBig::from(6);
+        let a1 = &t - &a3;
+        let mut coeffs = vec![a0, a1, a2, a3, IBig::ZERO];
+        coeffs[deg] += c;
+        Poly::new(coeffs)
+    })
 }
 
 /// `D_k`, the gcd of the `k×k` minors of `λA − μB` as binary forms of degree `k`, for
@@ -162,7 +239,7 @@ impl PencilAnalysis {
         let gcds = if simple {
             None
         } else {
-            Some(MinorGcds::new(&data.pencil))
+            Some(MinorGcds::new(data.pencil()))
         };
 
         // The pieces of f: square-free, pairwise coprime forms on which the multiplicity
@@ -196,7 +273,7 @@ impl PencilAnalysis {
             orders.push((m_inf, gcds.as_ref().map_or([0; 3], MinorGcds::at_infinity)));
         }
 
-        let e = data.pencil.principal_minor_sums();
+        let e = &data.e;
         let roots = BinaryForm::real_roots_of_coprime(&forms);
         let mut real_count = vec![0usize; forms.len()];
         let mut real_roots: Vec<PencilRoot> = Vec::with_capacity(roots.len());
@@ -339,6 +416,30 @@ mod tests {
             positive: p,
             negative: n,
             zero: 4 - p - n,
+        }
+    }
+
+    /// The sums by interpolation are those of the pencil's minors, for small and big entries.
+    #[test]
+    fn interpolated_minor_sums_equal_the_pencils() {
+        let mut rng = qsic_algebra::testing::SplitMix(23);
+        for shift in [0usize, 3, 12, 40, 100] {
+            for _ in 0..30 {
+                let mut sym = || -> [[IBig; 4]; 4] {
+                    let mut m: [[IBig; 4]; 4] = Default::default();
+                    for i in 0..4 {
+                        for j in i..4 {
+                            m[i][j] =
+                                IBig::from(rng.int(-9, 9)) << rng.int(0, shift as i64) as usize;
+                            m[j][i] = m[i][j].clone();
+                        }
+                    }
+                    m
+                };
+                let (a, b) = (sym(), sym());
+                let want = MatrixPencil::from_entries(a.clone(), b.clone()).principal_minor_sums();
+                assert_eq!(principal_minor_sums_of_pencil(&a, &b), want);
+            }
         }
     }
 

@@ -307,6 +307,10 @@ impl NumberFieldElement {
                 field,
             };
         }
+        if den.is_one() {
+            // gcd(content, 1) = 1: nothing to divide
+            return NumberFieldElement { num, den, field };
+        }
         let mut g = crate::int_gcd(&num.content(), &den);
         if den < IBig::ZERO {
             g = -g;

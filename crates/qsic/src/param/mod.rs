@@ -166,6 +166,31 @@ pub fn parameterize_smooth_quartic(
     a: &Quadric,
     b: &Quadric,
 ) -> Result<LevinParameterization, Error> {
+    smooth_quartic(a, b, true).map(|(levin, _)| levin)
+}
+
+/// The forms of a Levin parameterization over ℤ[√δ] (`δ = 0` over ℚ), after the balancing
+/// substitution: `b`, `d` the ruling, `a = c₂b − c₁d`, `alt = c₁b − c₀d`, `s = c₁² − c₀c₂`.
+/// Each is `p(u/2^down)` of the polynomial held (a negative balancing exponent).
+/// Kept by [`smooth_quartic`] for [`levin_curve`]: its conversions then need no rational gcd.
+struct IntegralLevin {
+    delta: IBig,
+    down: usize,
+    b: [zsqrt::ZPoly; 4],
+    d: [zsqrt::ZPoly; 4],
+    a: [zsqrt::ZPoly; 4],
+    alt: [zsqrt::ZPoly; 4],
+    s: zsqrt::ZPoly,
+}
+
+/// [`parameterize_smooth_quartic`], with the integral forms when the ruling is integral (the
+/// common case); `fast = false` takes the
+/// rational route (the tests compare the two).
+fn smooth_quartic(
+    a: &Quadric,
+    b: &Quadric,
+    fast: bool,
+) -> Result<(LevinParameterization, Option<IntegralLevin>), Error> {
     let analysis = analyze_pencil(a, b)
         .ok_or_else(|| Error::Unsupported("a singular or single pencil".into()))?;
     let simple = analysis.real_roots.iter().all(|r| r.multiplicity == 1)
@@ -180,10 +205,32 @@ pub fn parameterize_smooth_quartic(
     let (am, bm) = (integer_matrix(a), integer_matrix(b));
     let mut surface = choose_surface(&am, &bm, &analysis)?;
     let (qm, substituted) = match surface.lambda {
-        Some(_) => (&am, Substituted::A),
-        None => (&bm, Substituted::B),
+        Some(_) => (a, Substituted::A),
+        None => (b, Substituted::B),
     };
-    let qm = to_quadratic(qm);
+    let integral = if fast {
+        integral_levin(qm.integer_matrix().entries(), &surface.ruling)?
+    } else {
+        None
+    };
+    if let Some(fast) = integral {
+        let delta = surface.ruling.delta.clone();
+        let (d0, m) = (&fast.delta, fast.down);
+        surface.ruling.b = std::array::from_fn(|i| zsqrt::to_poly_down(&fast.b[i], d0, m));
+        surface.ruling.d = std::array::from_fn(|i| zsqrt::to_poly_down(&fast.d[i], d0, m));
+        let s = zsqrt::to_poly_down(&fast.s, d0, m);
+        let levin = LevinParameterization {
+            delta,
+            substituted,
+            a: std::array::from_fn(|i| zsqrt::to_poly_down(&fast.a[i], d0, m)),
+            d: surface.ruling.d.clone(),
+            discriminant: discriminant_roots(&s),
+            s,
+            surface,
+        };
+        return Ok((levin, Some(fast)));
+    }
+    let qm = to_quadratic(&integer_matrix(qm));
     let forms = |b: &PolyVector, d: &PolyVector| {
         let c2 = poly_form(&qm, d, d);
         let c1 = poly_form(&qm, b, d);
@@ -217,15 +264,68 @@ pub fn parameterize_smooth_quartic(
     let av: PolyVector = std::array::from_fn(|i| &(&c2 * &bv[i]) - &(&c1 * &dv[i]));
     let dv = dv.clone();
     let discriminant = discriminant_roots(&s);
-    Ok(LevinParameterization {
-        delta: surface.ruling.delta.clone(),
-        substituted,
-        a: av,
-        d: dv,
+    Ok((
+        LevinParameterization {
+            delta: surface.ruling.delta.clone(),
+            substituted,
+            a: av,
+            d: dv,
+            s,
+            discriminant,
+            surface,
+        },
+        None,
+    ))
+}
+
+/// The forms of [`smooth_quartic`] over ℤ[√δ] on the integer matrix `qm` of the substituted
+/// quadric: `c₀ = bᵀQb`, `c₁ = bᵀQd`, `c₂ = dᵀQd`, `s`, the balancing `u ↦ 2ᵏu` as a
+/// substitution in every form (`c(2ᵏu)` is the form of the substituted ruling), `a`, `alt`;
+/// for `k < 0` the substitution is left to the conversions (`down`). `Ok(None)` when the
+/// ruling is not integral (the rational route then).
+///
+/// # Errors
+/// [`Error::Algebra`] if `s ≡ 0`.
+fn integral_levin(
+    qm: &[[IBig; 4]; 4],
+    ruling: &RuledParameterization,
+) -> Result<Option<IntegralLevin>, Error> {
+    let delta = ruling.delta.clone().unwrap_or(IBig::ZERO);
+    let conv = |v: &PolyVector| -> Option<[zsqrt::ZPoly; 4]> {
+        let out: Vec<zsqrt::ZPoly> = v
+            .iter()
+            .map(|p| zsqrt::zpoly(p, &delta))
+            .collect::<Option<_>>()?;
+        out.try_into().ok()
+    };
+    let (Some(mut b), Some(mut d)) = (conv(&ruling.b), conv(&ruling.d)) else {
+        return Ok(None);
+    };
+    let [mut c0, mut c1, mut c2, mut s] = zsqrt::levin_forms(qm, &b, &d, &delta);
+    if zsqrt::degree(&s).is_none() {
+        return Err(Error::Algebra("s(u) vanishes identically".into()));
+    }
+    let k = balancing_exponent(&zsqrt::to_poly(&s, &delta));
+    let down = usize::try_from(-k).unwrap_or(0);
+    if let Ok(k @ 1..) = usize::try_from(k) {
+        for p in b.iter_mut().chain(d.iter_mut()) {
+            zsqrt::substitute_power_of_two(p, k);
+        }
+        for p in [&mut c0, &mut c1, &mut c2, &mut s] {
+            zsqrt::substitute_power_of_two(p, k);
+        }
+    }
+    let a = zsqrt::combine(&c2, &b, &c1, &d, &delta);
+    let alt = zsqrt::combine(&c1, &b, &c0, &d, &delta);
+    Ok(Some(IntegralLevin {
+        delta,
+        down,
+        b,
+        d,
+        a,
+        alt,
         s,
-        discriminant,
-        surface,
-    })
+    }))
 }
 
 /// The `k` for which `u ↦ 2ᵏu` brings the lowest and highest nonzero coefficients of `s` to
@@ -286,8 +386,8 @@ fn balancing_exponent_of(coefficients: &[f64]) -> i64 {
 pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
     let classification = classify(a, b);
     match (classification.pencil, classification.case) {
-        (PencilKind::Regular, Some(1..=4)) => match parameterize_smooth_quartic(a, b) {
-            Ok(levin) => levin_curve(classification, &levin, a, b),
+        (PencilKind::Regular, Some(1..=4)) => match smooth_quartic(a, b, true) {
+            Ok((levin, fast)) => levin_curve(classification, &levin, fast.as_ref(), a, b),
             // no ruling over one square root at the tried members: a biquadratic one
             Err(Error::Unsupported(why)) => {
                 biquadratic::biquadratic_curve(classification, a, b)?.ok_or(Error::Unsupported(why))
@@ -321,47 +421,82 @@ pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
 fn levin_curve(
     classification: Classification,
     levin: &LevinParameterization,
+    fast: Option<&IntegralLevin>,
     a_quadric: &Quadric,
     b_quadric: &Quadric,
 ) -> Result<Curve, Error> {
     let n = levin.real_components()?;
-    let field = levin.delta.as_ref().map(curve::sqrt_field);
-    let vector = |v: &PolyVector| -> PointPoly {
-        std::array::from_fn(|i| curve::poly_from_quadratic(&v[i], field.as_ref()))
-    };
-    let (a, d) = (vector(&levin.a), vector(&levin.d));
-    let s = curve::poly_from_quadratic(&levin.s, field.as_ref());
-    // `s | a`: `a ± d√s = √s·(d ± (a/s)√s)` vanishes at the roots of `s`; the second
-    // factor is a Levin form without that base point (same identities, same sheets)
-    let quotients: Option<Vec<NumberPoly>> = a
-        .iter()
-        .map(|c| {
-            let (q, r) = c.div_rem(&s);
-            r.is_zero().then_some(q)
-        })
-        .collect();
     // homogeneous degree of a: 3 on a doubly ruled surface (b, d lines), 4 on a cone
     let degree = match levin.surface.kind {
         SurfaceKind::DoublyRuled => 3,
         SurfaceKind::Cone => 4,
     };
-    // the alternate form: v = −c₀/(c₁ ± √s) gives (c₁ ± √s)·b − c₀·d on the same sheet
-    let qm = to_quadratic(&match levin.substituted {
-        Substituted::A => integer_matrix(a_quadric),
-        Substituted::B => integer_matrix(b_quadric),
-    });
-    let (rb, rd) = (&levin.surface.ruling.b, &levin.surface.ruling.d);
-    let (c0, c1) = (poly_form(&qm, rb, rb), poly_form(&qm, rb, rd));
-    let alt_a: PolyVector = std::array::from_fn(|i| &(&c1 * &rb[i]) - &(&c0 * &rd[i]));
-    let alternate = Some(Box::new(LevinForm {
-        a: vector(&alt_a),
-        d: vector(rb),
-        // c₁·b: (2 + 1) on a doubly ruled surface, (2 + 0) on a cone
-        degree: match levin.surface.kind {
-            SurfaceKind::DoublyRuled => 3,
-            SurfaceKind::Cone => 2,
-        },
-    }));
+    // c₁·b: (2 + 1) on a doubly ruled surface, (2 + 0) on a cone
+    let alt_degree = match levin.surface.kind {
+        SurfaceKind::DoublyRuled => 3,
+        SurfaceKind::Cone => 2,
+    };
+    let field = levin.delta.as_ref().map(curve::sqrt_field);
+    let (a, d, s, alternate) = match fast {
+        Some(f) => {
+            let vector = |v: &[zsqrt::ZPoly; 4]| -> PointPoly {
+                std::array::from_fn(|i| {
+                    zsqrt::to_number_poly(&v[i], &f.delta, f.down, field.as_ref())
+                })
+            };
+            let alternate = LevinForm {
+                a: vector(&f.alt),
+                d: vector(&f.b),
+                degree: alt_degree,
+            };
+            (
+                vector(&f.a),
+                vector(&f.d),
+                zsqrt::to_number_poly(&f.s, &f.delta, f.down, field.as_ref()),
+                alternate,
+            )
+        }
+        None => {
+            let vector = |v: &PolyVector| -> PointPoly {
+                std::array::from_fn(|i| curve::poly_from_quadratic(&v[i], field.as_ref()))
+            };
+            // the alternate form: v = −c₀/(c₁ ± √s) gives (c₁ ± √s)·b − c₀·d on the same sheet
+            let qm = to_quadratic(&match levin.substituted {
+                Substituted::A => integer_matrix(a_quadric),
+                Substituted::B => integer_matrix(b_quadric),
+            });
+            let (rb, rd) = (&levin.surface.ruling.b, &levin.surface.ruling.d);
+            let (c0, c1) = (poly_form(&qm, rb, rb), poly_form(&qm, rb, rd));
+            let alt_a: PolyVector = std::array::from_fn(|i| &(&c1 * &rb[i]) - &(&c0 * &rd[i]));
+            let alternate = LevinForm {
+                a: vector(&alt_a),
+                d: vector(rb),
+                degree: alt_degree,
+            };
+            (
+                vector(&levin.a),
+                vector(&levin.d),
+                curve::poly_from_quadratic(&levin.s, field.as_ref()),
+                alternate,
+            )
+        }
+    };
+    let alternate = Some(Box::new(alternate));
+    // `s | a`: `a ± d√s = √s·(d ± (a/s)√s)` vanishes at the roots of `s`; the second
+    // factor is a Levin form without that base point (same identities, same sheets). A
+    // nonzero coordinate of lower degree than `s` rules it out without a division.
+    let deg_s = s.degree().unwrap_or(0);
+    let quotients: Option<Vec<NumberPoly>> =
+        if a.iter().any(|c| c.degree().is_some_and(|dg| dg < deg_s)) {
+            None
+        } else {
+            a.iter()
+                .map(|c| {
+                    let (q, r) = c.div_rem(&s);
+                    r.is_zero().then_some(q)
+                })
+                .collect()
+        };
     let param = match quotients {
         Some(q) => ComponentParam::Levin {
             a: d,
@@ -476,12 +611,88 @@ pub(super) fn member(
     })
 }
 
-/// Picks the parameterization surface (see [`parameterize_smooth_quartic`]).
+/// Picks the parameterization surface (see [`parameterize_smooth_quartic`]): the choice of
+/// [`choose_surface_full`], with the ruling computed for the chosen candidate only when the
+/// radicand of the others can be told in advance ([`surface::doubly_ruled_radicand`]).
 fn choose_surface(
     a: &[[RBig; 4]; 4],
     b: &[[RBig; 4]; 4],
     analysis: &PencilAnalysis,
 ) -> Result<ParameterizationSurface, Error> {
+    let (candidates, _) = primary_candidates(analysis);
+    // (lambda, kind, matrix, ruling or its predicted radicand)
+    type Pick = (
+        Option<RBig>,
+        SurfaceKind,
+        [[RBig; 4]; 4],
+        Result<RuledParameterization, (Option<IBig>, surface::Prepared)>,
+    );
+    let mut best: Option<Pick> = None;
+    let delta_of = |p: &Pick| -> Option<IBig> {
+        match &p.3 {
+            Ok(r) => r.delta.clone(),
+            Err((d, _)) => d.clone(),
+        }
+    };
+    for (lambda, kind) in candidates {
+        let matrix = member(a, b, lambda.as_ref());
+        let predicted = match kind {
+            SurfaceKind::DoublyRuled => surface::doubly_ruled_radicand(&matrix),
+            SurfaceKind::Cone => None,
+        };
+        let ruling = match predicted {
+            Some(prepared) => Err((prepared.radicand(), prepared)),
+            None => {
+                let ruling = match kind {
+                    SurfaceKind::DoublyRuled => parameterize_doubly_ruled(&matrix)?,
+                    SurfaceKind::Cone => parameterize_cone(&matrix)?,
+                };
+                match ruling {
+                    Some(r) => Ok(r),
+                    None => continue,
+                }
+            }
+        };
+        let candidate: Pick = (lambda, kind, matrix, ruling);
+        let size = |d: Option<IBig>| d.map(|d| d.clone() * d);
+        let better = match &best {
+            None => true,
+            Some(old) => match (size(delta_of(old)), size(delta_of(&candidate))) {
+                (Some(o), Some(n)) => n < o,
+                (Some(_), None) => true,
+                _ => false,
+            },
+        };
+        if better {
+            let rational = delta_of(&candidate).is_none();
+            best = Some(candidate);
+            if rational {
+                break;
+            }
+        }
+    }
+    let Some((lambda, kind, matrix, ruling)) = best else {
+        return choose_surface_full(a, b, analysis);
+    };
+    let ruling = match ruling {
+        Ok(r) => r,
+        Err((delta, prepared)) => match surface::doubly_ruled_prepared(prepared)? {
+            Some(r) if r.delta == delta => r,
+            // not as predicted (never seen): the choice without predictions
+            _ => return choose_surface_full(a, b, analysis),
+        },
+    };
+    Ok(ParameterizationSurface {
+        lambda,
+        matrix,
+        kind,
+        ruling,
+    })
+}
+
+/// The candidates in order: the sample of each (2, 2) arc, then the cones at rational
+/// roots; with the number of cones at irrational roots.
+fn primary_candidates(analysis: &PencilAnalysis) -> (Vec<(Option<RBig>, SurfaceKind)>, usize) {
     let mut candidates: Vec<(Option<RBig>, SurfaceKind)> = Vec::new();
     for (sample, inertia) in &analysis.arcs {
         if inertia.positive == 2 && inertia.negative == 2 {
@@ -502,6 +713,17 @@ fn choose_surface(
             PencilPoint::Infinity => candidates.push((None, SurfaceKind::Cone)),
         }
     }
+    (candidates, irrational_cones)
+}
+
+/// Picks the parameterization surface by computing the ruling of each candidate in order
+/// (see [`parameterize_smooth_quartic`]).
+fn choose_surface_full(
+    a: &[[RBig; 4]; 4],
+    b: &[[RBig; 4]; 4],
+    analysis: &PencilAnalysis,
+) -> Result<ParameterizationSurface, Error> {
+    let (mut candidates, irrational_cones) = primary_candidates(analysis);
     let mut best: Option<ParameterizationSurface> = None;
     let primary = candidates.len();
     let mut k = 0;
@@ -774,6 +996,133 @@ mod tests {
         // no real root, negative: the sample's sign
         let d = discriminant_roots(&Poly::new(vec![rq(-1), rq(0), rq(0), rq(0), r2.neg()]));
         assert!(d.roots.is_empty() && d.arcs == [(RBig::ZERO, Sign::Negative)]);
+    }
+
+    /// The pairs of cases 1–4: random ones (entries up to `bound`) and the corpus lines.
+    fn smooth_pairs(seed: u64, n: usize, bound: i64) -> Vec<(Quadric, Quadric)> {
+        let mut rng = qsic_algebra::testing::SplitMix(seed);
+        let mut out = Vec::new();
+        let random = |rng: &mut qsic_algebra::testing::SplitMix| {
+            let mut m = [[0i64; 4]; 4];
+            for i in 0..4 {
+                for j in i..4 {
+                    m[i][j] = rng.int(-bound, bound);
+                    m[j][i] = m[i][j];
+                }
+            }
+            Quadric::from_integers(m).ok()
+        };
+        while out.len() < n {
+            if let (Some(a), Some(b)) = (random(&mut rng), random(&mut rng)) {
+                if matches!(classify(&a, &b).case, Some(1..=4)) {
+                    out.push((a, b));
+                }
+            }
+        }
+        let text = include_str!("../../tests/data/cases.jsonl");
+        for line in text.lines() {
+            let v: serde_json::Value = serde_json::from_str(line).expect("json");
+            let read = |m: &serde_json::Value| -> Option<Quadric> {
+                let rows: Vec<Vec<String>> = m
+                    .as_array()?
+                    .iter()
+                    .map(|r| {
+                        r.as_array()
+                            .map(|r| r.iter().map(|x| x.as_str().unwrap_or("0").into()).collect())
+                    })
+                    .collect::<Option<_>>()?;
+                crate::io::quadric_from_rows(&rows).ok()
+            };
+            if let (Some(a), Some(b)) = (read(&v["A"]), read(&v["B"])) {
+                if matches!(classify(&a, &b).case, Some(1..=4)) {
+                    out.push((a, b));
+                }
+            }
+        }
+        out
+    }
+
+    /// The integral route (forms over ℤ[√δ], conversions without gcds) gives exactly the
+    /// parameterization and the curve of the rational route.
+    #[test]
+    fn integral_levin_equals_the_rational_route() {
+        let mut fast_used = 0;
+        let mut total = 0;
+        for (seed, bound) in [(1u64, 10i64), (2, 1000), (3, 3)] {
+            for (a, b) in smooth_pairs(seed, 40, bound) {
+                let (Ok((l1, f1)), Ok((l2, f2))) =
+                    (smooth_quartic(&a, &b, true), smooth_quartic(&a, &b, false))
+                else {
+                    continue;
+                };
+                total += 1;
+                assert!(f2.is_none());
+                fast_used += usize::from(f1.is_some());
+                assert_eq!(l1.surface, l2.surface);
+                assert_eq!((&l1.a, &l1.d, &l1.s), (&l2.a, &l2.d, &l2.s));
+                assert_eq!((&l1.delta, l1.substituted), (&l2.delta, l2.substituted));
+                let cls = classify(&a, &b);
+                let c1 = levin_curve(cls.clone(), &l1, f1.as_ref(), &a, &b).expect("curve");
+                let c2 = levin_curve(cls, &l2, None, &a, &b).expect("curve");
+                let levin = |c: &Curve| match c.components[0].param.clone() {
+                    Some(ComponentParam::Levin {
+                        a,
+                        d,
+                        degree,
+                        alternate,
+                        s,
+                    }) => {
+                        let alt = alternate.expect("an alternate form");
+                        (a, d, degree, s, alt.a, alt.d, alt.degree)
+                    }
+                    other => panic!("not a Levin form: {other:?}"),
+                };
+                assert_eq!(levin(&c1), levin(&c2));
+                assert_eq!(c1.pieces.len(), c2.pieces.len());
+            }
+        }
+        assert!(
+            total >= 100 && fast_used * 10 >= total * 9,
+            "{fast_used}/{total}"
+        );
+    }
+
+    /// The surface chosen with predicted radicands is the one chosen by computing every
+    /// candidate's ruling, and each prediction is the radicand of that ruling.
+    #[test]
+    fn predicted_radicands_choose_the_same_surface() {
+        let (mut predicted, mut total) = (0, 0);
+        for (seed, bound) in [(4u64, 10i64), (5, 1000), (6, 2)] {
+            for (a, b) in smooth_pairs(seed, 40, bound) {
+                let analysis = analyze_pencil(&a, &b).expect("regular");
+                let (am, bm) = (integer_matrix(&a), integer_matrix(&b));
+                let fast = choose_surface(&am, &bm, &analysis);
+                let full = choose_surface_full(&am, &bm, &analysis);
+                match (&fast, &full) {
+                    (Ok(x), Ok(y)) => assert_eq!(x, y),
+                    (Err(x), Err(y)) => assert_eq!(x.to_string(), y.to_string()),
+                    _ => panic!("{fast:?} vs {full:?}"),
+                }
+                for (lambda, kind) in primary_candidates(&analysis).0 {
+                    if kind != SurfaceKind::DoublyRuled {
+                        continue;
+                    }
+                    let m = member(&am, &bm, lambda.as_ref());
+                    total += 1;
+                    if let Some(prepared) = surface::doubly_ruled_radicand(&m) {
+                        let delta = prepared.radicand();
+                        predicted += 1;
+                        let ruling = parameterize_doubly_ruled(&m)
+                            .expect("ruling")
+                            .expect("lines");
+                        assert_eq!(ruling.delta, delta);
+                        let again = surface::doubly_ruled_prepared(prepared).expect("ruling");
+                        assert_eq!(again, Some(ruling));
+                    }
+                }
+            }
+        }
+        assert!(predicted * 10 >= total * 7, "{predicted}/{total}");
     }
 
     #[test]

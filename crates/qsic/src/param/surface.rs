@@ -405,8 +405,10 @@ pub(crate) fn parameterize_doubly_ruled(
 ) -> Result<Option<RuledParameterization>, Error> {
     let points: Vec<Vec4> = match small_point(s) {
         Some(p) => {
-            if let Some(r) = doubly_ruled_integral(s, &p)? {
-                return Ok(Some(r));
+            if let Some(prepared) = prepare(s, &p)? {
+                if let Some(r) = doubly_ruled_integral(prepared)? {
+                    return Ok(Some(r));
+                }
             }
             vec![std::array::from_fn(|i| q(&p[i]))]
         }
@@ -550,18 +552,22 @@ fn doubly_ruled_through(sm: &Mat4, p: Vec4) -> Result<Option<RuledParameterizati
     Ok(Some(RuledParameterization { b, d, delta }))
 }
 
-/// [`parameterize_doubly_ruled`] through an integer point `p` of `S`, fraction-free in ℤ[√δ]
-/// on `M = k·S` (integer): `r = Mp`, the tangent plane `Kₖ = rⱼeₖ − rₖeⱼ`, the lines
-/// `E± = (−s₁₂ ± √(s₁₂² − s₁₁s₂₂))·e₁ + s₁₁·e₂`, `c = E₊ᵀME₋`; `g₀ = c·eⱼ − (ME₋)ⱼ·E₊`,
-/// `g₁ = c·g₀ − (g₀ᵀME₊)·E₋` (orthogonal to `E₊` and `E₋`), `ρ = pᵀMg₁`,
-/// `f = 2ρ·g₁ − (g₁ᵀMg₁)·p` (isotropic, `pᵀMf = 2ρ²`); then `b = p − u·E₊` and
-/// `d = 2ρ²·E₋ + u·c·f` (`pᵀMf·c = E₊ᵀM(2ρ²E₋)`, so `bᵀMd ≡ 0`). `Ok(None)` when a step
-/// leaves ℤ[√δ] (a non-integral square root): the caller takes the rational route.
-fn doubly_ruled_integral(
-    s: &[[RBig; 4]; 4],
-    p: &[RBig; 4],
-) -> Result<Option<RuledParameterization>, Error> {
-    use zsqrt::Zq;
+/// The tangent plane of `S` at an integer point `p`, on `M = k·S` (integer): `r = Mp`, its
+/// first nonzero entry `j`, the kernel vectors `e₁`, `e₂` (`Kₖ = rⱼeₖ − rₖeⱼ`, the one with
+/// the first `pₖ ≠ 0`, `k ≠ j`, left out) and the binary form `sᵢⱼ = eᵢᵀMeⱼ` on them.
+struct Tangent {
+    m: [[IBig; 4]; 4],
+    p: Vec<IBig>,
+    j: usize,
+    e1: Vec<IBig>,
+    e2: Vec<IBig>,
+    s11: IBig,
+    s12: IBig,
+    s22: IBig,
+}
+
+/// [`Tangent`] at `p`; `Ok(None)` if `p` is not integral.
+fn tangent_plane(s: &[[RBig; 4]; 4], p: &[RBig; 4]) -> Result<Option<Tangent>, Error> {
     let Some(m) = scaled_integer_matrix(s) else {
         return Ok(None);
     };
@@ -584,34 +590,120 @@ fn doubly_ruled_integral(
     let k0 = (0..4)
         .find(|&k| k != j && !p[k].is_zero())
         .ok_or_else(|| Error::Algebra("tangent plane basis".into()))?;
-    let kernel: Vec<Vec<IBig>> = (0..4)
-        .filter(|&k| k != j && k != k0)
-        .map(|k| {
-            let mut v = vec![IBig::ZERO; 4];
-            v[k] = r[j].clone();
-            v[j] = -r[k].clone();
-            v
-        })
-        .collect();
-    let (e1, e2) = (&kernel[0], &kernel[1]);
-    let (me1, me2) = (mv(e1), mv(e2));
-    let (s11, s12, s22) = (idot(e1, &me1), idot(e1, &me2), idot(e2, &me2));
+    let mut kernel = (0..4).filter(|&k| k != j && k != k0).map(|k| {
+        let mut v = vec![IBig::ZERO; 4];
+        v[k] = r[j].clone();
+        v[j] = -r[k].clone();
+        v
+    });
+    let (e1, e2) = (
+        kernel.next().expect("two kernel vectors"),
+        kernel.next().expect("two kernel vectors"),
+    );
+    let (me1, me2) = (mv(&e1), mv(&e2));
+    let (s11, s12, s22) = (idot(&e1, &me1), idot(&e1, &me2), idot(&e2, &me2));
+    Ok(Some(Tangent {
+        m,
+        p,
+        j,
+        e1,
+        e2,
+        s11,
+        s12,
+        s22,
+    }))
+}
+
+/// The tangent data at a point and `√(s₁₂² − s₁₁s₂₂)` (`None` when `s₁₁ = 0`): what
+/// [`doubly_ruled_integral`] needs before its lines.
+pub(crate) struct Prepared {
+    tangent: Tangent,
+    root: Option<Quadratic>,
+}
+
+impl Prepared {
+    /// The radicand of the lines: `None` when they are rational.
+    pub(crate) fn radicand(&self) -> Option<IBig> {
+        self.root
+            .as_ref()
+            .filter(|r| r.as_rational().is_none())
+            .map(|r| r.radicand().clone())
+    }
+}
+
+/// [`Prepared`] at an integer point `p` of `S`; `Ok(None)` if `p` is not integral or the
+/// square root is not in a quadratic field.
+///
+/// # Errors
+/// [`Error::Algebra`] when the lines through `p` are not real or `p` is in the kernel.
+fn prepare(s: &[[RBig; 4]; 4], p: &[RBig; 4]) -> Result<Option<Prepared>, Error> {
+    let Some(tangent) = tangent_plane(s, p)? else {
+        return Ok(None);
+    };
+    if tangent.s11.is_zero() {
+        return Ok(Some(Prepared {
+            tangent,
+            root: None,
+        }));
+    }
+    let disc = &tangent.s12 * &tangent.s12 - &tangent.s11 * &tangent.s22;
+    if disc <= IBig::ZERO {
+        return Err(Error::Algebra(
+            "no real lines through a point of an inertia (2, 2) member".into(),
+        ));
+    }
+    let Some(root) = sqrt_in_field(&Quadratic::rational(RBig::from(disc)), None) else {
+        return Ok(None);
+    };
+    Ok(Some(Prepared {
+        tangent,
+        root: Some(root),
+    }))
+}
+
+/// What [`parameterize_doubly_ruled`] finds before the ruling when it goes through
+/// [`small_point`] (always with [`doubly_ruled_integral`]): the ruling's radicand is then
+/// [`Prepared::radicand`] (the lines through `p` are over ℚ(√(s₁₂² − s₁₁s₂₂)), rational when
+/// `s₁₁ = 0`), and [`doubly_ruled_prepared`] finishes it. `None` when it does not go that
+/// way (no small point, no real lines: the full computation then says what happens).
+pub(crate) fn doubly_ruled_radicand(s: &[[RBig; 4]; 4]) -> Option<Prepared> {
+    let p = small_point(s)?;
+    prepare(s, &p).ok()?
+}
+
+/// [`parameterize_doubly_ruled`] from what [`doubly_ruled_radicand`] found: the same ruling.
+///
+/// # Errors
+/// As [`parameterize_doubly_ruled`].
+pub(crate) fn doubly_ruled_prepared(
+    prepared: Prepared,
+) -> Result<Option<RuledParameterization>, Error> {
+    doubly_ruled_integral(prepared)
+}
+
+/// [`parameterize_doubly_ruled`] through an integer point `p` of `S`, fraction-free in ℤ[√δ]
+/// on `M = k·S` (integer): `r = Mp`, the tangent plane `Kₖ = rⱼeₖ − rₖeⱼ`, the lines
+/// `E± = (−s₁₂ ± √(s₁₂² − s₁₁s₂₂))·e₁ + s₁₁·e₂`, `c = E₊ᵀME₋`; `g₀ = c·eⱼ − (ME₋)ⱼ·E₊`,
+/// `g₁ = c·g₀ − (g₀ᵀME₊)·E₋` (orthogonal to `E₊` and `E₋`), `ρ = pᵀMg₁`,
+/// `f = 2ρ·g₁ − (g₁ᵀMg₁)·p` (isotropic, `pᵀMf = 2ρ²`); then `b = p − u·E₊` and
+/// `d = 2ρ²·E₋ + u·c·f` (`pᵀMf·c = E₊ᵀM(2ρ²E₋)`, so `bᵀMd ≡ 0`). `Ok(None)` when a step
+/// leaves ℤ[√δ] (a non-integral square root): the caller takes the rational route.
+fn doubly_ruled_integral(prepared: Prepared) -> Result<Option<RuledParameterization>, Error> {
+    use zsqrt::Zq;
+    let Prepared { tangent, root } = prepared;
+    let Tangent {
+        m,
+        p,
+        j,
+        e1,
+        e2,
+        s11,
+        s12,
+        s22,
+    } = tangent;
+    let (e1, e2) = (&e1, &e2);
     let zvec = |x: &[IBig]| -> Vec<Zq> { x.iter().cloned().map(Zq::int).collect() };
-    let (plus, minus, delta) = if s11.is_zero() {
-        let minus: Vec<IBig> = (0..4)
-            .map(|i| &s22 * &e1[i] - IBig::from(2) * &s12 * &e2[i])
-            .collect();
-        (zvec(e1), zvec(&minus), IBig::ZERO)
-    } else {
-        let disc = &s12 * &s12 - &s11 * &s22;
-        if disc <= IBig::ZERO {
-            return Err(Error::Algebra(
-                "no real lines through a point of an inertia (2, 2) member".into(),
-            ));
-        }
-        let Some(root) = sqrt_in_field(&Quadratic::rational(RBig::from(disc)), None) else {
-            return Ok(None);
-        };
+    let (plus, minus, delta) = if let Some(root) = root {
         let delta = root.radicand().clone();
         let Some(root) = Zq::from_quadratic(&root, &delta) else {
             return Ok(None);
@@ -627,6 +719,11 @@ fn doubly_ruled_integral(
                 .collect()
         };
         (line(true), line(false), delta)
+    } else {
+        let minus: Vec<IBig> = (0..4)
+            .map(|i| &s22 * &e1[i] - IBig::from(2) * &s12 * &e2[i])
+            .collect();
+        (zvec(e1), zvec(&minus), IBig::ZERO)
     };
     // balance the parameter: |E₊| about |p| (a power of two, exact), so that u has the
     // scale of the point and the roots of s(u) are neither huge nor tiny
@@ -696,16 +793,14 @@ fn doubly_ruled_integral(
     let two = Zq::int(IBig::from(2));
     let f = comb(&two.mul(&rho, &delta), &g1, &g1g1.neg(), &zp);
     let two_rho2 = two.mul(&rho.mul(&rho, &delta), &delta);
-    let back = |x: &Zq| x.to_quadratic(&delta);
-    let b: PolyVector =
-        std::array::from_fn(|i| Poly::new(vec![back(&zp[i]), back(&plus[i].neg())]));
-    let d: PolyVector = std::array::from_fn(|i| {
-        Poly::new(vec![
-            back(&two_rho2.mul(&minus[i], &delta)),
-            back(&c.mul(&f[i], &delta)),
-        ])
-    });
-    let (b, d) = (primitive_poly(&b), primitive_poly(&d));
+    // b and d each scaled to coprime integers (as `primitive_poly` would, without rationals)
+    let mut bz: [zsqrt::ZPoly; 4] = std::array::from_fn(|i| vec![zp[i].clone(), plus[i].neg()]);
+    let mut dz: [zsqrt::ZPoly; 4] =
+        std::array::from_fn(|i| vec![two_rho2.mul(&minus[i], &delta), c.mul(&f[i], &delta)]);
+    zsqrt::make_primitive(&mut bz);
+    zsqrt::make_primitive(&mut dz);
+    let b: PolyVector = std::array::from_fn(|i| zsqrt::to_poly(&bz[i], &delta));
+    let d: PolyVector = std::array::from_fn(|i| zsqrt::to_poly(&dz[i], &delta));
     let delta = radicand_of(b.iter().chain(d.iter()).flat_map(|x| x.coeffs()));
     Ok(Some(RuledParameterization { b, d, delta }))
 }
@@ -793,6 +888,34 @@ mod tests {
         assert!(poly_form(&sm, &r.b, &r.d).is_zero());
         assert!(poly_form(&sm, &r.d, &r.d).is_zero());
         assert!(r.d.iter().any(|x| !x.is_constant()), "d(u) moves");
+    }
+
+    /// The integral `make_primitive` scales like `primitive_poly`.
+    #[test]
+    fn integral_primitive_is_primitive_poly() {
+        let mut rng = qsic_algebra::testing::SplitMix(9);
+        for delta in [0i64, 2, 6, 15] {
+            let delta = IBig::from(delta);
+            for _ in 0..50 {
+                let k = rng.int(1, 12);
+                let mut v: [zsqrt::ZPoly; 4] = std::array::from_fn(|_| {
+                    (0..2)
+                        .map(|_| zsqrt::Zq {
+                            a: IBig::from(k * rng.int(-20, 20)),
+                            b: if delta.is_zero() {
+                                IBig::ZERO
+                            } else {
+                                IBig::from(k * rng.int(-3, 3))
+                            },
+                        })
+                        .collect()
+                });
+                let before: PolyVector = std::array::from_fn(|i| zsqrt::to_poly(&v[i], &delta));
+                zsqrt::make_primitive(&mut v);
+                let after: PolyVector = std::array::from_fn(|i| zsqrt::to_poly(&v[i], &delta));
+                assert_eq!(after, primitive_poly(&before));
+            }
+        }
     }
 
     #[test]

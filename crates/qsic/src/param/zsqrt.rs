@@ -191,3 +191,353 @@ pub(crate) fn sign_at(p: &[Zq], x: &RBig, delta: &IBig) -> Sign {
         sb
     }
 }
+
+/// `x − y`.
+pub(crate) fn poly_sub(x: &[Zq], y: &[Zq]) -> ZPoly {
+    let mut out: ZPoly = x.to_vec();
+    if out.len() < y.len() {
+        out.resize(y.len(), Zq::default());
+    }
+    for (o, c) in out.iter_mut().zip(y) {
+        o.a -= &c.a;
+        o.b -= &c.b;
+    }
+    out
+}
+
+/// `p(2ᵏu)` for `k ≥ 0`: coefficient `i` times `2^(k·i)`.
+pub(crate) fn substitute_power_of_two(p: &mut [Zq], k: usize) {
+    for (i, c) in p.iter_mut().enumerate() {
+        if i > 0 && k > 0 {
+            c.a <<= k * i;
+            c.b <<= k * i;
+        }
+    }
+}
+
+/// `x` as a [`super::Number`] in `field` = ℚ(√δ) (rational when `b = 0`): the same element
+/// as [`super::curve::from_quadratic`] of [`Zq::to_quadratic`], without the rational gcds.
+pub(crate) fn to_number(x: &Zq, field: Option<&qsic_algebra::field::NumberField>) -> super::Number {
+    match field {
+        Some(k) if !x.b.is_zero() => k.integer_element(&Poly::new(vec![x.a.clone(), x.b.clone()])),
+        _ => {
+            debug_assert!(x.b.is_zero(), "an irrational coefficient needs its field");
+            super::curve::rational(RBig::from(x.a.clone()))
+        }
+    }
+}
+
+/// `p(u/2ᵐ)` over ℚ(√δ): coefficient `i` divided by `2^(m·i)`.
+pub(crate) fn to_poly_down(p: &[Zq], delta: &IBig, m: usize) -> Poly<Quadratic> {
+    if m == 0 {
+        return to_poly(p, delta);
+    }
+    Poly::new(
+        p.iter()
+            .enumerate()
+            .map(|(i, c)| {
+                let den = dashu_int::UBig::ONE << (m * i);
+                let part = |v: &IBig| RBig::from_parts(v.clone(), den.clone());
+                if c.b.is_zero() {
+                    Quadratic::rational(part(&c.a))
+                } else {
+                    Quadratic::new(part(&c.a), part(&c.b), delta.clone())
+                        .expect("δ is not a square")
+                }
+            })
+            .collect(),
+    )
+}
+
+/// `p(u/2ᵐ)` as a [`super::NumberPoly`]: by [`to_number`] for `m = 0`, else through
+/// [`super::curve::poly_from_quadratic`].
+pub(crate) fn to_number_poly(
+    p: &[Zq],
+    delta: &IBig,
+    m: usize,
+    field: Option<&qsic_algebra::field::NumberField>,
+) -> super::NumberPoly {
+    if m > 0 {
+        return super::curve::poly_from_quadratic(&to_poly_down(p, delta, m), field);
+    }
+    Poly::new(p.iter().map(|c| to_number(c, field)).collect())
+}
+
+/// The degree of `p` (trailing zeros ignored), `None` for zero.
+pub(crate) fn degree(p: &[Zq]) -> Option<usize> {
+    p.iter().rposition(|c| !c.is_zero())
+}
+
+/// `v` divided by the gcd of all the integers `a`, `b` of its coefficients (the positive
+/// rational scale of [`super::surface`]'s `primitive_poly` on integral coordinates).
+pub(crate) fn make_primitive(v: &mut [ZPoly]) {
+    use dashu_int::ops::Gcd;
+    let mut g = IBig::ZERO;
+    for x in v.iter().flatten() {
+        for part in [&x.a, &x.b] {
+            if !part.is_zero() && !g.is_one() {
+                g = IBig::from(g.gcd(part));
+            }
+        }
+    }
+    if g.is_zero() || g.is_one() {
+        return;
+    }
+    for x in v.iter_mut().flatten() {
+        x.a = &x.a / &g;
+        x.b = &x.b / &g;
+    }
+}
+
+/// `a + b√δ` in machine integers: the small-number path of the forms (every operation
+/// checked; `None` on overflow sends the caller to [`Zq`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct Zi {
+    a: i128,
+    b: i128,
+}
+
+impl Zi {
+    fn of(x: &Zq) -> Option<Zi> {
+        Some(Zi {
+            a: i128::try_from(&x.a).ok()?,
+            b: i128::try_from(&x.b).ok()?,
+        })
+    }
+
+    fn big(self) -> Zq {
+        Zq {
+            a: IBig::from(self.a),
+            b: IBig::from(self.b),
+        }
+    }
+
+    fn mul(self, o: Zi, delta: i128) -> Option<Zi> {
+        if self.b == 0 && o.b == 0 {
+            return Some(Zi {
+                a: self.a.checked_mul(o.a)?,
+                b: 0,
+            });
+        }
+        Some(Zi {
+            a: self
+                .a
+                .checked_mul(o.a)?
+                .checked_add(self.b.checked_mul(o.b)?.checked_mul(delta)?)?,
+            b: self
+                .a
+                .checked_mul(o.b)?
+                .checked_add(self.b.checked_mul(o.a)?)?,
+        })
+    }
+
+    fn add(self, o: Zi) -> Option<Zi> {
+        Some(Zi {
+            a: self.a.checked_add(o.a)?,
+            b: self.b.checked_add(o.b)?,
+        })
+    }
+
+    fn sub(self, o: Zi) -> Option<Zi> {
+        Some(Zi {
+            a: self.a.checked_sub(o.a)?,
+            b: self.b.checked_sub(o.b)?,
+        })
+    }
+}
+
+fn zi_poly(p: &[Zq]) -> Option<Vec<Zi>> {
+    p.iter().map(Zi::of).collect()
+}
+
+fn zi_mul(x: &[Zi], y: &[Zi], delta: i128) -> Option<Vec<Zi>> {
+    if x.is_empty() || y.is_empty() {
+        return Some(Vec::new());
+    }
+    let mut out = vec![Zi::default(); x.len() + y.len() - 1];
+    for (i, a) in x.iter().enumerate() {
+        if *a == Zi::default() {
+            continue;
+        }
+        for (j, b) in y.iter().enumerate() {
+            out[i + j] = out[i + j].add(a.mul(*b, delta)?)?;
+        }
+    }
+    Some(out)
+}
+
+fn zi_sub(x: &[Zi], y: &[Zi]) -> Option<Vec<Zi>> {
+    zi_zip(x, y, Zi::sub)
+}
+
+fn zi_zip(x: &[Zi], y: &[Zi], f: impl Fn(Zi, Zi) -> Option<Zi>) -> Option<Vec<Zi>> {
+    (0..x.len().max(y.len()))
+        .map(|i| {
+            f(
+                x.get(i).copied().unwrap_or_default(),
+                y.get(i).copied().unwrap_or_default(),
+            )
+        })
+        .collect()
+}
+
+/// `xᵀMy` in machine integers (`x`, `y` of at most 3 coefficients, fixed buffers).
+fn zi_form(m: &[[i128; 4]; 4], x: &[Vec<Zi>; 4], y: &[Vec<Zi>; 4], delta: i128) -> Option<Vec<Zi>> {
+    if x.iter().chain(y).any(|p| p.len() > 3) {
+        return None;
+    }
+    let mut acc = [Zi::default(); 5];
+    for i in 0..4 {
+        if x[i].iter().all(|c| *c == Zi::default()) {
+            continue;
+        }
+        let mut row = [Zi::default(); 3];
+        for j in 0..4 {
+            if m[i][j] != 0 {
+                let k = Zi { a: m[i][j], b: 0 };
+                for (r, c) in row.iter_mut().zip(&y[j]) {
+                    *r = r.add(k.mul(*c, delta)?)?;
+                }
+            }
+        }
+        for (e, xc) in x[i].iter().enumerate() {
+            if *xc == Zi::default() {
+                continue;
+            }
+            for (f, rc) in row.iter().enumerate() {
+                acc[e + f] = acc[e + f].add(xc.mul(*rc, delta)?)?;
+            }
+        }
+    }
+    Some(acc.to_vec())
+}
+
+/// `c₀ = bᵀMb`, `c₁ = bᵀMd`, `c₂ = dᵀMd` and `s = c₁² − c₀c₂` over ℤ[√δ]: in machine
+/// integers when everything fits (checked), else in [`Zq`]; the same values.
+pub(crate) fn levin_forms(
+    m: &[[IBig; 4]; 4],
+    b: &[ZPoly; 4],
+    d: &[ZPoly; 4],
+    delta: &IBig,
+) -> [ZPoly; 4] {
+    let small = || -> Option<[ZPoly; 4]> {
+        let mi: [[i128; 4]; 4] = {
+            let mut out = [[0i128; 4]; 4];
+            for i in 0..4 {
+                for j in 0..4 {
+                    out[i][j] = i128::try_from(&m[i][j]).ok()?;
+                }
+            }
+            out
+        };
+        let dl = i128::try_from(delta).ok()?;
+        let conv = |v: &[ZPoly; 4]| -> Option<[Vec<Zi>; 4]> {
+            Some([
+                zi_poly(&v[0])?,
+                zi_poly(&v[1])?,
+                zi_poly(&v[2])?,
+                zi_poly(&v[3])?,
+            ])
+        };
+        let (bi, di) = (conv(b)?, conv(d)?);
+        let c0 = zi_form(&mi, &bi, &bi, dl)?;
+        let c1 = zi_form(&mi, &bi, &di, dl)?;
+        let c2 = zi_form(&mi, &di, &di, dl)?;
+        let big = |p: &[Zi]| -> ZPoly { p.iter().map(|c| c.big()).collect() };
+        let s = match (zi_mul(&c1, &c1, dl), zi_mul(&c0, &c2, dl)) {
+            (Some(x), Some(y)) => zi_sub(&x, &y).map(|s| big(&s)),
+            _ => None,
+        };
+        let (c0, c1, c2) = (big(&c0), big(&c1), big(&c2));
+        let s =
+            s.unwrap_or_else(|| poly_sub(&poly_mul(&c1, &c1, delta), &poly_mul(&c0, &c2, delta)));
+        Some([c0, c1, c2, s])
+    };
+    if let Some(out) = small() {
+        return out;
+    }
+    let c0 = poly_form(m, b, b, delta);
+    let c1 = poly_form(m, b, d, delta);
+    let c2 = poly_form(m, d, d, delta);
+    let s = poly_sub(&poly_mul(&c1, &c1, delta), &poly_mul(&c0, &c2, delta));
+    [c0, c1, c2, s]
+}
+
+/// `x·v − y·w` coordinatewise over ℤ[√δ] (machine integers when they fit, checked).
+pub(crate) fn combine(
+    x: &[Zq],
+    v: &[ZPoly; 4],
+    y: &[Zq],
+    w: &[ZPoly; 4],
+    delta: &IBig,
+) -> [ZPoly; 4] {
+    let small = || -> Option<[ZPoly; 4]> {
+        let dl = i128::try_from(delta).ok()?;
+        let (xi, yi) = (zi_poly(x)?, zi_poly(y)?);
+        let mut out: [ZPoly; 4] = Default::default();
+        for i in 0..4 {
+            let p = zi_sub(
+                &zi_mul(&xi, &zi_poly(&v[i])?, dl)?,
+                &zi_mul(&yi, &zi_poly(&w[i])?, dl)?,
+            )?;
+            out[i] = p.iter().map(|c| c.big()).collect();
+        }
+        Some(out)
+    };
+    small().unwrap_or_else(|| {
+        std::array::from_fn(|i| poly_sub(&poly_mul(x, &v[i], delta), &poly_mul(y, &w[i], delta)))
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use qsic_algebra::testing::SplitMix;
+
+    fn random_poly(rng: &mut SplitMix, bits: usize, irrational: bool, len: usize) -> ZPoly {
+        let big =
+            |rng: &mut SplitMix| IBig::from(rng.int(-999, 999)) << rng.int(0, bits as i64) as usize;
+        (0..len)
+            .map(|_| Zq {
+                a: big(rng),
+                b: if irrational { big(rng) } else { IBig::ZERO },
+            })
+            .collect()
+    }
+
+    /// The machine-integer forms equal the big-integer ones, small (i128) and past i128
+    /// (the checked fallback).
+    #[test]
+    fn machine_forms_equal_big_forms() {
+        let mut rng = SplitMix(17);
+        for (bits, delta) in [(4usize, 0i64), (10, 7), (30, 2), (60, 3), (90, 5)] {
+            let delta = IBig::from(delta);
+            for _ in 0..20 {
+                let m: [[IBig; 4]; 4] = std::array::from_fn(|_| {
+                    std::array::from_fn(|_| {
+                        IBig::from(rng.int(-50, 50)) << rng.int(0, bits as i64 / 2) as usize
+                    })
+                });
+                let irr = !delta.is_zero();
+                let b: [ZPoly; 4] = std::array::from_fn(|_| random_poly(&mut rng, bits, irr, 2));
+                let d: [ZPoly; 4] = std::array::from_fn(|_| random_poly(&mut rng, bits, irr, 3));
+                let [c0, c1, c2, s] = levin_forms(&m, &b, &d, &delta);
+                let same = |x: &[Zq], y: &[Zq]| to_poly(x, &delta) == to_poly(y, &delta);
+                let (e0, e1, e2) = (
+                    poly_form(&m, &b, &b, &delta),
+                    poly_form(&m, &b, &d, &delta),
+                    poly_form(&m, &d, &d, &delta),
+                );
+                assert!(same(&c0, &e0) && same(&c1, &e1) && same(&c2, &e2));
+                let es = poly_sub(&poly_mul(&e1, &e1, &delta), &poly_mul(&e0, &e2, &delta));
+                assert!(same(&s, &es));
+                let a = combine(&c2, &b, &c1, &d, &delta);
+                for i in 0..4 {
+                    let want =
+                        poly_sub(&poly_mul(&e2, &b[i], &delta), &poly_mul(&e1, &d[i], &delta));
+                    assert!(same(&a[i], &want));
+                }
+            }
+        }
+    }
+}
