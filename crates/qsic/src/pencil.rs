@@ -282,7 +282,7 @@ impl PencilAnalysis {
             real_count[j] += 1;
             let inertia = match &point {
                 PencilPoint::Infinity => data.a.inertia(),
-                PencilPoint::Finite(r) if m > 1 => inertia_at(&e, r),
+                PencilPoint::Finite(r) if m > 1 => inertia_at(e, r),
                 // A simple finite root's inertia follows from its arcs (filled in below).
                 PencilPoint::Finite(_) => Inertia {
                     positive: 0,
@@ -316,17 +316,17 @@ impl PencilAnalysis {
         match (isolated.first(), isolated.last()) {
             (Some(first), Some(last)) => {
                 let x = RBig::from(first.lo().floor() - IBig::ONE);
-                arcs.push((x.clone(), inertia_at_rational(&e, &x)));
+                arcs.push((x.clone(), inertia_at_rational(e, &x)));
                 for w in isolated.windows(2) {
                     let x = rational_between(w[0], w[1]);
-                    arcs.push((x.clone(), inertia_at_rational(&e, &x)));
+                    arcs.push((x.clone(), inertia_at_rational(e, &x)));
                 }
                 let x = RBig::from(last.hi().ceil() + IBig::ONE);
-                arcs.push((x.clone(), inertia_at_rational(&e, &x)));
+                arcs.push((x.clone(), inertia_at_rational(e, &x)));
             }
             _ => {
                 let x = RBig::ZERO;
-                arcs.push((x.clone(), inertia_at_rational(&e, &x)));
+                arcs.push((x.clone(), inertia_at_rational(e, &x)));
             }
         }
 
