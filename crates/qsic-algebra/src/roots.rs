@@ -28,6 +28,12 @@
 //! refined by Abbott's quadratic interval refinement ([`refine`]): a secant step picks one
 //! of `N` pieces, checked by two signs.
 
+mod certified;
+
+pub use certified::{
+    certified_real_roots, certified_real_roots_enclosed, CertifiedRoot, MAX_CERTIFIED_DEGREE,
+};
+
 use crate::poly::Poly;
 use crate::sign::Sign;
 use dashu_int::ops::{BitTest, UnsignedAbs};
@@ -122,7 +128,22 @@ pub fn isolate_real_roots(p: &Poly) -> Vec<RootInterval> {
 /// [`isolate_real_roots`] for a polynomial known to be square-free and primitive (such as
 /// a product of the factors of a square-free decomposition), which skips recomputing its
 /// square-free part.
+///
+/// The certified float path ([`certified_real_roots`]) answers first; Descartes' rule on
+/// dyadic intervals where it cannot prove its answer.
 pub fn isolate_squarefree_real_roots(sf: &Poly) -> Vec<RootInterval> {
+    debug_assert!(sf.is_squarefree(), "isolate_squarefree_real_roots: {sf}");
+    if sf.degree().unwrap_or(0) == 0 {
+        return Vec::new();
+    }
+    if let Some(roots) = certified_real_roots(sf) {
+        return roots;
+    }
+    isolate_squarefree_real_roots_descartes(sf)
+}
+
+/// [`isolate_squarefree_real_roots`] by Descartes' rule alone (the exact path; module docs).
+pub fn isolate_squarefree_real_roots_descartes(sf: &Poly) -> Vec<RootInterval> {
     debug_assert!(sf.is_squarefree(), "isolate_squarefree_real_roots: {sf}");
     if sf.degree().unwrap_or(0) == 0 {
         return Vec::new();
