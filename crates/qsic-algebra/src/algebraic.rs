@@ -159,6 +159,7 @@ impl AlgebraicReal {
                     iv => {
                         let mut a = AlgebraicReal::with_interval(sf.clone(), iv);
                         a.enclosure = Some((r.center, r.radius));
+                        a.store(Refinement::new(r.narrow));
                         a
                     }
                 })

@@ -388,9 +388,13 @@ fn float_times_pow2(v: f64, k: i64) -> RBig {
 }
 
 /// The isolating interval of the real root in `D(c, r)` (module docs, Intervals), as
-/// `(lo, hi)` in units of `2^e`; `None` if the disk is too close to the others.
-fn interval_in_units(c: f64, r: f64, gap: f64) -> Option<(f64, f64, i64)> {
-    let d = (2.0 * r).max(4.0 * U * c.abs()).max(gap / 5.0);
+/// `(lo, hi)` in units of `2^e`; `None` if the disk is too close to the others. A `wide`
+/// interval reaches out to a fifth of the gap (short ends), else it is as narrow as the
+/// disk allows (`d = max(2r, 4u|c|)`; the same proof holds).
+fn interval_in_units(c: f64, r: f64, gap: f64, wide: bool) -> Option<(f64, f64, i64)> {
+    let d = (2.0 * r)
+        .max(4.0 * U * c.abs())
+        .max(if wide { gap / 5.0 } else { 0.0 });
     if !(4.0 * d < gap * (1.0 - SLACK)) || !(d >= pow2(-900)) {
         return None;
     }
@@ -415,6 +419,9 @@ pub struct CertifiedRoot {
     pub center: f64,
     /// A rigorous bound on the distance from `center` to the root.
     pub radius: f64,
+    /// An isolating interval about as narrow as the enclosure (its ends have about 53
+    /// bits): where a refinement can start.
+    pub narrow: RootInterval,
 }
 
 /// [`certified_real_roots`], the intervals only.
@@ -446,18 +453,16 @@ fn times_pow2(v: f64, k: i64) -> Option<f64> {
 }
 
 /// The root of `p` at `c·2ᵏ` within `r·2ᵏ`, in the original variable.
-fn enclosed(interval: RootInterval, c: f64, r: f64, k: i64) -> CertifiedRoot {
-    match (times_pow2(c, k), times_pow2(r, k)) {
-        (Some(center), Some(radius)) if radius > 0.0 => CertifiedRoot {
-            interval,
-            center,
-            radius,
-        },
-        _ => CertifiedRoot {
-            interval,
-            center: 0.0,
-            radius: f64::INFINITY,
-        },
+fn enclosed(interval: RootInterval, narrow: RootInterval, c: f64, r: f64, k: i64) -> CertifiedRoot {
+    let (center, radius) = match (times_pow2(c, k), times_pow2(r, k)) {
+        (Some(center), Some(radius)) if radius > 0.0 => (center, radius),
+        _ => (0.0, f64::INFINITY),
+    };
+    CertifiedRoot {
+        interval,
+        center,
+        radius,
+        narrow,
     }
 }
 
@@ -482,13 +487,16 @@ pub fn certified_real_roots_enclosed(p: &Poly) -> Option<Vec<CertifiedRoot>> {
             return None;
         }
         let mut r = certified_real_roots_enclosed(&p.shift_down(1))?;
-        if r.iter().any(|c| c.interval.lo() < &RBig::ZERO && c.interval.hi() > &RBig::ZERO) {
+        if r.iter()
+            .any(|c| c.interval.lo() < &RBig::ZERO && c.interval.hi() > &RBig::ZERO)
+        {
             return None;
         }
         r.push(CertifiedRoot {
             interval: RootInterval::Exact(RBig::ZERO),
             center: 0.0,
             radius: 0.0,
+            narrow: RootInterval::Exact(RBig::ZERO),
         });
         r.sort_by(|a, b| a.interval.lo().cmp(b.interval.lo()));
         return Some(r);
@@ -497,8 +505,13 @@ pub fn certified_real_roots_enclosed(p: &Poly) -> Option<Vec<CertifiedRoot>> {
         let v = RBig::from_parts_signed(-p.coeff(0), p.coeff(1));
         let center = v.to_f64().value();
         return Some(vec![CertifiedRoot {
-            radius: if center.is_finite() { SLACK * center.abs() + pow2(-1022) } else { f64::INFINITY },
+            radius: if center.is_finite() {
+                SLACK * center.abs() + pow2(-1022)
+            } else {
+                f64::INFINITY
+            },
             center: if center.is_finite() { center } else { 0.0 },
+            narrow: RootInterval::Exact(v.clone()),
             interval: RootInterval::Exact(v),
         }]);
     }
@@ -516,8 +529,11 @@ pub fn certified_real_roots_enclosed(p: &Poly) -> Option<Vec<CertifiedRoot>> {
             .map(|j| (distance_lo(z[i], z[j]) - r[j]) * (1.0 - SLACK))
             .fold(f64::INFINITY, f64::min);
         let (c, ri) = (z[i].re, r[i]);
-        let (lo, hi, e) = interval_in_units(c, ri, gap)?;
-        let iv = RootInterval::Open(dyadic(lo, e + s.k), dyadic(hi, e + s.k));
+        let open = |wide| {
+            let (lo, hi, e) = interval_in_units(c, ri, gap, wide)?;
+            Some(RootInterval::Open(dyadic(lo, e + s.k), dyadic(hi, e + s.k)))
+        };
+        let iv = open(true)?;
         debug_assert!(
             p.sign_at(iv.lo()) * p.sign_at(iv.hi()) == crate::Sign::Negative,
             "certified interval {iv:?} of {p}"
@@ -527,7 +543,11 @@ pub fn certified_real_roots_enclosed(p: &Poly) -> Option<Vec<CertifiedRoot>> {
             Some(Rationality::Rational(v)) => RootInterval::Exact(v),
             Some(Rationality::Unknown) => exact_if_rational(p, iv),
         };
-        out.push(enclosed(interval, c, ri, s.k));
+        let narrow = match &interval {
+            RootInterval::Exact(_) => interval.clone(),
+            RootInterval::Open(..) => open(false)?,
+        };
+        out.push(enclosed(interval, narrow, c, ri, s.k));
     }
     out.sort_by(|a, b| a.interval.lo().cmp(b.interval.lo()));
     Some(out)
@@ -570,5 +590,279 @@ fn rationality(p: &Poly, lc: &IBig, c: f64, r: f64, k: i64) -> Rationality {
         }
     } else {
         Rationality::Unknown
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::isolate_squarefree_real_roots_descartes;
+    use super::*;
+    use crate::poly::sturm::SturmSequence;
+    use crate::testing::SplitMix;
+    use crate::Sign;
+
+    /// A random integer of about `bits` bits (sign included), never zero.
+    fn big(rng: &mut SplitMix, bits: usize) -> IBig {
+        let mut v = IBig::ZERO;
+        for _ in 0..bits.div_ceil(32) {
+            v = (v << 32) + IBig::from(rng.next_u64() >> 32);
+        }
+        let v = (v >> (bits.div_ceil(32) * 32 - bits)) + IBig::ONE;
+        if rng.int(0, 1) == 0 {
+            -v
+        } else {
+            v
+        }
+    }
+
+    /// A polynomial of one of the families of the module tests: random coefficients of a
+    /// few or about 133 bits (10⁴⁰), or products of linear and quadratic factors with
+    /// roots 2⁻³⁰ apart, roots of size 2^±60, and rational roots.
+    fn random_poly(rng: &mut SplitMix, family: u64) -> Poly {
+        let degree = rng.int(1, 10) as usize;
+        let lin = |a: IBig, b: IBig| Poly::new(vec![-b, a]); // a·x − b
+        match family % 4 {
+            0 | 1 => {
+                let bits = if family % 4 == 0 { 6 } else { 133 };
+                Poly::new((0..=degree).map(|_| big(rng, bits)).collect())
+            }
+            2 => {
+                // close pairs and random rational roots
+                let mut p = Poly::constant(IBig::ONE);
+                for _ in 0..degree.div_ceil(2) {
+                    let m = big(rng, 40);
+                    let shift = IBig::ONE << 30;
+                    p = &p * &lin(shift.clone(), m.clone());
+                    p = &p
+                        * &match rng.int(0, 2) {
+                            0 => lin(shift, m + IBig::ONE),
+                            1 => lin(big(rng, 8), big(rng, 10)),
+                            _ => Poly::new(vec![
+                                IBig::from(big(rng, 10).unsigned_abs()),
+                                big(rng, 4),
+                                IBig::ONE,
+                            ]),
+                        };
+                }
+                p
+            }
+            _ => {
+                // huge and tiny roots, and quadratics with irrational roots
+                let mut p = Poly::constant(IBig::ONE);
+                for _ in 0..degree.div_ceil(2) {
+                    let f = match rng.int(0, 3) {
+                        0 => lin(IBig::ONE, big(rng, 60)),
+                        1 => lin(big(rng, 60), big(rng, 3)),
+                        2 => Poly::new(vec![
+                            -IBig::from(big(rng, 20).unsigned_abs()),
+                            IBig::ZERO,
+                            IBig::ONE,
+                        ]),
+                        _ => Poly::new(vec![big(rng, 30), big(rng, 30), big(rng, 5)]),
+                    };
+                    p = &p * &f;
+                }
+                p
+            }
+        }
+    }
+
+    /// The certified answer meets the postconditions and agrees with Descartes' path:
+    /// the same number of roots, each certified interval holds exactly one root (signs at
+    /// the ends and a Sturm count), and rational roots are exact in both when the leading
+    /// coefficient has at most 64 bits.
+    fn check_against_descartes(sf: &Poly, cert: &[RootInterval]) {
+        let exact = isolate_squarefree_real_roots_descartes(sf);
+        assert_eq!(cert.len(), exact.len(), "{sf}: {cert:?} vs {exact:?}");
+        let sturm = SturmSequence::new(sf);
+        for (c, e) in cert.iter().zip(&exact) {
+            match c {
+                RootInterval::Exact(v) => assert_eq!(sf.sign_at(v), Sign::Zero, "{sf}: {v}"),
+                RootInterval::Open(lo, hi) => {
+                    assert!(lo < hi);
+                    assert_eq!(
+                        sf.sign_at(lo) * sf.sign_at(hi),
+                        Sign::Negative,
+                        "{sf}: {c:?}"
+                    );
+                    assert_eq!(sturm.count_roots_in(lo, hi), 1, "{sf}: {c:?}");
+                }
+            }
+            if sf.leading().bit_len() <= 64 {
+                assert_eq!(c.as_exact(), e.as_exact(), "{sf}: {c:?} vs {e:?}");
+            }
+        }
+        for w in cert.windows(2) {
+            assert!(
+                w[0].hi() < w[1].lo()
+                    || (w[0].hi() == w[1].lo()
+                        && w[0].as_exact().is_none()
+                        && w[1].as_exact().is_none()),
+                "{sf}: {w:?}"
+            );
+        }
+    }
+
+    /// The narrow intervals isolate too, and each float enclosure holds its root: `p`
+    /// changes sign (or vanishes) on `[center − radius, center + radius]`, inside the
+    /// isolating interval.
+    fn check_enclosures(sf: &Poly, cert: &[CertifiedRoot]) {
+        let narrow: Vec<RootInterval> = cert.iter().map(|c| c.narrow.clone()).collect();
+        check_against_descartes(sf, &narrow);
+        for c in cert {
+            if c.radius.is_finite() {
+                let (m, r) = (
+                    RBig::try_from(c.center).unwrap(),
+                    RBig::try_from(c.radius).unwrap(),
+                );
+                let signs = sf.sign_at(&(&m - &r)) * sf.sign_at(&(&m + &r));
+                assert_ne!(signs, Sign::Positive, "{sf}: {c:?}");
+            }
+        }
+    }
+
+    /// Ill-conditioned real roots: `∏(x − i) − c` (Wilkinson-like, degree up to 14), where
+    /// the rounding term of the value bound is most of the disks' radii.
+    #[test]
+    fn ill_conditioned_roots_are_enclosed() {
+        let mut rng = SplitMix(99);
+        let mut certified = 0;
+        for n in 4..=14 {
+            for _ in 0..6 {
+                let roots: Vec<i64> = (1..=n).collect();
+                let c = Poly::constant(IBig::from(rng.int(1, 1 << 20)));
+                let p = &Poly::from_roots(&roots) - &c;
+                if let Some(cert) = certified_real_roots_enclosed(&p) {
+                    check_enclosures(&p, &cert);
+                    certified += 1;
+                }
+            }
+        }
+        assert!(certified >= 40, "{certified}");
+    }
+
+    #[test]
+    fn certified_roots_agree_with_descartes_on_random_polynomials() {
+        let mut rng = SplitMix(2026);
+        let mut certified = [0usize; 4];
+        let trials = 600u64;
+        for t in 0..trials {
+            let family = t % 4;
+            let p = random_poly(&mut rng, family);
+            let sf = p.squarefree_part();
+            if let Some(cert) = certified_real_roots_enclosed(&sf) {
+                check_enclosures(&sf, &cert);
+                let cert: Vec<RootInterval> = cert.into_iter().map(|c| c.interval).collect();
+                check_against_descartes(&sf, &cert);
+                certified[family as usize] += 1;
+            }
+            // the public entry answers the same roots whichever path it takes
+            assert_eq!(
+                isolate_squarefree_real_roots_descartes(&sf).len(),
+                super::super::isolate_squarefree_real_roots(&sf).len()
+            );
+        }
+        // the fast path answers for most generic inputs (not only the easy ones)
+        let per = (trials / 4) as usize;
+        assert!(certified[0] * 10 >= per * 9, "{certified:?}");
+        assert!(certified[1] * 10 >= per * 9, "{certified:?}");
+        assert!(certified[3] * 10 >= per * 6, "{certified:?}");
+    }
+
+    #[test]
+    fn multiple_and_near_multiple_roots_are_not_certified() {
+        let mut rng = SplitMix(7);
+        for _ in 0..100 {
+            let m = big(&mut rng, 30);
+            let rest = random_poly(&mut rng, 0);
+            // a double root: never square-free, never certified
+            let lin = Poly::new(vec![-m.clone(), IBig::from(rng.int(1, 9))]);
+            let double = &(&lin * &lin) * &rest;
+            assert_eq!(certified_real_roots(&double), None, "{double}");
+            // roots 2⁻⁶⁰ apart: beyond f64, so the certificate must fail; the entry point
+            // still answers through Descartes
+            let shift = IBig::ONE << 60;
+            let pair = &Poly::new(vec![-m.clone(), shift.clone()])
+                * &Poly::new(vec![-(m + IBig::ONE), shift]);
+            let p = (&pair * &rest).squarefree_part();
+            assert_eq!(certified_real_roots(&p), None, "{p}");
+            let exact = isolate_squarefree_real_roots_descartes(&p);
+            assert_eq!(super::super::isolate_squarefree_real_roots(&p), exact);
+        }
+    }
+
+    /// `c − r ≤ √d ≤ c + r`, exactly.
+    fn holds_sqrt(c: f64, r: f64, d: i64) -> bool {
+        let (c, r) = (RBig::try_from(c).unwrap(), RBig::try_from(r).unwrap());
+        let d = RBig::from(d);
+        let (lo, hi) = (&c - &r, &c + &r);
+        (lo <= RBig::ZERO || &lo * &lo <= d) && hi >= RBig::ZERO && d <= &hi * &hi
+    }
+
+    /// The radii bound the distance to the roots: perturbed approximations of known roots
+    /// (±√dᵢ), from far off to the nearest floats (where only the rounding term covers the
+    /// error): every root lies in a disk, and disjoint disks hold one root each.
+    #[test]
+    fn disks_hold_the_roots_of_perturbed_approximations() {
+        let mut rng = SplitMix(11);
+        for t in 0..400 {
+            let m = rng.int(1, 4) as usize;
+            let mut ds: Vec<i64> = Vec::new();
+            while ds.len() < m {
+                let d = rng.int(2, 1 << 20);
+                let r = (d as f64).sqrt() as i64;
+                if r * r != d && !ds.contains(&d) {
+                    ds.push(d);
+                }
+            }
+            let p = ds.iter().fold(Poly::constant(IBig::ONE), |p, &d| {
+                &p * &Poly::from_i64s(&[-d, 0, 1])
+            });
+            let s = scale(&p).unwrap();
+            assert_eq!(s.k % 1, 0);
+            let unit = pow2(-s.k);
+            let eps = [1e-1, 1e-4, 1e-9, 0.0][t % 4];
+            let mut roots = Vec::new(); // (d, sign, approximation in scaled units)
+            for &d in &ds {
+                for sign in [1.0, -1.0] {
+                    let exact = sign * (d as f64).sqrt() * unit;
+                    let z = Complex {
+                        re: exact * (1.0 + eps * (rng.int(-1000, 1000) as f64 / 1000.0)),
+                        im: exact * eps * (rng.int(-1000, 1000) as f64 / 1000.0),
+                    };
+                    roots.push((d, sign, z));
+                }
+            }
+            let z: Vec<Complex> = roots.iter().map(|r| r.2).collect();
+            let Some(r) = radii(&s, &z) else { continue };
+            let disjoint = (0..z.len()).all(|i| {
+                (i + 1..z.len()).all(|j| distance_lo(z[i], z[j]) > (r[i] + r[j]) * (1.0 + SLACK))
+            });
+            for &(d, sign, _) in &roots {
+                // in units: the root is sign·√d·2⁻ᵏ; the disk holds it iff its real
+                // section around sign·Re z does (checked exactly, real roots)
+                let inside: Vec<usize> = (0..z.len())
+                    .filter(|&i| {
+                        let (c, ri) = (z[i].re * sign / unit, r[i] / unit);
+                        let rr = (ri * ri - (z[i].im / unit).powi(2)).max(0.0);
+                        // shrink the real section a little: a disk meets the axis in
+                        // [c − √(r² − im²), c + √(r² − im²)]
+                        rr > 0.0 && holds_sqrt(c, rr.sqrt() * (1.0 - 1e-9), d)
+                    })
+                    .collect();
+                let near_miss = (0..z.len()).any(|i| {
+                    let (c, ri) = (z[i].re * sign / unit, r[i] / unit);
+                    let rr = (ri * ri - (z[i].im / unit).powi(2)).max(0.0);
+                    holds_sqrt(c, rr.sqrt() * (1.0 + 1e-9) + 1e-300, d)
+                });
+                assert!(
+                    !inside.is_empty() || near_miss,
+                    "{p}: ±√{d} outside every disk, eps {eps}"
+                );
+                if disjoint {
+                    assert!(inside.len() <= 1, "{p}: √{d} in two disjoint disks");
+                }
+            }
+        }
     }
 }

@@ -37,7 +37,9 @@ use crate::error::Error;
 use crate::pencil::{PencilAnalysis, PencilPoint};
 use crate::quadric::Quadric;
 use qsic_algebra::field::Quadratic;
-use qsic_algebra::roots::{isolate_squarefree_real_roots, simplest_between, RootInterval};
+use qsic_algebra::roots::{
+    isolate_squarefree_real_roots, rational_between, simplest_between, RootInterval,
+};
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Sign};
 use surface::{parameterize_cone, parameterize_doubly_ruled, poly_form, q, to_quadratic};
 
@@ -662,7 +664,8 @@ fn certified_sign_zsqrt(a: &[f64], b: &[f64], sqrt_delta: f64, x: f64) -> Option
     let (vb, eb) = horner(b);
     let value = va + sqrt_delta * vb;
     let u = f64::EPSILON / 2.0;
-    let bound = (ea + sqrt_delta * eb * (1.0 + 4.0 * u)
+    let bound = (ea
+        + sqrt_delta * eb * (1.0 + 4.0 * u)
         + 4.0 * u * sqrt_delta * vb.abs()
         + 2.0 * u * value.abs())
         * (1.0 + 2f64.powi(-40));
@@ -755,8 +758,9 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
     match (roots.first(), roots.last()) {
         (Some(first), Some(last)) => {
             samples.push(RBig::from(first.interval().lo().floor()) - RBig::ONE);
+            // the stated intervals come from one isolation of the norm: disjoint, short ends
             for w in roots.windows(2) {
-                samples.push(w[0].rational_between(&w[1]));
+                samples.push(rational_between(w[0].interval(), w[1].interval()));
             }
             samples.push(RBig::from(last.interval().hi().ceil()) + RBig::ONE);
         }
