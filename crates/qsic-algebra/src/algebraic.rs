@@ -150,17 +150,27 @@ impl AlgebraicReal {
             return None;
         }
         let roots = certified_real_roots_enclosed(p)?;
-        let sf = p.primitive_part();
+        // primitive with a positive leading coefficient: two coprime coefficients prove the
+        // content 1 without the gcd of all of them
+        let lead = p.leading();
+        let sf = if lead > IBig::ZERO && crate::int_gcd(&lead, &p.coeff(0)).is_one() {
+            p.clone()
+        } else {
+            p.primitive_part()
+        };
         Some(
             roots
                 .into_iter()
                 .map(|r| match r.interval {
                     RootInterval::Exact(v) => AlgebraicReal::from_rational(v),
                     iv => {
-                        let mut a = AlgebraicReal::with_interval(sf.clone(), iv);
-                        a.enclosure = Some((r.center, r.radius));
-                        a.store(Refinement::new(r.narrow));
-                        a
+                        // the narrow interval starts the shared refinement state
+                        AlgebraicReal {
+                            poly: sf.clone(),
+                            refined: Arc::new(Mutex::new(Refinement::new(r.narrow))),
+                            interval: iv,
+                            enclosure: Some((r.center, r.radius)),
+                        }
                     }
                 })
                 .collect(),

@@ -5,7 +5,13 @@
 //! Postconditions of [`isolate_real_roots`]: the result lists every distinct real root
 //! once, in increasing order; each is either an exact rational or an open interval
 //! `(lo, hi)` with rational (dyadic) ends that are not roots, containing exactly one root;
-//! the intervals are pairwise disjoint.
+//! the intervals are pairwise disjoint and none holds 0 (callers read a root's sign from
+//! its interval). A rational root is exact whenever the leading
+//! coefficient of the square-free part has at most 64 bits (otherwise it may be either).
+//!
+//! For degree ≤ [`MAX_CERTIFIED_DEGREE`] the certified float path ([`certified`]: Aberth–
+//! Ehrlich and inclusion disks with rigorous error bounds) answers first, with the same
+//! postconditions; Descartes' rule below is the exact path where it cannot prove its answer.
 //!
 //! # Method and cost
 //! Positive and negative roots are isolated apart (root 0 is pulled out first), each
@@ -28,7 +34,7 @@
 //! refined by Abbott's quadratic interval refinement ([`refine`]): a secant step picks one
 //! of `N` pieces, checked by two signs.
 
-mod certified;
+pub mod certified;
 
 pub use certified::{
     certified_real_roots, certified_real_roots_enclosed, CertifiedRoot, MAX_CERTIFIED_DEGREE,

@@ -35,7 +35,8 @@
 //! # Intervals
 //! A real disk `D(c, r)` becomes the open interval `(lo, hi)`: `lo = ⌊(c − d)/h⌋·h`,
 //! `hi = ⌈(c + d)/h⌉·h` with `d = max(2r, 4u|c|, g/5)`, `g` a lower bound on the distance
-//! from `c` to every other disk and `h` the largest power of two `≤ d/2`. The rounding of
+//! from `c` to every other disk and to 0 (no interval holds 0, as in the exact path) and
+//! `h` the largest power of two `≤ d/2`. The rounding of
 //! `c ∓ d` stays below `d/4 + ud`, so `c − 1.8d < lo < c − r` (and the same for `hi`):
 //! the ends lie outside every disk (not roots), and `d < g/4` (else the certificate fails)
 //! keeps the interval within `0.45g` of `c`, away from the other disks and from the other
@@ -316,7 +317,7 @@ fn radii(s: &Scaled, z: &[Complex]) -> Option<Vec<f64>> {
         for j in 0..n {
             if j != i {
                 prod *= z[i].sub(z[j]).abs();
-                if !(prod >= f64::MIN_POSITIVE) {
+                if prod.is_nan() || prod < f64::MIN_POSITIVE {
                     return None;
                 }
             }
@@ -339,7 +340,7 @@ fn distance_lo(a: Complex, b: Complex) -> f64 {
 /// the axis; `None` if the certificate fails.
 fn certified_disks(s: &Scaled) -> Option<(Vec<Complex>, Vec<f64>)> {
     let mut z = aberth(&s.c)?;
-    if z.iter().any(|v| !(v.abs() < 1e150)) {
+    if z.iter().any(|v| v.abs().is_nan() || v.abs() >= 1e150) {
         return None;
     }
     let mut r = radii(s, &z)?;
@@ -395,7 +396,8 @@ fn interval_in_units(c: f64, r: f64, gap: f64, wide: bool) -> Option<(f64, f64, 
     let d = (2.0 * r)
         .max(4.0 * U * c.abs())
         .max(if wide { gap / 5.0 } else { 0.0 });
-    if !(4.0 * d < gap * (1.0 - SLACK)) || !(d >= pow2(-900)) {
+    let separated = 4.0 * d < gap * (1.0 - SLACK) && d >= pow2(-900); // false on NaN
+    if !separated {
         return None;
     }
     // h = 2^e ≤ d/2, the largest such power of two
@@ -527,7 +529,10 @@ pub fn certified_real_roots_enclosed(p: &Poly) -> Option<Vec<CertifiedRoot>> {
         let gap = (0..n)
             .filter(|&j| j != i)
             .map(|j| (distance_lo(z[i], z[j]) - r[j]) * (1.0 - SLACK))
-            .fold(f64::INFINITY, f64::min);
+            .fold(f64::INFINITY, f64::min)
+            // and from 0, so that no interval holds 0 (as in the exact path, where the
+            // positive and negative roots are isolated apart)
+            .min(z[i].re.abs());
         let (c, ri) = (z[i].re, r[i]);
         let open = |wide| {
             let (lo, hi, e) = interval_in_units(c, ri, gap, wide)?;
@@ -680,6 +685,10 @@ mod tests {
                 RootInterval::Exact(v) => assert_eq!(sf.sign_at(v), Sign::Zero, "{sf}: {v}"),
                 RootInterval::Open(lo, hi) => {
                     assert!(lo < hi);
+                    assert!(
+                        lo >= &RBig::ZERO || hi <= &RBig::ZERO,
+                        "{sf}: {c:?} holds 0"
+                    );
                     assert_eq!(
                         sf.sign_at(lo) * sf.sign_at(hi),
                         Sign::Negative,
@@ -819,7 +828,6 @@ mod tests {
                 &p * &Poly::from_i64s(&[-d, 0, 1])
             });
             let s = scale(&p).unwrap();
-            assert_eq!(s.k % 1, 0);
             let unit = pow2(-s.k);
             let eps = [1e-1, 1e-4, 1e-9, 0.0][t % 4];
             let mut roots = Vec::new(); // (d, sign, approximation in scaled units)

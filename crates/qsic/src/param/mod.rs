@@ -603,7 +603,7 @@ fn variations(chain: &[Poly<Quadratic>], x: &RBig) -> usize {
     signs.windows(2).filter(|w| w[0] != w[1]).count()
 }
 
-/// The norm `s·s̄ ∈ ℚ[u]` of `s` over ℚ(√δ) as a primitive integer polynomial: `s_a² − δs_b²`
+/// The norm `s·s̄ ∈ ℚ[u]` of `s` over ℚ(√δ) as an integer polynomial: `s_a² − δs_b²`
 /// for `s = s_a + s_b√δ`, fraction-free when the coefficients are integral.
 fn norm_of(s: &Poly<Quadratic>) -> Poly {
     let delta = s
@@ -631,7 +631,8 @@ fn norm_of(s: &Poly<Quadratic>) -> Poly {
                 a - b * &delta
             })
             .collect();
-        return Poly::new(coeffs).primitive_part();
+        // not made primitive here: `real_roots_of` and `squarefree_part` do that
+        return Poly::new(coeffs);
     }
     let norm: Vec<RBig> = (s * &s.map(Quadratic::conjugate))
         .coeffs()
@@ -818,6 +819,62 @@ mod tests {
         // no real root, negative: the sample's sign
         let d = discriminant_roots(&Poly::new(vec![rq(-1), rq(0), rq(0), rq(0), r2.neg()]));
         assert!(d.roots.is_empty() && d.arcs == [(RBig::ZERO, Sign::Negative)]);
+    }
+
+    /// The float filter for the sign of `A + B√δ` agrees with the exact sign wherever it
+    /// answers, answers for most random points, and never at a zero: `s` built with a
+    /// rational root `x₀` (`s = (u − x₀)·t`), and near-cancelling `A ≈ −B√δ` at `x`.
+    #[test]
+    fn certified_float_signs_of_s_agree_with_exact_signs() {
+        let mut rng = qsic_algebra::testing::SplitMix(5);
+        let mut answered = 0;
+        for trial in 0..400 {
+            let delta = IBig::from([2, 3, 5, 7, 1_000_003][trial % 5]);
+            let mut z: Vec<zsqrt::Zq> = (0..5)
+                .map(|_| zsqrt::Zq {
+                    a: IBig::from(rng.int(-1 << 40, 1 << 40)),
+                    b: IBig::from(rng.int(-1 << 40, 1 << 40)),
+                })
+                .collect();
+            let x = RBig::from_parts_signed(IBig::from(rng.int(-4096, 4096)), IBig::from(64));
+            if trial % 3 == 0 {
+                // make x a root: subtract s(x) from the constant term (x·64⁴ integral)
+                let den = IBig::from(64).pow(4);
+                let scaled = |c: &IBig| c * &den;
+                for c in z.iter_mut() {
+                    c.a = scaled(&c.a);
+                    c.b = scaled(&c.b);
+                }
+                let value = |f: fn(&zsqrt::Zq) -> &IBig| {
+                    let v = z
+                        .iter()
+                        .rev()
+                        .fold(RBig::ZERO, |acc, c| acc * &x + RBig::from(f(c).clone()));
+                    v.numerator().clone() // an integer: den·s has integral values at x
+                };
+                let (va, vb) = (value(|c| &c.a), value(|c| &c.b));
+                z[0].a -= va;
+                z[0].b -= vb;
+            }
+            let f = |v: &IBig| v.to_f64().value();
+            let a: Vec<f64> = z.iter().map(|c| f(&c.a)).collect();
+            let b: Vec<f64> = z.iter().map(|c| f(&c.b)).collect();
+            let xf = exact_f64(&x).expect("a short dyadic");
+            let exact = zsqrt::sign_at(&z, &x, &delta);
+            if let Some(sg) = certified_sign_zsqrt(&a, &b, f(&delta).sqrt(), xf) {
+                assert_eq!(sg, exact, "trial {trial}");
+                answered += 1;
+            }
+            if trial % 3 == 0 {
+                assert_eq!(exact, Sign::Zero, "trial {trial}: x is a root");
+            }
+        }
+        assert!(answered >= 200, "{answered}");
+        // a rational that is not a float is left to the exact path
+        assert_eq!(
+            exact_f64(&RBig::from_parts_signed(1.into(), 3.into())),
+            None
+        );
     }
 
     #[test]
