@@ -528,7 +528,9 @@ pub fn simplest_between(lo: &RBig, hi: &RBig, lo_ok: bool, hi_ok: bool) -> RBig 
 /// ```
 /// # use qsic_algebra::{Poly, RBig, roots::{isolate_real_roots, rational_between}};
 /// let r = isolate_real_roots(&Poly::from_i64s(&[-2, 0, 1])); // ±√2
-/// assert_eq!(rational_between(&r[0], &r[1]), RBig::ZERO);
+/// let m = rational_between(&r[0], &r[1]);
+/// assert!(r[0].hi() <= &m && &m <= r[1].lo());
+/// assert_eq!(RBig::from(m.floor()), m); // an integer fits in the gap
 /// ```
 pub fn rational_between(a: &RootInterval, b: &RootInterval) -> RBig {
     simplest_between(
