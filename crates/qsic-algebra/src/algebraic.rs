@@ -110,14 +110,9 @@ impl AlgebraicReal {
         AlgebraicReal::with_interval(Poly::vanishing_at(&v), RootInterval::Exact(v))
     }
 
-    /// All real roots of `p`, in increasing order, each once.
-    ///
-    /// The certified float path first ([`Self::certified_real_roots_of`]: no square-free
-    /// part needed when it answers), else the square-free part and Descartes' rule.
+    /// All real roots of `p`, in increasing order, each once (Descartes' rule on the
+    /// square-free part; [`Self::certified_real_roots_of`] is the float route).
     pub fn real_roots_of(p: &Poly) -> Vec<AlgebraicReal> {
-        if let Some(roots) = AlgebraicReal::certified_real_roots_of(p) {
-            return roots;
-        }
         let sf = p.squarefree_part();
         if sf.degree() == Some(1) {
             let v = RBig::from_parts_signed(-sf.coeff(0), sf.coeff(1));

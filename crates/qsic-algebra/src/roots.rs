@@ -10,8 +10,12 @@
 //! coefficient of the square-free part has at most 64 bits (otherwise it may be either).
 //!
 //! For degree ≤ [`MAX_CERTIFIED_DEGREE`] the certified float path ([`certified`]: Aberth–
-//! Ehrlich and inclusion disks with rigorous error bounds) answers first, with the same
-//! postconditions; Descartes' rule below is the exact path where it cannot prove its answer.
+//! Ehrlich and inclusion disks with rigorous error bounds) gives the same postconditions
+//! with other intervals, or `None`. It is not the default here: callers that pick "the
+//! simplest rational between two roots" (the pencil's parameterization member) would pick
+//! other rationals and change their (correct) results — on `rw2-43` of the stress set a
+//! member with 900-bit coefficients that sampling cannot evaluate. Callers whose results do
+//! not depend on the intervals' shape call it first (`param::discriminant_roots`).
 //!
 //! # Method and cost
 //! Positive and negative roots are isolated apart (root 0 is pulled out first), each
@@ -134,17 +138,7 @@ pub fn isolate_real_roots(p: &Poly) -> Vec<RootInterval> {
 /// [`isolate_real_roots`] for a polynomial known to be square-free and primitive (such as
 /// a product of the factors of a square-free decomposition), which skips recomputing its
 /// square-free part.
-///
-/// The certified float path ([`certified_real_roots`]) answers first; Descartes' rule on
-/// dyadic intervals where it cannot prove its answer.
 pub fn isolate_squarefree_real_roots(sf: &Poly) -> Vec<RootInterval> {
-    debug_assert!(sf.is_squarefree(), "isolate_squarefree_real_roots: {sf}");
-    if sf.degree().unwrap_or(0) == 0 {
-        return Vec::new();
-    }
-    if let Some(roots) = certified_real_roots(sf) {
-        return roots;
-    }
     isolate_squarefree_real_roots_descartes(sf)
 }
 
