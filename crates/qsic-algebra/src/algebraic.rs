@@ -23,7 +23,10 @@
 //! [`AlgebraicReal::sign_of_sturm_tarski`] is the refinement-free second route.
 
 use crate::poly::Poly;
-use crate::roots::{isolate_squarefree_real_roots, refine_step, simplest_between, RootInterval};
+use crate::roots::{
+    certified_real_roots_enclosed, isolate_squarefree_real_roots, refine_step, simplest_between,
+    RootInterval, MAX_CERTIFIED_DEGREE,
+};
 use crate::sign::Sign;
 use dashu_int::ops::{BitTest, DivEuclid};
 use dashu_int::IBig;
@@ -44,6 +47,9 @@ pub struct AlgebraicReal {
     interval: RootInterval,
     /// The narrowest interval known, shared by clones (module docs).
     refined: Arc<Mutex<Refinement>>,
+    /// A float `c` and a rigorous bound `r` with `|α − c| ≤ r`, when the number was isolated
+    /// by the certified float path (a cache for [`AlgebraicReal::to_f64`]).
+    enclosure: Option<(f64, f64)>,
 }
 
 /// An isolating interval and the state of its quadratic refinement (see [`refine_step`]).
@@ -95,6 +101,7 @@ impl AlgebraicReal {
             poly,
             refined: Arc::new(Mutex::new(Refinement::new(interval.clone()))),
             interval,
+            enclosure: None,
         }
     }
 
@@ -103,7 +110,8 @@ impl AlgebraicReal {
         AlgebraicReal::with_interval(Poly::vanishing_at(&v), RootInterval::Exact(v))
     }
 
-    /// All real roots of `p`, in increasing order, each once.
+    /// All real roots of `p`, in increasing order, each once (Descartes' rule on the
+    /// square-free part; [`Self::certified_real_roots_of`] is the float route).
     pub fn real_roots_of(p: &Poly) -> Vec<AlgebraicReal> {
         let sf = p.squarefree_part();
         if sf.degree() == Some(1) {
@@ -117,6 +125,51 @@ impl AlgebraicReal {
                 iv => AlgebraicReal::with_interval(sf.clone(), iv),
             })
             .collect()
+    }
+
+    /// All real roots of `p` (increasing, each once) if the certified float path
+    /// ([`certified_real_roots_enclosed`]) proves them, which also proves `p` square-free;
+    /// `None` otherwise (degree above [`MAX_CERTIFIED_DEGREE`], multiple or very close roots).
+    /// The defining polynomial is `p`'s primitive part, as [`Self::real_roots_of`] makes it.
+    ///
+    /// ```
+    /// # use qsic_algebra::{AlgebraicReal, Poly};
+    /// let r = AlgebraicReal::certified_real_roots_of(&Poly::from_i64s(&[-4, 0, 2])).unwrap();
+    /// assert_eq!(r.len(), 2);
+    /// assert_eq!(r[1].poly(), &Poly::from_i64s(&[-2, 0, 1]));
+    /// assert!((r[1].to_f64() - 2f64.sqrt()).abs() < 1e-15);
+    /// assert!(AlgebraicReal::certified_real_roots_of(&Poly::from_roots(&[1, 1])).is_none());
+    /// ```
+    pub fn certified_real_roots_of(p: &Poly) -> Option<Vec<AlgebraicReal>> {
+        if p.degree().unwrap_or(0) == 0 || p.degree() > Some(MAX_CERTIFIED_DEGREE) {
+            return None;
+        }
+        let roots = certified_real_roots_enclosed(p)?;
+        // primitive with a positive leading coefficient: two coprime coefficients prove the
+        // content 1 without the gcd of all of them
+        let lead = p.leading();
+        let sf = if lead > IBig::ZERO && crate::int_gcd(&lead, &p.coeff(0)).is_one() {
+            p.clone()
+        } else {
+            p.primitive_part()
+        };
+        Some(
+            roots
+                .into_iter()
+                .map(|r| match r.interval {
+                    RootInterval::Exact(v) => AlgebraicReal::from_rational(v),
+                    iv => {
+                        // the narrow interval starts the shared refinement state
+                        AlgebraicReal {
+                            poly: sf.clone(),
+                            refined: Arc::new(Mutex::new(Refinement::new(r.narrow))),
+                            interval: iv,
+                            enclosure: Some((r.center, r.radius)),
+                        }
+                    }
+                })
+                .collect(),
+        )
     }
 
     /// The root of the square-free `poly` in `interval`, if the interval isolates one: an
@@ -334,7 +387,13 @@ impl AlgebraicReal {
     /// Newton's method safeguarded by bisection, in floating point, inside the isolating
     /// interval (where the float signs of `poly` at the ends differ as the exact ones do);
     /// otherwise the midpoint of an exactly refined interval of width `2⁻⁶⁰`.
+    /// A certified float enclosure, when it is that accurate, is the answer without work.
     pub fn to_f64(&self) -> f64 {
+        if let Some((c, r)) = self.enclosure {
+            if r <= c.abs() * 2f64.powi(-42) {
+                return c;
+            }
+        }
         if let RootInterval::Open(lo, hi) = &self.snapshot().interval {
             let (l, h) = (lo.to_f64().value(), hi.to_f64().value());
             if let Some(x) = newton_in(&self.poly, l, h) {

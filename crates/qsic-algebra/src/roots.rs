@@ -5,7 +5,17 @@
 //! Postconditions of [`isolate_real_roots`]: the result lists every distinct real root
 //! once, in increasing order; each is either an exact rational or an open interval
 //! `(lo, hi)` with rational (dyadic) ends that are not roots, containing exactly one root;
-//! the intervals are pairwise disjoint.
+//! the intervals are pairwise disjoint and none holds 0 (callers read a root's sign from
+//! its interval). A rational root is exact whenever the leading
+//! coefficient of the square-free part has at most 64 bits (otherwise it may be either).
+//!
+//! For degree ≤ [`MAX_CERTIFIED_DEGREE`] the certified float path ([`certified`]: Aberth–
+//! Ehrlich and inclusion disks with rigorous error bounds) gives the same postconditions
+//! with other intervals, or `None`. It is not the default here: callers that pick "the
+//! simplest rational between two roots" (the pencil's parameterization member) would pick
+//! other rationals and change their (correct) results — on `rw2-43` of the stress set a
+//! member with 900-bit coefficients that sampling cannot evaluate. Callers whose results do
+//! not depend on the intervals' shape call it first (`param::discriminant_roots`).
 //!
 //! # Method and cost
 //! Positive and negative roots are isolated apart (root 0 is pulled out first), each
@@ -27,6 +37,12 @@
 //! a degree-`n` polynomial with coefficients of `O(n(L + τ))` bits. Single roots are
 //! refined by Abbott's quadratic interval refinement ([`refine`]): a secant step picks one
 //! of `N` pieces, checked by two signs.
+
+pub mod certified;
+
+pub use certified::{
+    certified_real_roots, certified_real_roots_enclosed, CertifiedRoot, MAX_CERTIFIED_DEGREE,
+};
 
 use crate::poly::Poly;
 use crate::sign::Sign;
@@ -123,6 +139,11 @@ pub fn isolate_real_roots(p: &Poly) -> Vec<RootInterval> {
 /// a product of the factors of a square-free decomposition), which skips recomputing its
 /// square-free part.
 pub fn isolate_squarefree_real_roots(sf: &Poly) -> Vec<RootInterval> {
+    isolate_squarefree_real_roots_descartes(sf)
+}
+
+/// [`isolate_squarefree_real_roots`] by Descartes' rule alone (the exact path; module docs).
+pub fn isolate_squarefree_real_roots_descartes(sf: &Poly) -> Vec<RootInterval> {
     debug_assert!(sf.is_squarefree(), "isolate_squarefree_real_roots: {sf}");
     if sf.degree().unwrap_or(0) == 0 {
         return Vec::new();
@@ -501,7 +522,9 @@ pub fn simplest_between(lo: &RBig, hi: &RBig, lo_ok: bool, hi_ok: bool) -> RBig 
 /// ```
 /// # use qsic_algebra::{Poly, RBig, roots::{isolate_real_roots, rational_between}};
 /// let r = isolate_real_roots(&Poly::from_i64s(&[-2, 0, 1])); // ±√2
-/// assert_eq!(rational_between(&r[0], &r[1]), RBig::ZERO);
+/// let m = rational_between(&r[0], &r[1]);
+/// assert!(r[0].hi() <= &m && &m <= r[1].lo());
+/// assert_eq!(RBig::from(m.floor()), m); // an integer fits in the gap
 /// ```
 pub fn rational_between(a: &RootInterval, b: &RootInterval) -> RBig {
     simplest_between(

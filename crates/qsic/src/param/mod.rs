@@ -38,7 +38,9 @@ use crate::error::Error;
 use crate::pencil::{PencilAnalysis, PencilPoint};
 use crate::quadric::Quadric;
 use qsic_algebra::field::Quadratic;
-use qsic_algebra::roots::{isolate_squarefree_real_roots, simplest_between, RootInterval};
+use qsic_algebra::roots::{
+    isolate_squarefree_real_roots, rational_between, simplest_between, RootInterval,
+};
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Sign};
 use surface::{parameterize_cone, parameterize_doubly_ruled, poly_form, q, to_quadratic};
 
@@ -852,7 +854,7 @@ fn variations(chain: &[Poly<Quadratic>], x: &RBig) -> usize {
     signs.windows(2).filter(|w| w[0] != w[1]).count()
 }
 
-/// The norm `s·s̄ ∈ ℚ[u]` of `s` over ℚ(√δ) as a primitive integer polynomial: `s_a² − δs_b²`
+/// The norm `s·s̄ ∈ ℚ[u]` of `s` over ℚ(√δ) as an integer polynomial: `s_a² − δs_b²`
 /// for `s = s_a + s_b√δ`, fraction-free when the coefficients are integral.
 fn norm_of(s: &Poly<Quadratic>) -> Poly {
     let delta = s
@@ -861,27 +863,76 @@ fn norm_of(s: &Poly<Quadratic>) -> Poly {
         .find(|c| c.as_rational().is_none())
         .map(|c| c.radicand().clone())
         .unwrap_or(IBig::ZERO);
-    let norm: Vec<RBig> = match zsqrt::zpoly(s, &delta) {
-        Some(z) => {
-            let conj: Vec<zsqrt::Zq> = z
-                .iter()
-                .map(|c| zsqrt::Zq {
-                    a: c.a.clone(),
-                    b: -c.b.clone(),
-                })
-                .collect();
-            zsqrt::poly_mul(&z, &conj, &delta)
-                .into_iter()
-                .map(|c| RBig::from(c.a))
-                .collect()
-        }
-        None => (s * &s.map(Quadratic::conjugate))
-            .coeffs()
-            .iter()
-            .map(|c| c.as_rational().cloned().expect("a norm is rational"))
-            .collect(),
-    };
+    if let Some(z) = zsqrt::zpoly(s, &delta) {
+        // Σ_{i+j=k} (aᵢaⱼ − δ·bᵢbⱼ): the rational part of s·s̄ only
+        let n = z.len();
+        let coeffs = (0..(2 * n).saturating_sub(1))
+            .map(|k| {
+                let (mut a, mut b) = (IBig::ZERO, IBig::ZERO);
+                for i in k.saturating_sub(n - 1)..=k.min(n - 1) {
+                    let j = k - i;
+                    if i < j {
+                        a += (&z[i].a * &z[j].a) << 1;
+                        b += (&z[i].b * &z[j].b) << 1;
+                    } else if i == j {
+                        a += &z[i].a * &z[i].a;
+                        b += &z[i].b * &z[i].b;
+                    }
+                }
+                a - b * &delta
+            })
+            .collect();
+        // not made primitive here: `real_roots_of` and `squarefree_part` do that
+        return Poly::new(coeffs);
+    }
+    let norm: Vec<RBig> = (s * &s.map(Quadratic::conjugate))
+        .coeffs()
+        .iter()
+        .map(|c| c.as_rational().cloned().expect("a norm is rational"))
+        .collect();
     Poly::from_rational(&Poly::new(norm)).0
+}
+
+/// The sign of `s = A + B√δ` (integer coefficients `(aᵢ, bᵢ)` rounded to floats) at the
+/// float `x`, if the float evaluation certifies it: Horner errs by at most
+/// `(2n + 2)u·Σ|cᵢ||x|ⁱ` with the coefficients' rounding (the bound of
+/// [`qsic_algebra::filter::sum_of_products_bound`], integer inputs so no underflow for
+/// `|x| ≥ 2⁻⁴⁰⁰`), `√δ` errs by `2u` relatively, and the last product and sum by `u` each.
+fn certified_sign_zsqrt(a: &[f64], b: &[f64], sqrt_delta: f64, x: f64) -> Option<Sign> {
+    if !(x == 0.0 || (x.abs() >= 2f64.powi(-400) && x.abs() <= 2f64.powi(400))) {
+        return None;
+    }
+    let ax = x.abs();
+    let horner = |c: &[f64]| {
+        let (mut v, mut mag) = (0.0f64, 0.0f64);
+        for &ci in c.iter().rev() {
+            v = v * x + ci;
+            mag = mag * ax + ci.abs();
+        }
+        let err = qsic_algebra::filter::sum_of_products_bound(c.len(), c.len(), mag);
+        (v, err)
+    };
+    let (va, ea) = horner(a);
+    let (vb, eb) = horner(b);
+    let value = va + sqrt_delta * vb;
+    let u = f64::EPSILON / 2.0;
+    let bound = (ea
+        + sqrt_delta * eb * (1.0 + 4.0 * u)
+        + 4.0 * u * sqrt_delta * vb.abs()
+        + 2.0 * u * value.abs())
+        * (1.0 + 2f64.powi(-40));
+    qsic_algebra::filter::certified_sign(value, bound)
+}
+
+/// `x` as a float if it is one exactly (a dyadic of at most 53 bits).
+fn exact_f64(x: &RBig) -> Option<f64> {
+    use dashu_int::ops::{BitTest, PowerOfTwo};
+    let den = x.denominator();
+    if !den.is_power_of_two() || x.numerator().bit_len() > 53 {
+        return None;
+    }
+    let v = x.to_f64().value();
+    (RBig::try_from(v).ok().as_ref() == Some(x)).then_some(v)
 }
 
 /// The real roots of `s` (see [`DiscriminantRoots`]).
@@ -899,9 +950,18 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
         .map(|c| c.radicand().clone())
         .unwrap_or(IBig::ZERO);
     let integral = zsqrt::zpoly(s, &delta);
-    let sign_at = |x: &RBig| match &integral {
-        Some(z) => zsqrt::sign_at(z, x, &delta),
-        None => sign(&s.eval(&q(x))),
+    // floats of the coefficients and of √δ for the certified float signs
+    let floats = integral.as_ref().map(|z| {
+        let f = |v: &IBig| v.to_f64().value();
+        let a: Vec<f64> = z.iter().map(|c| f(&c.a)).collect();
+        let b: Vec<f64> = z.iter().map(|c| f(&c.b)).collect();
+        (a, b, f(&delta).sqrt())
+    });
+    let sign_at = |x: &RBig| match (&integral, &floats) {
+        (Some(z), Some((a, b, r))) => exact_f64(x)
+            .and_then(|xf| certified_sign_zsqrt(a, b, *r, xf))
+            .unwrap_or_else(|| zsqrt::sign_at(z, x, &delta)),
+        _ => sign(&s.eval(&q(x))),
     };
     let (roots, squarefree) = match rational {
         Some(c) => {
@@ -911,34 +971,48 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
         }
         None => {
             let norm = norm_of(s);
-            let sf = norm.squarefree_part();
-            // s divides its norm: a square-free norm makes s square-free (the common case,
-            // without a gcd over ℚ(√δ))
-            let squarefree =
-                sf.degree() == norm.degree() || s.gcd_monic(&s.derivative()).degree() == Some(0);
-            // each interval holds one root of s·s̄; a simple root of s there changes its
-            // sign, and a square-free s has no other kind (else count by Sturm)
-            let chain = (!squarefree).then(|| sturm_chain(s));
-            let roots = isolate_squarefree_real_roots(&sf)
-                .into_iter()
-                .filter(|iv| match (iv, &chain) {
-                    (RootInterval::Exact(r), _) => sign_at(r) == Sign::Zero,
-                    (RootInterval::Open(lo, hi), None) => sign_at(lo) != sign_at(hi),
-                    (RootInterval::Open(lo, hi), Some(chain)) => {
-                        variations(chain, lo) > variations(chain, hi)
-                    }
-                })
-                .filter_map(|iv| AlgebraicReal::from_isolating_interval(&sf, &iv))
-                .collect();
-            (roots, squarefree)
+            // the certified float isolation proves the norm square-free when it answers
+            // (then each root of s·s̄ is a simple root of exactly one of s, s̄)
+            if let Some(all) = AlgebraicReal::certified_real_roots_of(&norm) {
+                let roots = all
+                    .into_iter()
+                    .filter(|r| match r.interval() {
+                        RootInterval::Exact(v) => sign_at(v) == Sign::Zero,
+                        RootInterval::Open(lo, hi) => sign_at(lo) != sign_at(hi),
+                    })
+                    .collect();
+                (roots, true)
+            } else {
+                let sf = norm.squarefree_part();
+                // s divides its norm: a square-free norm makes s square-free (the common
+                // case, without a gcd over ℚ(√δ))
+                let squarefree = sf.degree() == norm.degree()
+                    || s.gcd_monic(&s.derivative()).degree() == Some(0);
+                // each interval holds one root of s·s̄; a simple root of s there changes its
+                // sign, and a square-free s has no other kind (else count by Sturm)
+                let chain = (!squarefree).then(|| sturm_chain(s));
+                let roots = isolate_squarefree_real_roots(&sf)
+                    .into_iter()
+                    .filter(|iv| match (iv, &chain) {
+                        (RootInterval::Exact(r), _) => sign_at(r) == Sign::Zero,
+                        (RootInterval::Open(lo, hi), None) => sign_at(lo) != sign_at(hi),
+                        (RootInterval::Open(lo, hi), Some(chain)) => {
+                            variations(chain, lo) > variations(chain, hi)
+                        }
+                    })
+                    .filter_map(|iv| AlgebraicReal::from_isolating_interval(&sf, &iv))
+                    .collect();
+                (roots, squarefree)
+            }
         }
     };
     let mut samples = Vec::new();
     match (roots.first(), roots.last()) {
         (Some(first), Some(last)) => {
             samples.push(RBig::from(first.interval().lo().floor()) - RBig::ONE);
+            // the stated intervals come from one isolation of the norm: disjoint, short ends
             for w in roots.windows(2) {
-                samples.push(w[0].rational_between(&w[1]));
+                samples.push(rational_between(w[0].interval(), w[1].interval()));
             }
             samples.push(RBig::from(last.interval().hi().ceil()) + RBig::ONE);
         }
@@ -1123,6 +1197,62 @@ mod tests {
             }
         }
         assert!(predicted * 10 >= total * 7, "{predicted}/{total}");
+    }
+
+    /// The float filter for the sign of `A + B√δ` agrees with the exact sign wherever it
+    /// answers, answers for most random points, and never at a zero: `s` built with a
+    /// rational root `x₀` (`s = (u − x₀)·t`), and near-cancelling `A ≈ −B√δ` at `x`.
+    #[test]
+    fn certified_float_signs_of_s_agree_with_exact_signs() {
+        let mut rng = qsic_algebra::testing::SplitMix(5);
+        let mut answered = 0;
+        for trial in 0..400 {
+            let delta = IBig::from([2, 3, 5, 7, 1_000_003][trial % 5]);
+            let mut z: Vec<zsqrt::Zq> = (0..5)
+                .map(|_| zsqrt::Zq {
+                    a: IBig::from(rng.int(-1 << 40, 1 << 40)),
+                    b: IBig::from(rng.int(-1 << 40, 1 << 40)),
+                })
+                .collect();
+            let x = RBig::from_parts_signed(IBig::from(rng.int(-4096, 4096)), IBig::from(64));
+            if trial % 3 == 0 {
+                // make x a root: subtract s(x) from the constant term (x·64⁴ integral)
+                let den = IBig::from(64).pow(4);
+                let scaled = |c: &IBig| c * &den;
+                for c in z.iter_mut() {
+                    c.a = scaled(&c.a);
+                    c.b = scaled(&c.b);
+                }
+                let value = |f: fn(&zsqrt::Zq) -> &IBig| {
+                    let v = z
+                        .iter()
+                        .rev()
+                        .fold(RBig::ZERO, |acc, c| acc * &x + RBig::from(f(c).clone()));
+                    v.numerator().clone() // an integer: den·s has integral values at x
+                };
+                let (va, vb) = (value(|c| &c.a), value(|c| &c.b));
+                z[0].a -= va;
+                z[0].b -= vb;
+            }
+            let f = |v: &IBig| v.to_f64().value();
+            let a: Vec<f64> = z.iter().map(|c| f(&c.a)).collect();
+            let b: Vec<f64> = z.iter().map(|c| f(&c.b)).collect();
+            let xf = exact_f64(&x).expect("a short dyadic");
+            let exact = zsqrt::sign_at(&z, &x, &delta);
+            if let Some(sg) = certified_sign_zsqrt(&a, &b, f(&delta).sqrt(), xf) {
+                assert_eq!(sg, exact, "trial {trial}");
+                answered += 1;
+            }
+            if trial % 3 == 0 {
+                assert_eq!(exact, Sign::Zero, "trial {trial}: x is a root");
+            }
+        }
+        assert!(answered >= 200, "{answered}");
+        // a rational that is not a float is left to the exact path
+        assert_eq!(
+            exact_f64(&RBig::from_parts_signed(1.into(), 3.into())),
+            None
+        );
     }
 
     #[test]

@@ -1,0 +1,868 @@
+//! Certified real root isolation in floating point: all complex roots of an integer
+//! polynomial of small degree by the Aberth–Ehrlich iteration in `f64`, then inclusion disks
+//! with rigorous error bounds. The answer is a proof or `None` (the caller then isolates
+//! exactly); no float decides anything the certificate does not prove.
+//!
+//! # Certificate
+//! For distinct points `z₁…zₙ` and `p` of degree `n` with leading coefficient `aₙ`, let
+//! `Wᵢ = p(zᵢ) / (aₙ ∏_{j≠i}(zᵢ − zⱼ))` (the Weierstrass corrections). Interpolation at the
+//! `zᵢ` gives `p/aₙ = ∏(x − zⱼ) + Σᵢ Wᵢ ∏_{j≠i}(x − zⱼ) = det(xI − M)` with
+//! `M = diag(z) − 𝟙Wᵀ` (a rank-one update). Column `i` of `M` has diagonal `zᵢ − Wᵢ` and
+//! `n − 1` other entries `−Wᵢ`, so by Gershgorin the roots of `p` lie in the union of the
+//! disks `D(zᵢ − Wᵢ, (n − 1)|Wᵢ|) ⊆ Dᵢ = D(zᵢ, n|Wᵢ|)`. Scaling the off-diagonal entries by
+//! `t ∈ [0, 1]` moves the eigenvalues continuously from `zᵢ − Wᵢ ∈ Dᵢ` while they stay in
+//! the union; so when the `Dᵢ` are pairwise disjoint, each holds exactly one root and `p`
+//! is square-free. Then:
+//! - a disk centred on the real axis holds a real root: with its root `ζ` the mirror image
+//!   `ζ̄`, also a root (`p` is real), lies in the same (symmetric) disk, which holds only one;
+//! - a disk that does not meet the real axis holds a non-real root.
+//!
+//! Approximations whose disk meets the axis are moved onto it and the disks computed again;
+//! if then a disk off the axis meets it, or two disks meet, the certificate fails.
+//!
+//! # Rounding
+//! The coefficients are scaled by powers of two (the variable too, `x = 2ᵏy`, so the roots
+//! are near 1 in size) and rounded to `f64` with a relative error below `2u`, `u = 2⁻⁵³`
+//! (tiny ones become 0 with an absolute error `2⁻⁹⁶⁰`). The disk centres are the floats
+//! themselves, so only `|p(zᵢ)|` (upper bound) and `|aₙ ∏(zᵢ − zⱼ)|` (lower bound) carry
+//! rounding: complex Horner's rule errs by at most `(8n + 12)·u·Σ|cₖ||z|ᵏ` (about twice the
+//! first-order bound `(4n + 2)u·Σ|cₖ||z|ᵏ`: a complex product errs by at most `2√2·u`
+//! relatively, a sum by `u`), plus the coefficients' errors and `2⁻¹⁰⁶⁰` per step for
+//! underflow, times `|z|ʲ`. Every other quantity is a chain of fewer than 2⁸ roundings
+//! (`n ≤ 16`) of non-negative values, each relative `u`: a factor `1 ± 2⁻⁴⁰` covers it.
+//! A product that could underflow, or a value that is not finite, fails the certificate.
+//!
+//! # Intervals
+//! A real disk `D(c, r)` becomes the open interval `(lo, hi)`: `lo = ⌊(c − d)/h⌋·h`,
+//! `hi = ⌈(c + d)/h⌉·h` with `d = max(2r, 4u|c|, g/5)`, `g` a lower bound on the distance
+//! from `c` to every other disk and to 0 (no interval holds 0, as in the exact path) and
+//! `h` the largest power of two `≤ d/2`. The rounding of
+//! `c ∓ d` stays below `d/4 + ud`, so `c − 1.8d < lo < c − r` (and the same for `hi`):
+//! the ends lie outside every disk (not roots), and `d < g/4` (else the certificate fails)
+//! keeps the interval within `0.45g` of `c`, away from the other disks and from the other
+//! intervals. The ends are dyadic with about `log₂(|c|/g)` bits: cheap to evaluate.
+//!
+//! # Rational roots
+//! As in the exact path, a rational root is reported [`RootInterval::Exact`] when the
+//! leading coefficient has at most 64 bits: a rational root `a/b` has `b | aₙ`, so `aₙ·ζ` is
+//! an integer in `aₙ·[c − r, c + r]`; none there proves `ζ` irrational, one is checked
+//! exactly, several (a wide disk) go to the exact path's refinement.
+
+use super::{exact_if_rational, RootInterval};
+use crate::poly::Poly;
+use dashu_int::ops::{BitTest, UnsignedAbs};
+use dashu_int::IBig;
+use dashu_ratio::RBig;
+
+/// The largest degree the certified path takes.
+pub const MAX_CERTIFIED_DEGREE: usize = 16;
+
+/// Unit roundoff of `f64`.
+const U: f64 = f64::EPSILON / 2.0;
+/// Relative slack covering a chain of fewer than 2⁸ roundings.
+const SLACK: f64 = 1.0 / (1u64 << 40) as f64;
+/// Scaled coefficients below `2⁻⁹⁶⁰` become 0 with this absolute error.
+const FLUSH_EXP: i64 = -960;
+/// Aberth–Ehrlich sweeps before the certificate is tried anyway.
+const MAX_SWEEPS: usize = 60;
+
+/// `2ᵉ` for `−1022 ≤ e ≤ 1023`.
+fn pow2(e: i64) -> f64 {
+    debug_assert!((-1022..=1023).contains(&e));
+    f64::from_bits(((e + 1023) as u64) << 52)
+}
+
+/// A complex number in `f64`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Complex {
+    re: f64,
+    im: f64,
+}
+
+impl Complex {
+    const ZERO: Complex = Complex { re: 0.0, im: 0.0 };
+
+    fn add(self, o: Complex) -> Complex {
+        Complex {
+            re: self.re + o.re,
+            im: self.im + o.im,
+        }
+    }
+    fn sub(self, o: Complex) -> Complex {
+        Complex {
+            re: self.re - o.re,
+            im: self.im - o.im,
+        }
+    }
+    fn mul(self, o: Complex) -> Complex {
+        Complex {
+            re: self.re * o.re - self.im * o.im,
+            im: self.re * o.im + self.im * o.re,
+        }
+    }
+    fn div(self, o: Complex) -> Complex {
+        let d = o.norm_sqr();
+        Complex {
+            re: (self.re * o.re + self.im * o.im) / d,
+            im: (self.im * o.re - self.re * o.im) / d,
+        }
+    }
+    fn norm_sqr(self) -> f64 {
+        self.re * self.re + self.im * self.im
+    }
+    /// `|z|` within `4u` relatively: `√(re² + im²)` when the sum of squares is far from
+    /// underflow and overflow (three roundings and a square root; an underflowed square is
+    /// below `u` times the sum), else `hypot`.
+    fn abs(self) -> f64 {
+        let s = self.norm_sqr();
+        if s > pow2(-900) && s < pow2(900) {
+            s.sqrt()
+        } else {
+            self.re.hypot(self.im)
+        }
+    }
+    fn is_finite(self) -> bool {
+        self.re.is_finite() && self.im.is_finite()
+    }
+}
+
+/// `p(2ᵏy)` divided by a power of two, rounded to floats: `c[i]` within `err[i]` of the
+/// exact scaled coefficient.
+struct Scaled {
+    c: Vec<f64>,
+    err: Vec<f64>,
+    k: i64,
+}
+
+/// `|a|` as `m·2ᵉ` to 64 bits (truncated) with `m < 2⁶⁴`, `m` rounded to a float and
+/// carrying the sign of `a`.
+fn split(a: &IBig) -> (f64, i64) {
+    let bits = a.bit_len();
+    let shift = bits.saturating_sub(64);
+    let top = u64::try_from(&(a.unsigned_abs() >> shift)).expect("at most 64 bits");
+    let m = top as f64;
+    (if a < &IBig::ZERO { -m } else { m }, shift as i64)
+}
+
+/// The scaled float coefficients of `p` (`p(0) ≠ 0`, degree `n ≥ 1`); `None` if the
+/// leading or constant coefficient would be flushed.
+fn scale(p: &Poly) -> Option<Scaled> {
+    let coeffs = p.coeffs();
+    let n = coeffs.len() - 1;
+    // the geometric mean of the roots' sizes is |a₀/aₙ|^(1/n): y = x/2ᵏ is near 1
+    let l0 = coeffs[0].bit_len() as i64;
+    let ln = coeffs[n].bit_len() as i64;
+    let k = (l0 - ln).div_euclid(n as i64);
+    let parts: Vec<(f64, i64)> = coeffs
+        .iter()
+        .enumerate()
+        .map(|(i, a)| {
+            let (m, e) = split(a);
+            (m, e + k * i as i64)
+        })
+        .collect();
+    // top bit of the largest scaled coefficient: after the shift every |cᵢ| < 1
+    let top = parts
+        .iter()
+        .filter(|(m, _)| *m != 0.0)
+        .map(|&(_, e)| e + 64)
+        .max()?;
+    let mut c = Vec::with_capacity(n + 1);
+    let mut err = Vec::with_capacity(n + 1);
+    for &(m, e) in &parts {
+        let ex = e - top; // cᵢ = m·2^ex, m < 2⁶⁴
+        if m == 0.0 {
+            c.push(0.0);
+            err.push(0.0);
+        } else if ex + 64 < FLUSH_EXP {
+            c.push(0.0);
+            err.push(pow2(FLUSH_EXP));
+        } else {
+            // m·2⁻⁶⁴ ∈ [2⁻⁶⁴, 1] is exact, and so is the normal product after it
+            let v = m * pow2(-64) * pow2(ex + 64);
+            c.push(v);
+            err.push(2.0 * U * v.abs());
+        }
+    }
+    (c[0] != 0.0 && c[n] != 0.0).then_some(Scaled { c, err, k })
+}
+
+/// Initial approximations from the Newton polygon: on each edge `(i, j)` of the upper convex
+/// hull of `(i, log₂|cᵢ|)`, `j − i` points on the circle of radius `|cᵢ/cⱼ|^(1/(j−i))`.
+fn initial(c: &[f64]) -> Vec<Complex> {
+    let n = c.len() - 1;
+    let pts: Vec<(usize, f64)> = c
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| **v != 0.0)
+        .map(|(i, v)| (i, v.abs().log2()))
+        .collect();
+    let mut hull: Vec<(usize, f64)> = Vec::with_capacity(pts.len());
+    for &q in &pts {
+        while hull.len() >= 2 {
+            let (a, b) = (hull[hull.len() - 2], hull[hull.len() - 1]);
+            // drop b unless it lies strictly above the chord a–q
+            let cross = (b.0 - a.0) as f64 * (q.1 - a.1) - (b.1 - a.1) * (q.0 - a.0) as f64;
+            if cross >= 0.0 {
+                hull.pop();
+            } else {
+                break;
+            }
+        }
+        hull.push(q);
+    }
+    let mut z = Vec::with_capacity(n);
+    for w in hull.windows(2) {
+        let (i, j) = (w[0].0, w[1].0);
+        let m = j - i;
+        let rho = ((w[0].1 - w[1].1) / m as f64).exp2();
+        for t in 0..m {
+            let angle = std::f64::consts::TAU * (t as f64 / m as f64 + i as f64 / n as f64) + 0.4;
+            z.push(Complex {
+                re: rho * angle.cos(),
+                im: rho * angle.sin(),
+            });
+        }
+    }
+    z
+}
+
+/// `p(z)`, `p′(z)` by Horner's rule, and `Σ|cₖ||z|ᵏ`.
+fn eval_with_derivative(c: &[f64], z: Complex) -> (Complex, Complex, f64) {
+    let az = z.abs();
+    let (mut v, mut dv, mut mag) = (Complex::ZERO, Complex::ZERO, 0.0);
+    for &ck in c.iter().rev() {
+        dv = dv.mul(z).add(v);
+        v = v.mul(z).add(Complex { re: ck, im: 0.0 });
+        mag = mag * az + ck.abs();
+    }
+    (v, dv, mag)
+}
+
+/// Aberth–Ehrlich sweeps (Gauss–Seidel: each update used at once) until every correction
+/// is at the rounding level; `None` on a value that is not finite.
+fn aberth(c: &[f64]) -> Option<Vec<Complex>> {
+    let n = c.len() - 1;
+    let mut z = initial(c);
+    let mut done = vec![false; n];
+    for _ in 0..MAX_SWEEPS {
+        let mut all = true;
+        for i in 0..n {
+            if done[i] {
+                continue;
+            }
+            let (v, dv, mag) = eval_with_derivative(c, z[i]);
+            if !v.is_finite() || !dv.is_finite() {
+                return None;
+            }
+            let tol = 4.0 * n as f64 * U * mag;
+            if v.norm_sqr() <= tol * tol {
+                done[i] = true;
+                continue;
+            }
+            all = false;
+            if dv == Complex::ZERO {
+                // a critical point: move off it
+                z[i] = z[i].add(Complex {
+                    re: 1e-3 * (1.0 + z[i].abs()),
+                    im: 1e-3,
+                });
+                continue;
+            }
+            let w = v.div(dv);
+            let mut s = Complex::ZERO;
+            for j in 0..n {
+                if j != i {
+                    s = s.add(Complex { re: 1.0, im: 0.0 }.div(z[i].sub(z[j])));
+                }
+            }
+            let corr = w.div(Complex { re: 1.0, im: 0.0 }.sub(w.mul(s)));
+            let next = z[i].sub(corr);
+            if !next.is_finite() {
+                return None;
+            }
+            z[i] = next;
+            if corr.norm_sqr() <= 4.0 * U * U * z[i].norm_sqr() {
+                done[i] = true;
+            }
+        }
+        if all {
+            break;
+        }
+    }
+    Some(z)
+}
+
+/// An upper bound of `|p(z)|`, `p` the exact scaled polynomial (module docs, Rounding).
+fn value_bound(s: &Scaled, z: Complex) -> f64 {
+    let n = s.c.len() - 1;
+    let az = z.abs();
+    let (mut v, mut mag, mut abs_err) = (Complex::ZERO, 0.0, 0.0);
+    for (&ck, &ek) in s.c.iter().zip(&s.err).rev() {
+        v = v.mul(z).add(Complex { re: ck, im: 0.0 });
+        mag = mag * az + ck.abs();
+        abs_err = abs_err * az + ek + pow2(-1022) * pow2(-38);
+    }
+    let horner = (8 * n + 12) as f64 * U * mag;
+    (v.abs() + horner + abs_err) * (1.0 + SLACK)
+}
+
+/// Upper bounds of the radii `n|Wᵢ|` of the inclusion disks at `z` (module docs).
+fn radii(s: &Scaled, z: &[Complex]) -> Option<Vec<f64>> {
+    let n = z.len();
+    let lead = (s.c[n].abs() - s.err[n]) * (1.0 - SLACK);
+    let mut r = Vec::with_capacity(n);
+    for i in 0..n {
+        let mut prod = lead;
+        for j in 0..n {
+            if j != i {
+                prod *= z[i].sub(z[j]).abs();
+                if prod.is_nan() || prod < f64::MIN_POSITIVE {
+                    return None;
+                }
+            }
+        }
+        let ri = n as f64 * value_bound(s, z[i]) / (prod * (1.0 - SLACK)) * (1.0 + SLACK);
+        if !ri.is_finite() {
+            return None;
+        }
+        r.push(ri);
+    }
+    Some(r)
+}
+
+/// A lower bound of `|a − b|`.
+fn distance_lo(a: Complex, b: Complex) -> f64 {
+    a.sub(b).abs() * (1.0 - SLACK)
+}
+
+/// The certified disks of the scaled polynomial: centres, radii, real centres exactly on
+/// the axis; `None` if the certificate fails.
+fn certified_disks(s: &Scaled) -> Option<(Vec<Complex>, Vec<f64>)> {
+    let mut z = aberth(&s.c)?;
+    if z.iter().any(|v| v.abs().is_nan() || v.abs() >= 1e150) {
+        return None;
+    }
+    let mut r = radii(s, &z)?;
+    let mut moved = false;
+    for (zi, &ri) in z.iter_mut().zip(&r) {
+        if zi.im != 0.0 && zi.im.abs() <= ri {
+            zi.im = 0.0;
+            moved = true;
+        }
+    }
+    if moved {
+        r = radii(s, &z)?;
+    }
+    let n = z.len();
+    for i in 0..n {
+        if z[i].im != 0.0 && z[i].im.abs() <= r[i] {
+            return None;
+        }
+        for j in i + 1..n {
+            if distance_lo(z[i], z[j]) <= (r[i] + r[j]) * (1.0 + SLACK) {
+                return None;
+            }
+        }
+    }
+    Some((z, r))
+}
+
+/// `j·2ᵉ` as a rational.
+fn dyadic(j: f64, e: i64) -> RBig {
+    let j = IBig::from(j as i64);
+    if e >= 0 {
+        RBig::from(j << e as usize)
+    } else {
+        RBig::from_parts_signed(j, IBig::ONE << e.unsigned_abs() as usize)
+    }
+}
+
+/// The float `v` as an exact rational times `2ᵏ`.
+fn float_times_pow2(v: f64, k: i64) -> RBig {
+    let exact = RBig::try_from(v).expect("a finite float");
+    if k >= 0 {
+        exact * RBig::from(IBig::ONE << k as usize)
+    } else {
+        exact / RBig::from(IBig::ONE << k.unsigned_abs() as usize)
+    }
+}
+
+/// The isolating interval of the real root in `D(c, r)` (module docs, Intervals), as
+/// `(lo, hi)` in units of `2^e`; `None` if the disk is too close to the others. A `wide`
+/// interval reaches out to a fifth of the gap (short ends), else it is as narrow as the
+/// disk allows (`d = max(2r, 4u|c|)`; the same proof holds).
+fn interval_in_units(c: f64, r: f64, gap: f64, wide: bool) -> Option<(f64, f64, i64)> {
+    let d = (2.0 * r)
+        .max(4.0 * U * c.abs())
+        .max(if wide { gap / 5.0 } else { 0.0 });
+    let separated = 4.0 * d < gap * (1.0 - SLACK) && d >= pow2(-900); // false on NaN
+    if !separated {
+        return None;
+    }
+    // h = 2^e ≤ d/2, the largest such power of two
+    let e = (d / 2.0).log2().floor() as i64;
+    let e = if pow2(e + 1) <= d / 2.0 { e + 1 } else { e };
+    let e = if pow2(e) > d / 2.0 { e - 1 } else { e };
+    let h = pow2(e);
+    let lo = ((c - d) / h).floor();
+    let hi = ((c + d) / h).ceil();
+    Some((lo, hi, e))
+}
+
+/// A real root isolated by [`certified_real_roots_enclosed`]: its isolating interval and a
+/// float enclosure, the root lying in `[center − radius, center + radius]` (a radius of
+/// `+∞` when the scaled disk does not fit the range of `f64`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CertifiedRoot {
+    /// The isolating interval (postconditions of [`isolate_real_roots`](super::isolate_real_roots)).
+    pub interval: RootInterval,
+    /// A float within `radius` of the root.
+    pub center: f64,
+    /// A rigorous bound on the distance from `center` to the root.
+    pub radius: f64,
+    /// An isolating interval about as narrow as the enclosure (its ends have about 53
+    /// bits): where a refinement can start.
+    pub narrow: RootInterval,
+}
+
+/// [`certified_real_roots`], the intervals only.
+///
+/// ```
+/// # use qsic_algebra::{Poly, RBig, roots::{certified_real_roots, RootInterval}};
+/// let p = &Poly::from_i64s(&[-2, 0, 1]) * &Poly::from_i64s(&[1, 1, 1]); // (x² − 2)(x² + x + 1)
+/// let r = certified_real_roots(&p).unwrap();
+/// assert_eq!(r.len(), 2);
+/// assert!(r[0].hi() < &RBig::ZERO && r[1].lo() > &RBig::ZERO);
+/// assert_eq!(certified_real_roots(&Poly::from_roots(&[2, 2, 5])), None); // a double root
+/// ```
+pub fn certified_real_roots(p: &Poly) -> Option<Vec<RootInterval>> {
+    Some(
+        certified_real_roots_enclosed(p)?
+            .into_iter()
+            .map(|r| r.interval)
+            .collect(),
+    )
+}
+
+/// `v·2ᵏ` for a float `v`, `None` unless the result is normal (then it is exact).
+fn times_pow2(v: f64, k: i64) -> Option<f64> {
+    if !(-1000..=1000).contains(&k) {
+        return None;
+    }
+    let x = v * pow2(k);
+    (x.is_finite() && (x == 0.0 || x.abs() >= pow2(-1000))).then_some(x)
+}
+
+/// The root of `p` at `c·2ᵏ` within `r·2ᵏ`, in the original variable.
+fn enclosed(interval: RootInterval, narrow: RootInterval, c: f64, r: f64, k: i64) -> CertifiedRoot {
+    let (center, radius) = match (times_pow2(c, k), times_pow2(r, k)) {
+        (Some(center), Some(radius)) if radius > 0.0 => (center, radius),
+        _ => (0.0, f64::INFINITY),
+    };
+    CertifiedRoot {
+        interval,
+        center,
+        radius,
+        narrow,
+    }
+}
+
+/// Isolates the real roots of `p` in floating point with a proof (module docs); `None` if
+/// the degree exceeds [`MAX_CERTIFIED_DEGREE`], `p` is zero, or the certificate fails (for
+/// example, `p` is not square-free or has roots too close for `f64`). `Some` proves `p`
+/// square-free, and the intervals meet the postconditions of
+/// [`isolate_real_roots`](super::isolate_real_roots).
+///
+/// Each root comes with a float enclosure ([`CertifiedRoot`]).
+pub fn certified_real_roots_enclosed(p: &Poly) -> Option<Vec<CertifiedRoot>> {
+    let n = p.degree()?;
+    if n > MAX_CERTIFIED_DEGREE {
+        return None;
+    }
+    if n == 0 {
+        return Some(Vec::new());
+    }
+    if p.coeff(0).is_zero() {
+        // 0 is a root: simple iff p′(0) ≠ 0; the others are roots of p/x
+        if p.coeff(1).is_zero() {
+            return None;
+        }
+        let mut r = certified_real_roots_enclosed(&p.shift_down(1))?;
+        if r.iter()
+            .any(|c| c.interval.lo() < &RBig::ZERO && c.interval.hi() > &RBig::ZERO)
+        {
+            return None;
+        }
+        r.push(CertifiedRoot {
+            interval: RootInterval::Exact(RBig::ZERO),
+            center: 0.0,
+            radius: 0.0,
+            narrow: RootInterval::Exact(RBig::ZERO),
+        });
+        r.sort_by(|a, b| a.interval.lo().cmp(b.interval.lo()));
+        return Some(r);
+    }
+    if n == 1 {
+        let v = RBig::from_parts_signed(-p.coeff(0), p.coeff(1));
+        let center = v.to_f64().value();
+        return Some(vec![CertifiedRoot {
+            radius: if center.is_finite() {
+                SLACK * center.abs() + pow2(-1022)
+            } else {
+                f64::INFINITY
+            },
+            center: if center.is_finite() { center } else { 0.0 },
+            narrow: RootInterval::Exact(v.clone()),
+            interval: RootInterval::Exact(v),
+        }]);
+    }
+    let s = scale(p)?;
+    let (z, r) = certified_disks(&s)?;
+    let lc = p.leading();
+    let small_lc = lc.bit_len() <= 64;
+    let mut out = Vec::new();
+    for i in 0..n {
+        if z[i].im != 0.0 {
+            continue;
+        }
+        let gap = (0..n)
+            .filter(|&j| j != i)
+            .map(|j| (distance_lo(z[i], z[j]) - r[j]) * (1.0 - SLACK))
+            .fold(f64::INFINITY, f64::min)
+            // and from 0, so that no interval holds 0 (as in the exact path, where the
+            // positive and negative roots are isolated apart)
+            .min(z[i].re.abs());
+        let (c, ri) = (z[i].re, r[i]);
+        let open = |wide| {
+            let (lo, hi, e) = interval_in_units(c, ri, gap, wide)?;
+            Some(RootInterval::Open(dyadic(lo, e + s.k), dyadic(hi, e + s.k)))
+        };
+        let iv = open(true)?;
+        debug_assert!(
+            p.sign_at(iv.lo()) * p.sign_at(iv.hi()) == crate::Sign::Negative,
+            "certified interval {iv:?} of {p}"
+        );
+        let interval = match small_lc.then(|| rationality(p, &lc, c, ri, s.k)) {
+            None | Some(Rationality::Irrational) => iv,
+            Some(Rationality::Rational(v)) => RootInterval::Exact(v),
+            Some(Rationality::Unknown) => exact_if_rational(p, iv),
+        };
+        let narrow = match &interval {
+            RootInterval::Exact(_) => interval.clone(),
+            RootInterval::Open(..) => open(false)?,
+        };
+        out.push(enclosed(interval, narrow, c, ri, s.k));
+    }
+    out.sort_by(|a, b| a.interval.lo().cmp(b.interval.lo()));
+    Some(out)
+}
+
+/// What the disk says of a real root's rationality.
+enum Rationality {
+    Irrational,
+    Rational(RBig),
+    /// Several candidates: the disk is too wide to tell.
+    Unknown,
+}
+
+/// Whether the root of `p` in `2ᵏ·[c − r, c + r]` is rational (module docs, Rational
+/// roots): the integers `m` with `m/|aₙ|` there are the candidates. In floats when
+/// `|aₙ|·2ᵏ·(|c| + r) < 2⁵⁰` proves there is none, else exactly.
+fn rationality(p: &Poly, lc: &IBig, c: f64, r: f64, k: i64) -> Rationality {
+    let lc = IBig::from(lc.unsigned_abs());
+    let l = lc.to_f64().value(); // within a relative u of |aₙ|
+    if (-900..=900).contains(&k) {
+        let x = l * c * pow2(k);
+        let w = (l * r * pow2(k) + 8.0 * U * x.abs()) * (1.0 + SLACK);
+        // x is within 3u|x| of |aₙ|·2ᵏ·c; the margin 8u|x| also covers the rounding of
+        // x ± w when w ≤ 4|x| (else 0 lies between them and the test fails); ⌊·⌋ is exact
+        if x.abs() + w < pow2(50) && (x + w).floor() < x - w {
+            return Rationality::Irrational;
+        }
+    }
+    let (c, r) = (float_times_pow2(c, k), float_times_pow2(r, k));
+    let scaled = |v: RBig| v * RBig::from(lc.clone());
+    let m_lo = scaled(&c - &r).ceil();
+    let m_hi = scaled(c + r).floor();
+    if m_hi < m_lo {
+        Rationality::Irrational
+    } else if m_hi == m_lo {
+        if p.eval_homogeneous(&m_lo, &lc).is_zero() {
+            Rationality::Rational(RBig::from_parts_signed(m_lo, lc))
+        } else {
+            Rationality::Irrational
+        }
+    } else {
+        Rationality::Unknown
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::isolate_squarefree_real_roots_descartes;
+    use super::*;
+    use crate::poly::sturm::SturmSequence;
+    use crate::testing::SplitMix;
+    use crate::Sign;
+
+    /// A random integer of about `bits` bits (sign included), never zero.
+    fn big(rng: &mut SplitMix, bits: usize) -> IBig {
+        let mut v = IBig::ZERO;
+        for _ in 0..bits.div_ceil(32) {
+            v = (v << 32) + IBig::from(rng.next_u64() >> 32);
+        }
+        let v = (v >> (bits.div_ceil(32) * 32 - bits)) + IBig::ONE;
+        if rng.int(0, 1) == 0 {
+            -v
+        } else {
+            v
+        }
+    }
+
+    /// A polynomial of one of the families of the module tests: random coefficients of a
+    /// few or about 133 bits (10⁴⁰), or products of linear and quadratic factors with
+    /// roots 2⁻³⁰ apart, roots of size 2^±60, and rational roots.
+    fn random_poly(rng: &mut SplitMix, family: u64) -> Poly {
+        let degree = rng.int(1, 10) as usize;
+        let lin = |a: IBig, b: IBig| Poly::new(vec![-b, a]); // a·x − b
+        match family % 4 {
+            0 | 1 => {
+                let bits = if family % 4 == 0 { 6 } else { 133 };
+                Poly::new((0..=degree).map(|_| big(rng, bits)).collect())
+            }
+            2 => {
+                // close pairs and random rational roots
+                let mut p = Poly::constant(IBig::ONE);
+                for _ in 0..degree.div_ceil(2) {
+                    let m = big(rng, 40);
+                    let shift = IBig::ONE << 30;
+                    p = &p * &lin(shift.clone(), m.clone());
+                    p = &p
+                        * &match rng.int(0, 2) {
+                            0 => lin(shift, m + IBig::ONE),
+                            1 => lin(big(rng, 8), big(rng, 10)),
+                            _ => Poly::new(vec![
+                                IBig::from(big(rng, 10).unsigned_abs()),
+                                big(rng, 4),
+                                IBig::ONE,
+                            ]),
+                        };
+                }
+                p
+            }
+            _ => {
+                // huge and tiny roots, and quadratics with irrational roots
+                let mut p = Poly::constant(IBig::ONE);
+                for _ in 0..degree.div_ceil(2) {
+                    let f = match rng.int(0, 3) {
+                        0 => lin(IBig::ONE, big(rng, 60)),
+                        1 => lin(big(rng, 60), big(rng, 3)),
+                        2 => Poly::new(vec![
+                            -IBig::from(big(rng, 20).unsigned_abs()),
+                            IBig::ZERO,
+                            IBig::ONE,
+                        ]),
+                        _ => Poly::new(vec![big(rng, 30), big(rng, 30), big(rng, 5)]),
+                    };
+                    p = &p * &f;
+                }
+                p
+            }
+        }
+    }
+
+    /// The certified answer meets the postconditions and agrees with Descartes' path:
+    /// the same number of roots, each certified interval holds exactly one root (signs at
+    /// the ends and a Sturm count), and rational roots are exact in both when the leading
+    /// coefficient has at most 64 bits.
+    fn check_against_descartes(sf: &Poly, cert: &[RootInterval]) {
+        let exact = isolate_squarefree_real_roots_descartes(sf);
+        assert_eq!(cert.len(), exact.len(), "{sf}: {cert:?} vs {exact:?}");
+        let sturm = SturmSequence::new(sf);
+        for (c, e) in cert.iter().zip(&exact) {
+            match c {
+                RootInterval::Exact(v) => assert_eq!(sf.sign_at(v), Sign::Zero, "{sf}: {v}"),
+                RootInterval::Open(lo, hi) => {
+                    assert!(lo < hi);
+                    assert!(
+                        lo >= &RBig::ZERO || hi <= &RBig::ZERO,
+                        "{sf}: {c:?} holds 0"
+                    );
+                    assert_eq!(
+                        sf.sign_at(lo) * sf.sign_at(hi),
+                        Sign::Negative,
+                        "{sf}: {c:?}"
+                    );
+                    assert_eq!(sturm.count_roots_in(lo, hi), 1, "{sf}: {c:?}");
+                }
+            }
+            if sf.leading().bit_len() <= 64 {
+                assert_eq!(c.as_exact(), e.as_exact(), "{sf}: {c:?} vs {e:?}");
+            }
+        }
+        for w in cert.windows(2) {
+            assert!(
+                w[0].hi() < w[1].lo()
+                    || (w[0].hi() == w[1].lo()
+                        && w[0].as_exact().is_none()
+                        && w[1].as_exact().is_none()),
+                "{sf}: {w:?}"
+            );
+        }
+    }
+
+    /// The narrow intervals isolate too, and each float enclosure holds its root: `p`
+    /// changes sign (or vanishes) on `[center − radius, center + radius]`, inside the
+    /// isolating interval.
+    fn check_enclosures(sf: &Poly, cert: &[CertifiedRoot]) {
+        let narrow: Vec<RootInterval> = cert.iter().map(|c| c.narrow.clone()).collect();
+        check_against_descartes(sf, &narrow);
+        for c in cert {
+            if c.radius.is_finite() {
+                let (m, r) = (
+                    RBig::try_from(c.center).unwrap(),
+                    RBig::try_from(c.radius).unwrap(),
+                );
+                let signs = sf.sign_at(&(&m - &r)) * sf.sign_at(&(&m + &r));
+                assert_ne!(signs, Sign::Positive, "{sf}: {c:?}");
+            }
+        }
+    }
+
+    /// Ill-conditioned real roots: `∏(x − i) − c` (Wilkinson-like, degree up to 14), where
+    /// the rounding term of the value bound is most of the disks' radii.
+    #[test]
+    fn ill_conditioned_roots_are_enclosed() {
+        let mut rng = SplitMix(99);
+        let mut certified = 0;
+        for n in 4..=14 {
+            for _ in 0..6 {
+                let roots: Vec<i64> = (1..=n).collect();
+                let c = Poly::constant(IBig::from(rng.int(1, 1 << 20)));
+                let p = &Poly::from_roots(&roots) - &c;
+                if let Some(cert) = certified_real_roots_enclosed(&p) {
+                    check_enclosures(&p, &cert);
+                    certified += 1;
+                }
+            }
+        }
+        assert!(certified >= 40, "{certified}");
+    }
+
+    #[test]
+    fn certified_roots_agree_with_descartes_on_random_polynomials() {
+        let mut rng = SplitMix(2026);
+        let mut certified = [0usize; 4];
+        let trials = 600u64;
+        for t in 0..trials {
+            let family = t % 4;
+            let p = random_poly(&mut rng, family);
+            let sf = p.squarefree_part();
+            if let Some(cert) = certified_real_roots_enclosed(&sf) {
+                check_enclosures(&sf, &cert);
+                let cert: Vec<RootInterval> = cert.into_iter().map(|c| c.interval).collect();
+                check_against_descartes(&sf, &cert);
+                certified[family as usize] += 1;
+            }
+        }
+        // the fast path answers for most generic inputs (not only the easy ones)
+        let per = (trials / 4) as usize;
+        assert!(certified[0] * 10 >= per * 9, "{certified:?}");
+        assert!(certified[1] * 10 >= per * 9, "{certified:?}");
+        assert!(certified[3] * 10 >= per * 6, "{certified:?}");
+    }
+
+    #[test]
+    fn multiple_and_near_multiple_roots_are_not_certified() {
+        let mut rng = SplitMix(7);
+        for _ in 0..100 {
+            let m = big(&mut rng, 30);
+            let rest = random_poly(&mut rng, 0);
+            // a double root: never square-free, never certified
+            let lin = Poly::new(vec![-m.clone(), IBig::from(rng.int(1, 9))]);
+            let double = &(&lin * &lin) * &rest;
+            assert_eq!(certified_real_roots(&double), None, "{double}");
+            // roots 2⁻⁶⁰ apart: beyond f64, so the certificate must fail
+            let shift = IBig::ONE << 60;
+            let pair = &Poly::new(vec![-m.clone(), shift.clone()])
+                * &Poly::new(vec![-(m + IBig::ONE), shift]);
+            let p = (&pair * &rest).squarefree_part();
+            assert_eq!(certified_real_roots(&p), None, "{p}");
+        }
+    }
+
+    /// `c − r ≤ √d ≤ c + r`, exactly.
+    fn holds_sqrt(c: f64, r: f64, d: i64) -> bool {
+        let (c, r) = (RBig::try_from(c).unwrap(), RBig::try_from(r).unwrap());
+        let d = RBig::from(d);
+        let (lo, hi) = (&c - &r, &c + &r);
+        (lo <= RBig::ZERO || &lo * &lo <= d) && hi >= RBig::ZERO && d <= &hi * &hi
+    }
+
+    /// The radii bound the distance to the roots: perturbed approximations of known roots
+    /// (±√dᵢ), from far off to the nearest floats (where only the rounding term covers the
+    /// error): every root lies in a disk, and disjoint disks hold one root each.
+    #[test]
+    fn disks_hold_the_roots_of_perturbed_approximations() {
+        let mut rng = SplitMix(11);
+        for t in 0..400 {
+            let m = rng.int(1, 4) as usize;
+            let mut ds: Vec<i64> = Vec::new();
+            while ds.len() < m {
+                let d = rng.int(2, 1 << 20);
+                let r = (d as f64).sqrt() as i64;
+                if r * r != d && !ds.contains(&d) {
+                    ds.push(d);
+                }
+            }
+            let p = ds.iter().fold(Poly::constant(IBig::ONE), |p, &d| {
+                &p * &Poly::from_i64s(&[-d, 0, 1])
+            });
+            let s = scale(&p).unwrap();
+            let unit = pow2(-s.k);
+            let eps = [1e-1, 1e-4, 1e-9, 0.0][t % 4];
+            let mut roots = Vec::new(); // (d, sign, approximation in scaled units)
+            for &d in &ds {
+                for sign in [1.0, -1.0] {
+                    let exact = sign * (d as f64).sqrt() * unit;
+                    let z = Complex {
+                        re: exact * (1.0 + eps * (rng.int(-1000, 1000) as f64 / 1000.0)),
+                        im: exact * eps * (rng.int(-1000, 1000) as f64 / 1000.0),
+                    };
+                    roots.push((d, sign, z));
+                }
+            }
+            let z: Vec<Complex> = roots.iter().map(|r| r.2).collect();
+            let Some(r) = radii(&s, &z) else { continue };
+            let disjoint = (0..z.len()).all(|i| {
+                (i + 1..z.len()).all(|j| distance_lo(z[i], z[j]) > (r[i] + r[j]) * (1.0 + SLACK))
+            });
+            for &(d, sign, _) in &roots {
+                // in units: the root is sign·√d·2⁻ᵏ; the disk holds it iff its real
+                // section around sign·Re z does (checked exactly, real roots)
+                let inside: Vec<usize> = (0..z.len())
+                    .filter(|&i| {
+                        let (c, ri) = (z[i].re * sign / unit, r[i] / unit);
+                        let rr = (ri * ri - (z[i].im / unit).powi(2)).max(0.0);
+                        // shrink the real section a little: a disk meets the axis in
+                        // [c − √(r² − im²), c + √(r² − im²)]
+                        rr > 0.0 && holds_sqrt(c, rr.sqrt() * (1.0 - 1e-9), d)
+                    })
+                    .collect();
+                let near_miss = (0..z.len()).any(|i| {
+                    let (c, ri) = (z[i].re * sign / unit, r[i] / unit);
+                    let rr = (ri * ri - (z[i].im / unit).powi(2)).max(0.0);
+                    holds_sqrt(c, rr.sqrt() * (1.0 + 1e-9) + 1e-300, d)
+                });
+                assert!(
+                    !inside.is_empty() || near_miss,
+                    "{p}: ±√{d} outside every disk, eps {eps}"
+                );
+                if disjoint {
+                    assert!(inside.len() <= 1, "{p}: √{d} in two disjoint disks");
+                }
+            }
+        }
+    }
+}
