@@ -12,7 +12,7 @@ use crate::output::ClassificationJson;
 use crate::param::{curve_of, fields_of, AffineContext};
 use qsic::affine::Chart;
 use qsic::io::{parse_rational_function, Variable};
-use qsic::param::sample::{sample, SampleOptions, Sampled};
+use qsic::param::sample::{sample, verify_on_quadrics, SampleOptions, Sampled};
 use qsic::param::Curve;
 use qsic::Quadric;
 use qsic_algebra::RBig;
@@ -152,6 +152,9 @@ pub fn sample_of(
 ) -> Result<(Curve, Sampled), String> {
     let curve = curve_of(a, b)?;
     let sampled = sample(&curve, options).map_err(|e| e.to_string())?;
+    if let (Some(a), Some(b)) = (a, b) {
+        verify_on_quadrics(&sampled, a, b).map_err(|e| e.to_string())?;
+    }
     Ok((curve, sampled))
 }
 

@@ -22,6 +22,7 @@ fn curves() -> Vec<(String, Quadric, Quadric, Curve)> {
         "seed_examples.jsonl",
         "qi-quadrics.jsonl",
         "no_rational_ruling.jsonl",
+        "wide_coefficients.jsonl",
     ] {
         let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
         let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
@@ -435,4 +436,17 @@ fn random_generic_pairs_are_sampled_densely_on_both_quadrics() {
         crossings_seen > 0 && pieces_seen >= 8,
         "{crossings_seen} {pieces_seen}"
     );
+}
+
+/// The last guard: the points of a curve pass against its own quadrics and fail against
+/// another one.
+#[test]
+fn points_are_verified_against_the_quadrics() {
+    use qsic::param::sample::verify_on_quadrics;
+    let a = parse_quadric("x^2+y^2+z^2-w^2").unwrap();
+    let b = parse_quadric("2*x^2+4*y^2-w^2").unwrap();
+    let s = sample(&parameterize(&a, &b).unwrap(), &SampleOptions::default()).unwrap();
+    assert!(verify_on_quadrics(&s, &a, &b).is_ok());
+    let other = parse_quadric("x^2+y^2+2*z^2-w^2").unwrap();
+    assert!(verify_on_quadrics(&s, &a, &other).is_err());
 }

@@ -48,6 +48,7 @@
 use super::curve::{Arc, ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue};
 use super::curve::{RealPiece, Sheet};
 use crate::error::Error;
+use crate::quadric::Quadric;
 use qsic_algebra::field::NumberField;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring, Sign};
 use std::cell::RefCell;
@@ -230,6 +231,13 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
     let approx = Approximations::default();
     let mut budget = MAX_POINTS;
     let mut pieces = Vec::with_capacity(curve.pieces.len());
+    // the parameterizations brought into the range of f64 where needed (made before the
+    // samplers, which borrow them)
+    let in_range: Vec<Option<ComponentParam>> = curve
+        .components
+        .iter()
+        .map(|c| c.param.as_ref().and_then(in_float_range))
+        .collect();
     // one sampler per component, made when its first piece is met
     let mut samplers: Vec<Option<Sampler>> = Vec::new();
     samplers.resize_with(curve.components.len(), || None);
@@ -251,7 +259,7 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
                 let slot = &mut samplers[*component];
                 if slot.is_none() {
                     *slot = Some(Sampler {
-                        eval: Evaluator::new(param)?,
+                        eval: Evaluator::new(in_range[*component].as_ref().unwrap_or(param))?,
                         crossings: if lies_in_plane(param, &chart.exact) {
                             Crossings::InPlane
                         } else {
@@ -270,6 +278,135 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
         pieces.push(sampled);
     }
     Ok(Sampled { pieces })
+}
+
+/// Checks every sampled point against the two quadrics: `|XᵀMX| ≤ 10⁻⁹·‖M‖` (Frobenius norm,
+/// `X` a unit vector) for `M` = `A` and `B`, in floats on the matrices scaled by a power of
+/// two. The points come from certified evaluations; this is the last guard that a point the
+/// certificates let through is still on the curve.
+///
+/// # Errors
+/// [`Error::Algebra`] naming the piece and the residual of the first point off a quadric.
+pub fn verify_on_quadrics(sampled: &Sampled, a: &Quadric, b: &Quadric) -> Result<(), Error> {
+    use dashu_int::ops::BitTest;
+    let float_matrix = |q: &Quadric| -> [[f64; 4]; 4] {
+        let m = q.integer_matrix().entries();
+        let bits = m.iter().flatten().map(|v| v.bit_len()).max().unwrap_or(0);
+        let shift = bits.saturating_sub(900);
+        std::array::from_fn(|i| std::array::from_fn(|j| (&m[i][j] >> shift).to_f64().value()))
+    };
+    for m in [float_matrix(a), float_matrix(b)] {
+        let norm = m.iter().flatten().map(|v| v * v).sum::<f64>().sqrt();
+        for (k, piece) in sampled.pieces.iter().enumerate() {
+            for x in &piece.points {
+                let mut r = 0.0;
+                for i in 0..4 {
+                    for j in 0..4 {
+                        r += x[i] * m[i][j] * x[j];
+                    }
+                }
+                let n2: f64 = x.iter().map(|v| v * v).sum();
+                // NaN counts as off
+                if r.abs().partial_cmp(&(1e-9 * norm * n2)) != Some(std::cmp::Ordering::Less)
+                    && r.abs() != 1e-9 * norm * n2
+                {
+                    return Err(Error::Algebra(format!(
+                        "a sampled point of piece {k} is off a quadric (relative residual {:.1e}): \
+                         the floats lost the curve there",
+                        r.abs() / (norm * n2)
+                    )));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// An upper estimate of `log₂|c|` from the bit lengths of its numerator's coefficients (a
+/// polynomial in the field's generator `α`), of `α` and of its denominator; `None` for zero.
+fn log2_estimate(c: &Number) -> Option<f64> {
+    use dashu_int::ops::BitTest;
+    let alpha = c
+        .field()
+        .map_or(1.0, |k| k.alpha().to_f64().abs().max(1.0).log2());
+    let top = c
+        .numerator()
+        .coeffs()
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| *v != &IBig::ZERO)
+        .map(|(j, v)| v.bit_len() as f64 + j as f64 * alpha)
+        .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))))?;
+    Some(top + 4.0 - c.denominator().bit_len() as f64 + 1.0)
+}
+
+/// `param` scaled by powers of two into the range of `f64`, `None` when it is there already
+/// (every coefficient estimate within `2^±900`). `X = a ± d√s` is projective: `a` and `d`
+/// each get their own factor `2^−eₐ`, `2^−e_d` (the largest estimates) and `s` gets
+/// `2^(2e_d − 2eₐ)`, which keeps the point and both sheets (positive factors).
+fn in_float_range(param: &ComponentParam) -> Option<ComponentParam> {
+    let top = |v: &[NumberPoly]| -> Option<f64> {
+        v.iter()
+            .flat_map(|p| p.coeffs())
+            .filter_map(log2_estimate)
+            .fold(None, |m: Option<f64>, x| Some(m.map_or(x, |m| m.max(x))))
+    };
+    let bottom = |v: &[NumberPoly]| -> f64 {
+        v.iter()
+            .flat_map(|p| p.coeffs())
+            .filter_map(log2_estimate)
+            .fold(f64::INFINITY, f64::min)
+    };
+    let out_of_range = |v: &[NumberPoly]| top(v).is_some_and(|t| t > 900.0) || bottom(v) < -900.0;
+    let scale = |v: &[NumberPoly; 4], e: i64| -> [NumberPoly; 4] {
+        let k = super::curve::rational(super::expr::power_of_two(e));
+        std::array::from_fn(|i| v[i].map(|c| c.mul(&k)))
+    };
+    match param {
+        ComponentParam::Point(_) => None,
+        ComponentParam::Rational { x, degree } => {
+            if !out_of_range(x) {
+                return None;
+            }
+            let e = top(x)? as i64;
+            if bottom(x) - (e as f64) < -900.0 {
+                return None;
+            }
+            Some(ComponentParam::Rational {
+                x: scale(x, -e),
+                degree: *degree,
+            })
+        }
+        ComponentParam::Levin {
+            a,
+            d,
+            degree,
+            alternate,
+            s,
+        } => {
+            let s_slice = std::slice::from_ref(s);
+            if !(out_of_range(a) || out_of_range(d) || out_of_range(s_slice)) {
+                return None;
+            }
+            let (ea, ed) = (top(a)? as i64, top(d)? as i64);
+            let es = 2 * (ed - ea);
+            // every coefficient in range after the scaling (none lost below the floats)
+            let spread = |v: &[NumberPoly], e: i64| {
+                top(v).is_none_or(|t| t + (e as f64) < 900.0) && bottom(v) + (e as f64) > -900.0
+            };
+            if !(spread(a, -ea) && spread(d, -ed) && spread(s_slice, es)) {
+                return None;
+            }
+            let k = super::curve::rational(super::expr::power_of_two(es));
+            Some(ComponentParam::Levin {
+                a: scale(a, -ea),
+                d: scale(d, -ed),
+                degree: *degree,
+                alternate: alternate.clone(),
+                s: s.map(|c| c.mul(&k)),
+            })
+        }
+    }
 }
 
 /// The exact parameters at which a rational component passes through the curve's real
