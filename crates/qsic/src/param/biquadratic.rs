@@ -183,7 +183,16 @@ fn levin_over_field(
     let k = super::balancing_exponent_of(
         &s.coeffs()
             .iter()
-            .map(|c| if c.is_zero() { 0.0 } else { c.to_f64() })
+            .map(|c| {
+                let v = c.to_f64().abs();
+                if c.is_zero() {
+                    f64::NEG_INFINITY
+                } else if v.is_finite() && v > 0.0 {
+                    v.log2()
+                } else {
+                    f64::NAN // out of the floats: no balancing
+                }
+            })
             .collect::<Vec<f64>>(),
     );
     let scale = |v: &PointPoly| -> PointPoly {

@@ -333,35 +333,56 @@ fn integral_levin(
 /// The `k` for which `u ↦ 2ᵏu` brings the lowest and highest nonzero coefficients of `s` to
 /// one size (`|s_lo|·2^(k·lo) ≈ |s_hi|·2^(k·hi)`); 0 when they are within `2⁸` per degree.
 fn balancing_exponent(s: &Poly<Quadratic>) -> i64 {
-    let sizes: Vec<f64> = s
-        .coeffs()
-        .iter()
-        .map(|c| {
-            if qsic_algebra::Ring::is_zero(c) {
-                0.0
-            } else {
-                c.to_f64()
-            }
-        })
-        .collect();
+    let sizes: Vec<f64> = s.coeffs().iter().map(log2_size).collect();
     balancing_exponent_of(&sizes)
 }
 
-/// [`balancing_exponent`] from the coefficients as floats (zero for a zero coefficient).
-fn balancing_exponent_of(coefficients: &[f64]) -> i64 {
-    let sizes: Vec<(usize, f64)> = coefficients
+/// `log₂|c|` (`−∞` for zero): from the float where it is finite, else from bit lengths
+/// (`|a + b√δ| ≤ 2·max(|a|, |b|√δ)`; a coefficient beyond the floats is not cancelled to
+/// any size that matters here).
+fn log2_size(c: &Quadratic) -> f64 {
+    use dashu_int::ops::BitTest;
+    if qsic_algebra::Ring::is_zero(c) {
+        return f64::NEG_INFINITY;
+    }
+    let v = c.to_f64().abs();
+    if v.is_finite() && v > 0.0 {
+        return v.log2();
+    }
+    let bits = |r: &RBig| {
+        if r.is_zero() {
+            f64::NEG_INFINITY
+        } else {
+            r.numerator().bit_len() as f64 - r.denominator().bit_len() as f64
+        }
+    };
+    let root = if c.as_rational().is_some() {
+        0.0
+    } else {
+        c.radicand().bit_len() as f64 / 2.0
+    };
+    bits(c.rational_part()).max(bits(c.radical_part()) + root) + 1.0
+}
+
+/// [`balancing_exponent`] from the coefficients' `log₂` sizes (`−∞` for a zero coefficient;
+/// 0 if a size is NaN, unknown).
+fn balancing_exponent_of(log2_sizes: &[f64]) -> i64 {
+    if log2_sizes.iter().any(|v| v.is_nan()) {
+        return 0;
+    }
+    let sizes: Vec<(usize, f64)> = log2_sizes
         .iter()
         .enumerate()
-        .filter(|(_, c)| **c != 0.0)
-        .map(|(i, c)| (i, c.abs()))
+        .filter(|(_, c)| c.is_finite())
+        .map(|(i, c)| (i, *c))
         .collect();
     let (Some(&(lo, slo)), Some(&(hi, shi))) = (sizes.first(), sizes.last()) else {
         return 0;
     };
-    if hi == lo || !(slo > 0.0 && shi > 0.0 && slo.is_finite() && shi.is_finite()) {
+    if hi == lo {
         return 0;
     }
-    let k = ((slo.log2() - shi.log2()) / (hi - lo) as f64).round();
+    let k = ((slo - shi) / (hi - lo) as f64).round();
     if k.abs() <= 8.0 {
         0
     } else {
