@@ -50,7 +50,7 @@ pub(super) fn biquadratic_curve(
     };
     let (am, bm) = (integer_matrix(a), integer_matrix(b));
     let s = member(&am, &bm, Some(&lambda));
-    let Some(p) = points_on(&s)?.into_iter().next() else {
+    let Some((_, p)) = points_on(&s)?.into_iter().next() else {
         return Ok(None);
     };
     let Some((b_line, d_line)) = ruling(&s, &p)? else {

@@ -412,7 +412,13 @@ pub(crate) fn parameterize_doubly_ruled(
             }
             vec![std::array::from_fn(|i| q(&p[i]))]
         }
-        None => points_on(s)?,
+        // the lines through a point over ℚ(√e) are over ℚ(√e) only when det S is a square
+        // there: the other points would fail after their forms (the biquadratic route)
+        None => points_on(s)?
+            .into_iter()
+            .filter(|(lines_in_field, _)| *lines_in_field)
+            .map(|(_, p)| p)
+            .collect(),
     };
     let sm = to_quadratic(s);
     for p in points {
@@ -424,12 +430,15 @@ pub(crate) fn parameterize_doubly_ruled(
 }
 
 /// Points of `S` to build the ruling from: the rational point of the first section that has
-/// one, else a point over ℚ(√e) from each section with real points, those with `e ≡ det S`
-/// modulo squares first (their lines stay in ℚ(√e): the tangent plane's binary form has
-/// discriminant `det S` up to squares).
-pub(super) fn points_on(s: &[[RBig; 4]; 4]) -> Result<Vec<Vec4>, Error> {
+/// one, else a point over ℚ(√e) from each section with real points, each with whether its
+/// lines stay in ℚ(√e) — the tangent plane's binary form has discriminant `det S` up to
+/// squares, so they do iff `det S` or `e·det S` is a rational square — those first.
+pub(super) fn points_on(s: &[[RBig; 4]; 4]) -> Result<Vec<(bool, Vec4)>, Error> {
     let mut quadratic: Vec<(bool, Vec4)> = Vec::new();
     let det = minors::det(s);
+    let det_square = Quadratic::sqrt(&(det.numerator() * det.denominator()))
+        .as_rational()
+        .is_some();
     for basis in hyperplanes() {
         let c = section(s, &basis);
         if c.iter().flatten().all(|v| v.is_zero()) {
@@ -438,20 +447,21 @@ pub(super) fn points_on(s: &[[RBig; 4]; 4]) -> Result<Vec<Vec4>, Error> {
         match find_point(&c).map_err(|e| Error::Algebra(e.to_string()))? {
             ConicPoint::Rational(p) => {
                 let coords = std::array::from_fn(|i| q(&p[i]));
-                return Ok(vec![section_point(basis, coords).point]);
+                return Ok(vec![(true, section_point(basis, coords).point)]);
             }
             ConicPoint::NoRationalPoint(p) => {
                 // det S a square in ℚ(√e): det·e a rational square
-                let same = Quadratic::sqrt(&(det.numerator() * det.denominator() * &p.delta))
-                    .as_rational()
-                    .is_some();
+                let same = det_square
+                    || Quadratic::sqrt(&(det.numerator() * det.denominator() * &p.delta))
+                        .as_rational()
+                        .is_some();
                 quadratic.push((same, section_point(basis, p.coords.clone()).point));
             }
             ConicPoint::NoRealPoint => {}
         }
     }
     quadratic.sort_by_key(|(same, _)| !same);
-    Ok(quadratic.into_iter().map(|(_, p)| p).collect())
+    Ok(quadratic)
 }
 
 /// The conic `S` cuts on the plane spanned by `basis` (entries 0 and ±1: only the nonzero
