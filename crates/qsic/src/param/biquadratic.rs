@@ -13,13 +13,11 @@
 //! roots of `s` (isolated through its norm to ℚ). Rare (5 of 40 000 random pairs with rational
 //! entries of two or three digits) and not fast: no integral arithmetic here.
 
-use super::curve::{
-    self, Component, ComponentParam, Curve, LevinForm, Number, NumberPoly, ParamValue, PointPoly,
-};
+use super::curve::{self, Curve, LevinForm, Number, ParamValue, PointPoly};
 use super::planar::Ext;
 use super::surface::{form, mat_vec, points_on, to_quadratic, Vec4};
-use super::{integer_matrix, levin_pieces, member};
-use crate::classify::{analyze_pencil, Classification, ComponentKind};
+use super::{integer_matrix, member, quartic_curve, reduced_levin, theorem_12};
+use crate::classify::{analyze_pencil, Classification};
 use crate::error::Error;
 use crate::quadric::Quadric;
 use qsic_algebra::field::Quadratic;
@@ -210,35 +208,12 @@ fn levin_over_field(
     let (c0, c1, c2, s) = forms(&b, &d);
     let a: PointPoly = std::array::from_fn(|i| &(&c2 * &b[i]) - &(&c1 * &d[i]));
     let alt_a: PointPoly = std::array::from_fn(|i| &(&c1 * &b[i]) - &(&c0 * &d[i]));
-    let alternate = Some(Box::new(LevinForm {
+    let alternate = LevinForm {
         a: alt_a,
-        d: b.clone(),
+        d: b,
         degree: 3,
-    }));
-    // `s | a`: the form √s·(d ± (a/s)√s) without that base point
-    let quotients: Option<Vec<NumberPoly>> = a
-        .iter()
-        .map(|c| {
-            let (quo, rem) = c.div_rem(&s);
-            rem.is_zero().then_some(quo)
-        })
-        .collect();
-    let param = match quotients {
-        Some(quo) => ComponentParam::Levin {
-            a: d,
-            d: std::array::from_fn(|i| quo[i].clone()),
-            degree: 1,
-            s: s.clone(),
-            alternate,
-        },
-        None => ComponentParam::Levin {
-            a,
-            d,
-            degree: 3,
-            s: s.clone(),
-            alternate,
-        },
     };
+    let param = reduced_levin(a, d, s.clone(), 3, alternate);
     // the real roots of s on ℝ ∪ {∞}, all simple on a nonsingular quartic
     let roots = s.real_roots();
     let derivative = s.derivative();
@@ -265,45 +240,20 @@ fn levin_over_field(
         ends.push(ParamValue::Infinity);
         after.push(signs[0]);
     }
-    let pieces = levin_pieces(&ends, &after, signs[0]);
-    // Theorem 12: 4 real roots — two pieces, 2 — one, none — two or none by the sign of s
-    let expected = match ends.len() {
-        4 => 2,
-        2 => 1,
-        0 if signs[0] == Sign::Positive => 2,
-        0 => 0,
-        n => {
-            return Err(Error::Algebra(format!(
-                "{n} real roots of s(u) on a nonsingular quartic"
-            )))
-        }
-    };
-    if pieces.len() != expected {
-        return Err(Error::Algebra(format!(
-            "{} real pieces from the arcs of s(u), Theorem 12 says {expected}",
-            pieces.len()
-        )));
-    }
-    let connected = (0..pieces.len()).map(|i| vec![i]).collect();
-    Ok(Curve {
-        classification,
-        components: vec![Component {
-            kind: ComponentKind::Quartic,
-            multiplicity: 1,
-            real: !pieces.is_empty(),
-            param: Some(param),
-            plane: None,
-        }],
-        singular_points: Vec::new(),
-        pieces,
-        connected,
-    })
+    let n = theorem_12(ends.len(), signs[0]).ok_or_else(|| {
+        Error::Algebra(format!(
+            "{} real roots of s(u) on a nonsingular quartic",
+            ends.len()
+        ))
+    })?;
+    quartic_curve(classification, param, (&ends, &after, signs[0]), n)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::io::quadric_from_array;
+    use crate::param::ComponentParam;
 
     /// A pencil (case 3, from a random scan) none of whose members of inertia (2, 2) on 59
     /// tried λ has a rational point: the ruling is over a biquadratic field, the curve lies on

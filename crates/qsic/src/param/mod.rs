@@ -130,14 +130,23 @@ impl LevinParameterization {
         }
         let dr = &self.discriminant;
         let n = dr.roots.len() + usize::from(dr.at_infinity);
-        match n {
-            4 => Ok(2),
-            2 => Ok(1),
-            0 => Ok(if dr.arcs[0].1 == Sign::Positive { 2 } else { 0 }),
-            _ => Err(Error::Algebra(format!(
+        theorem_12(n, dr.arcs[0].1).ok_or_else(|| {
+            Error::Algebra(format!(
                 "s(u) = {s} has {n} real roots on the projective line"
-            ))),
-        }
+            ))
+        })
+    }
+}
+
+/// Theorem 12: the real components of a nonsingular quartic from the number of simple real
+/// roots of `s` on ℝ ∪ {∞} (four — two, two — one, none — two or none by the sign of `s`
+/// everywhere); `None` for any other number.
+fn theorem_12(real_roots: usize, everywhere: Sign) -> Option<u8> {
+    match real_roots {
+        4 => Some(2),
+        2 => Some(1),
+        0 => Some(if everywhere == Sign::Positive { 2 } else { 0 }),
+        _ => None,
     }
 }
 
@@ -504,10 +513,30 @@ fn levin_curve(
             )
         }
     };
+    let param = reduced_levin(a, d, s, degree, alternate);
+    let dr = &levin.discriminant;
+    let mut ends: Vec<ParamValue> = dr.roots.iter().cloned().map(ParamValue::Finite).collect();
+    // the sign of s on the arc after each end, in the same cyclic order
+    let mut after: Vec<Sign> = dr.arcs.iter().skip(1).map(|a| a.1).collect();
+    if dr.at_infinity {
+        ends.push(ParamValue::Infinity);
+        after.push(dr.arcs[0].1);
+    }
+    quartic_curve(classification, param, (&ends, &after, dr.arcs[0].1), n)
+}
+
+/// The Levin form `a ± d√s` (homogeneous degree `degree`) with its alternate, reduced where
+/// `s | a`: `a ± d√s = √s·(d ± (a/s)√s)` vanishes at the roots of `s`; the second factor is a
+/// Levin form without that base point (same identities, same sheets). A nonzero coordinate
+/// of lower degree than `s` rules it out without a division.
+fn reduced_levin(
+    a: PointPoly,
+    d: PointPoly,
+    s: NumberPoly,
+    degree: usize,
+    alternate: LevinForm,
+) -> ComponentParam {
     let alternate = Some(Box::new(alternate));
-    // `s | a`: `a ± d√s = √s·(d ± (a/s)√s)` vanishes at the roots of `s`; the second
-    // factor is a Levin form without that base point (same identities, same sheets). A
-    // nonzero coordinate of lower degree than `s` rules it out without a division.
     let deg_s = s.degree().unwrap_or(0);
     let quotients: Option<Vec<NumberPoly>> =
         if a.iter().any(|c| c.degree().is_some_and(|dg| dg < deg_s)) {
@@ -520,7 +549,7 @@ fn levin_curve(
                 })
                 .collect()
         };
-    let param = match quotients {
+    match quotients {
         Some(q) => ComponentParam::Levin {
             a: d,
             d: std::array::from_fn(|i| q[i].clone()),
@@ -535,16 +564,22 @@ fn levin_curve(
             s,
             alternate,
         },
-    };
-    let dr = &levin.discriminant;
-    let mut ends: Vec<ParamValue> = dr.roots.iter().cloned().map(ParamValue::Finite).collect();
-    // the sign of s on the arc after each end, in the same cyclic order
-    let mut after: Vec<Sign> = dr.arcs.iter().skip(1).map(|a| a.1).collect();
-    if dr.at_infinity {
-        ends.push(ParamValue::Infinity);
-        after.push(dr.arcs[0].1);
     }
-    let pieces = levin_pieces(&ends, &after, dr.arcs[0].1);
+}
+
+/// The [`Curve`] of a nonsingular quartic: one component with its Levin `param`, its real
+/// pieces from the roots of `s` ([`levin_pieces`] of `(ends, after, everywhere)`), whose
+/// number must be Theorem 12's `n`; the pieces are disjoint (a nonsingular curve).
+///
+/// # Errors
+/// [`Error::Algebra`] when the pieces disagree with Theorem 12.
+fn quartic_curve(
+    classification: Classification,
+    param: ComponentParam,
+    (ends, after, everywhere): (&[ParamValue], &[Sign], Sign),
+    n: u8,
+) -> Result<Curve, Error> {
+    let pieces = levin_pieces(ends, after, everywhere);
     if pieces.len() != usize::from(n) {
         return Err(Error::Algebra(format!(
             "{} real pieces from the arcs of s(u), Theorem 12 says {n}",
