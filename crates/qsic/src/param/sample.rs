@@ -307,9 +307,7 @@ pub fn verify_on_quadrics(sampled: &Sampled, a: &Quadric, b: &Quadric) -> Result
                 }
                 let n2: f64 = x.iter().map(|v| v * v).sum();
                 // NaN counts as off
-                if r.abs().partial_cmp(&(1e-9 * norm * n2)) != Some(std::cmp::Ordering::Less)
-                    && r.abs() != 1e-9 * norm * n2
-                {
+                if r.is_nan() || r.abs() > 1e-9 * norm * n2 {
                     return Err(Error::Algebra(format!(
                         "a sampled point of piece {k} is off a quadric (relative residual {:.1e}): \
                          the floats lost the curve there",
