@@ -11,6 +11,7 @@
 
 use crate::classify::{Classification, ComponentKind, SingularPointKind};
 use qsic_algebra::field::{NumberField, NumberFieldElement, Quadratic};
+use qsic_algebra::roots::RootInterval;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
 
 /// An exact real number: a rational, or an element of a real number field ℚ(α).
@@ -189,7 +190,17 @@ pub fn rational(v: RBig) -> Number {
 /// If `δ ≤ 0` (no real root): a caller bug, the radicands here come from real quadratic
 /// fields.
 pub fn sqrt_field(delta: &IBig) -> NumberField {
+    use dashu_int::ops::{SquareRoot, UnsignedAbs};
     let p = Poly::new(vec![-delta.clone(), IBig::ZERO, IBig::ONE]);
+    // ⌊√δ⌋ < √δ < ⌊√δ⌋ + 1 isolates the positive root when δ is not a square (the only
+    // root of x² − δ there; no root isolation needed)
+    let r = IBig::from(delta.unsigned_abs().sqrt());
+    if *delta > IBig::ZERO && &r * &r != *delta {
+        let interval = RootInterval::Open(RBig::from(r.clone()), RBig::from(r + IBig::ONE));
+        if let Some(alpha) = AlgebraicReal::from_isolating_interval(&p, &interval) {
+            return NumberField::new(&alpha);
+        }
+    }
     let roots = AlgebraicReal::real_roots_of(&p);
     NumberField::new(roots.last().expect("x² − δ has a positive root for δ > 0"))
 }
@@ -247,6 +258,28 @@ impl ComponentParam {
                 };
                 on(a, d) && alternate.as_ref().is_none_or(|f| on(&f.a, &f.d))
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use qsic_algebra::Ring;
+
+    /// The generator of `sqrt_field(δ)` is the positive square root, whether δ is a square
+    /// (the root isolation route) or not (the interval ⌊√δ⌋ < √δ < ⌊√δ⌋ + 1).
+    #[test]
+    fn sqrt_field_generates_the_positive_square_root() {
+        for delta in [2i64, 3, 5, 8, 15, 17, 99, 1_000_003, 4, 9, 1_000_000] {
+            let k = sqrt_field(&IBig::from(delta));
+            let alpha = k.alpha();
+            assert!(alpha.is_valid(), "δ = {delta}");
+            let want = (delta as f64).sqrt();
+            assert!((alpha.to_f64() - want).abs() < 1e-12 * want, "δ = {delta}");
+            // α² = δ in the field
+            let g = k.generator();
+            assert_eq!(g.mul(&g), rational(RBig::from(delta)), "δ = {delta}");
         }
     }
 }
