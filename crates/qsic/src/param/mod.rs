@@ -182,10 +182,11 @@ pub fn parameterize_smooth_quartic(
 
 /// The forms of a Levin parameterization over ℤ[√δ] (`δ = 0` over ℚ), after the balancing
 /// substitution: `b`, `d` the ruling, `a = c₂b − c₁d`, `alt = c₁b − c₀d`, `s = c₁² − c₀c₂`.
-/// Each is `p(u/2^down)` of the polynomial held (a negative balancing exponent).
 /// Kept by [`smooth_quartic`] for [`levin_curve`]: its conversions then need no rational gcd.
 struct IntegralLevin {
     delta: IBig,
+    /// `m = −k` for a balancing `k < 0`, else 0: the forms held are those of `u ↦ 2ᵏu`
+    /// times `2^(m·degree)` (integral); the exact form is each divided by that power.
     down: usize,
     b: [zsqrt::ZPoly; 4],
     d: [zsqrt::ZPoly; 4],
@@ -215,27 +216,33 @@ fn smooth_quartic(
     // the pencil analysis works on the primitive integer matrices: so does λ
     let (am, bm) = (integer_matrix(a), integer_matrix(b));
     let mut surface = choose_surface(&am, &bm, &analysis)?;
+    if surface.kind == SurfaceKind::DoublyRuled {
+        reduce_doubly_ruled(&mut surface.ruling);
+    }
     let (qm, substituted) = match surface.lambda {
         Some(_) => (a, Substituted::A),
         None => (b, Substituted::B),
     };
     let integral = if fast {
-        integral_levin(qm.integer_matrix().entries(), &surface.ruling)?
+        integral_levin(qm.integer_matrix().entries(), &surface.ruling, surface.kind)?
     } else {
         None
     };
     if let Some(fast) = integral {
         let delta = surface.ruling.delta.clone();
-        let (d0, m) = (&fast.delta, fast.down);
-        surface.ruling.b = std::array::from_fn(|i| zsqrt::to_poly_down(&fast.b[i], d0, m));
-        surface.ruling.d = std::array::from_fn(|i| zsqrt::to_poly_down(&fast.d[i], d0, m));
-        let s = zsqrt::to_poly_down(&fast.s, d0, m);
+        let d0 = &fast.delta;
+        let (db, dd) = ruling_degrees(surface.kind);
+        let down = |p: &zsqrt::ZPoly, degree: usize| zsqrt::to_poly_down(p, d0, fast.down * degree);
+        surface.ruling.b = std::array::from_fn(|i| down(&fast.b[i], db));
+        surface.ruling.d = std::array::from_fn(|i| down(&fast.d[i], dd));
+        let s = down(&fast.s, 2 * (db + dd));
         let levin = LevinParameterization {
             delta,
             substituted,
-            a: std::array::from_fn(|i| zsqrt::to_poly_down(&fast.a[i], d0, m)),
+            a: std::array::from_fn(|i| down(&fast.a[i], 2 * dd + db)),
             d: surface.ruling.d.clone(),
-            discriminant: discriminant_roots(&s),
+            // the integral s: a positive multiple of `s` (same roots and signs)
+            discriminant: discriminant_roots(&zsqrt::to_poly(&fast.s, d0)),
             s,
             surface,
         };
@@ -258,17 +265,25 @@ fn smooth_quartic(
     // every identity holds as it is)
     let k = balancing_exponent(&s);
     if k != 0 {
-        let scaled = |p: &Poly<Quadratic>| -> Poly<Quadratic> {
+        let scaled = |p: &Poly<Quadratic>, degree: usize| -> Poly<Quadratic> {
             Poly::new(
                 p.coeffs()
                     .iter()
                     .enumerate()
-                    .map(|(i, c)| c.scale(&expr::power_of_two(k * i as i64)))
+                    .map(|(i, c)| {
+                        let e = if integral_balancing(k) {
+                            balance_exponent(k, degree, i) as i64
+                        } else {
+                            k * i as i64
+                        };
+                        c.scale(&expr::power_of_two(e))
+                    })
                     .collect(),
             )
         };
-        surface.ruling.b = std::array::from_fn(|i| scaled(&surface.ruling.b[i]));
-        surface.ruling.d = std::array::from_fn(|i| scaled(&surface.ruling.d[i]));
+        let (db, dd) = ruling_degrees(surface.kind);
+        surface.ruling.b = std::array::from_fn(|i| scaled(&surface.ruling.b[i], db));
+        surface.ruling.d = std::array::from_fn(|i| scaled(&surface.ruling.d[i], dd));
         (c1, c2, s) = forms(&surface.ruling.b, &surface.ruling.d);
     }
     let (bv, dv) = (&surface.ruling.b, &surface.ruling.d);
@@ -289,17 +304,41 @@ fn smooth_quartic(
     ))
 }
 
+/// The ruling of a doubly ruled surface with small integers ([`zsqrt::reduce_ruling`]: the
+/// same surface and lines, another parameterization of them); left as it is when a
+/// coefficient is not integral over ℤ[√δ].
+fn reduce_doubly_ruled(ruling: &mut RuledParameterization) {
+    let delta = ruling.delta.clone().unwrap_or(IBig::ZERO);
+    let conv = |v: &PolyVector| -> Option<[zsqrt::ZPoly; 4]> {
+        let out: Vec<zsqrt::ZPoly> = v
+            .iter()
+            .map(|p| zsqrt::zpoly(p, &delta))
+            .collect::<Option<_>>()?;
+        out.try_into().ok()
+    };
+    let (Some(mut b), Some(mut d)) = (conv(&ruling.b), conv(&ruling.d)) else {
+        return;
+    };
+    if zsqrt::reduce_ruling(&mut b, &mut d) {
+        ruling.b = std::array::from_fn(|i| zsqrt::to_poly(&b[i], &delta));
+        ruling.d = std::array::from_fn(|i| zsqrt::to_poly(&d[i], &delta));
+    }
+}
+
 /// The forms of [`smooth_quartic`] over ℤ[√δ] on the integer matrix `qm` of the substituted
-/// quadric: `c₀ = bᵀQb`, `c₁ = bᵀQd`, `c₂ = dᵀQd`, `s`, the balancing `u ↦ 2ᵏu` as a
-/// substitution in every form (`c(2ᵏu)` is the form of the substituted ruling), `a`, `alt`;
-/// for `k < 0` the substitution is left to the conversions (`down`). `Ok(None)` when the
-/// ruling is not integral (the rational route then).
+/// quadric: `c₀ = bᵀQb`, `c₁ = bᵀQd`, `c₂ = dᵀQd`, `s`, `a`, `alt`, then the balancing as a
+/// substitution in every form ([`balance_exponent`]: a form of the substituted ruling is
+/// the substituted form, the substitution being a ring map); for `k < 0` integral forms
+/// times `2^(−k·degree)`, divided out by the conversions (`down`). `Ok(None)` when the ruling is
+/// not integral (the rational route then).
 ///
 /// # Errors
 /// [`Error::Algebra`] if `s ≡ 0`.
+#[inline(never)]
 fn integral_levin(
     qm: &[[IBig; 4]; 4],
     ruling: &RuledParameterization,
+    kind: SurfaceKind,
 ) -> Result<Option<IntegralLevin>, Error> {
     let delta = ruling.delta.clone().unwrap_or(IBig::ZERO);
     let conv = |v: &PolyVector| -> Option<[zsqrt::ZPoly; 4]> {
@@ -312,31 +351,87 @@ fn integral_levin(
     let (Some(mut b), Some(mut d)) = (conv(&ruling.b), conv(&ruling.d)) else {
         return Ok(None);
     };
-    let [mut c0, mut c1, mut c2, mut s] = zsqrt::levin_forms(qm, &b, &d, &delta);
-    if zsqrt::degree(&s).is_none() {
+    // in machine integers when everything fits, else in big integers
+    let (mut s, mut a, mut alt) = match zsqrt::levin_small(qm, &b, &d, &delta) {
+        Some(forms) => forms,
+        None => {
+            let [c0, c1, c2, s] = zsqrt::levin_forms(qm, &b, &d, &delta);
+            let a = zsqrt::combine(&c2, &b, &c1, &d, &delta);
+            let alt = zsqrt::combine(&c1, &b, &c0, &d, &delta);
+            (s, a, alt)
+        }
+    };
+    for p in b.iter_mut().chain(&mut d).chain(&mut a).chain(&mut alt) {
+        zsqrt::trim(p);
+    }
+    zsqrt::trim(&mut s);
+    if s.is_empty() {
         return Err(Error::Algebra("s(u) vanishes identically".into()));
     }
     let k = balancing_exponent(&zsqrt::to_poly(&s, &delta));
-    let down = usize::try_from(-k).unwrap_or(0);
-    if let Ok(k @ 1..) = usize::try_from(k) {
-        for p in b.iter_mut().chain(d.iter_mut()) {
-            zsqrt::substitute_power_of_two(p, k);
+    if k != 0 {
+        let (db, dd) = ruling_degrees(kind);
+        let forms = [
+            (&mut b, db),
+            (&mut d, dd),
+            (&mut a, 2 * dd + db),
+            (&mut alt, 2 * db + dd),
+        ];
+        for (v, degree) in forms {
+            for p in v.iter_mut() {
+                zsqrt::scale_powers_of_two(p, |i| balance_exponent(k, degree, i));
+            }
         }
-        for p in [&mut c0, &mut c1, &mut c2, &mut s] {
-            zsqrt::substitute_power_of_two(p, k);
-        }
+        zsqrt::scale_powers_of_two(&mut s, |i| balance_exponent(k, 2 * (db + dd), i));
     }
-    let a = zsqrt::combine(&c2, &b, &c1, &d, &delta);
-    let alt = zsqrt::combine(&c1, &b, &c0, &d, &delta);
     Ok(Some(IntegralLevin {
         delta,
-        down,
+        down: if integral_balancing(k) {
+            0
+        } else {
+            k.unsigned_abs() as usize
+        },
         b,
         d,
         a,
         alt,
         s,
     }))
+}
+
+/// Whether the balancing `k` keeps the forms as integers, multiplied by `2^(−k·degree)`
+/// for `k < 0` ([`balance_exponent`]): when that factor is at most `2¹²⁸` on `s` (degree
+/// 4), else they are divided by it (rational, as for `k ≥ 0` without the factor), so that
+/// large balancings do not grow the numbers further.
+fn integral_balancing(k: i64) -> bool {
+    k >= 0 || -4 * k <= 128
+}
+
+/// The homogeneous degrees in `u` of a ruling's `b` and `d`: lines of a regulus (1, 1), the
+/// vertex and a conic of a cone (0, 2).
+fn ruling_degrees(kind: SurfaceKind) -> (usize, usize) {
+    match kind {
+        SurfaceKind::DoublyRuled => (1, 1),
+        SurfaceKind::Cone => (0, 2),
+    }
+}
+
+/// The power of two that multiplies coefficient `i` of a form of homogeneous degree
+/// `degree` under the balancing `k`: `u ↦ 2ᵏu` for `k ≥ 0` (`2^(k·i)`), and for `k < 0`
+/// the same substitution times `2^(−k·degree)`, which keeps integers integral
+/// (`2^(−k·(degree − i))`; a constant factor of a homogeneous form, so the projective
+/// points, the identities and the sheets stay).
+fn balance_exponent(k: i64, degree: usize, i: usize) -> usize {
+    let m = k.unsigned_abs() as usize;
+    if k >= 0 {
+        m * i
+    } else {
+        debug_assert!(
+            i <= degree,
+            "coefficient {i} of a form of degree {degree} (k = {k})"
+        );
+        m * degree.saturating_sub(i)
+    }
 }
 
 /// The `k` for which `u ↦ 2ᵏu` brings the lowest and highest nonzero coefficients of `s` to
@@ -450,6 +545,7 @@ pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
 /// and one closed real piece per positive arc of `s` between consecutive real roots on
 /// ℝ ∪ {∞} (the sheets `+` and `−` joined at the roots), two pieces (the two sheets) when
 /// `s > 0` everywhere; the pieces are disjoint (a nonsingular curve).
+#[inline(never)]
 fn levin_curve(
     classification: Classification,
     levin: &LevinParameterization,
@@ -471,20 +567,27 @@ fn levin_curve(
     let field = levin.delta.as_ref().map(curve::sqrt_field);
     let (a, d, s, alternate) = match fast {
         Some(f) => {
-            let vector = |v: &[zsqrt::ZPoly; 4]| -> PointPoly {
-                std::array::from_fn(|i| {
-                    zsqrt::to_number_poly(&v[i], &f.delta, f.down, field.as_ref())
-                })
+            let (db, dd) = ruling_degrees(levin.surface.kind);
+            let convert = |p: &zsqrt::ZPoly, degree: usize| -> NumberPoly {
+                if f.down == 0 {
+                    zsqrt::to_number_poly(p, field.as_ref())
+                } else {
+                    let down = zsqrt::to_poly_down(p, &f.delta, f.down * degree);
+                    curve::poly_from_quadratic(&down, field.as_ref())
+                }
+            };
+            let vector = |v: &[zsqrt::ZPoly; 4], degree: usize| -> PointPoly {
+                std::array::from_fn(|i| convert(&v[i], degree))
             };
             let alternate = LevinForm {
-                a: vector(&f.alt),
-                d: vector(&f.b),
+                a: vector(&f.alt, 2 * db + dd),
+                d: vector(&f.b, db),
                 degree: alt_degree,
             };
             (
-                vector(&f.a),
-                vector(&f.d),
-                zsqrt::to_number_poly(&f.s, &f.delta, f.down, field.as_ref()),
+                vector(&f.a, 2 * dd + db),
+                vector(&f.d, dd),
+                convert(&f.s, 2 * (db + dd)),
                 alternate,
             )
         }
@@ -672,6 +775,7 @@ pub(super) fn member(
 /// Picks the parameterization surface (see [`parameterize_smooth_quartic`]): the choice of
 /// [`choose_surface_full`], with the ruling computed for the chosen candidate only when the
 /// radicand of the others can be told in advance ([`surface::doubly_ruled_radicand`]).
+#[inline(never)]
 fn choose_surface(
     a: &[[RBig; 4]; 4],
     b: &[[RBig; 4]; 4],

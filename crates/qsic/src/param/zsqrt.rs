@@ -205,12 +205,20 @@ pub(crate) fn poly_sub(x: &[Zq], y: &[Zq]) -> ZPoly {
     out
 }
 
-/// `p(2ᵏu)` for `k ≥ 0`: coefficient `i` times `2^(k·i)`.
-pub(crate) fn substitute_power_of_two(p: &mut [Zq], k: usize) {
+/// `p` without its trailing zero coefficients.
+pub(crate) fn trim(p: &mut ZPoly) {
+    while p.last().is_some_and(Zq::is_zero) {
+        p.pop();
+    }
+}
+
+/// Coefficient `i` of `p` times `2^exponent(i)`.
+pub(crate) fn scale_powers_of_two(p: &mut [Zq], exponent: impl Fn(usize) -> usize) {
     for (i, c) in p.iter_mut().enumerate() {
-        if i > 0 && k > 0 {
-            c.a <<= k * i;
-            c.b <<= k * i;
+        let e = exponent(i);
+        if e > 0 {
+            c.a <<= e;
+            c.b <<= e;
         }
     }
 }
@@ -227,17 +235,16 @@ pub(crate) fn to_number(x: &Zq, field: Option<&qsic_algebra::field::NumberField>
     }
 }
 
-/// `p(u/2ᵐ)` over ℚ(√δ): coefficient `i` divided by `2^(m·i)`.
-pub(crate) fn to_poly_down(p: &[Zq], delta: &IBig, m: usize) -> Poly<Quadratic> {
-    if m == 0 {
+/// `p / 2^e` over ℚ(√δ).
+pub(crate) fn to_poly_down(p: &[Zq], delta: &IBig, e: usize) -> Poly<Quadratic> {
+    if e == 0 {
         return to_poly(p, delta);
     }
+    let den = dashu_int::UBig::ONE << e;
+    let part = |v: &IBig| RBig::from_parts(v.clone(), den.clone());
     Poly::new(
         p.iter()
-            .enumerate()
-            .map(|(i, c)| {
-                let den = dashu_int::UBig::ONE << (m * i);
-                let part = |v: &IBig| RBig::from_parts(v.clone(), den.clone());
+            .map(|c| {
                 if c.b.is_zero() {
                     Quadratic::rational(part(&c.a))
                 } else {
@@ -249,23 +256,12 @@ pub(crate) fn to_poly_down(p: &[Zq], delta: &IBig, m: usize) -> Poly<Quadratic> 
     )
 }
 
-/// `p(u/2ᵐ)` as a [`super::NumberPoly`]: by [`to_number`] for `m = 0`, else through
-/// [`super::curve::poly_from_quadratic`].
+/// `p` as a [`super::NumberPoly`] over `field` = ℚ(√δ) ([`to_number`]).
 pub(crate) fn to_number_poly(
     p: &[Zq],
-    delta: &IBig,
-    m: usize,
     field: Option<&qsic_algebra::field::NumberField>,
 ) -> super::NumberPoly {
-    if m > 0 {
-        return super::curve::poly_from_quadratic(&to_poly_down(p, delta, m), field);
-    }
     Poly::new(p.iter().map(|c| to_number(c, field)).collect())
-}
-
-/// The degree of `p` (trailing zeros ignored), `None` for zero.
-pub(crate) fn degree(p: &[Zq]) -> Option<usize> {
-    p.iter().rposition(|c| !c.is_zero())
 }
 
 /// `v` divided by the gcd of all the integers `a`, `b` of its coefficients (the positive
@@ -287,6 +283,146 @@ pub(crate) fn make_primitive(v: &mut [ZPoly]) {
         x.a = &x.a / &g;
         x.b = &x.b / &g;
     }
+}
+
+/// Makes the integers of a doubly ruled surface's ruling `b(u) + v·d(u)` (`b`, `d` of
+/// degree ≤ 1) small without changing the surface or its lines. The coefficients form a
+/// 2 × 2 array of vectors (`b`/`d` by the coefficients of `1`/`u`), and each mode may be
+/// changed by a constant invertible 2 × 2 matrix: on `b`/`d` it is a change of `v`
+/// (`b + v·d = (α + γv)·b′ + (β + δv)·d′`), on `1`/`u` a Möbius change of `u`. Each pair is
+/// divided by its content and Lagrange-reduced as vectors of integers (the multiplier `k`
+/// chosen in floats: any integer is a valid change), a few rounds, in checked `i128`.
+/// Returns `false` (nothing changed) when a coordinate has degree above 1 or a number
+/// leaves `i128`.
+pub(crate) fn reduce_ruling(b: &mut [ZPoly; 4], d: &mut [ZPoly; 4]) -> bool {
+    if b.iter().chain(d.iter()).any(|p| p.len() > 2) {
+        return false;
+    }
+    // t[w][j][2i + part]: w = 0 for b, 1 for d; j the power of u; i the coordinate; part
+    // 0 the rational and 1 the √δ part
+    let mut t = [[[0i128; 8]; 2]; 2];
+    for (w, v) in [&*b, &*d].into_iter().enumerate() {
+        for (i, p) in v.iter().enumerate() {
+            for (j, c) in p.iter().enumerate() {
+                let (Ok(x), Ok(y)) = (i128::try_from(&c.a), i128::try_from(&c.b)) else {
+                    return false;
+                };
+                t[w][j][2 * i] = x;
+                t[w][j][2 * i + 1] = y;
+            }
+        }
+    }
+    if reduce_array(&mut t).is_none() {
+        return false;
+    }
+    for (w, v) in [b, d].into_iter().enumerate() {
+        for (i, p) in v.iter_mut().enumerate() {
+            *p = (0..2)
+                .map(|j| Zq {
+                    a: IBig::from(t[w][j][2 * i]),
+                    b: IBig::from(t[w][j][2 * i + 1]),
+                })
+                .collect();
+            trim(p);
+        }
+    }
+    true
+}
+
+/// The rounds of [`reduce_ruling`] on `t[w][j]`; `None` on overflow (`t` is then partly
+/// changed, by valid changes only).
+fn reduce_array(t: &mut [[[i128; 8]; 2]; 2]) -> Option<()> {
+    // the two halves of a mode: (w, j) cells
+    let cells = |mode: usize, k: usize| -> [(usize, usize); 2] {
+        if mode == 0 {
+            [(k, 0), (k, 1)]
+        } else {
+            [(0, k), (1, k)]
+        }
+    };
+    // binary gcd: shifts and subtractions, no 128-bit division
+    let gcd = |mut x: u128, mut y: u128| {
+        if x == 0 || y == 0 {
+            return x | y;
+        }
+        let shift = (x | y).trailing_zeros();
+        x >>= x.trailing_zeros();
+        loop {
+            y >>= y.trailing_zeros();
+            if x > y {
+                (x, y) = (y, x);
+            }
+            y -= x;
+            if y == 0 {
+                return x << shift;
+            }
+        }
+    };
+    for _round in 0..2 {
+        let mut changed = false;
+        for mode in 0..2 {
+            for k in 0..2 {
+                let c = cells(mode, k);
+                let g = c.iter().flat_map(|&(w, j)| t[w][j]).fold(0u128, |g, v| {
+                    if g == 1 {
+                        1
+                    } else {
+                        gcd(g, v.unsigned_abs())
+                    }
+                });
+                if g > 1 {
+                    changed = true;
+                    let g = i128::try_from(g).ok()?;
+                    for (w, j) in c {
+                        for v in &mut t[w][j] {
+                            *v /= g;
+                        }
+                    }
+                }
+            }
+            for _ in 0..8 {
+                let f = |k: usize| -> [f64; 16] {
+                    let c = cells(mode, k);
+                    std::array::from_fn(|n| {
+                        let v = t[c[n / 8].0][c[n / 8].1][n % 8];
+                        // one instruction when it fits i64, else the two halves (the
+                        // library call of `v as f64` costs more; `k` needs an approximation)
+                        let small = v as i64;
+                        if i128::from(small) == v {
+                            small as f64
+                        } else {
+                            ((v >> 64) as i64 as f64) * 18_446_744_073_709_551_616.0
+                                + (v as u64 as f64)
+                        }
+                    })
+                };
+                let (x, y) = (f(0), f(1));
+                let dot = |p: &[f64; 16], q: &[f64; 16]| -> f64 {
+                    p.iter().zip(q).map(|(a, b)| a * b).sum()
+                };
+                let (nx, ny) = (dot(&x, &x), dot(&y, &y));
+                let (small, big, nsmall) = if nx <= ny { (0, 1, nx) } else { (1, 0, ny) };
+                let k = (dot(&x, &y) / nsmall).round();
+                if !(k.is_finite() && k != 0.0 && k.abs() < 1e30) {
+                    break;
+                }
+                let k = k as i128;
+                changed = true;
+                let (sc, bc) = (cells(mode, small), cells(mode, big));
+                for h in 0..2 {
+                    let ((ws, js), (wb, jb)) = (sc[h], bc[h]);
+                    for n in 0..8 {
+                        let v = k.checked_mul(t[ws][js][n])?;
+                        t[wb][jb][n] = t[wb][jb][n].checked_sub(v)?;
+                    }
+                }
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    Some(())
 }
 
 /// `a + b√δ` in machine integers: the small-number path of the forms (every operation
@@ -315,19 +451,13 @@ impl Zi {
     fn mul(self, o: Zi, delta: i128) -> Option<Zi> {
         if self.b == 0 && o.b == 0 {
             return Some(Zi {
-                a: self.a.checked_mul(o.a)?,
+                a: mul_i(self.a, o.a)?,
                 b: 0,
             });
         }
         Some(Zi {
-            a: self
-                .a
-                .checked_mul(o.a)?
-                .checked_add(self.b.checked_mul(o.b)?.checked_mul(delta)?)?,
-            b: self
-                .a
-                .checked_mul(o.b)?
-                .checked_add(self.b.checked_mul(o.a)?)?,
+            a: mul_i(self.a, o.a)?.checked_add(mul_i(mul_i(self.b, o.b)?, delta)?)?,
+            b: mul_i(self.a, o.b)?.checked_add(mul_i(self.b, o.a)?)?,
         })
     }
 
@@ -343,6 +473,17 @@ impl Zi {
             a: self.a.checked_sub(o.a)?,
             b: self.b.checked_sub(o.b)?,
         })
+    }
+}
+
+/// `x·y`, `None` on overflow: without the overflow check when the bit lengths add up to
+/// at most 126 (then `|x·y| < 2¹²⁶`), the common case here.
+fn mul_i(x: i128, y: i128) -> Option<i128> {
+    let bits = |v: i128| 128 - v.unsigned_abs().leading_zeros();
+    if bits(x) + bits(y) <= 126 {
+        Some(x * y)
+    } else {
+        x.checked_mul(y)
     }
 }
 
@@ -463,6 +604,59 @@ pub(crate) fn levin_forms(
     [c0, c1, c2, s]
 }
 
+/// Levin's whole form in machine integers, every operation checked: `s = c₁² − c₀c₂`,
+/// `a = c₂b − c₁d` and `alt = c₁b − c₀d` with `c₀ = bᵀMb`, `c₁ = bᵀMd`, `c₂ = dᵀMd` over
+/// ℤ[√δ] ([`levin_forms`] and [`combine`] in one pass, converted to [`Zq`] once); `None`
+/// when a number leaves `i128`.
+pub(crate) fn levin_small(
+    m: &[[IBig; 4]; 4],
+    b: &[ZPoly; 4],
+    d: &[ZPoly; 4],
+    delta: &IBig,
+) -> Option<(ZPoly, [ZPoly; 4], [ZPoly; 4])> {
+    let mut mi = [[0i128; 4]; 4];
+    for (row, src) in mi.iter_mut().zip(m) {
+        for (x, v) in row.iter_mut().zip(src) {
+            *x = i128::try_from(v).ok()?;
+        }
+    }
+    let dl = i128::try_from(delta).ok()?;
+    let conv = |v: &[ZPoly; 4]| -> Option<[Vec<Zi>; 4]> {
+        Some([
+            zi_poly(&v[0])?,
+            zi_poly(&v[1])?,
+            zi_poly(&v[2])?,
+            zi_poly(&v[3])?,
+        ])
+    };
+    let (bi, di) = (conv(b)?, conv(d)?);
+    let c0 = zi_form(&mi, &bi, &bi, dl)?;
+    let c1 = zi_form(&mi, &bi, &di, dl)?;
+    let c2 = zi_form(&mi, &di, &di, dl)?;
+    let s = zi_sub(&zi_mul(&c1, &c1, dl)?, &zi_mul(&c0, &c2, dl)?)?;
+    // without trailing zeros (the fixed buffers of the forms leave some)
+    let big = |p: &[Zi]| -> ZPoly {
+        let n = p
+            .iter()
+            .rposition(|c| *c != Zi::default())
+            .map_or(0, |i| i + 1);
+        p[..n].iter().map(|c| c.big()).collect()
+    };
+    let mut a: [ZPoly; 4] = Default::default();
+    let mut alt: [ZPoly; 4] = Default::default();
+    for i in 0..4 {
+        a[i] = big(&zi_sub(
+            &zi_mul(&c2, &bi[i], dl)?,
+            &zi_mul(&c1, &di[i], dl)?,
+        )?);
+        alt[i] = big(&zi_sub(
+            &zi_mul(&c1, &bi[i], dl)?,
+            &zi_mul(&c0, &di[i], dl)?,
+        )?);
+    }
+    Some((big(&s), a, alt))
+}
+
 /// `x·v − y·w` coordinatewise over ℤ[√δ] (machine integers when they fit, checked).
 pub(crate) fn combine(
     x: &[Zq],
@@ -503,6 +697,106 @@ mod tests {
                 b: if irrational { big(rng) } else { IBig::ZERO },
             })
             .collect()
+    }
+
+    /// A ruling bloated by changes of `u` and `v` (and a common factor) comes back small,
+    /// and stays a ruling of the same surface: `bᵀSb`, `bᵀSd`, `dᵀSd` vanish identically.
+    #[test]
+    fn reduced_rulings_are_small_and_stay_on_the_surface() {
+        use dashu_int::ops::BitTest;
+        let mut rng = SplitMix(23);
+        let size = |b: &[ZPoly; 4], d: &[ZPoly; 4]| {
+            b.iter()
+                .chain(d)
+                .flatten()
+                .map(|c| c.a.bit_len().max(c.b.bit_len()))
+                .max()
+                .unwrap_or(0)
+        };
+        // S = diag(1, 1, −1, −1) (x² + y² = z² + w²), with the lines
+        // (x, y, z, w) = (1, u, 1, u) + v·(u, −1, −u, 1), over ℚ; and over ℚ(√2) for
+        // x² + y² = 2z² + w²: (√2, √2u, 1, ... ) is not needed, ℚ is enough here
+        let m: [[IBig; 4]; 4] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| {
+                IBig::from(if i != j {
+                    0
+                } else if i < 2 {
+                    1
+                } else {
+                    -1
+                })
+            })
+        });
+        let int = |v: i64| Zq::int(IBig::from(v));
+        let base_b: [ZPoly; 4] = [
+            vec![int(1)],
+            vec![int(0), int(1)],
+            vec![int(1)],
+            vec![int(0), int(1)],
+        ];
+        let base_d: [ZPoly; 4] = [
+            vec![int(0), int(1)],
+            vec![int(-1)],
+            vec![int(0), int(-1)],
+            vec![int(1)],
+        ];
+        let on_surface = |b: &[ZPoly; 4], d: &[ZPoly; 4]| {
+            [(b, b), (b, d), (d, d)]
+                .iter()
+                .all(|(x, y)| poly_form(&m, x, y, &IBig::ZERO).iter().all(Zq::is_zero))
+        };
+        assert!(on_surface(&base_b, &base_d));
+        // a unimodular 2 × 2 matrix: a product of three elementary ones
+        let unimodular = |rng: &mut SplitMix| -> [i64; 4] {
+            let mut m = [1, 0, 0, 1];
+            for step in 0..3 {
+                let k = rng.int(-99, 99);
+                let (a, b, c, d) = (m[0], m[1], m[2], m[3]);
+                m = if step % 2 == 0 {
+                    [a + k * c, b + k * d, c, d]
+                } else {
+                    [a, b, c + k * a, d + k * b]
+                };
+            }
+            m
+        };
+        for _ in 0..50 {
+            // u ↦ (p u + q)/(r u + s), then u ↦ f·u; b, d ↦ αb + βd, γb + δd; a common
+            // factor g (all undone by valid changes: the reduction must find small numbers)
+            let (mu, mv) = (unimodular(&mut rng), unimodular(&mut rng));
+            let (f, g) = (rng.int(1, 99), rng.int(1, 99));
+            let moebius = |p: &ZPoly| -> ZPoly {
+                let c = |i: usize| p.get(i).map_or(0, |z| i64::try_from(&z.a).unwrap());
+                let (c0, c1) = (c(0), c(1));
+                // c0·(r u + s) + c1·(p u + q), then u ↦ f·u
+                vec![
+                    int(c0 * mu[3] + c1 * mu[1]),
+                    int((c0 * mu[2] + c1 * mu[0]) * f),
+                ]
+            };
+            let mix = |x: &ZPoly, y: &ZPoly, a: i64, b: i64| -> ZPoly {
+                (0..2)
+                    .map(|i| {
+                        let h = |p: &ZPoly| p.get(i).map_or(IBig::ZERO, |z| z.a.clone());
+                        Zq::int((h(x) * a + h(y) * b) * g)
+                    })
+                    .collect()
+            };
+            let (mb, md): ([ZPoly; 4], [ZPoly; 4]) = (
+                std::array::from_fn(|i| moebius(&base_b[i])),
+                std::array::from_fn(|i| moebius(&base_d[i])),
+            );
+            let mut b: [ZPoly; 4] = std::array::from_fn(|i| mix(&mb[i], &md[i], mv[0], mv[1]));
+            let mut d: [ZPoly; 4] = std::array::from_fn(|i| mix(&mb[i], &md[i], mv[2], mv[3]));
+            assert!(on_surface(&b, &d));
+            let before = size(&b, &d);
+            assert!(reduce_ruling(&mut b, &mut d));
+            assert!(on_surface(&b, &d), "{b:?} {d:?}");
+            assert!(
+                size(&b, &d) <= 4 && size(&b, &d) < before,
+                "{before} -> {b:?} {d:?}"
+            );
+        }
     }
 
     /// The machine-integer forms equal the big-integer ones, small (i128) and past i128
