@@ -154,9 +154,10 @@ fn theorem_12(real_roots: usize, everywhere: Sign) -> Option<u8> {
 /// quartic (cases 1–4: `det(λA − B)` has four simple roots), with a rational real ruled
 /// surface: a member of inertia (2, 2) at a rational λ of its arc, or a cone at a rational
 /// root. Candidates in order: the pencil analysis' sample of each (2, 2) arc, cones at
-/// rational roots (the first with rational rulings wins, else the least radicand), then,
-/// only if none of these has real rulings over ℚ or a quadratic field, more small-height
-/// rationals of the (2, 2) arcs.
+/// rational roots (the first with rational rulings wins, else the least radicand; members
+/// with a small rational point first, their radicand the square-free part of `det S`), then,
+/// only if none of these has a small point, or real rulings over ℚ or a quadratic field,
+/// more small-height rationals of the (2, 2) arcs.
 ///
 /// # Errors
 /// [`Error::Unsupported`] for other classes, when the only real ruled members are cones at

@@ -669,6 +669,14 @@ impl RulingInt for i128 {
     fn gcd(&self, o: &i128) -> i128 {
         let (mut x, mut y) = (self.unsigned_abs(), o.unsigned_abs());
         while y != 0 {
+            if x <= u128::from(u64::MAX) && y <= u128::from(u64::MAX) {
+                // the usual case: machine words
+                let (mut a, mut b) = (x as u64, y as u64);
+                while b != 0 {
+                    (a, b) = (b, a % b);
+                }
+                return i128::from(a);
+            }
             (x, y) = (y, x % y);
         }
         // below 2¹²⁷ unless both are i128::MIN, which checked products never reach
@@ -823,17 +831,14 @@ fn content<'a, T: RulingInt + 'a>(xs: impl IntoIterator<Item = &'a Zs<T>>) -> T 
     g
 }
 
-/// The vectors divided by their common [`content`].
-fn divide_content<T: RulingInt>(vs: &mut [&mut Vec<Zs<T>>]) {
-    let g = content(vs.iter().flat_map(|v| v.iter()));
-    if g.is_zero() || g == T::from_i128(1) {
+/// Each element divided by `g` (a common divisor; nothing for zero or one).
+fn divide_by<T: RulingInt>(xs: &mut [Zs<T>], g: &T) {
+    if g.is_zero() || *g == T::from_i128(1) {
         return;
     }
-    for v in vs.iter_mut() {
-        for x in v.iter_mut() {
-            x.a = x.a.div_exact(&g);
-            x.b = x.b.div_exact(&g);
-        }
+    for x in xs.iter_mut() {
+        x.a = x.a.div_exact(g);
+        x.b = x.b.div_exact(g);
     }
 }
 
@@ -858,6 +863,7 @@ fn ruling_through<T: RulingInt>(
     delta: &T,
 ) -> Result<Option<RuledParameterization>, Error> {
     let zero = T::from_i128(0);
+    let one = T::from_i128(1);
     macro_rules! ck {
         ($e:expr) => {
             match $e {
@@ -866,35 +872,35 @@ fn ruling_through<T: RulingInt>(
             }
         };
     }
-    let mv = |x: &[T]| -> Option<Vec<T>> {
-        (0..4)
-            .map(|i| {
-                let mut acc = T::from_i128(0);
-                for k in 0..4 {
-                    if !x[k].is_zero() && !m[i][k].is_zero() {
-                        acc = acc.add(&m[i][k].mul(&x[k])?)?;
-                    }
+    let mv = |x: &[T; 4]| -> Option<[T; 4]> {
+        try4(|i| {
+            let mut acc = T::from_i128(0);
+            for k in 0..4 {
+                if !x[k].is_zero() && !m[i][k].is_zero() {
+                    acc = acc.add(&m[i][k].mul(&x[k])?)?;
                 }
-                Some(acc)
-            })
-            .collect()
+            }
+            Some(acc)
+        })
     };
-    let idot = |x: &[T], y: &[T]| -> Option<T> {
+    let idot = |x: &[T; 4], y: &[T; 4]| -> Option<T> {
         let mut acc = T::from_i128(0);
         for i in 0..4 {
-            acc = acc.add(&x[i].mul(&y[i])?)?;
+            if !x[i].is_zero() && !y[i].is_zero() {
+                acc = acc.add(&x[i].mul(&y[i])?)?;
+            }
         }
         Some(acc)
     };
-    let primitive_int = |v: Vec<T>| -> Vec<T> {
+    let primitive_int = |v: [T; 4]| -> [T; 4] {
         let g = v.iter().fold(T::from_i128(0), |g, x| g.gcd(x));
         if g.is_zero() || g == T::from_i128(1) {
             v
         } else {
-            v.iter().map(|x| x.div_exact(&g)).collect()
+            v.map(|x| x.div_exact(&g))
         }
     };
-    let p = primitive_int(p.to_vec());
+    let p = primitive_int(p.clone());
     let r = ck!(mv(&p));
     let j = (0..4)
         .find(|&k| !r[k].is_zero())
@@ -902,25 +908,23 @@ fn ruling_through<T: RulingInt>(
     let k0 = (0..4)
         .find(|&k| k != j && !p[k].is_zero())
         .ok_or_else(|| Error::Algebra("tangent plane basis".into()))?;
-    let mut kernel = Vec::with_capacity(2);
-    for k in (0..4).filter(|&k| k != j && k != k0) {
-        let mut v = vec![zero.clone(); 4];
+    let mut rest = (0..4).filter(|&k| k != j && k != k0);
+    let mut kernel_vector = |k: usize| -> Option<[T; 4]> {
+        let mut v: [T; 4] = std::array::from_fn(|_| T::from_i128(0));
         v[k] = r[j].clone();
-        v[j] = ck!(zero.sub(&r[k]));
-        kernel.push(primitive_int(v));
-    }
-    let (e1, e2) = (&kernel[0], &kernel[1]);
-    let (me1, me2) = (ck!(mv(e1)), ck!(mv(e2)));
-    let (s11, s12, s22) = (ck!(idot(e1, &me1)), ck!(idot(e1, &me2)), ck!(idot(e2, &me2)));
-    let zvec = |x: &[T]| -> Vec<Zs<T>> { x.iter().cloned().map(Zs::int).collect() };
-    let one = T::from_i128(1);
+        v[j] = T::from_i128(0).sub(&r[k])?;
+        Some(primitive_int(v))
+    };
+    let e1 = ck!(kernel_vector(rest.next().expect("two kernel vectors")));
+    let e2 = ck!(kernel_vector(rest.next().expect("two kernel vectors")));
+    let (me1, me2) = (ck!(mv(&e1)), ck!(mv(&e2)));
+    let (s11, s12, s22) = (ck!(idot(&e1, &me1)), ck!(idot(&e1, &me2)), ck!(idot(&e2, &me2)));
+    let zvec = |x: &[T; 4]| -> [Zs<T>; 4] { x.clone().map(Zs::int) };
     let irrational = *delta != one;
     let (mut plus, mut minus) = if s11.is_zero() {
         let two_s12 = ck!(s12.add(&s12));
-        let minus: Vec<T> = ck!((0..4)
-            .map(|i| s22.mul(&e1[i])?.sub(&two_s12.mul(&e2[i])?))
-            .collect::<Option<Vec<T>>>());
-        (zvec(e1), zvec(&minus))
+        let minus: [T; 4] = ck!(try4(|i| s22.mul(&e1[i])?.sub(&two_s12.mul(&e2[i])?)));
+        (zvec(&e1), zvec(&minus))
     } else {
         let disc = ck!(ck!(s12.mul(&s12)).sub(&ck!(s11.mul(&s22))));
         if !disc.is_positive() {
@@ -940,15 +944,17 @@ fn ruling_through<T: RulingInt>(
             Zs::int(ck!(disc.exact_sqrt()))
         };
         let minus_s12 = Zs::int(ck!(zero.sub(&s12)));
-        let line = |rt: &Zs<T>| -> Option<Vec<Zs<T>>> {
+        let line = |rt: &Zs<T>| -> Option<[Zs<T>; 4]> {
             let k1 = minus_s12.add(rt)?;
-            (0..4)
-                .map(|i| k1.scale(&e1[i])?.add(&Zs::int(s11.mul(&e2[i])?)))
-                .collect()
+            try4(|i| k1.scale(&e1[i])?.add(&Zs::int(s11.mul(&e2[i])?)))
         };
         (ck!(line(&root)), ck!(line(&ck!(root.neg()))))
     };
-    divide_content(&mut [&mut plus, &mut minus]);
+    {
+        let g = content(plus.iter().chain(minus.iter()));
+        divide_by(&mut plus, &g);
+        divide_by(&mut minus, &g);
+    }
     let d_t = if irrational { delta.clone() } else { zero.clone() };
     // balance the parameter: |E₊| about |p| (a power of two, exact), so that u has the
     // scale of the point and the roots of s(u) are neither huge nor tiny
@@ -969,28 +975,26 @@ fn ruling_through<T: RulingInt>(
     };
     if ratio.is_finite() && ratio >= 2.0 {
         let k = ck!(pow2(ratio.log2().floor() as usize));
-        plus = ck!(plus.iter().map(|x| x.scale(&k)).collect());
+        plus = ck!(try4(|i| plus[i].scale(&k)));
     }
-    let p: Vec<T> = if ratio.is_finite() && ratio > 0.0 && ratio <= 0.5 {
+    let p: [T; 4] = if ratio.is_finite() && ratio > 0.0 && ratio <= 0.5 {
         let k = ck!(pow2((1.0 / ratio).log2().floor() as usize));
-        ck!(p.iter().map(|x| x.mul(&k)).collect())
+        ck!(try4(|i| p[i].mul(&k)))
     } else {
         p
     };
-    let zmv = |x: &[Zs<T>]| -> Option<Vec<Zs<T>>> {
-        (0..4)
-            .map(|i| {
-                let mut acc = Zs::zero();
-                for k in 0..4 {
-                    if !x[k].is_zero() && !m[i][k].is_zero() {
-                        acc = acc.add(&x[k].scale(&m[i][k])?)?;
-                    }
+    let zmv = |x: &[Zs<T>; 4]| -> Option<[Zs<T>; 4]> {
+        try4(|i| {
+            let mut acc = Zs::zero();
+            for k in 0..4 {
+                if !x[k].is_zero() && !m[i][k].is_zero() {
+                    acc = acc.add(&x[k].scale(&m[i][k])?)?;
                 }
-                Some(acc)
-            })
-            .collect()
+            }
+            Some(acc)
+        })
     };
-    let zdot = |x: &[Zs<T>], y: &[Zs<T>]| -> Option<Zs<T>> {
+    let zdot = |x: &[Zs<T>; 4], y: &[Zs<T>; 4]| -> Option<Zs<T>> {
         let mut acc = Zs::zero();
         for i in 0..4 {
             if !x[i].is_zero() && !y[i].is_zero() {
@@ -1000,10 +1004,8 @@ fn ruling_through<T: RulingInt>(
         Some(acc)
     };
     // a·x + b·y
-    let comb = |a: &Zs<T>, x: &[Zs<T>], b: &Zs<T>, y: &[Zs<T>]| -> Option<Vec<Zs<T>>> {
-        (0..4)
-            .map(|i| a.mul(&x[i], &d_t)?.add(&b.mul(&y[i], &d_t)?))
-            .collect()
+    let comb = |a: &Zs<T>, x: &[Zs<T>; 4], b: &Zs<T>, y: &[Zs<T>; 4]| -> Option<[Zs<T>; 4]> {
+        try4(|i| a.mul(&x[i], &d_t)?.add(&b.mul(&y[i], &d_t)?))
     };
     let m_minus = ck!(zmv(&minus));
     let c = ck!(zdot(&plus, &m_minus));
@@ -1012,13 +1014,15 @@ fn ruling_through<T: RulingInt>(
             "the two lines through a point are not distinct".into(),
         ));
     }
-    let mut ej = vec![Zs::zero(); 4];
+    let mut ej: [Zs<T>; 4] = std::array::from_fn(|_| Zs::zero());
     ej[j] = Zs::int(one.clone());
     let mut g0 = ck!(comb(&c, &ej, &ck!(m_minus[j].neg()), &plus));
-    divide_content(&mut [&mut g0]);
+    let g = content(g0.iter());
+    divide_by(&mut g0, &g);
     let g0_plus = ck!(zdot(&g0, &ck!(zmv(&plus))));
     let mut g1 = ck!(comb(&c, &g0, &ck!(g0_plus.neg()), &minus));
-    divide_content(&mut [&mut g1]);
+    let g = content(g1.iter());
+    divide_by(&mut g1, &g);
     let zp = zvec(&p);
     let mg1 = ck!(zmv(&g1));
     let rho = ck!(zdot(&zp, &mg1));
@@ -1027,18 +1031,15 @@ fn ruling_through<T: RulingInt>(
     let f = ck!(comb(&ck!(two_z.mul(&rho, &d_t)), &g1, &ck!(g1g1.neg()), &zp));
     let two_rho2 = ck!(two_z.mul(&ck!(rho.mul(&rho, &d_t)), &d_t));
     // b and d each scaled to coprime integers
-    let mut bz: Vec<Vec<Zs<T>>> = ck!((0..4)
-        .map(|i| Some(vec![zp[i].clone(), plus[i].neg()?]))
-        .collect::<Option<Vec<_>>>());
-    let mut dz: Vec<Vec<Zs<T>>> = ck!((0..4)
-        .map(|i| Some(vec![two_rho2.mul(&minus[i], &d_t)?, c.mul(&f[i], &d_t)?]))
-        .collect::<Option<Vec<_>>>());
-    {
-        let mut refs: Vec<&mut Vec<Zs<T>>> = bz.iter_mut().collect();
-        divide_content(&mut refs);
-        let mut refs: Vec<&mut Vec<Zs<T>>> = dz.iter_mut().collect();
-        divide_content(&mut refs);
-    }
+    let mut bz: [[Zs<T>; 2]; 4] = ck!(try4(|i| Some([zp[i].clone(), plus[i].neg()?])));
+    let mut dz: [[Zs<T>; 2]; 4] = ck!(try4(|i| Some([
+        two_rho2.mul(&minus[i], &d_t)?,
+        c.mul(&f[i], &d_t)?
+    ])));
+    let g = content(bz.as_flattened());
+    divide_by(bz.as_flattened_mut(), &g);
+    let g = content(dz.as_flattened());
+    divide_by(dz.as_flattened_mut(), &g);
     let delta_big = d_t.to_ibig();
     let to_poly = |v: &[Zs<T>]| -> Poly<Quadratic> {
         Poly::new(v.iter().map(|x| x.to_quadratic(&delta_big)).collect())
@@ -1047,6 +1048,11 @@ fn ruling_through<T: RulingInt>(
     let d: PolyVector = std::array::from_fn(|i| to_poly(&dz[i]));
     let delta = radicand_of(b.iter().chain(d.iter()).flat_map(|x| x.coeffs()));
     Ok(Some(RuledParameterization { b, d, delta }))
+}
+
+/// `[f(0), f(1), f(2), f(3)]`, `None` if one is.
+fn try4<X>(mut f: impl FnMut(usize) -> Option<X>) -> Option<[X; 4]> {
+    Some([f(0)?, f(1)?, f(2)?, f(3)?])
 }
 
 /// [`ruling_through`] in `i128` (entries of `M` and `p` as given), falling back to `IBig`
@@ -1136,16 +1142,16 @@ fn det_checked(m: &[[i128; 4]; 4]) -> Option<i128> {
             .checked_sub(m[r0][c1].checked_mul(m[r1][c0])?)
     };
     let mut acc = 0i128;
-    for (c0, c1, sign) in [
-        (0, 1, 1),
-        (0, 2, -1),
-        (0, 3, 1),
-        (1, 2, 1),
-        (1, 3, -1),
-        (2, 3, 1),
+    // the columns of the top minor, the complementary ones, the sign
+    for (c0, c1, d0, d1, sign) in [
+        (0, 1, 2, 3, 1),
+        (0, 2, 1, 3, -1),
+        (0, 3, 1, 2, 1),
+        (1, 2, 0, 3, 1),
+        (1, 3, 0, 2, -1),
+        (2, 3, 0, 1, 1),
     ] {
-        let rest: Vec<usize> = (0..4).filter(|&c| c != c0 && c != c1).collect();
-        let t = minor(0, 1, c0, c1)?.checked_mul(minor(2, 3, rest[0], rest[1])?)?;
+        let t = minor(0, 1, c0, c1)?.checked_mul(minor(2, 3, d0, d1)?)?;
         acc = if sign > 0 {
             acc.checked_add(t)?
         } else {
