@@ -415,14 +415,10 @@ where
         + std::ops::Mul<Output = T>,
 {
     let vs: [[T; 4]; 40] = SMALL_VECTORS.map(|v| v.map(T::from));
-    let mv: [[T; 4]; 40] = vs.map(|v| {
-        std::array::from_fn(|i| {
-            (0..4).fold(T::default(), |acc, j| acc + m[i][j] * v[j])
-        })
-    });
-    let dot = |x: &[T; 4], y: &[T; 4]| -> T {
-        x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + x[3] * y[3]
-    };
+    let mv: [[T; 4]; 40] = vs
+        .map(|v| std::array::from_fn(|i| (0..4).fold(T::default(), |acc, j| acc + m[i][j] * v[j])));
+    let dot =
+        |x: &[T; 4], y: &[T; 4]| -> T { x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + x[3] * y[3] };
     let diag: [T; 40] = std::array::from_fn(|k| dot(&vs[k], &mv[k]));
     if let Some(k) = diag.iter().position(|&x| x == T::default()) {
         return Some(vs[k]);
@@ -909,7 +905,7 @@ fn ruling_through<T: RulingInt>(
         .find(|&k| k != j && !p[k].is_zero())
         .ok_or_else(|| Error::Algebra("tangent plane basis".into()))?;
     let mut rest = (0..4).filter(|&k| k != j && k != k0);
-    let mut kernel_vector = |k: usize| -> Option<[T; 4]> {
+    let kernel_vector = |k: usize| -> Option<[T; 4]> {
         let mut v: [T; 4] = std::array::from_fn(|_| T::from_i128(0));
         v[k] = r[j].clone();
         v[j] = T::from_i128(0).sub(&r[k])?;
@@ -918,7 +914,11 @@ fn ruling_through<T: RulingInt>(
     let e1 = ck!(kernel_vector(rest.next().expect("two kernel vectors")));
     let e2 = ck!(kernel_vector(rest.next().expect("two kernel vectors")));
     let (me1, me2) = (ck!(mv(&e1)), ck!(mv(&e2)));
-    let (s11, s12, s22) = (ck!(idot(&e1, &me1)), ck!(idot(&e1, &me2)), ck!(idot(&e2, &me2)));
+    let (s11, s12, s22) = (
+        ck!(idot(&e1, &me1)),
+        ck!(idot(&e1, &me2)),
+        ck!(idot(&e2, &me2)),
+    );
     let zvec = |x: &[T; 4]| -> [Zs<T>; 4] { x.clone().map(Zs::int) };
     let irrational = *delta != one;
     let (mut plus, mut minus) = if s11.is_zero() {
@@ -955,7 +955,11 @@ fn ruling_through<T: RulingInt>(
         divide_by(&mut plus, &g);
         divide_by(&mut minus, &g);
     }
-    let d_t = if irrational { delta.clone() } else { zero.clone() };
+    let d_t = if irrational {
+        delta.clone()
+    } else {
+        zero.clone()
+    };
     // balance the parameter: |E₊| about |p| (a power of two, exact), so that u has the
     // scale of the point and the roots of s(u) are neither huge nor tiny
     let root_delta = d_t.to_f64().abs().sqrt();
@@ -1028,7 +1032,12 @@ fn ruling_through<T: RulingInt>(
     let rho = ck!(zdot(&zp, &mg1));
     let g1g1 = ck!(zdot(&g1, &mg1));
     let two_z = Zs::int(two);
-    let f = ck!(comb(&ck!(two_z.mul(&rho, &d_t)), &g1, &ck!(g1g1.neg()), &zp));
+    let f = ck!(comb(
+        &ck!(two_z.mul(&rho, &d_t)),
+        &g1,
+        &ck!(g1g1.neg()),
+        &zp
+    ));
     let two_rho2 = ck!(two_z.mul(&ck!(rho.mul(&rho, &d_t)), &d_t));
     // b and d each scaled to coprime integers
     let mut bz: [[Zs<T>; 2]; 4] = ck!(try4(|i| Some([zp[i].clone(), plus[i].neg()?])));
@@ -1110,7 +1119,9 @@ pub(crate) fn small_member(
     let mut out = [[0i128; 4]; 4];
     for i in 0..4 {
         for j in 0..4 {
-            let v = n.checked_mul(a[i][j])?.checked_sub(d.checked_mul(b[i][j])?)?;
+            let v = n
+                .checked_mul(a[i][j])?
+                .checked_sub(d.checked_mul(b[i][j])?)?;
             if v.unsigned_abs() >= 1 << 40 {
                 return None;
             }
@@ -1471,8 +1482,12 @@ mod tests {
         for bound in [2i64, 10, 60, 1000, 1 << 20, (1 << 39) - 1] {
             for _ in 0..60 {
                 let m = random_symmetric(&mut rng, bound);
-                let Some(p) = small_point_of(&m) else { continue };
-                let Some(delta) = member_radicand(&m) else { continue };
+                let Some(p) = small_point_of(&m) else {
+                    continue;
+                };
+                let Some(delta) = member_radicand(&m) else {
+                    continue;
+                };
                 let s: [[RBig; 4]; 4] =
                     std::array::from_fn(|i| std::array::from_fn(|j| RBig::from(m[i][j])));
                 let inertia = qsic_algebra::matrix::SymMatrix4::new(std::array::from_fn(|i| {
@@ -1501,7 +1516,10 @@ mod tests {
                 assert_eq!(ruling_through_small(&m, &p, &delta).unwrap(), Some(big));
             }
         }
-        assert!(machine > 30 && overflow > 5, "{machine} machine, {overflow} overflow of {total}");
+        assert!(
+            machine > 30 && overflow > 5,
+            "{machine} machine, {overflow} overflow of {total}"
+        );
     }
 
     #[test]

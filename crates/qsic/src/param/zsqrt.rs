@@ -51,6 +51,7 @@ impl Zq {
         .expect("δ is not a square")
     }
 
+    #[allow(dead_code)] // unused since surface::ruling_through (s7-surface)
     pub(crate) fn add(&self, o: &Zq) -> Zq {
         Zq {
             a: &self.a + &o.a,
@@ -58,6 +59,7 @@ impl Zq {
         }
     }
 
+    #[allow(dead_code)] // unused since surface::ruling_through (s7-surface)
     pub(crate) fn neg(&self) -> Zq {
         Zq {
             a: -&self.a,
@@ -270,6 +272,7 @@ pub(crate) fn degree(p: &[Zq]) -> Option<usize> {
 
 /// `v` divided by the gcd of all the integers `a`, `b` of its coefficients (the positive
 /// rational scale of [`super::surface`]'s `primitive_poly` on integral coordinates).
+#[allow(dead_code)] // unused since surface::ruling_through (s7-surface)
 pub(crate) fn make_primitive(v: &mut [ZPoly]) {
     use dashu_int::ops::Gcd;
     let mut g = IBig::ZERO;
