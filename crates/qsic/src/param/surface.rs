@@ -660,6 +660,10 @@ impl RulingInt for i128 {
         self.checked_sub(*o)
     }
     fn mul(&self, o: &i128) -> Option<i128> {
+        // one widening product for machine words, the overflow test only past them
+        if let (Ok(x), Ok(y)) = (i64::try_from(*self), i64::try_from(*o)) {
+            return Some(i128::from(x) * i128::from(y));
+        }
         self.checked_mul(*o)
     }
     fn gcd(&self, o: &i128) -> i128 {
@@ -679,9 +683,19 @@ impl RulingInt for i128 {
         x as i128
     }
     fn div_exact(&self, o: &i128) -> i128 {
+        if let (Ok(x), Ok(y)) = (i64::try_from(*self), i64::try_from(*o)) {
+            if y > 0 {
+                return i128::from(x / y);
+            }
+        }
         self / o
     }
     fn divisible_by(&self, o: &i128) -> bool {
+        if let (Ok(x), Ok(y)) = (i64::try_from(*self), i64::try_from(*o)) {
+            if y > 0 {
+                return x % y == 0;
+            }
+        }
         self % o == 0
     }
     fn exact_sqrt(&self) -> Option<i128> {
