@@ -1228,6 +1228,11 @@ mod tests {
             assert!(poly_form(&sm, &r.d, &r.d).is_zero());
         };
         let size = |d: &Option<IBig>| d.as_ref().map_or(IBig::ONE, |d| d * d);
+        // d·(λA − B) = n·A − d·B in machine integers (λ = n/d)
+        let scaled = |m: &[[RBig; 4]; 4], lambda: &Option<RBig>| {
+            let den = RBig::from(lambda.as_ref().expect("finite λ").denominator().clone());
+            surface::integer_entries(&m.clone().map(|row| row.map(|v| v * &den)))
+        };
         let (mut small, mut total, mut hard) = (0, 0, 0);
         for (seed, bound) in [(4u64, 10i64), (5, 1000), (6, 2), (7, 30)] {
             for (a, b) in smooth_pairs(seed, 40, bound) {
@@ -1244,9 +1249,7 @@ mod tests {
                         continue;
                     }
                     let m = member(&am, &bm, lambda.as_ref());
-                    let Some(mi) = surface::integer_entries(&m.clone().map(|row| {
-                        row.map(|v| v * RBig::from(lambda.as_ref().unwrap().denominator().clone()))
-                    })) else {
+                    let Some(mi) = scaled(&m, lambda) else {
                         continue;
                     };
                     if surface::small_point_of(&mi).is_some() {
@@ -1271,12 +1274,7 @@ mod tests {
                 small += 1;
                 let d = chosen.ruling.delta.clone();
                 let want = surface::member_radicand(
-                    &surface::integer_entries(&chosen.matrix.clone().map(|row| {
-                        row.map(|v| {
-                            v * RBig::from(chosen.lambda.as_ref().unwrap().denominator().clone())
-                        })
-                    }))
-                    .expect("small"),
+                    &scaled(&chosen.matrix, &chosen.lambda).expect("small"),
                 )
                 .expect("radicand");
                 assert_eq!(d.clone().unwrap_or(IBig::ONE), want);
@@ -1300,16 +1298,8 @@ mod tests {
                     .iter()
                     .all(|(lambda, kind)| {
                         *kind == SurfaceKind::DoublyRuled
-                            && surface::integer_entries(&member(&am, &bm, lambda.as_ref()).map(
-                                |row| {
-                                    row.map(|v| {
-                                        v * RBig::from(
-                                            lambda.as_ref().unwrap().denominator().clone(),
-                                        )
-                                    })
-                                },
-                            ))
-                            .is_some_and(|mi| surface::small_point_of(&mi).is_none())
+                            && scaled(&member(&am, &bm, lambda.as_ref()), lambda)
+                                .is_some_and(|mi| surface::small_point_of(&mi).is_none())
                     });
                 if none {
                     hard += 1;
