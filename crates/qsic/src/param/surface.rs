@@ -346,7 +346,11 @@ fn exact_sqrt(n: i128) -> Option<i128> {
     if (0x0202_0212_0203_0213u64 >> (n & 63)) & 1 == 0 {
         return None;
     }
-    let mut r = (n as f64).sqrt() as i128;
+    let approx = match u64::try_from(n) {
+        Ok(v) => v as f64,
+        Err(_) => n as f64,
+    };
+    let mut r = approx.sqrt() as i128;
     while r * r > n {
         r -= 1;
     }
@@ -356,61 +360,99 @@ fn exact_sqrt(n: i128) -> Option<i128> {
     (r * r == n).then_some(r)
 }
 
-/// A rational point of `XᵀSX = 0` found cheaply, `None` if none of the tried ones is: the
-/// vectors with entries in {−1, 0, 1}, then the rational points of the lines joining two of
-/// them (`S` restricted to `P + t·Q` has rational roots iff `S(P,Q)² − S(P,P)S(Q,Q)` is a
-/// square). Exact integer arithmetic on `k·S` (entries below `2⁴⁰`, products below `2¹²⁰`).
-fn small_point(s: &[[RBig; 4]; 4]) -> Option<[RBig; 4]> {
-    let m = small_integer_matrix(s)?;
-    // the 40 projective classes of nonzero vectors in {−1, 0, 1}⁴, first nonzero entry 1
-    let mut vs: Vec<[i128; 4]> = Vec::with_capacity(40);
-    for code in 0..81 {
-        let v: [i128; 4] = std::array::from_fn(|i| (code / 3i128.pow(i as u32)) % 3 - 1);
-        if v.iter().find(|&&x| x != 0) == Some(&1) {
-            vs.push(v);
+/// An integer point of `XᵀMX = 0` found cheaply (`M` an integer matrix, entries below
+/// `2⁴⁰`), `None` if none of the tried ones is: the vectors with entries in {−1, 0, 1}, then
+/// the rational points of the lines joining two of them (`M` restricted to `P + t·Q` has
+/// rational roots iff `M(P,Q)² − M(P,P)M(Q,Q)` is a square). Exact `i128` arithmetic
+/// (products below `2¹²⁰`).
+pub(crate) fn small_point_of(m: &[[i128; 4]; 4]) -> Option<[i128; 4]> {
+    if m.iter().flatten().all(|x| x.unsigned_abs() < 1 << 24) {
+        // |M(P, Q)| < 2²⁸: every product below 2⁵⁷
+        let small = m.map(|row| row.map(|x| x as i64));
+        return small_point_in(&small).map(|v| v.map(i128::from));
+    }
+    small_point_in(m)
+}
+
+/// The 40 projective classes of nonzero vectors in {−1, 0, 1}⁴ (first nonzero entry 1).
+const SMALL_VECTORS: [[i8; 4]; 40] = small_vectors();
+
+const fn small_vectors() -> [[i8; 4]; 40] {
+    let mut out = [[0i8; 4]; 40];
+    let (mut n, mut code) = (0, 0);
+    while code < 81 {
+        let mut v = [0i8; 4];
+        let (mut c, mut i) = (code, 0);
+        while i < 4 {
+            v[i] = (c % 3) as i8 - 1;
+            c /= 3;
+            i += 1;
         }
+        let mut k = 0;
+        while k < 4 && v[k] == 0 {
+            k += 1;
+        }
+        if k < 4 && v[k] == 1 {
+            out[n] = v;
+            n += 1;
+        }
+        code += 1;
     }
-    let mv: Vec<[i128; 4]> = vs
-        .iter()
-        .map(|v| std::array::from_fn(|i| (0..4).map(|j| m[i][j] * v[j]).sum()))
-        .collect();
-    let dot = |x: &[i128; 4], y: &[i128; 4]| -> i128 { (0..4).map(|i| x[i] * y[i]).sum() };
-    let diag: Vec<i128> = vs.iter().zip(&mv).map(|(v, w)| dot(v, w)).collect();
-    let rational = |v: [i128; 4]| -> [RBig; 4] { std::array::from_fn(|i| RBig::from(v[i])) };
-    if let Some(k) = diag.iter().position(|&x| x == 0) {
-        return Some(rational(vs[k]));
+    out
+}
+
+/// [`small_point_of`] in `i64` or `i128` (the caller bounds the entries).
+fn small_point_in<T>(m: &[[T; 4]; 4]) -> Option<[T; 4]>
+where
+    T: Copy
+        + Default
+        + PartialEq
+        + From<i8>
+        + Into<i128>
+        + TryFrom<i128>
+        + std::ops::Add<Output = T>
+        + std::ops::Sub<Output = T>
+        + std::ops::Mul<Output = T>,
+{
+    let vs: [[T; 4]; 40] = SMALL_VECTORS.map(|v| v.map(T::from));
+    let mv: [[T; 4]; 40] = vs
+        .map(|v| std::array::from_fn(|i| (0..4).fold(T::default(), |acc, j| acc + m[i][j] * v[j])));
+    let dot =
+        |x: &[T; 4], y: &[T; 4]| -> T { x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + x[3] * y[3] };
+    let diag: [T; 40] = std::array::from_fn(|k| dot(&vs[k], &mv[k]));
+    if let Some(k) = diag.iter().position(|&x| x == T::default()) {
+        return Some(vs[k]);
     }
-    for p in 0..vs.len() {
-        for q in p + 1..vs.len() {
+    for p in 0..40 {
+        for q in p + 1..40 {
             let spq = dot(&vs[p], &mv[q]);
-            let Some(r) = exact_sqrt(spq * spq - diag[p] * diag[q]) else {
+            let Some(r) = exact_sqrt((spq * spq - diag[p] * diag[q]).into()) else {
                 continue;
             };
+            let r = T::try_from(r).ok()?;
             // S(P + tQ) = 0 at t = (−S(P,Q) + r)/S(Q,Q): the point S(Q,Q)·P + (r − S(P,Q))·Q
             let (a, b) = (diag[q], r - spq);
-            return Some(rational(std::array::from_fn(|i| {
-                a * vs[p][i] + b * vs[q][i]
-            })));
+            return Some(std::array::from_fn(|i| a * vs[p][i] + b * vs[q][i]));
         }
     }
     None
 }
 
 /// The parameterization of a nonsingular quadric of inertia (2, 2) through a small rational
-/// point ([`doubly_ruled_integral`], fraction-free) or else a point found on a hyperplane
+/// point ([`ruling_through`], fraction-free) or else a point found on a hyperplane
 /// section. `Ok(None)` if its lines need a biquadratic field (no rational point
 /// found and `det S` not a square in the point's field).
 pub(crate) fn parameterize_doubly_ruled(
     s: &[[RBig; 4]; 4],
 ) -> Result<Option<RuledParameterization>, Error> {
-    let points: Vec<Vec4> = match small_point(s) {
+    let small = small_integer_matrix(s);
+    let points: Vec<Vec4> = match small.as_ref().and_then(small_point_of) {
         Some(p) => {
-            if let Some(prepared) = prepare(s, &p)? {
-                if let Some(r) = doubly_ruled_integral(prepared)? {
-                    return Ok(Some(r));
-                }
+            let m = small.as_ref().expect("a small matrix");
+            if let Some(r) = ruling_at_small_point(s, m, &p)? {
+                return Ok(Some(r));
             }
-            vec![std::array::from_fn(|i| q(&p[i]))]
+            vec![std::array::from_fn(|i| q(&RBig::from(p[i])))]
         }
         // the lines through a point over ℚ(√e) are over ℚ(√e) only when det S is a square
         // there: the other points would fail after their forms (the biquadratic route)
@@ -427,6 +469,27 @@ pub(crate) fn parameterize_doubly_ruled(
         }
     }
     Ok(None)
+}
+
+/// [`ruling_through`] at the small point `p` of `m = k·S` (the radicand from `det m`, in
+/// `i128` when it fits, else from the big determinant).
+fn ruling_at_small_point(
+    s: &[[RBig; 4]; 4],
+    m: &[[i128; 4]; 4],
+    p: &[i128; 4],
+) -> Result<Option<RuledParameterization>, Error> {
+    if let Some(delta) = member_radicand(m) {
+        return ruling_through_small(m, p, &delta);
+    }
+    let Some(mb) = scaled_integer_matrix(s) else {
+        return Ok(None);
+    };
+    let det = minors::det(&mb);
+    let Some(delta) = squarefree_part(&det) else {
+        return Ok(None);
+    };
+    let pb: [IBig; 4] = std::array::from_fn(|i| IBig::from(p[i]));
+    ruling_through(&mb, &pb, &delta)
 }
 
 /// Points of `S` to build the ruling from: the rational point of the first section that has
@@ -562,257 +625,631 @@ fn doubly_ruled_through(sm: &Mat4, p: Vec4) -> Result<Option<RuledParameterizati
     Ok(Some(RuledParameterization { b, d, delta }))
 }
 
-/// The tangent plane of `S` at an integer point `p`, on `M = k·S` (integer): `r = Mp`, its
-/// first nonzero entry `j`, the kernel vectors `e₁`, `e₂` (`Kₖ = rⱼeₖ − rₖeⱼ`, the one with
-/// the first `pₖ ≠ 0`, `k ≠ j`, left out) and the binary form `sᵢⱼ = eᵢᵀMeⱼ` on them.
-struct Tangent {
-    m: [[IBig; 4]; 4],
-    p: Vec<IBig>,
-    j: usize,
-    e1: Vec<IBig>,
-    e2: Vec<IBig>,
-    s11: IBig,
-    s12: IBig,
-    s22: IBig,
+/// Integers for the fraction-free ruling ([`ruling_through`]): `i128` with every operation
+/// checked (`None` on overflow sends the caller to `IBig`), and `IBig`, which never declines.
+pub(crate) trait RulingInt: Clone + PartialEq + std::fmt::Debug {
+    fn from_i128(v: i128) -> Self;
+    fn is_zero(&self) -> bool;
+    fn add(&self, o: &Self) -> Option<Self>;
+    fn sub(&self, o: &Self) -> Option<Self>;
+    fn mul(&self, o: &Self) -> Option<Self>;
+    /// `gcd(|self|, |o|)`.
+    fn gcd(&self, o: &Self) -> Self;
+    /// `self / o`, `o` dividing `self`.
+    fn div_exact(&self, o: &Self) -> Self;
+    /// `self mod o == 0` for `o > 0`.
+    fn divisible_by(&self, o: &Self) -> bool;
+    /// `√self` when `self ≥ 0` is a perfect square.
+    fn exact_sqrt(&self) -> Option<Self>;
+    fn is_positive(&self) -> bool;
+    fn to_ibig(&self) -> IBig;
+    fn to_f64(&self) -> f64;
 }
 
-/// [`Tangent`] at `p`; `Ok(None)` if `p` is not integral.
-fn tangent_plane(s: &[[RBig; 4]; 4], p: &[RBig; 4]) -> Result<Option<Tangent>, Error> {
-    let Some(m) = scaled_integer_matrix(s) else {
-        return Ok(None);
+impl RulingInt for i128 {
+    fn from_i128(v: i128) -> i128 {
+        v
+    }
+    fn is_zero(&self) -> bool {
+        *self == 0
+    }
+    fn add(&self, o: &i128) -> Option<i128> {
+        self.checked_add(*o)
+    }
+    fn sub(&self, o: &i128) -> Option<i128> {
+        self.checked_sub(*o)
+    }
+    fn mul(&self, o: &i128) -> Option<i128> {
+        // one widening product for machine words, the overflow test only past them
+        if let (Ok(x), Ok(y)) = (i64::try_from(*self), i64::try_from(*o)) {
+            return Some(i128::from(x) * i128::from(y));
+        }
+        self.checked_mul(*o)
+    }
+    fn gcd(&self, o: &i128) -> i128 {
+        let (mut x, mut y) = (self.unsigned_abs(), o.unsigned_abs());
+        while y != 0 {
+            if x <= u128::from(u64::MAX) && y <= u128::from(u64::MAX) {
+                // the usual case: machine words
+                let (mut a, mut b) = (x as u64, y as u64);
+                while b != 0 {
+                    (a, b) = (b, a % b);
+                }
+                return i128::from(a);
+            }
+            (x, y) = (y, x % y);
+        }
+        // below 2¹²⁷ unless both are i128::MIN, which checked products never reach
+        x as i128
+    }
+    fn div_exact(&self, o: &i128) -> i128 {
+        if let (Ok(x), Ok(y)) = (i64::try_from(*self), i64::try_from(*o)) {
+            if y > 0 {
+                return i128::from(x / y);
+            }
+        }
+        self / o
+    }
+    fn divisible_by(&self, o: &i128) -> bool {
+        if let (Ok(x), Ok(y)) = (i64::try_from(*self), i64::try_from(*o)) {
+            if y > 0 {
+                return x % y == 0;
+            }
+        }
+        self % o == 0
+    }
+    fn exact_sqrt(&self) -> Option<i128> {
+        // the correction steps of `exact_sqrt` square numbers near √n (no overflow below 2¹²⁰)
+        if *self >= 1 << 120 {
+            return None;
+        }
+        exact_sqrt(*self)
+    }
+    fn is_positive(&self) -> bool {
+        *self > 0
+    }
+    fn to_ibig(&self) -> IBig {
+        IBig::from(*self)
+    }
+    fn to_f64(&self) -> f64 {
+        *self as f64
+    }
+}
+
+impl RulingInt for IBig {
+    fn from_i128(v: i128) -> IBig {
+        IBig::from(v)
+    }
+    fn is_zero(&self) -> bool {
+        *self == IBig::ZERO
+    }
+    fn add(&self, o: &IBig) -> Option<IBig> {
+        Some(self + o)
+    }
+    fn sub(&self, o: &IBig) -> Option<IBig> {
+        Some(self - o)
+    }
+    fn mul(&self, o: &IBig) -> Option<IBig> {
+        Some(self * o)
+    }
+    fn gcd(&self, o: &IBig) -> IBig {
+        use dashu_int::ops::Gcd;
+        if self.is_zero() {
+            return o * o.signum();
+        }
+        if o.is_zero() {
+            return self * self.signum();
+        }
+        IBig::from(self.clone().gcd(o))
+    }
+    fn div_exact(&self, o: &IBig) -> IBig {
+        self / o
+    }
+    fn divisible_by(&self, o: &IBig) -> bool {
+        (self % o) == IBig::ZERO
+    }
+    fn exact_sqrt(&self) -> Option<IBig> {
+        if *self < IBig::ZERO {
+            return None;
+        }
+        Quadratic::sqrt(self)
+            .as_rational()
+            .map(|r| r.numerator().clone())
+    }
+    fn is_positive(&self) -> bool {
+        *self > IBig::ZERO
+    }
+    fn to_ibig(&self) -> IBig {
+        self.clone()
+    }
+    fn to_f64(&self) -> f64 {
+        IBig::to_f64(self).value()
+    }
+}
+
+/// `a + b√δ` over a [`RulingInt`] (`δ` held by the caller).
+#[derive(Clone, Debug, PartialEq)]
+struct Zs<T> {
+    a: T,
+    b: T,
+}
+
+impl<T: RulingInt> Zs<T> {
+    fn int(a: T) -> Zs<T> {
+        Zs {
+            a,
+            b: T::from_i128(0),
+        }
+    }
+    fn zero() -> Zs<T> {
+        Zs::int(T::from_i128(0))
+    }
+    fn is_zero(&self) -> bool {
+        self.a.is_zero() && self.b.is_zero()
+    }
+    fn add(&self, o: &Zs<T>) -> Option<Zs<T>> {
+        Some(Zs {
+            a: self.a.add(&o.a)?,
+            b: self.b.add(&o.b)?,
+        })
+    }
+    fn neg(&self) -> Option<Zs<T>> {
+        let zero = T::from_i128(0);
+        Some(Zs {
+            a: zero.sub(&self.a)?,
+            b: zero.sub(&self.b)?,
+        })
+    }
+    fn mul(&self, o: &Zs<T>, delta: &T) -> Option<Zs<T>> {
+        if self.b.is_zero() && o.b.is_zero() {
+            return Some(Zs::int(self.a.mul(&o.a)?));
+        }
+        Some(Zs {
+            a: self.a.mul(&o.a)?.add(&self.b.mul(&o.b)?.mul(delta)?)?,
+            b: self.a.mul(&o.b)?.add(&self.b.mul(&o.a)?)?,
+        })
+    }
+    fn scale(&self, k: &T) -> Option<Zs<T>> {
+        Some(Zs {
+            a: self.a.mul(k)?,
+            b: self.b.mul(k)?,
+        })
+    }
+    fn to_quadratic(&self, delta: &IBig) -> Quadratic {
+        if self.b.is_zero() {
+            return Quadratic::rational(RBig::from(self.a.to_ibig()));
+        }
+        Quadratic::new(
+            RBig::from(self.a.to_ibig()),
+            RBig::from(self.b.to_ibig()),
+            delta.clone(),
+        )
+        .expect("δ is not a square")
+    }
+}
+
+/// The gcd of all the integers `a`, `b` of some elements of ℤ[√δ] (zero for all zeros).
+fn content<'a, T: RulingInt + 'a>(xs: impl IntoIterator<Item = &'a Zs<T>>) -> T {
+    let mut g = T::from_i128(0);
+    for x in xs {
+        for part in [&x.a, &x.b] {
+            if !part.is_zero() && g != T::from_i128(1) {
+                g = g.gcd(part);
+            }
+        }
+    }
+    g
+}
+
+/// Each element divided by `g` (a common divisor; nothing for zero or one).
+fn divide_by<T: RulingInt>(xs: &mut [Zs<T>], g: &T) {
+    if g.is_zero() || *g == T::from_i128(1) {
+        return;
+    }
+    for x in xs.iter_mut() {
+        x.a = x.a.div_exact(g);
+        x.b = x.b.div_exact(g);
+    }
+}
+
+/// The ruling of `S` through the integer point `p` of the integer matrix `M = k·S` (`k > 0`),
+/// fraction-free in ℤ[√δ], `δ` the square-free part of `det M` (one for a square): `r = Mp`,
+/// the tangent plane `Kₖ = rⱼeₖ − rₖeⱼ` (`e₁`, `e₂` two of them, made primitive), the binary
+/// form `sᵢⱼ = eᵢᵀMeⱼ` on them and its lines `E± = (−s₁₂ ± t√δ)·e₁ + s₁₁·e₂` with
+/// `t²δ = s₁₂² − s₁₁s₂₂` (over ℚ(√det M) since that discriminant times `(pᵀMx)²` is
+/// `det M·det(p, e₁, e₂, x)²`), divided by their content; `c = E₊ᵀME₋`;
+/// `g₀ = c·eⱼ − (ME₋)ⱼ·E₊`, `g₁ = c·g₀ − (g₀ᵀME₊)·E₋` (orthogonal to `E₊` and `E₋`, each
+/// made primitive), `ρ = pᵀMg₁`, `f = 2ρ·g₁ − (g₁ᵀMg₁)·p` (isotropic, `pᵀMf = 2ρ²`); then
+/// `b = p − u·E₊` and `d = 2ρ²·E₋ + u·c·f` (`pᵀMf·c = E₊ᵀM(2ρ²E₋)`, so `bᵀMd ≡ 0`), each
+/// scaled to coprime integers. `Ok(None)` when an operation overflows `T` or `δ` does not
+/// give an integral `t` (only when `δ` is not `det M`'s square-free part).
+///
+/// # Errors
+/// [`Error::Algebra`] when `p` is in the kernel, the lines are not real or not distinct (`S`
+/// is not a nonsingular quadric of inertia (2, 2) through `p`).
+fn ruling_through<T: RulingInt>(
+    m: &[[T; 4]; 4],
+    p: &[T; 4],
+    delta: &T,
+) -> Result<Option<RuledParameterization>, Error> {
+    let zero = T::from_i128(0);
+    let one = T::from_i128(1);
+    macro_rules! ck {
+        ($e:expr) => {
+            match $e {
+                Some(v) => v,
+                None => return Ok(None),
+            }
+        };
+    }
+    let mv = |x: &[T; 4]| -> Option<[T; 4]> {
+        try4(|i| {
+            let mut acc = T::from_i128(0);
+            for k in 0..4 {
+                if !x[k].is_zero() && !m[i][k].is_zero() {
+                    acc = acc.add(&m[i][k].mul(&x[k])?)?;
+                }
+            }
+            Some(acc)
+        })
     };
-    let int = |v: &RBig| -> Option<IBig> {
-        (*v.denominator() == dashu_int::UBig::ONE).then(|| v.numerator().clone())
+    let idot = |x: &[T; 4], y: &[T; 4]| -> Option<T> {
+        let mut acc = T::from_i128(0);
+        for i in 0..4 {
+            if !x[i].is_zero() && !y[i].is_zero() {
+                acc = acc.add(&x[i].mul(&y[i])?)?;
+            }
+        }
+        Some(acc)
     };
-    let Some(p) = p.iter().map(int).collect::<Option<Vec<IBig>>>() else {
-        return Ok(None);
+    let primitive_int = |v: [T; 4]| -> [T; 4] {
+        let g = v.iter().fold(T::from_i128(0), |g, x| g.gcd(x));
+        if g.is_zero() || g == T::from_i128(1) {
+            v
+        } else {
+            v.map(|x| x.div_exact(&g))
+        }
     };
-    let mv = |x: &[IBig]| -> Vec<IBig> {
-        (0..4)
-            .map(|i| (0..4).map(|j| &m[i][j] * &x[j]).sum())
-            .collect()
-    };
-    let idot = |x: &[IBig], y: &[IBig]| -> IBig { (0..4).map(|i| &x[i] * &y[i]).sum() };
-    let r = mv(&p);
+    let p = primitive_int(p.clone());
+    let r = ck!(mv(&p));
     let j = (0..4)
         .find(|&k| !r[k].is_zero())
         .ok_or_else(|| Error::Algebra("a point in the kernel of a nonsingular quadric".into()))?;
     let k0 = (0..4)
         .find(|&k| k != j && !p[k].is_zero())
         .ok_or_else(|| Error::Algebra("tangent plane basis".into()))?;
-    let mut kernel = (0..4).filter(|&k| k != j && k != k0).map(|k| {
-        let mut v = vec![IBig::ZERO; 4];
+    let mut rest = (0..4).filter(|&k| k != j && k != k0);
+    let kernel_vector = |k: usize| -> Option<[T; 4]> {
+        let mut v: [T; 4] = std::array::from_fn(|_| T::from_i128(0));
         v[k] = r[j].clone();
-        v[j] = -r[k].clone();
-        v
-    });
-    let (e1, e2) = (
-        kernel.next().expect("two kernel vectors"),
-        kernel.next().expect("two kernel vectors"),
+        v[j] = T::from_i128(0).sub(&r[k])?;
+        Some(primitive_int(v))
+    };
+    let e1 = ck!(kernel_vector(rest.next().expect("two kernel vectors")));
+    let e2 = ck!(kernel_vector(rest.next().expect("two kernel vectors")));
+    let (me1, me2) = (ck!(mv(&e1)), ck!(mv(&e2)));
+    let (s11, s12, s22) = (
+        ck!(idot(&e1, &me1)),
+        ck!(idot(&e1, &me2)),
+        ck!(idot(&e2, &me2)),
     );
-    let (me1, me2) = (mv(&e1), mv(&e2));
-    let (s11, s12, s22) = (idot(&e1, &me1), idot(&e1, &me2), idot(&e2, &me2));
-    Ok(Some(Tangent {
-        m,
-        p,
-        j,
-        e1,
-        e2,
-        s11,
-        s12,
-        s22,
-    }))
-}
-
-/// The tangent data at a point and `√(s₁₂² − s₁₁s₂₂)` (`None` when `s₁₁ = 0`): what
-/// [`doubly_ruled_integral`] needs before its lines.
-pub(crate) struct Prepared {
-    tangent: Tangent,
-    root: Option<Quadratic>,
-}
-
-impl Prepared {
-    /// The radicand of the lines: `None` when they are rational.
-    pub(crate) fn radicand(&self) -> Option<IBig> {
-        self.root
-            .as_ref()
-            .filter(|r| r.as_rational().is_none())
-            .map(|r| r.radicand().clone())
-    }
-}
-
-/// [`Prepared`] at an integer point `p` of `S`; `Ok(None)` if `p` is not integral or the
-/// square root is not in a quadratic field.
-///
-/// # Errors
-/// [`Error::Algebra`] when the lines through `p` are not real or `p` is in the kernel.
-fn prepare(s: &[[RBig; 4]; 4], p: &[RBig; 4]) -> Result<Option<Prepared>, Error> {
-    let Some(tangent) = tangent_plane(s, p)? else {
-        return Ok(None);
-    };
-    if tangent.s11.is_zero() {
-        return Ok(Some(Prepared {
-            tangent,
-            root: None,
-        }));
-    }
-    let disc = &tangent.s12 * &tangent.s12 - &tangent.s11 * &tangent.s22;
-    if disc <= IBig::ZERO {
-        return Err(Error::Algebra(
-            "no real lines through a point of an inertia (2, 2) member".into(),
-        ));
-    }
-    let Some(root) = sqrt_in_field(&Quadratic::rational(RBig::from(disc)), None) else {
-        return Ok(None);
-    };
-    Ok(Some(Prepared {
-        tangent,
-        root: Some(root),
-    }))
-}
-
-/// What [`parameterize_doubly_ruled`] finds before the ruling when it goes through
-/// [`small_point`] (always with [`doubly_ruled_integral`]): the ruling's radicand is then
-/// [`Prepared::radicand`] (the lines through `p` are over ℚ(√(s₁₂² − s₁₁s₂₂)), rational when
-/// `s₁₁ = 0`), and [`doubly_ruled_prepared`] finishes it. `None` when it does not go that
-/// way (no small point, no real lines: the full computation then says what happens).
-pub(crate) fn doubly_ruled_radicand(s: &[[RBig; 4]; 4]) -> Option<Prepared> {
-    let p = small_point(s)?;
-    prepare(s, &p).ok()?
-}
-
-/// [`parameterize_doubly_ruled`] from what [`doubly_ruled_radicand`] found: the same ruling.
-///
-/// # Errors
-/// As [`parameterize_doubly_ruled`].
-pub(crate) fn doubly_ruled_prepared(
-    prepared: Prepared,
-) -> Result<Option<RuledParameterization>, Error> {
-    doubly_ruled_integral(prepared)
-}
-
-/// [`parameterize_doubly_ruled`] through an integer point `p` of `S`, fraction-free in ℤ[√δ]
-/// on `M = k·S` (integer): `r = Mp`, the tangent plane `Kₖ = rⱼeₖ − rₖeⱼ`, the lines
-/// `E± = (−s₁₂ ± √(s₁₂² − s₁₁s₂₂))·e₁ + s₁₁·e₂`, `c = E₊ᵀME₋`; `g₀ = c·eⱼ − (ME₋)ⱼ·E₊`,
-/// `g₁ = c·g₀ − (g₀ᵀME₊)·E₋` (orthogonal to `E₊` and `E₋`), `ρ = pᵀMg₁`,
-/// `f = 2ρ·g₁ − (g₁ᵀMg₁)·p` (isotropic, `pᵀMf = 2ρ²`); then `b = p − u·E₊` and
-/// `d = 2ρ²·E₋ + u·c·f` (`pᵀMf·c = E₊ᵀM(2ρ²E₋)`, so `bᵀMd ≡ 0`). `Ok(None)` when a step
-/// leaves ℤ[√δ] (a non-integral square root): the caller takes the rational route.
-fn doubly_ruled_integral(prepared: Prepared) -> Result<Option<RuledParameterization>, Error> {
-    use zsqrt::Zq;
-    let Prepared { tangent, root } = prepared;
-    let Tangent {
-        m,
-        p,
-        j,
-        e1,
-        e2,
-        s11,
-        s12,
-        s22,
-    } = tangent;
-    let (e1, e2) = (&e1, &e2);
-    let zvec = |x: &[IBig]| -> Vec<Zq> { x.iter().cloned().map(Zq::int).collect() };
-    let (plus, minus, delta) = if let Some(root) = root {
-        let delta = root.radicand().clone();
-        let Some(root) = Zq::from_quadratic(&root, &delta) else {
-            return Ok(None);
-        };
-        let line = |sign: bool| -> Vec<Zq> {
-            let rt = if sign { root.clone() } else { root.neg() };
-            let k1 = Zq::int(-s12.clone()).add(&rt);
-            (0..4)
-                .map(|i| {
-                    k1.mul(&Zq::int(e1[i].clone()), &delta)
-                        .add(&Zq::int(&s11 * &e2[i]))
-                })
-                .collect()
-        };
-        (line(true), line(false), delta)
+    let zvec = |x: &[T; 4]| -> [Zs<T>; 4] { x.clone().map(Zs::int) };
+    let irrational = *delta != one;
+    let (mut plus, mut minus) = if s11.is_zero() {
+        let two_s12 = ck!(s12.add(&s12));
+        let minus: [T; 4] = ck!(try4(|i| s22.mul(&e1[i])?.sub(&two_s12.mul(&e2[i])?)));
+        (zvec(&e1), zvec(&minus))
     } else {
-        let minus: Vec<IBig> = (0..4)
-            .map(|i| &s22 * &e1[i] - IBig::from(2) * &s12 * &e2[i])
-            .collect();
-        (zvec(e1), zvec(&minus), IBig::ZERO)
+        let disc = ck!(ck!(s12.mul(&s12)).sub(&ck!(s11.mul(&s22))));
+        if !disc.is_positive() {
+            return Err(Error::Algebra(
+                "no real lines through a point of an inertia (2, 2) member".into(),
+            ));
+        }
+        let root = if irrational {
+            if !disc.divisible_by(delta) {
+                return Ok(None);
+            }
+            Zs {
+                a: zero.clone(),
+                b: ck!(disc.div_exact(delta).exact_sqrt()),
+            }
+        } else {
+            Zs::int(ck!(disc.exact_sqrt()))
+        };
+        let minus_s12 = Zs::int(ck!(zero.sub(&s12)));
+        let line = |rt: &Zs<T>| -> Option<[Zs<T>; 4]> {
+            let k1 = minus_s12.add(rt)?;
+            try4(|i| k1.scale(&e1[i])?.add(&Zs::int(s11.mul(&e2[i])?)))
+        };
+        (ck!(line(&root)), ck!(line(&ck!(root.neg()))))
+    };
+    {
+        let g = content(plus.iter().chain(minus.iter()));
+        divide_by(&mut plus, &g);
+        divide_by(&mut minus, &g);
+    }
+    let d_t = if irrational {
+        delta.clone()
+    } else {
+        zero.clone()
     };
     // balance the parameter: |E₊| about |p| (a power of two, exact), so that u has the
     // scale of the point and the roots of s(u) are neither huge nor tiny
-    let size = |v: &[Zq]| -> f64 {
-        let r = delta.to_f64().value().abs().sqrt();
+    let root_delta = d_t.to_f64().abs().sqrt();
+    let size = |v: &[Zs<T>]| -> f64 {
         v.iter()
-            .map(|x| x.a.to_f64().value().abs() + x.b.to_f64().value().abs() * r)
+            .map(|x| x.a.to_f64().abs() + x.b.to_f64().abs() * root_delta)
             .fold(0.0, f64::max)
     };
     let ratio = size(&zvec(&p)) / size(&plus);
-    let plus: Vec<Zq> = if ratio.is_finite() && ratio >= 2.0 {
-        let k = Zq::int(IBig::ONE << (ratio.log2().floor() as usize));
-        plus.iter().map(|x| x.mul(&k, &delta)).collect()
-    } else {
-        plus
+    let two = T::from_i128(2);
+    let pow2 = |e: usize| -> Option<T> {
+        let mut k = T::from_i128(1);
+        for _ in 0..e {
+            k = k.mul(&two)?;
+        }
+        Some(k)
     };
-    let p: Vec<IBig> = if ratio.is_finite() && ratio > 0.0 && ratio <= 0.5 {
-        let k = IBig::ONE << ((1.0 / ratio).log2().floor() as usize);
-        p.iter().map(|x| x * &k).collect()
+    if ratio.is_finite() && ratio >= 2.0 {
+        let k = ck!(pow2(ratio.log2().floor() as usize));
+        plus = ck!(try4(|i| plus[i].scale(&k)));
+    }
+    let p: [T; 4] = if ratio.is_finite() && ratio > 0.0 && ratio <= 0.5 {
+        let k = ck!(pow2((1.0 / ratio).log2().floor() as usize));
+        ck!(try4(|i| p[i].mul(&k)))
     } else {
         p
     };
-    let zm: Vec<Vec<Zq>> = m
-        .iter()
-        .map(|row| row.iter().cloned().map(Zq::int).collect())
-        .collect();
-    let zmv = |x: &[Zq]| -> Vec<Zq> {
-        (0..4)
-            .map(|i| {
-                let mut acc = Zq::default();
-                for k in 0..4 {
-                    acc.add_mul(&zm[i][k], &x[k], &delta);
+    let zmv = |x: &[Zs<T>; 4]| -> Option<[Zs<T>; 4]> {
+        try4(|i| {
+            let mut acc = Zs::zero();
+            for k in 0..4 {
+                if !x[k].is_zero() && !m[i][k].is_zero() {
+                    acc = acc.add(&x[k].scale(&m[i][k])?)?;
                 }
-                acc
-            })
-            .collect()
+            }
+            Some(acc)
+        })
     };
-    let zdot = |x: &[Zq], y: &[Zq]| -> Zq {
-        let mut acc = Zq::default();
+    let zdot = |x: &[Zs<T>; 4], y: &[Zs<T>; 4]| -> Option<Zs<T>> {
+        let mut acc = Zs::zero();
         for i in 0..4 {
-            acc.add_mul(&x[i], &y[i], &delta);
+            if !x[i].is_zero() && !y[i].is_zero() {
+                acc = acc.add(&x[i].mul(&y[i], &d_t)?)?;
+            }
         }
-        acc
+        Some(acc)
     };
     // a·x + b·y
-    let comb = |a: &Zq, x: &[Zq], b: &Zq, y: &[Zq]| -> Vec<Zq> {
-        (0..4)
-            .map(|i| a.mul(&x[i], &delta).add(&b.mul(&y[i], &delta)))
-            .collect()
+    let comb = |a: &Zs<T>, x: &[Zs<T>; 4], b: &Zs<T>, y: &[Zs<T>; 4]| -> Option<[Zs<T>; 4]> {
+        try4(|i| a.mul(&x[i], &d_t)?.add(&b.mul(&y[i], &d_t)?))
     };
-    let m_minus = zmv(&minus);
-    let c = zdot(&plus, &m_minus);
+    let m_minus = ck!(zmv(&minus));
+    let c = ck!(zdot(&plus, &m_minus));
     if c.is_zero() {
         return Err(Error::Algebra(
             "the two lines through a point are not distinct".into(),
         ));
     }
-    let mut ej = vec![Zq::default(); 4];
-    ej[j] = Zq::int(IBig::ONE);
-    let g0 = comb(&c, &ej, &m_minus[j].neg(), &plus);
-    let g0_plus = zdot(&g0, &zmv(&plus));
-    let g1 = comb(&c, &g0, &g0_plus.neg(), &minus);
+    let mut ej: [Zs<T>; 4] = std::array::from_fn(|_| Zs::zero());
+    ej[j] = Zs::int(one.clone());
+    let mut g0 = ck!(comb(&c, &ej, &ck!(m_minus[j].neg()), &plus));
+    let g = content(g0.iter());
+    divide_by(&mut g0, &g);
+    let g0_plus = ck!(zdot(&g0, &ck!(zmv(&plus))));
+    let mut g1 = ck!(comb(&c, &g0, &ck!(g0_plus.neg()), &minus));
+    let g = content(g1.iter());
+    divide_by(&mut g1, &g);
     let zp = zvec(&p);
-    let mg1 = zmv(&g1);
-    let rho = zdot(&zp, &mg1);
-    let g1g1 = zdot(&g1, &mg1);
-    let two = Zq::int(IBig::from(2));
-    let f = comb(&two.mul(&rho, &delta), &g1, &g1g1.neg(), &zp);
-    let two_rho2 = two.mul(&rho.mul(&rho, &delta), &delta);
-    // b and d each scaled to coprime integers (as `primitive_poly` would, without rationals)
-    let mut bz: [zsqrt::ZPoly; 4] = std::array::from_fn(|i| vec![zp[i].clone(), plus[i].neg()]);
-    let mut dz: [zsqrt::ZPoly; 4] =
-        std::array::from_fn(|i| vec![two_rho2.mul(&minus[i], &delta), c.mul(&f[i], &delta)]);
-    zsqrt::make_primitive(&mut bz);
-    zsqrt::make_primitive(&mut dz);
-    let b: PolyVector = std::array::from_fn(|i| zsqrt::to_poly(&bz[i], &delta));
-    let d: PolyVector = std::array::from_fn(|i| zsqrt::to_poly(&dz[i], &delta));
+    let mg1 = ck!(zmv(&g1));
+    let rho = ck!(zdot(&zp, &mg1));
+    let g1g1 = ck!(zdot(&g1, &mg1));
+    let two_z = Zs::int(two);
+    let f = ck!(comb(
+        &ck!(two_z.mul(&rho, &d_t)),
+        &g1,
+        &ck!(g1g1.neg()),
+        &zp
+    ));
+    let two_rho2 = ck!(two_z.mul(&ck!(rho.mul(&rho, &d_t)), &d_t));
+    // b and d each scaled to coprime integers
+    let mut bz: [[Zs<T>; 2]; 4] = ck!(try4(|i| Some([zp[i].clone(), plus[i].neg()?])));
+    let mut dz: [[Zs<T>; 2]; 4] = ck!(try4(|i| Some([
+        two_rho2.mul(&minus[i], &d_t)?,
+        c.mul(&f[i], &d_t)?
+    ])));
+    let g = content(bz.as_flattened());
+    divide_by(bz.as_flattened_mut(), &g);
+    let g = content(dz.as_flattened());
+    divide_by(dz.as_flattened_mut(), &g);
+    let delta_big = d_t.to_ibig();
+    let to_poly = |v: &[Zs<T>]| -> Poly<Quadratic> {
+        Poly::new(v.iter().map(|x| x.to_quadratic(&delta_big)).collect())
+    };
+    let b: PolyVector = std::array::from_fn(|i| to_poly(&bz[i]));
+    let d: PolyVector = std::array::from_fn(|i| to_poly(&dz[i]));
     let delta = radicand_of(b.iter().chain(d.iter()).flat_map(|x| x.coeffs()));
     Ok(Some(RuledParameterization { b, d, delta }))
+}
+
+/// `[f(0), f(1), f(2), f(3)]`, `None` if one is.
+fn try4<X>(mut f: impl FnMut(usize) -> Option<X>) -> Option<[X; 4]> {
+    Some([f(0)?, f(1)?, f(2)?, f(3)?])
+}
+
+/// [`ruling_through`] in `i128` (entries of `M` and `p` as given), falling back to `IBig`
+/// when an operation overflows: the same ruling either way.
+///
+/// # Errors
+/// As [`ruling_through`].
+pub(crate) fn ruling_through_small(
+    m: &[[i128; 4]; 4],
+    p: &[i128; 4],
+    delta: &IBig,
+) -> Result<Option<RuledParameterization>, Error> {
+    if let Ok(dl) = i128::try_from(delta) {
+        if let Some(r) = ruling_through(m, p, &dl)? {
+            return Ok(Some(r));
+        }
+    }
+    let mb: [[IBig; 4]; 4] = std::array::from_fn(|i| std::array::from_fn(|j| IBig::from(m[i][j])));
+    let pb: [IBig; 4] = std::array::from_fn(|i| IBig::from(p[i]));
+    ruling_through(&mb, &pb, delta)
+}
+
+/// The entries of an integer-valued rational matrix as `i128`, `None` if one is not an
+/// integer or has `2⁴⁰` or more in absolute value.
+pub(crate) fn integer_entries(s: &[[RBig; 4]; 4]) -> Option<[[i128; 4]; 4]> {
+    let mut out = [[0i128; 4]; 4];
+    for i in 0..4 {
+        for j in 0..4 {
+            let v = &s[i][j];
+            if *v.denominator() != dashu_int::UBig::ONE {
+                return None;
+            }
+            let n = i128::try_from(v.numerator()).ok()?;
+            if n.unsigned_abs() >= 1 << 40 {
+                return None;
+            }
+            out[i][j] = n;
+        }
+    }
+    Some(out)
+}
+
+/// `M = n·A − d·B` for `λ = n/d` (`d > 0`): `d` times the member `λA − B`, with `d`; `None`
+/// when an entry reaches `2⁴⁰` in absolute value (the bound of [`small_point_of`]).
+pub(crate) fn small_member(
+    a: &[[i128; 4]; 4],
+    b: &[[i128; 4]; 4],
+    lambda: &RBig,
+) -> Option<([[i128; 4]; 4], i128)> {
+    let n = i128::try_from(lambda.numerator()).ok()?;
+    let d = i128::try_from(&IBig::from(lambda.denominator().clone())).ok()?;
+    if n.unsigned_abs() >= 1 << 60 || d >= 1 << 60 {
+        return None;
+    }
+    let mut out = [[0i128; 4]; 4];
+    for i in 0..4 {
+        for j in 0..4 {
+            let v = n
+                .checked_mul(a[i][j])?
+                .checked_sub(d.checked_mul(b[i][j])?)?;
+            if v.unsigned_abs() >= 1 << 40 {
+                return None;
+            }
+            out[i][j] = v;
+        }
+    }
+    Some((out, d))
+}
+
+/// The member `M/d` as rationals (see [`small_member`]).
+pub(crate) fn member_from_small(m: &[[i128; 4]; 4], d: i128) -> [[RBig; 4]; 4] {
+    let den = IBig::from(d);
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            if d == 1 {
+                RBig::from(m[i][j])
+            } else {
+                RBig::from_parts_signed(IBig::from(m[i][j]), den.clone())
+            }
+        })
+    })
+}
+
+/// `det M` by the Laplace expansion along the first two rows, every operation checked.
+fn det_checked(m: &[[i128; 4]; 4]) -> Option<i128> {
+    let minor = |r0: usize, r1: usize, c0: usize, c1: usize| -> Option<i128> {
+        m[r0][c0]
+            .checked_mul(m[r1][c1])?
+            .checked_sub(m[r0][c1].checked_mul(m[r1][c0])?)
+    };
+    let mut acc = 0i128;
+    // the columns of the top minor, the complementary ones, the sign
+    for (c0, c1, d0, d1, sign) in [
+        (0, 1, 2, 3, 1),
+        (0, 2, 1, 3, -1),
+        (0, 3, 1, 2, 1),
+        (1, 2, 0, 3, 1),
+        (1, 3, 0, 2, -1),
+        (2, 3, 0, 1, 1),
+    ] {
+        let t = minor(0, 1, c0, c1)?.checked_mul(minor(2, 3, d0, d1)?)?;
+        acc = if sign > 0 {
+            acc.checked_add(t)?
+        } else {
+            acc.checked_sub(t)?
+        };
+    }
+    Some(acc)
+}
+
+/// The square-free part `f` of `n > 0` (`n = k²f`): trial division by 2, 3 and the numbers
+/// `6i ± 1` while their cube stays below the cofactor (then the cofactor has at most two
+/// prime factors, all above the divisors tried, and is square-free unless a perfect square);
+/// [`factorize`] when that would take divisors past `2¹²`. `None` if factoring fails.
+pub(crate) fn squarefree_part(n: &IBig) -> Option<IBig> {
+    if *n <= IBig::ZERO {
+        return None;
+    }
+    if let Ok(v) = u64::try_from(n) {
+        if let Some(f) = squarefree_part_u64(v) {
+            return Some(IBig::from(f));
+        }
+    }
+    let f = factorize(n).ok()?;
+    Some(f.squarefree_split().0.value())
+}
+
+fn squarefree_part_u64(n: u64) -> Option<u64> {
+    const LIMIT: u64 = 1 << 12;
+    // divides out d; whether its exponent was odd
+    fn remove(d: u64, rest: &mut u64) -> bool {
+        let mut odd = false;
+        while *rest % d == 0 {
+            *rest /= d;
+            odd = !odd;
+        }
+        odd
+    }
+    let mut rest = n;
+    let mut f = 1u64;
+    for d in [2, 3] {
+        if remove(d, &mut rest) {
+            f *= d;
+        }
+    }
+    let mut d = 5u64;
+    loop {
+        for dd in [d, d + 2] {
+            if dd * dd * dd > rest {
+                if rest > 1 && exact_sqrt(i128::from(rest)).is_none() {
+                    f *= rest;
+                }
+                return Some(f);
+            }
+            if remove(dd, &mut rest) {
+                f *= dd;
+            }
+        }
+        d += 6;
+        if d > LIMIT {
+            return None;
+        }
+    }
+}
+
+/// The radicand of the rulings of the nonsingular member `M` of inertia (2, 2) through a
+/// rational point: the square-free part of `det M` (`1` when it is a square). `None` when the
+/// determinant overflows `i128`, is not positive, or cannot be factored.
+pub(crate) fn member_radicand(m: &[[i128; 4]; 4]) -> Option<IBig> {
+    let det = det_checked(m)?;
+    if det <= 0 {
+        return None;
+    }
+    squarefree_part(&IBig::from(det))
 }
 
 /// `k·S` with integer entries, `k > 0` the least common denominator.
@@ -900,34 +1337,6 @@ mod tests {
         assert!(r.d.iter().any(|x| !x.is_constant()), "d(u) moves");
     }
 
-    /// The integral `make_primitive` scales like `primitive_poly`.
-    #[test]
-    fn integral_primitive_is_primitive_poly() {
-        let mut rng = qsic_algebra::testing::SplitMix(9);
-        for delta in [0i64, 2, 6, 15] {
-            let delta = IBig::from(delta);
-            for _ in 0..50 {
-                let k = rng.int(1, 12);
-                let mut v: [zsqrt::ZPoly; 4] = std::array::from_fn(|_| {
-                    (0..2)
-                        .map(|_| zsqrt::Zq {
-                            a: IBig::from(k * rng.int(-20, 20)),
-                            b: if delta.is_zero() {
-                                IBig::ZERO
-                            } else {
-                                IBig::from(k * rng.int(-3, 3))
-                            },
-                        })
-                        .collect()
-                });
-                let before: PolyVector = std::array::from_fn(|i| zsqrt::to_poly(&v[i], &delta));
-                zsqrt::make_primitive(&mut v);
-                let after: PolyVector = std::array::from_fn(|i| zsqrt::to_poly(&v[i], &delta));
-                assert_eq!(after, primitive_poly(&before));
-            }
-        }
-    }
-
     #[test]
     fn doubly_ruled_quadrics_lie_on_their_parameterization() {
         // x²+y²−z²−w² (rational lines), x²+2y²−z²−3w² (det 6: lines over ℚ(√6)),
@@ -974,7 +1383,8 @@ mod tests {
                     m[j][i] = v;
                 }
             }
-            if let Some(p) = small_point(&m) {
+            if let Some(p) = small_integer_matrix(&m).and_then(|mi| small_point_of(&mi)) {
+                let p: [RBig; 4] = std::array::from_fn(|i| RBig::from(p[i]));
                 found += 1;
                 assert!(p.iter().any(|x| !x.is_zero()));
                 let mut acc = RBig::ZERO;
@@ -994,6 +1404,108 @@ mod tests {
             }
         }
         assert!(found > 50 && ruled > 20, "{found} points, {ruled} rulings");
+    }
+
+    /// The square-free part by trial division to the cube root equals the one by
+    /// [`factorize`], below `2⁶⁴` and past it (the fallback), on random numbers and on
+    /// products with large square factors.
+    #[test]
+    fn squarefree_parts_agree_with_factoring() {
+        let mut rng = qsic_algebra::testing::SplitMix(17);
+        let by_factoring =
+            |n: &IBig| -> IBig { factorize(n).unwrap().squarefree_split().0.value() };
+        for k in 0..400 {
+            let bits = 1 + k % 60;
+            let n = IBig::from(1 + (rng.next_u64() >> (64 - bits)));
+            // a square of a prime above the trial bound times a small cofactor, and a
+            // number past u64
+            let q = IBig::from([4099u64, 65537, 1_000_003][k % 3]);
+            let sq = &q * &q * IBig::from(1 + (rng.next_u64() >> 50));
+            let big = &sq * IBig::from(1_000_000_007u64) * IBig::from(998_244_353u64 + k as u64);
+            for x in [n, sq, big] {
+                assert_eq!(squarefree_part(&x), Some(by_factoring(&x)), "{x}");
+            }
+        }
+        assert_eq!(squarefree_part(&IBig::ZERO), None);
+        assert_eq!(squarefree_part(&IBig::from(-4)), None);
+    }
+
+    fn random_symmetric(rng: &mut qsic_algebra::testing::SplitMix, bound: i64) -> [[i128; 4]; 4] {
+        let mut m = [[0i128; 4]; 4];
+        for i in 0..4 {
+            for j in i..4 {
+                m[i][j] = i128::from(rng.int(-bound, bound));
+                m[j][i] = m[i][j];
+            }
+        }
+        m
+    }
+
+    /// The checked determinant equals the big one, and declines only past `i128`.
+    #[test]
+    fn checked_determinants() {
+        let mut rng = qsic_algebra::testing::SplitMix(23);
+        for bound in [3i64, 1000, 1 << 30, (1 << 40) - 1] {
+            for _ in 0..50 {
+                let m = random_symmetric(&mut rng, bound);
+                let big: [[IBig; 4]; 4] =
+                    std::array::from_fn(|i| std::array::from_fn(|j| IBig::from(m[i][j])));
+                let want = minors::det(&big);
+                match det_checked(&m) {
+                    Some(d) => assert_eq!(IBig::from(d), want),
+                    None => assert!(bound > 1 << 20),
+                }
+            }
+        }
+    }
+
+    /// The ruling in `i128` equals the one in `IBig` (the fallback), lies on `S`, and the
+    /// machine route declines (never errs differently) when the numbers overflow.
+    #[test]
+    fn machine_rulings_equal_big_rulings() {
+        let mut rng = qsic_algebra::testing::SplitMix(31);
+        let (mut machine, mut overflow, mut total) = (0, 0, 0);
+        for bound in [2i64, 10, 60, 1000, 1 << 20, (1 << 39) - 1] {
+            for _ in 0..60 {
+                let m = random_symmetric(&mut rng, bound);
+                let Some(p) = small_point_of(&m) else {
+                    continue;
+                };
+                let Some(delta) = member_radicand(&m) else {
+                    continue;
+                };
+                let s: [[RBig; 4]; 4] =
+                    std::array::from_fn(|i| std::array::from_fn(|j| RBig::from(m[i][j])));
+                let inertia = qsic_algebra::matrix::SymMatrix4::new(std::array::from_fn(|i| {
+                    std::array::from_fn(|j| IBig::from(m[i][j]))
+                }))
+                .expect("nonzero")
+                .inertia();
+                if inertia.positive != 2 || inertia.negative != 2 {
+                    continue;
+                }
+                total += 1;
+                let mb: [[IBig; 4]; 4] =
+                    std::array::from_fn(|i| std::array::from_fn(|j| IBig::from(m[i][j])));
+                let pb: [IBig; 4] = std::array::from_fn(|i| IBig::from(p[i]));
+                let big = ruling_through(&mb, &pb, &delta).unwrap().expect("a ruling");
+                assert_ruled(&s, &big);
+                assert_eq!(big.delta.clone().unwrap_or(IBig::ONE), delta);
+                let dl = i128::try_from(&delta).unwrap();
+                match ruling_through(&m, &p, &dl).unwrap() {
+                    Some(r) => {
+                        machine += 1;
+                        assert_eq!(r, big);
+                    }
+                    None => overflow += 1,
+                }
+                assert_eq!(ruling_through_small(&m, &p, &delta).unwrap(), Some(big));
+            }
+        }
+        assert!(
+            machine > 30 && overflow > 5,
+            "{machine} machine, {overflow} overflow of {total}"
+        );
     }
 
     #[test]

@@ -51,20 +51,6 @@ impl Zq {
         .expect("δ is not a square")
     }
 
-    pub(crate) fn add(&self, o: &Zq) -> Zq {
-        Zq {
-            a: &self.a + &o.a,
-            b: &self.b + &o.b,
-        }
-    }
-
-    pub(crate) fn neg(&self) -> Zq {
-        Zq {
-            a: -&self.a,
-            b: -&self.b,
-        }
-    }
-
     pub(crate) fn mul(&self, o: &Zq, delta: &IBig) -> Zq {
         if self.b.is_zero() && o.b.is_zero() {
             return Zq::int(&self.a * &o.a);
@@ -262,27 +248,6 @@ pub(crate) fn to_number_poly(
     field: Option<&qsic_algebra::field::NumberField>,
 ) -> super::NumberPoly {
     Poly::new(p.iter().map(|c| to_number(c, field)).collect())
-}
-
-/// `v` divided by the gcd of all the integers `a`, `b` of its coefficients (the positive
-/// rational scale of [`super::surface`]'s `primitive_poly` on integral coordinates).
-pub(crate) fn make_primitive(v: &mut [ZPoly]) {
-    use dashu_int::ops::Gcd;
-    let mut g = IBig::ZERO;
-    for x in v.iter().flatten() {
-        for part in [&x.a, &x.b] {
-            if !part.is_zero() && !g.is_one() {
-                g = IBig::from(g.gcd(part));
-            }
-        }
-    }
-    if g.is_zero() || g.is_one() {
-        return;
-    }
-    for x in v.iter_mut().flatten() {
-        x.a = &x.a / &g;
-        x.b = &x.b / &g;
-    }
 }
 
 /// Makes the integers of a doubly ruled surface's ruling `b(u) + v·d(u)` (`b`, `d` of
