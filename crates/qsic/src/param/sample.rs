@@ -96,7 +96,7 @@ impl SampleOptions {
         Ok(Chart {
             exact: self.chart.clone(),
             h: self.chart.clone().map(|c| c.to_f64().value()),
-            drop,
+            keep: std::array::from_fn(|k| if k < drop { k } else { k + 1 }),
         })
     }
 
@@ -269,6 +269,7 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
                         chart: &chart,
                         tolerance: options.tolerance,
                         approx: &approx,
+                        other_sheet: RefCell::new(None),
                     });
                 }
                 let sampler = slot.as_ref().expect("made above");
@@ -322,14 +323,22 @@ pub fn verify_on_quadrics(sampled: &Sampled, a: &Quadric, b: &Quadric) -> Result
 
 /// An upper estimate of `log₂|c|` from the bit lengths of its numerator's coefficients (a
 /// polynomial in the field's generator `α`), of `α` and of its denominator; `None` for zero.
-fn log2_estimate(c: &Number) -> Option<f64> {
+/// `log₂ max(|α|, 1)` comes from `alphas`, one entry per field met.
+fn log2_estimate(c: &Number, alphas: &mut Vec<(NumberField, f64)>) -> Option<f64> {
     use dashu_int::ops::BitTest;
-    let alpha = c
-        .field()
-        .map_or(1.0, |k| k.alpha().to_f64().abs().max(1.0).log2());
-    let top = c
-        .numerator()
-        .coeffs()
+    let coeffs = c.numerator().coeffs();
+    let alpha = match c.field().filter(|_| coeffs.len() > 1) {
+        None => 0.0,
+        Some(k) => match alphas.iter().find(|(f, _)| f.same_as(k)) {
+            Some((_, a)) => *a,
+            None => {
+                let a = alpha_log2(k);
+                alphas.push((k.clone(), a));
+                a
+            }
+        },
+    };
+    let top = coeffs
         .iter()
         .enumerate()
         .filter(|(_, v)| *v != &IBig::ZERO)
@@ -338,24 +347,36 @@ fn log2_estimate(c: &Number) -> Option<f64> {
     Some(top + 4.0 - c.denominator().bit_len() as f64 + 1.0)
 }
 
+/// An upper bound of `log₂ max(|α|, 1)` for the generator of `k`: half the bit length of `δ`
+/// for `α = ±√δ`, else from the float of `α`.
+fn alpha_log2(k: &NumberField) -> f64 {
+    use dashu_int::ops::BitTest;
+    let alpha = k.alpha();
+    match alpha.poly().coeffs() {
+        [c0, c1, c2] if c1.is_zero() && *c2 == IBig::ONE => 0.5 * c0.bit_len() as f64,
+        _ => alpha.to_f64().abs().max(1.0).log2(),
+    }
+}
+
 /// `param` scaled by powers of two into the range of `f64`, `None` when it is there already
 /// (every coefficient estimate within `2^±900`). `X = a ± d√s` is projective: `a` and `d`
 /// each get their own factor `2^−eₐ`, `2^−e_d` (the largest estimates) and `s` gets
 /// `2^(2e_d − 2eₐ)`, which keeps the point and both sheets (positive factors).
 fn in_float_range(param: &ComponentParam) -> Option<ComponentParam> {
-    let top = |v: &[NumberPoly]| -> Option<f64> {
-        v.iter()
-            .flat_map(|p| p.coeffs())
-            .filter_map(log2_estimate)
-            .fold(None, |m: Option<f64>, x| Some(m.map_or(x, |m| m.max(x))))
+    let mut alphas: Vec<(NumberField, f64)> = Vec::new();
+    // (largest, smallest) estimate of each part, one pass over the coefficients
+    let mut range = |v: &[NumberPoly]| -> (Option<f64>, f64) {
+        let mut top: Option<f64> = None;
+        let mut bottom = f64::INFINITY;
+        for c in v.iter().flat_map(|p| p.coeffs()) {
+            if let Some(e) = log2_estimate(c, &mut alphas) {
+                top = Some(top.map_or(e, |t| t.max(e)));
+                bottom = bottom.min(e);
+            }
+        }
+        (top, bottom)
     };
-    let bottom = |v: &[NumberPoly]| -> f64 {
-        v.iter()
-            .flat_map(|p| p.coeffs())
-            .filter_map(log2_estimate)
-            .fold(f64::INFINITY, f64::min)
-    };
-    let out_of_range = |v: &[NumberPoly]| top(v).is_some_and(|t| t > 900.0) || bottom(v) < -900.0;
+    let out = |(t, b): (Option<f64>, f64)| t.is_some_and(|t| t > 900.0) || b < -900.0;
     let scale = |v: &[NumberPoly; 4], e: i64| -> [NumberPoly; 4] {
         let k = super::curve::rational(super::expr::power_of_two(e));
         std::array::from_fn(|i| v[i].map(|c| c.mul(&k)))
@@ -363,11 +384,12 @@ fn in_float_range(param: &ComponentParam) -> Option<ComponentParam> {
     match param {
         ComponentParam::Point(_) => None,
         ComponentParam::Rational { x, degree } => {
-            if !out_of_range(x) {
+            let rx = range(x);
+            if !out(rx) {
                 return None;
             }
-            let e = top(x)? as i64;
-            if bottom(x) - (e as f64) < -900.0 {
+            let e = rx.0? as i64;
+            if rx.1 - (e as f64) < -900.0 {
                 return None;
             }
             Some(ComponentParam::Rational {
@@ -382,17 +404,17 @@ fn in_float_range(param: &ComponentParam) -> Option<ComponentParam> {
             alternate,
             s,
         } => {
-            let s_slice = std::slice::from_ref(s);
-            if !(out_of_range(a) || out_of_range(d) || out_of_range(s_slice)) {
+            let (ra, rd, rs) = (range(a), range(d), range(std::slice::from_ref(s)));
+            if !(out(ra) || out(rd) || out(rs)) {
                 return None;
             }
-            let (ea, ed) = (top(a)? as i64, top(d)? as i64);
+            let (ea, ed) = (ra.0? as i64, rd.0? as i64);
             let es = 2 * (ed - ea);
             // every coefficient in range after the scaling (none lost below the floats)
-            let spread = |v: &[NumberPoly], e: i64| {
-                top(v).is_none_or(|t| t + (e as f64) < 900.0) && bottom(v) + (e as f64) > -900.0
+            let spread = |(t, b): (Option<f64>, f64), e: i64| {
+                t.is_none_or(|t| t + (e as f64) < 900.0) && b + (e as f64) > -900.0
             };
-            if !(spread(a, -ea) && spread(d, -ed) && spread(s_slice, es)) {
+            if !(spread(ra, -ea) && spread(rd, -ed) && spread(rs, es)) {
                 return None;
             }
             let k = super::curve::rational(super::expr::power_of_two(es));
@@ -437,7 +459,8 @@ fn singular_params(
 struct Chart {
     exact: [RBig; 4],
     h: [f64; 4],
-    drop: usize,
+    /// The coordinates kept (all but the last whose coefficient in `h` is nonzero).
+    keep: [usize; 3],
 }
 
 impl Chart {
@@ -456,8 +479,8 @@ impl Chart {
         if h == 0.0 {
             return None;
         }
-        let keep = |k: usize| if k < self.drop { k } else { k + 1 };
-        Some([x[keep(0)] / h, x[keep(1)] / h, x[keep(2)] / h])
+        let k = self.keep;
+        Some([x[k[0]] / h, x[k[1]] / h, x[k[2]] / h])
     }
 }
 
@@ -525,8 +548,21 @@ fn sqrt_field_value(num: &Poly, root: Dd, delta: &IBig) -> Option<Dd> {
     if t0.0 == 0.0 || t1.0 == 0.0 || (t0.0 > 0.0) == (t1.0 > 0.0) {
         return Some(t0.add(t1));
     }
-    let norm = c0 * c0 - c1 * c1 * delta;
-    Some(int_dd(&norm).div(t0.add(t1.neg())))
+    // the norm in machine integers where it fits, else in big integers
+    let small = || -> Option<i128> {
+        let (a, b, d) = (
+            i128::try_from(c0).ok()?,
+            i128::try_from(c1).ok()?,
+            i128::try_from(delta).ok()?,
+        );
+        a.checked_mul(a)?
+            .checked_sub(b.checked_mul(b)?.checked_mul(d)?)
+    };
+    let norm = match small() {
+        Some(n) => int_dd(&IBig::from(n)),
+        None => int_dd(&(c0 * c0 - c1 * c1 * delta)),
+    };
+    Some(norm.div(t0.add(t1.neg())))
 }
 
 fn to_f64(c: &Number) -> Result<f64, Error> {
@@ -580,6 +616,9 @@ fn point_piece(
         affine,
     })
 }
+
+/// Grid points between exact values of `(sin θ, cos θ)` ([`Evaluator::grid`]).
+const RESYNC: usize = 64;
 
 /// Most coefficients of one coordinate: homogeneous degree at most 8 (a quartic has 4).
 const MAX_TERMS: usize = 9;
@@ -708,6 +747,13 @@ fn integral_f64_to_ibig(x: f64) -> IBig {
 
 /// An integer in double-double (exact below `2¹⁰⁶` in magnitude, rounded beyond).
 fn int_dd(v: &IBig) -> Dd {
+    if let Ok(small) = i64::try_from(v) {
+        // |v| < 2⁶² keeps `hi as i64` in range; the rest is then exact
+        if small.unsigned_abs() < 1 << 62 {
+            let hi = small as f64;
+            return Dd(hi, (small - hi as i64) as f64);
+        }
+    }
     if let Ok(small) = i128::try_from(v) {
         // hi rounds to nearest; for |v| < 2¹²⁷ the rest is exact in i128
         let hi = small as f64;
@@ -973,13 +1019,128 @@ impl<'a> Evaluator<'a> {
             (false, 4) => self.values::<5, 0>(t, rev, sheet),
             _ => self.values_any(t, rev, sheet),
         };
+        self.unit_of(x, root, t, rev, sheet)
+    }
+
+    /// The unit vector of the value `x` (with `√s = root`) at the reduced parameter `t`,
+    /// certified: the majorant `Σ|cₖ|` first, the bound at `|t|` where it does not certify.
+    #[inline(always)]
+    fn unit_of(&self, x: Lanes, root: f64, t: f64, rev: bool, sheet: Sheet) -> Option<[f64; 4]> {
         let norm = dot(&x, &x).sqrt();
-        // the majorant Σ|cₖ| first, the bound at |t| where it does not certify
         let cheap = self.x_abs_max + self.d_abs_max * root;
         if norm.is_finite() && norm > 0.0 && self.gamma * cheap <= 1e-10 * norm {
             return Some(x.map(|v| v / norm));
         }
         self.certify(t, rev, sheet, x, norm, root)
+    }
+
+    /// [`Evaluator::eval_unit`] on the uniform grid `θₖ = t₀ + k·step`, `k = 1, …, n − 1`,
+    /// written to `out` (cleared first); `[NaN; 4]` where it gives `None`. `(sin θ, cos θ)` by
+    /// rotations of the step, exact every [`RESYNC`] points: the drift stays within a few
+    /// hundred ulps.
+    fn grid(&self, t0: f64, step: f64, n: usize, sheet: Sheet, out: &mut Vec<[f64; 4]>) {
+        match (self.levin, self.big_d) {
+            (true, 2) => self.grid_of::<3, 1>(t0, step, n, sheet, out),
+            (true, 3) => self.grid_of::<4, 2>(t0, step, n, sheet, out),
+            (true, 4) => self.grid_of::<5, 3>(t0, step, n, sheet, out),
+            (false, 1) => self.grid_of::<2, 0>(t0, step, n, sheet, out),
+            (false, 2) => self.grid_of::<3, 0>(t0, step, n, sheet, out),
+            (false, 3) => self.grid_of::<4, 0>(t0, step, n, sheet, out),
+            (false, 4) => self.grid_of::<5, 0>(t0, step, n, sheet, out),
+            _ => {
+                out.clear();
+                out.extend((1..n).map(|k| {
+                    let u = (t0 + step * (k as f64)).sin_cos();
+                    self.eval_unit(u, sheet).unwrap_or([f64::NAN; 4])
+                }));
+            }
+        }
+    }
+
+    /// [`Evaluator::grid`] on both sheets of Levin's form at once (`a`, `d` and `√s`
+    /// evaluated once a point): `plus` and `minus`.
+    fn grid_both(
+        &self,
+        t0: f64,
+        step: f64,
+        n: usize,
+        plus: &mut Vec<[f64; 4]>,
+        minus: &mut Vec<[f64; 4]>,
+    ) {
+        match self.big_d {
+            2 => self.grid_both_of::<3, 1>(t0, step, n, plus, minus),
+            3 => self.grid_both_of::<4, 2>(t0, step, n, plus, minus),
+            4 => self.grid_both_of::<5, 3>(t0, step, n, plus, minus),
+            _ => {
+                self.grid(t0, step, n, Sheet::Plus, plus);
+                self.grid(t0, step, n, Sheet::Minus, minus);
+            }
+        }
+    }
+
+    /// [`Evaluator::grid_both`] for `NA` and `ND` coefficients.
+    #[inline(never)]
+    fn grid_both_of<const NA: usize, const ND: usize>(
+        &self,
+        t0: f64,
+        step: f64,
+        n: usize,
+        plus: &mut Vec<[f64; 4]>,
+        minus: &mut Vec<[f64; 4]>,
+    ) {
+        plus.clear();
+        plus.reserve(n);
+        minus.clear();
+        minus.reserve(n);
+        let (sh, ch) = step.sin_cos();
+        let mut u = (0.0, 1.0);
+        for k in 1..n {
+            u = if k % RESYNC == 1 {
+                (t0 + step * (k as f64)).sin_cos()
+            } else {
+                (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh)
+            };
+            let (t, rev) = reduced_parameter(u);
+            let (a, w, root) = self.parts::<NA, ND>(t, rev);
+            // the same operations as `values` on either sheet
+            let (mut p, mut m) = (a, a);
+            for i in 0..4 {
+                p[i] += root * w[i];
+                m[i] += -root * w[i];
+            }
+            let nan = [f64::NAN; 4];
+            plus.push(self.unit_of(p, root, t, rev, Sheet::Plus).unwrap_or(nan));
+            minus.push(self.unit_of(m, root, t, rev, Sheet::Minus).unwrap_or(nan));
+        }
+    }
+
+    /// [`Evaluator::grid`] for `NA` and `ND` coefficients ([`Evaluator::values`]).
+    #[inline(never)]
+    fn grid_of<const NA: usize, const ND: usize>(
+        &self,
+        t0: f64,
+        step: f64,
+        n: usize,
+        sheet: Sheet,
+        out: &mut Vec<[f64; 4]>,
+    ) {
+        out.clear();
+        out.reserve(n);
+        let (sh, ch) = step.sin_cos();
+        let mut u = (0.0, 1.0);
+        for k in 1..n {
+            u = if k % RESYNC == 1 {
+                (t0 + step * (k as f64)).sin_cos()
+            } else {
+                (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh)
+            };
+            let (t, rev) = reduced_parameter(u);
+            let (x, root) = self.values::<NA, ND>(t, rev, sheet);
+            out.push(
+                self.unit_of(x, root, t, rev, sheet)
+                    .unwrap_or([f64::NAN; 4]),
+            );
+        }
     }
 
     /// `X` (and `√s`, 0 for a rational param) by Horner's rule with `NA` coefficients of `x`
@@ -991,33 +1152,44 @@ impl<'a> Evaluator<'a> {
         rev: bool,
         sheet: Sheet,
     ) -> (Lanes, f64) {
-        let (xc, dc, sc) = if rev {
-            (&self.x, &self.d, &self.s)
-        } else {
-            (&self.x_desc, &self.d_desc, &self.s_desc)
-        };
-        let mut v = [0.0; 4];
-        for c in &xc[..NA] {
-            for i in 0..4 {
-                v[i] = v[i] * t + c[i];
-            }
-        }
+        let (mut v, w, root) = self.parts::<NA, ND>(t, rev);
         if ND == 0 {
             return (v, 0.0);
-        }
-        let s = sc.iter().fold(0.0, |acc, c| acc * t + c);
-        let root = s.max(0.0).sqrt();
-        let mut w = [0.0; 4];
-        for c in &dc[..ND] {
-            for i in 0..4 {
-                w[i] = w[i] * t + c[i];
-            }
         }
         let sr = if sheet == Sheet::Minus { -root } else { root };
         for i in 0..4 {
             v[i] += sr * w[i];
         }
         (v, root)
+    }
+
+    /// `a(t)`, `d(t)` and `√s(t)` ([`Evaluator::values`] before the sheet is chosen), Horner's
+    /// rule started at the leading coefficient.
+    #[inline(always)]
+    fn parts<const NA: usize, const ND: usize>(&self, t: f64, rev: bool) -> (Lanes, Lanes, f64) {
+        let (xc, dc, sc) = if rev {
+            (&self.x, &self.d, &self.s)
+        } else {
+            (&self.x_desc, &self.d_desc, &self.s_desc)
+        };
+        let mut v = xc[0];
+        for c in &xc[1..NA] {
+            for i in 0..4 {
+                v[i] = v[i] * t + c[i];
+            }
+        }
+        if ND == 0 {
+            return (v, [0.0; 4], 0.0);
+        }
+        let s = sc[1..].iter().fold(sc[0], |acc, c| acc * t + c);
+        let root = s.max(0.0).sqrt();
+        let mut w = dc[0];
+        for c in &dc[1..ND] {
+            for i in 0..4 {
+                w[i] = w[i] * t + c[i];
+            }
+        }
+        (v, w, root)
     }
 
     /// [`Evaluator::values`] for any degree.
@@ -1590,6 +1762,19 @@ struct Walk {
     stack: Vec<(Sample, u32)>,
     /// Crossings of the plane at infinity located along the walk (not known exactly).
     unknown: bool,
+    /// The polyline's last point is `−prev.x` (the polyline is oriented as it is walked).
+    flip: bool,
+}
+
+/// Appends `s` to `line` with its sign chosen so that its dot product with the last point is
+/// nonnegative; whether it was negated.
+fn push_oriented(line: &mut Vec<Sample>, mut s: Sample) -> bool {
+    let flip = line.last().is_some_and(|l| dot(&l.x, &s.x) < 0.0);
+    if flip {
+        s.x = s.x.map(|v| -v);
+    }
+    line.push(s);
+    flip
 }
 
 /// Samples the pieces of one component.
@@ -1602,9 +1787,38 @@ struct Sampler<'a> {
     chart: &'a Chart,
     tolerance: Option<f64>,
     approx: &'a Approximations,
+    /// The grid of the other sheet made with the last one of Levin's form: `(t₀, step, n)`
+    /// as bits, the sheet and its points ([`Evaluator::grid_both`]).
+    other_sheet: RefCell<Option<((u64, u64, usize), Sheet, Vec<[f64; 4]>)>>,
 }
 
 impl Sampler<'_> {
+    /// The grid of `sheet` on `θₖ = t₀ + k·step` ([`Evaluator::grid`]): on Levin's form both
+    /// sheets at once, the other kept for an arc over the same range.
+    fn grid(&self, t0: f64, step: f64, n: usize, sheet: Sheet, out: &mut Vec<[f64; 4]>) {
+        if !self.eval.levin {
+            return self.eval.grid(t0, step, n, sheet, out);
+        }
+        let key = (t0.to_bits(), step.to_bits(), n);
+        let mut cache = self.other_sheet.borrow_mut();
+        if let Some((k, s, _)) = cache.as_ref() {
+            if *k == key && *s == sheet {
+                let (_, _, v) = cache.take().expect("checked");
+                *out = v;
+                return;
+            }
+        }
+        let mut other = cache.take().map(|(_, _, v)| v).unwrap_or_default();
+        let other_sheet = if sheet == Sheet::Minus {
+            self.eval.grid_both(t0, step, n, &mut other, out);
+            Sheet::Plus
+        } else {
+            self.eval.grid_both(t0, step, n, out, &mut other);
+            Sheet::Minus
+        };
+        *cache = Some((key, other_sheet, other));
+    }
+
     /// A float of an arc end `r`: on Levin's form a root of `s`, found by Newton's method on
     /// `s` inside the isolating interval of `r` (one simple root of `s` there);
     /// [`AlgebraicReal::to_f64`] (once per call) where that does not bracket it or is
@@ -1848,53 +2062,57 @@ impl Sampler<'_> {
         let start = line.len();
         line.reserve(n + n / 8 + events.len() + 4);
         let joins = |a: &Sample, b: &Sample| dot(&a.x, &b.x).abs() >= 1.0 - 1e-12;
-        match line.last_mut() {
+        let flip = match line.last_mut() {
             Some(l) if !arc.reversed && joins(l, &first) => {
                 l.at_infinity |= first.at_infinity;
                 l.singular |= first.singular;
+                dot(&l.x, &first.x) < 0.0
             }
-            _ => line.push(first),
-        }
+            _ => push_oriented(line, first),
+        };
         let mut walk = Walk {
             prev: first,
             h_prev: self.chart.value(&first.x),
             stack: Vec::new(),
             unknown: matches!(self.crossings, Crossings::Unknown),
+            flip,
         };
-        let mut next_event = events.iter().peekable();
-        // (sin θ, cos θ) on the uniform grid by rotations of the step, exact sines every
-        // RESYNC steps: the drift stays within a few hundred ulps
-        const RESYNC: usize = 64;
         let step = (t1 - t0) / (n as f64);
-        let (sh, ch) = step.sin_cos();
-        let mut u = (0.0, 1.0);
+        let mut grid = Vec::new();
+        self.grid(t0, step, n, sheet, &mut grid);
+        let mut ei = 0;
+        let event_theta = |ei: usize| events.get(ei).map_or(f64::INFINITY, |e| e.theta);
+        let mut next = event_theta(0);
         for k in 1..=n {
             let g = if k < n {
                 let th = t0 + step * (k as f64);
-                u = if k % RESYNC == 1 {
-                    th.sin_cos()
+                let x = grid[k - 1];
+                if x[0].is_nan() {
+                    self.at(th, t0, t1, sheet)?
                 } else {
-                    (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh)
-                };
-                match self.eval.eval_unit(u, sheet) {
-                    Some(x) => Sample::new(th, x),
-                    None => self.at_u(th, u, t0, t1, sheet)?,
+                    Sample::new(th, x)
                 }
             } else {
                 last
             };
             // an event goes before the first grid point at or after it; a grid point at the
             // event's parameter is the same point (left out: its rounding could mark it)
-            let mut same = false;
-            while let Some(e) = next_event.next_if(|e| e.theta <= g.theta + 1e-12) {
-                same |= k < n && (g.theta - e.theta).abs() <= 1e-12;
-                self.walk_to(&mut walk, *e, sheet, budget, line)?;
+            if next <= g.theta + 1e-12 {
+                let mut same = false;
+                while next <= g.theta + 1e-12 {
+                    let e = events[ei];
+                    same |= k < n && (g.theta - e.theta).abs() <= 1e-12;
+                    self.walk_to(&mut walk, e, sheet, budget, line)?;
+                    ei += 1;
+                    next = event_theta(ei);
+                }
+                if same {
+                    continue;
+                }
             }
-            if !same {
-                self.walk_to(&mut walk, g, sheet, budget, line)?;
-            }
+            self.walk_to(&mut walk, g, sheet, budget, line)?;
         }
-        for e in next_event {
+        for e in &events[ei..] {
             self.walk_to(&mut walk, *e, sheet, budget, line)?;
         }
         if arc.reversed {
@@ -1905,6 +2123,12 @@ impl Sampler<'_> {
                 line[start - 1].singular |= l.singular;
             }
             line[start..].reverse();
+            // oriented within the arc; the whole arc negated where it meets the line reversed
+            if start > 0 && line.len() > start && dot(&line[start - 1].x, &line[start].x) < 0.0 {
+                for s in &mut line[start..] {
+                    s.x = s.x.map(|v| -v);
+                }
+            }
         }
         Ok(())
     }
@@ -1971,6 +2195,7 @@ impl Sampler<'_> {
         sheet: Sheet,
         line: &mut Vec<Sample>,
     ) -> Result<(), Error> {
+        let pushed = line.len();
         if walk.unknown {
             let hp = walk.h_prev;
             let hq = self.chart.value(&q.x);
@@ -1996,13 +2221,13 @@ impl Sampler<'_> {
                         };
                         if walk.prev.singular {
                             if let Some(m) = mid(&walk.prev, &c)? {
-                                line.push(m);
+                                push_oriented(line, m);
                             }
                         }
-                        line.push(c);
+                        push_oriented(line, c);
                         if q.singular {
                             if let Some(m) = mid(&c, &q)? {
-                                line.push(m);
+                                push_oriented(line, m);
                             }
                         }
                     }
@@ -2010,7 +2235,21 @@ impl Sampler<'_> {
             }
             walk.h_prev = hq;
         }
-        line.push(q);
+        if line.len() == pushed {
+            // oriented against the last point: `d` is the dot product with its raw vector
+            let flip = (d < 0.0) != walk.flip;
+            line.push(if flip {
+                Sample {
+                    x: q.x.map(|v| -v),
+                    ..q
+                }
+            } else {
+                q
+            });
+            walk.flip = flip;
+        } else {
+            walk.flip = push_oriented(line, q);
+        }
         walk.prev = q;
         Ok(())
     }
@@ -2035,12 +2274,7 @@ impl Sampler<'_> {
             line[0].singular |= line[last].singular;
             line.pop();
         }
-        // orient: consecutive dot products nonnegative
-        for k in 1..line.len() {
-            if dot(&line[k - 1].x, &line[k].x) < 0.0 {
-                line[k].x = line[k].x.map(|v| -v);
-            }
-        }
+        // oriented as walked: consecutive dot products nonnegative
         let affine = if matches!(self.crossings, Crossings::InPlane) {
             AffinePiece {
                 branches: Vec::new(),
@@ -2157,32 +2391,40 @@ impl Sampler<'_> {
             _ => (0, n),
         };
         current.reserve(n);
-        // the previous point oriented along the walk (a loop may come back reversed), and
-        // its h
-        let mut prev: Option<([f64; 4], f64)> = None;
+        // the line is oriented, but a loop may come back reversed at its start: `sign`
+        // orients along the walk from there on; `prev_h` is h of the previous point so
+        // oriented (`None` after a crossing)
+        let mut sign = 1.0;
+        let mut prev_h: Option<f64> = None;
         // `current` holds only the singular point it restarts from
         let mut restarted = false;
         for j in 0..count {
-            let s = &line[(j + first) % n];
+            let k = if j + first >= n {
+                j + first - n
+            } else {
+                j + first
+            };
+            let s = &line[k];
             if s.at_infinity {
                 if !current.is_empty() && !restarted {
                     branches.push(std::mem::take(&mut current));
                 }
                 current.clear();
                 restarted = false;
-                prev = None;
+                prev_h = None;
+                sign = 1.0;
                 continue;
             }
+            if k == 0 && j > 0 && prev_h.is_some() && dot(&line[n - 1].x, &s.x) < 0.0 {
+                sign = -sign;
+            }
             let h = self.chart.value(&s.x);
-            let (x, hx) = match prev {
-                Some((p, _)) if dot(&p, &s.x) < 0.0 => (s.x.map(|v| -v), -h),
-                _ => (s.x, h),
-            };
-            if prev.is_some_and(|(_, hp)| (hp > 0.0) != (hx > 0.0)) {
+            let hx = sign * h;
+            if prev_h.is_some_and(|hp| (hp > 0.0) != (hx > 0.0)) {
                 // a sign change of h without a crossing point: the branch breaks here
                 branches.push(std::mem::take(&mut current));
             }
-            prev = Some((x, hx));
+            prev_h = Some(hx);
             if let Some(a) = self.chart.affine_with(&s.x, h) {
                 current.push(a);
                 if s.singular {
