@@ -1766,14 +1766,76 @@ struct Walk {
     flip: bool,
 }
 
+/// A polyline being built: its unit vectors, and the marks of those that are crossings of the
+/// plane at infinity or singular points (the few points that carry one).
+#[derive(Default)]
+struct Line {
+    x: Vec<[f64; 4]>,
+    /// `(index, at infinity, singular)`, ascending, at most one per index, never both false.
+    marks: Vec<(usize, bool, bool)>,
+}
+
+impl Line {
+    fn len(&self) -> usize {
+        self.x.len()
+    }
+
+    /// Appends the point of `s` with its marks.
+    #[inline(always)]
+    fn push(&mut self, s: &Sample) {
+        if s.at_infinity || s.singular {
+            self.marks.push((self.x.len(), s.at_infinity, s.singular));
+        }
+        self.x.push(s.x);
+    }
+
+    /// Joins the marks `(at_infinity, singular)` to those of point `k`.
+    fn mark(&mut self, k: usize, at_infinity: bool, singular: bool) {
+        if !(at_infinity || singular) {
+            return;
+        }
+        let at = self.marks.partition_point(|m| m.0 < k);
+        match self.marks.get_mut(at) {
+            Some(m) if m.0 == k => {
+                m.1 |= at_infinity;
+                m.2 |= singular;
+            }
+            _ => self.marks.insert(at, (k, at_infinity, singular)),
+        }
+    }
+
+    /// Removes the last point; its marks.
+    fn pop(&mut self) -> (bool, bool) {
+        self.x.pop();
+        match self.marks.last() {
+            Some(&(k, inf, sing)) if k == self.x.len() => {
+                self.marks.pop();
+                (inf, sing)
+            }
+            _ => (false, false),
+        }
+    }
+
+    /// Reverses the points from `start` on, with their marks.
+    fn reverse_from(&mut self, start: usize) {
+        let end = self.x.len();
+        self.x[start..].reverse();
+        let m0 = self.marks.partition_point(|m| m.0 < start);
+        for m in &mut self.marks[m0..] {
+            m.0 = start + end - 1 - m.0;
+        }
+        self.marks[m0..].reverse();
+    }
+}
+
 /// Appends `s` to `line` with its sign chosen so that its dot product with the last point is
 /// nonnegative; whether it was negated.
-fn push_oriented(line: &mut Vec<Sample>, mut s: Sample) -> bool {
-    let flip = line.last().is_some_and(|l| dot(&l.x, &s.x) < 0.0);
+fn push_oriented(line: &mut Line, mut s: Sample) -> bool {
+    let flip = line.x.last().is_some_and(|l| dot(l, &s.x) < 0.0);
     if flip {
         s.x = s.x.map(|v| -v);
     }
-    line.push(s);
+    line.push(&s);
     flip
 }
 
@@ -2038,7 +2100,7 @@ impl Sampler<'_> {
         arc: &Arc,
         n: usize,
         budget: &mut usize,
-        line: &mut Vec<Sample>,
+        line: &mut Line,
     ) -> Result<(), Error> {
         let sp = span(&arc.range, &|r| self.end_value(r))?;
         let (t0, t1) = sp.theta;
@@ -2060,13 +2122,12 @@ impl Sampler<'_> {
         let first = marked(self.at_end(sp.ends.0, t0, t1, sheet)?, ends[0]);
         let last = marked(self.at_end(sp.ends.1, t1, t0, sheet)?, ends[1]);
         let start = line.len();
-        line.reserve(n + n / 8 + events.len() + 4);
-        let joins = |a: &Sample, b: &Sample| dot(&a.x, &b.x).abs() >= 1.0 - 1e-12;
-        let flip = match line.last_mut() {
-            Some(l) if !arc.reversed && joins(l, &first) => {
-                l.at_infinity |= first.at_infinity;
-                l.singular |= first.singular;
-                dot(&l.x, &first.x) < 0.0
+        line.x.reserve(n + n / 8 + events.len() + 4);
+        let joins = |a: &[f64; 4], b: &[f64; 4]| dot(a, b).abs() >= 1.0 - 1e-12;
+        let flip = match line.x.last() {
+            Some(&l) if !arc.reversed && joins(&l, &first.x) => {
+                line.mark(start - 1, first.at_infinity, first.singular);
+                dot(&l, &first.x) < 0.0
             }
             _ => push_oriented(line, first),
         };
@@ -2116,17 +2177,17 @@ impl Sampler<'_> {
             self.walk_to(&mut walk, *e, sheet, budget, line)?;
         }
         if arc.reversed {
-            if start > 0 && line.len() > start + 1 && joins(&line[start - 1], &line[line.len() - 1])
-            {
-                let l = line.pop().expect("nonempty");
-                line[start - 1].at_infinity |= l.at_infinity;
-                line[start - 1].singular |= l.singular;
+            let x = &line.x;
+            if start > 0 && x.len() > start + 1 && joins(&x[start - 1], &x[x.len() - 1]) {
+                let (inf, sing) = line.pop();
+                line.mark(start - 1, inf, sing);
             }
-            line[start..].reverse();
+            line.reverse_from(start);
             // oriented within the arc; the whole arc negated where it meets the line reversed
-            if start > 0 && line.len() > start && dot(&line[start - 1].x, &line[start].x) < 0.0 {
-                for s in &mut line[start..] {
-                    s.x = s.x.map(|v| -v);
+            let x = &mut line.x;
+            if start > 0 && x.len() > start && dot(&x[start - 1], &x[start]) < 0.0 {
+                for v in &mut x[start..] {
+                    *v = v.map(|c| -c);
                 }
             }
         }
@@ -2143,7 +2204,7 @@ impl Sampler<'_> {
         q: Sample,
         sheet: Sheet,
         budget: &mut usize,
-        line: &mut Vec<Sample>,
+        line: &mut Line,
     ) -> Result<(), Error> {
         let d = dot(&walk.prev.x, &q.x);
         if self.tolerance.is_none() && d >= MAX_ANGLE.cos() {
@@ -2161,7 +2222,7 @@ impl Sampler<'_> {
         q: Sample,
         sheet: Sheet,
         budget: &mut usize,
-        line: &mut Vec<Sample>,
+        line: &mut Line,
     ) -> Result<(), Error> {
         walk.stack.push((q, 0));
         while let Some((q, depth)) = walk.stack.pop() {
@@ -2193,7 +2254,7 @@ impl Sampler<'_> {
         q: Sample,
         d: f64,
         sheet: Sheet,
-        line: &mut Vec<Sample>,
+        line: &mut Line,
     ) -> Result<(), Error> {
         let pushed = line.len();
         if walk.unknown {
@@ -2203,8 +2264,8 @@ impl Sampler<'_> {
             // crossing: the rounding of h near it says nothing
             let exact_end = walk.prev.at_infinity || q.at_infinity;
             if hp == 0.0 {
-                if let Some(l) = line.last_mut() {
-                    l.at_infinity = true;
+                if line.len() > 0 {
+                    line.mark(line.len() - 1, true, false);
                 }
             } else if !exact_end {
                 let hq_along = if d < 0.0 { -hq } else { hq };
@@ -2238,7 +2299,7 @@ impl Sampler<'_> {
         if line.len() == pushed {
             // oriented against the last point: `d` is the dot product with its raw vector
             let flip = (d < 0.0) != walk.flip;
-            line.push(if flip {
+            line.push(&if flip {
                 Sample {
                     x: q.x.map(|v| -v),
                     ..q
@@ -2264,15 +2325,16 @@ impl Sampler<'_> {
         budget: &mut usize,
     ) -> Result<SampledPiece, Error> {
         let n = points.div_ceil(arcs.len().max(1)).max(8) + 1;
-        let mut line: Vec<Sample> = Vec::with_capacity(arcs.len() * (n + n / 8 + 8));
+        let mut line = Line {
+            x: Vec::with_capacity(arcs.len() * (n + n / 8 + 8)),
+            marks: Vec::new(),
+        };
         for arc in arcs {
             self.arc_into(arc, n, budget, &mut line)?;
         }
         if closed && line.len() > 1 {
-            let last = line.len() - 1;
-            line[0].at_infinity |= line[last].at_infinity;
-            line[0].singular |= line[last].singular;
-            line.pop();
+            let (inf, sing) = line.pop();
+            line.mark(0, inf, sing);
         }
         // oriented as walked: consecutive dot products nonnegative
         let affine = if matches!(self.crossings, Crossings::InPlane) {
@@ -2285,8 +2347,8 @@ impl Sampler<'_> {
         } else {
             self.affine(&line, closed)
         };
-        let mut pts: Vec<[f64; 4]> = Vec::with_capacity(line.len() + 1);
-        pts.extend(line.iter().map(|s| s.x));
+        let breaks = line.marks.iter().filter(|m| m.2).map(|m| m.0).collect();
+        let mut pts = line.x;
         if closed && !pts.is_empty() {
             let first = pts[0];
             let last = pts[pts.len() - 1];
@@ -2296,12 +2358,6 @@ impl Sampler<'_> {
                 first
             });
         }
-        let breaks = line
-            .iter()
-            .enumerate()
-            .filter(|(_, s)| s.singular)
-            .map(|(k, _)| k)
-            .collect();
         Ok(SampledPiece {
             component,
             isolated: false,
@@ -2379,18 +2435,18 @@ impl Sampler<'_> {
     /// Splits the oriented polyline at its crossings with the plane at infinity (the branches
     /// end before and start after them) and at its real singular points (both branches keep
     /// the point).
-    fn affine(&self, line: &[Sample], closed: bool) -> AffinePiece {
-        let n = line.len();
+    fn affine(&self, line: &Line, closed: bool) -> AffinePiece {
+        let (x, marks) = (&line.x, &line.marks);
+        let n = x.len();
         let points_at_infinity: Vec<[f64; 4]> =
-            line.iter().filter(|s| s.at_infinity).map(|s| s.x).collect();
-        let first_cut = line.iter().position(|s| s.at_infinity || s.singular);
+            marks.iter().filter(|m| m.1).map(|m| x[m.0]).collect();
+        let first_cut = marks.first().map(|m| m.0);
         let mut branches = Vec::new();
-        let mut current: Vec<[f64; 3]> = Vec::new();
         let (first, count) = match first_cut {
             Some(k) if closed => (k, n + 1),
             _ => (0, n),
         };
-        current.reserve(n);
+        let mut current: Vec<[f64; 3]> = Vec::with_capacity(count);
         // the line is oriented, but a loop may come back reversed at its start: `sign`
         // orients along the walk from there on; `prev_h` is h of the previous point so
         // oriented (`None` after a crossing)
@@ -2398,16 +2454,32 @@ impl Sampler<'_> {
         let mut prev_h: Option<f64> = None;
         // `current` holds only the singular point it restarts from
         let mut restarted = false;
+        // the next mark in the order of the walk
+        let mut mi = 0;
         for j in 0..count {
-            let k = if j + first >= n {
-                j + first - n
-            } else {
-                j + first
+            let mut k = j + first;
+            if k >= n {
+                k -= n;
+                if k == 0 {
+                    mi = 0;
+                    if j > 0 && prev_h.is_some() && dot(&x[n - 1], &x[0]) < 0.0 {
+                        sign = -sign;
+                    }
+                }
+            }
+            let (at_infinity, singular) = match marks.get(mi) {
+                Some(&(i, inf, sing)) if i == k => {
+                    mi += 1;
+                    (inf, sing)
+                }
+                _ => (false, false),
             };
-            let s = &line[k];
-            if s.at_infinity {
+            if at_infinity {
                 if !current.is_empty() && !restarted {
-                    branches.push(std::mem::take(&mut current));
+                    branches.push(std::mem::replace(
+                        &mut current,
+                        Vec::with_capacity(count - j),
+                    ));
                 }
                 current.clear();
                 restarted = false;
@@ -2415,22 +2487,26 @@ impl Sampler<'_> {
                 sign = 1.0;
                 continue;
             }
-            if k == 0 && j > 0 && prev_h.is_some() && dot(&line[n - 1].x, &s.x) < 0.0 {
-                sign = -sign;
-            }
-            let h = self.chart.value(&s.x);
+            let p = &x[k];
+            let h = self.chart.value(p);
             let hx = sign * h;
             if prev_h.is_some_and(|hp| (hp > 0.0) != (hx > 0.0)) {
                 // a sign change of h without a crossing point: the branch breaks here
-                branches.push(std::mem::take(&mut current));
+                branches.push(std::mem::replace(
+                    &mut current,
+                    Vec::with_capacity(count - j),
+                ));
             }
             prev_h = Some(hx);
-            if let Some(a) = self.chart.affine_with(&s.x, h) {
+            if let Some(a) = self.chart.affine_with(p, h) {
                 current.push(a);
-                if s.singular {
+                if singular {
                     // the branch ends at the singular point and the next one starts there
                     if current.len() > 1 {
-                        branches.push(std::mem::take(&mut current));
+                        branches.push(std::mem::replace(
+                            &mut current,
+                            Vec::with_capacity(count - j),
+                        ));
                     }
                     current.clear();
                     current.push(a);
