@@ -2144,7 +2144,11 @@ impl Sampler<'_> {
         let mut ei = 0;
         let event_theta = |ei: usize| events.get(ei).map_or(f64::INFINITY, |e| e.theta);
         let mut next = event_theta(0);
-        for k in 1..=n {
+        let mut k = 1;
+        while k <= n {
+            if k < n && self.tolerance.is_none() {
+                k = self.fast_run(&mut walk, &grid, k, n, (t0, step), next, line);
+            }
             let g = if k < n {
                 let th = t0 + step * (k as f64);
                 let x = grid[k - 1];
@@ -2168,10 +2172,12 @@ impl Sampler<'_> {
                     next = event_theta(ei);
                 }
                 if same {
+                    k += 1;
                     continue;
                 }
             }
             self.walk_to(&mut walk, g, sheet, budget, line)?;
+            k += 1;
         }
         for e in &events[ei..] {
             self.walk_to(&mut walk, *e, sheet, budget, line)?;
@@ -2192,6 +2198,55 @@ impl Sampler<'_> {
             }
         }
         Ok(())
+    }
+
+    /// The usual case of [`Sampler::walk_to`] on the grid points `k, k + 1, …` (`grid[k − 1]`
+    /// at `θ = t₀ + k·step`) before the next event (at `next`) without a tolerance: each
+    /// within [`MAX_ANGLE`] of the last and, where the crossings are not known exactly, with
+    /// no sign change of `h`; appended oriented. Returns the first grid index not taken.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn fast_run(
+        &self,
+        walk: &mut Walk,
+        grid: &[[f64; 4]],
+        mut k: usize,
+        n: usize,
+        (t0, step): (f64, f64),
+        next: f64,
+        line: &mut Line,
+    ) -> usize {
+        // a point known exactly to be at infinity is left to `accept`
+        if walk.unknown && walk.prev.at_infinity {
+            return k;
+        }
+        let cos = MAX_ANGLE.cos();
+        let (mut px, mut hp, mut th) = (walk.prev.x, walk.h_prev, walk.prev.theta);
+        let first = k;
+        while k < n {
+            let x = grid[k - 1];
+            let t = t0 + step * (k as f64);
+            // `d ≥ cos > 0`: no change of orientation (false for NaN, a failed point)
+            let d = dot(&px, &x);
+            if next <= t + 1e-12 || !(d >= cos) {
+                break;
+            }
+            if walk.unknown {
+                let hq = self.chart.value(&x);
+                if hp == 0.0 || (hq != 0.0 && (hp > 0.0) != (hq > 0.0)) {
+                    break;
+                }
+                hp = hq;
+            }
+            line.x.push(if walk.flip { x.map(|v| -v) } else { x });
+            (px, th) = (x, t);
+            k += 1;
+        }
+        if k > first {
+            walk.prev = Sample::new(th, px);
+            walk.h_prev = hp;
+        }
+        k
     }
 
     /// Extends the polyline from `walk.prev` to `q`: bisected until [`Sampler::split`] is
