@@ -755,10 +755,18 @@ fn int_dd(v: &IBig) -> Dd {
         }
     }
     if let Ok(small) = i128::try_from(v) {
-        // hi rounds to nearest; for |v| < 2¹²⁷ the rest is exact in i128
-        let hi = small as f64;
-        if hi.abs() < 1.0e38 {
-            return Dd::two_sum(hi, (small - hi as i128) as f64);
+        return i128_dd(small);
+    }
+    // beyond 2¹²⁷: the leading 120 bits (the rest is below the double-double's precision)
+    let e = {
+        use dashu_int::ops::BitTest;
+        v.bit_len() - 120
+    };
+    if e <= 900 {
+        if let Ok(top) = i128::try_from(&(v >> e)) {
+            let d = i128_dd(top);
+            let scale = f64::from_bits(((1023 + e) as u64) << 52);
+            return Dd(d.0 * scale, d.1 * scale);
         }
     }
     let hi = v.to_f64().value();
@@ -768,6 +776,28 @@ fn int_dd(v: &IBig) -> Dd {
     // |hi| ≥ 2⁵³: an integer, so the remainder is exact
     let lo = (v - integral_f64_to_ibig(hi)).to_f64().value();
     Dd(hi, lo)
+}
+
+/// An `i128` in double-double: its leading 53 bits (exact) plus the rest rounded, in
+/// machine integers only.
+fn i128_dd(v: i128) -> Dd {
+    let m = v.unsigned_abs();
+    let bits = 128 - m.leading_zeros();
+    if bits <= 53 {
+        let x = (m as u64) as f64;
+        return Dd(if v < 0 { -x } else { x }, 0.0);
+    }
+    let e = bits - 53;
+    let top = (m >> e) as u64;
+    let scale = f64::from_bits(((1023 + e) as u64) << 52);
+    let rest = m - ((top as u128) << e);
+    let rest_f = ((rest >> 64) as u64) as f64 * 18446744073709551616.0 + (rest as u64) as f64;
+    let d = Dd::two_sum(top as f64 * scale, rest_f);
+    if v < 0 {
+        d.neg()
+    } else {
+        d
+    }
 }
 
 /// `α` in double-double and `δ` when `α = ±√δ`, a root of `x² − δ` (Newton step in
@@ -2223,9 +2253,10 @@ impl Sampler<'_> {
         let cos = MAX_ANGLE.cos();
         let (mut px, mut hp, mut th) = (walk.prev.x, walk.h_prev, walk.prev.theta);
         let first = k;
+        let mut kf = k as f64;
         while k < n {
             let x = grid[k - 1];
-            let t = t0 + step * (k as f64);
+            let t = t0 + step * kf;
             // `d ≥ cos > 0`: no change of orientation (false for NaN, a failed point)
             let d = dot(&px, &x);
             if next <= t + 1e-12 || !(d >= cos) {
@@ -2241,6 +2272,7 @@ impl Sampler<'_> {
             line.x.push(if walk.flip { x.map(|v| -v) } else { x });
             (px, th) = (x, t);
             k += 1;
+            kf += 1.0;
         }
         if k > first {
             walk.prev = Sample::new(th, px);
@@ -2509,9 +2541,48 @@ impl Sampler<'_> {
         let mut prev_h: Option<f64> = None;
         // `current` holds only the singular point it restarts from
         let mut restarted = false;
-        // the next mark in the order of the walk
-        let mut mi = 0;
-        for j in 0..count {
+        // the steps `j` where a mark is met or the loop wraps round to point 0, ascending:
+        // between them a run of plain points
+        let cut = closed && first_cut.is_some();
+        let mut special: Vec<usize> = marks.iter().map(|m| m.0 - first).collect();
+        if cut {
+            special.push(n);
+            special.push(n - first);
+        }
+        special.sort_unstable();
+        special.dedup();
+        // the next mark in the order of the walk, the next special step
+        let (mut mi, mut si) = (0, 0);
+        let mut j = 0;
+        while j < count {
+            let stop = special.get(si).map_or(count, |&s| s.min(count));
+            if j < stop {
+                // a run of plain points, `k` contiguous
+                let k0 = if j + first >= n {
+                    j + first - n
+                } else {
+                    j + first
+                };
+                for p in &x[k0..k0 + (stop - j)] {
+                    let h = self.chart.value(p);
+                    let hx = sign * h;
+                    if prev_h.is_some_and(|hp| (hp > 0.0) != (hx > 0.0)) {
+                        // a sign change of h without a crossing point: the branch breaks here
+                        branches.push(std::mem::replace(
+                            &mut current,
+                            Vec::with_capacity(count - j),
+                        ));
+                    }
+                    prev_h = Some(hx);
+                    if let Some(a) = self.chart.affine_with(p, h) {
+                        current.push(a);
+                        restarted = false;
+                    }
+                }
+                j = stop;
+                continue;
+            }
+            si += 1;
             let mut k = j + first;
             if k >= n {
                 k -= n;
@@ -2529,11 +2600,12 @@ impl Sampler<'_> {
                 }
                 _ => (false, false),
             };
+            j += 1;
             if at_infinity {
                 if !current.is_empty() && !restarted {
                     branches.push(std::mem::replace(
                         &mut current,
-                        Vec::with_capacity(count - j),
+                        Vec::with_capacity(count - j + 1),
                     ));
                 }
                 current.clear();
@@ -2549,7 +2621,7 @@ impl Sampler<'_> {
                 // a sign change of h without a crossing point: the branch breaks here
                 branches.push(std::mem::replace(
                     &mut current,
-                    Vec::with_capacity(count - j),
+                    Vec::with_capacity(count - j + 1),
                 ));
             }
             prev_h = Some(hx);
@@ -2560,7 +2632,7 @@ impl Sampler<'_> {
                     if current.len() > 1 {
                         branches.push(std::mem::replace(
                             &mut current,
-                            Vec::with_capacity(count - j),
+                            Vec::with_capacity(count - j + 1),
                         ));
                     }
                     current.clear();
