@@ -2254,6 +2254,8 @@ impl Sampler<'_> {
         let (mut px, mut hp, mut th) = (walk.prev.x, walk.h_prev, walk.prev.theta);
         let first = k;
         let mut kf = k as f64;
+        let (unknown, flip) = (walk.unknown, walk.flip);
+        let out = &mut line.x;
         while k < n {
             let x = grid[k - 1];
             let t = t0 + step * kf;
@@ -2262,14 +2264,15 @@ impl Sampler<'_> {
             if next <= t + 1e-12 || !(d >= cos) {
                 break;
             }
-            if walk.unknown {
+            if unknown {
                 let hq = self.chart.value(&x);
-                if hp == 0.0 || (hq != 0.0 && (hp > 0.0) != (hq > 0.0)) {
+                // h at zero, or a sign change (by the sign bits, `hq` nonzero)
+                if hp == 0.0 || ((hp.to_bits() ^ hq.to_bits()) >> 63 == 1 && hq != 0.0) {
                     break;
                 }
                 hp = hq;
             }
-            line.x.push(if walk.flip { x.map(|v| -v) } else { x });
+            out.push(if flip { x.map(|v| -v) } else { x });
             (px, th) = (x, t);
             k += 1;
             kf += 1.0;
