@@ -1869,6 +1869,9 @@ fn push_oriented(line: &mut Line, mut s: Sample) -> bool {
     flip
 }
 
+/// A grid kept for the other sheet: `(t₀, step, n)` as bits, the sheet, its points.
+type OtherSheet = ((u64, u64, usize), Sheet, Vec<[f64; 4]>);
+
 /// Samples the pieces of one component.
 struct Sampler<'a> {
     eval: Evaluator<'a>,
@@ -1881,7 +1884,7 @@ struct Sampler<'a> {
     approx: &'a Approximations,
     /// The grid of the other sheet made with the last one of Levin's form: `(t₀, step, n)`
     /// as bits, the sheet and its points ([`Evaluator::grid_both`]).
-    other_sheet: RefCell<Option<((u64, u64, usize), Sheet, Vec<[f64; 4]>)>>,
+    other_sheet: RefCell<Option<OtherSheet>>,
 }
 
 impl Sampler<'_> {
@@ -2261,7 +2264,7 @@ impl Sampler<'_> {
             let t = t0 + step * kf;
             // `d ≥ cos > 0`: no change of orientation (false for NaN, a failed point)
             let d = dot(&px, &x);
-            if next <= t + 1e-12 || !(d >= cos) {
+            if next <= t + 1e-12 || d.partial_cmp(&cos).is_none_or(|o| o.is_lt()) {
                 break;
             }
             if unknown {
