@@ -31,7 +31,8 @@
 //! # Density
 //! Each arc starts from a uniform grid in `θ` (together at least
 //! [`SampleOptions::points`] points per piece; `(sin θ, cos θ)` by rotations of the step,
-//! exact every 64 points), walked in one pass: segments are bisected, from a work list,
+//! exact every 64 points; on Levin's form `a`, `d` and `√s` evaluated once for both sheets),
+//! walked in one pass and oriented as it goes: segments are bisected, from a work list,
 //! until consecutive unit vectors are within [`MAX_ANGLE`] radians up to sign and, with a
 //! tolerance, the chord deviation in the chart is at most the tolerance (checked where the
 //! three points lie within [`AFFINE_RADIUS`] of the origin). At most [`MAX_DEPTH`] bisections
@@ -2723,6 +2724,82 @@ mod tests {
             }
         }
         out
+    }
+
+    /// The grid of both sheets at once ([`Evaluator::grid_both`]) against [`Evaluator::grid`]
+    /// on each sheet and against single evaluations at `(sin θ, cos θ)`, over ranges all
+    /// round ℙ¹.
+    #[test]
+    fn both_sheet_grid_matches_single_evaluations() {
+        let mut checked = 0;
+        for param in levin_params(0x5eed, 4) {
+            let eval = Evaluator::new(&param).unwrap();
+            for (t0, t1) in [(-FRAC_PI_2, FRAC_PI_2), (-0.3, 1.2), (1.0, 1.0 + PI)] {
+                let n = 200;
+                let step = (t1 - t0) / n as f64;
+                let (mut plus, mut minus, mut one) = (Vec::new(), Vec::new(), Vec::new());
+                eval.grid_both(t0, step, n, &mut plus, &mut minus);
+                assert_eq!((plus.len(), minus.len()), (n - 1, n - 1));
+                for (sheet, got) in [(Sheet::Plus, &plus), (Sheet::Minus, &minus)] {
+                    eval.grid(t0, step, n, sheet, &mut one);
+                    assert_eq!(&one, got, "the same operations on one sheet");
+                    for (k, x) in got.iter().enumerate() {
+                        let u = (t0 + step * (k + 1) as f64).sin_cos();
+                        match eval.eval_unit(u, sheet) {
+                            Some(y) if !x[0].is_nan() => {
+                                assert!(dot(x, &y) > 1.0 - 1e-12, "{x:?} {y:?}");
+                                checked += 1;
+                            }
+                            _ => {}
+                        }
+                    }
+                }
+            }
+        }
+        assert!(checked > 4000, "{checked}");
+    }
+
+    /// Marks follow their points through pushes, joins, pops and the reversal of a tail.
+    #[test]
+    fn line_marks_follow_their_points() {
+        let mut line = Line::default();
+        for k in 0..10 {
+            let mut s = Sample::new(k as f64, [k as f64, 1.0, 0.0, 0.0]);
+            s.at_infinity = k == 2 || k == 7;
+            s.singular = k == 8;
+            line.push(&s);
+        }
+        line.mark(4, false, true);
+        line.mark(2, false, true);
+        assert_eq!(
+            line.marks,
+            vec![
+                (2, true, true),
+                (4, false, true),
+                (7, true, false),
+                (8, false, true)
+            ]
+        );
+        line.reverse_from(3);
+        // points 3..10 reversed: index i ↦ 12 − i
+        assert_eq!(line.x[3][0], 9.0);
+        assert_eq!(
+            line.marks,
+            vec![
+                (2, true, true),
+                (4, false, true),
+                (5, true, false),
+                (8, false, true)
+            ]
+        );
+        for &(k, _, _) in &line.marks[1..] {
+            assert!([4.0, 7.0, 8.0].contains(&line.x[k][0]));
+        }
+        assert_eq!(line.pop(), (false, false));
+        // point 8 (the old point 4, singular) joins a crossing
+        line.mark(line.len() - 1, true, false);
+        assert_eq!(line.pop(), (true, true));
+        assert_eq!(line.len(), 8);
     }
 
     /// `x − y√2` for the solutions of Pell's equation `x² − 2y² = 1`: the terms cancel to
