@@ -31,7 +31,8 @@
 //! # Density
 //! Each arc starts from a uniform grid in `θ` (together at least
 //! [`SampleOptions::points`] points per piece; `(sin θ, cos θ)` by rotations of the step,
-//! exact every 64 points), walked in one pass: segments are bisected, from a work list,
+//! exact every 64 points; on Levin's form `a`, `d` and `√s` evaluated once for both sheets),
+//! walked in one pass and oriented as it goes: segments are bisected, from a work list,
 //! until consecutive unit vectors are within [`MAX_ANGLE`] radians up to sign and, with a
 //! tolerance, the chord deviation in the chart is at most the tolerance (checked where the
 //! three points lie within [`AFFINE_RADIUS`] of the origin). At most [`MAX_DEPTH`] bisections
@@ -96,7 +97,7 @@ impl SampleOptions {
         Ok(Chart {
             exact: self.chart.clone(),
             h: self.chart.clone().map(|c| c.to_f64().value()),
-            drop,
+            keep: std::array::from_fn(|k| if k < drop { k } else { k + 1 }),
         })
     }
 
@@ -269,6 +270,7 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
                         chart: &chart,
                         tolerance: options.tolerance,
                         approx: &approx,
+                        other_sheet: RefCell::new(None),
                     });
                 }
                 let sampler = slot.as_ref().expect("made above");
@@ -322,14 +324,22 @@ pub fn verify_on_quadrics(sampled: &Sampled, a: &Quadric, b: &Quadric) -> Result
 
 /// An upper estimate of `log₂|c|` from the bit lengths of its numerator's coefficients (a
 /// polynomial in the field's generator `α`), of `α` and of its denominator; `None` for zero.
-fn log2_estimate(c: &Number) -> Option<f64> {
+/// `log₂ max(|α|, 1)` comes from `alphas`, one entry per field met.
+fn log2_estimate(c: &Number, alphas: &mut Vec<(NumberField, f64)>) -> Option<f64> {
     use dashu_int::ops::BitTest;
-    let alpha = c
-        .field()
-        .map_or(1.0, |k| k.alpha().to_f64().abs().max(1.0).log2());
-    let top = c
-        .numerator()
-        .coeffs()
+    let coeffs = c.numerator().coeffs();
+    let alpha = match c.field().filter(|_| coeffs.len() > 1) {
+        None => 0.0,
+        Some(k) => match alphas.iter().find(|(f, _)| f.same_as(k)) {
+            Some((_, a)) => *a,
+            None => {
+                let a = alpha_log2(k);
+                alphas.push((k.clone(), a));
+                a
+            }
+        },
+    };
+    let top = coeffs
         .iter()
         .enumerate()
         .filter(|(_, v)| *v != &IBig::ZERO)
@@ -338,24 +348,36 @@ fn log2_estimate(c: &Number) -> Option<f64> {
     Some(top + 4.0 - c.denominator().bit_len() as f64 + 1.0)
 }
 
+/// An upper bound of `log₂ max(|α|, 1)` for the generator of `k`: half the bit length of `δ`
+/// for `α = ±√δ`, else from the float of `α`.
+fn alpha_log2(k: &NumberField) -> f64 {
+    use dashu_int::ops::BitTest;
+    let alpha = k.alpha();
+    match alpha.poly().coeffs() {
+        [c0, c1, c2] if c1.is_zero() && *c2 == IBig::ONE => 0.5 * c0.bit_len() as f64,
+        _ => alpha.to_f64().abs().max(1.0).log2(),
+    }
+}
+
 /// `param` scaled by powers of two into the range of `f64`, `None` when it is there already
 /// (every coefficient estimate within `2^±900`). `X = a ± d√s` is projective: `a` and `d`
 /// each get their own factor `2^−eₐ`, `2^−e_d` (the largest estimates) and `s` gets
 /// `2^(2e_d − 2eₐ)`, which keeps the point and both sheets (positive factors).
 fn in_float_range(param: &ComponentParam) -> Option<ComponentParam> {
-    let top = |v: &[NumberPoly]| -> Option<f64> {
-        v.iter()
-            .flat_map(|p| p.coeffs())
-            .filter_map(log2_estimate)
-            .fold(None, |m: Option<f64>, x| Some(m.map_or(x, |m| m.max(x))))
+    let mut alphas: Vec<(NumberField, f64)> = Vec::new();
+    // (largest, smallest) estimate of each part, one pass over the coefficients
+    let mut range = |v: &[NumberPoly]| -> (Option<f64>, f64) {
+        let mut top: Option<f64> = None;
+        let mut bottom = f64::INFINITY;
+        for c in v.iter().flat_map(|p| p.coeffs()) {
+            if let Some(e) = log2_estimate(c, &mut alphas) {
+                top = Some(top.map_or(e, |t| t.max(e)));
+                bottom = bottom.min(e);
+            }
+        }
+        (top, bottom)
     };
-    let bottom = |v: &[NumberPoly]| -> f64 {
-        v.iter()
-            .flat_map(|p| p.coeffs())
-            .filter_map(log2_estimate)
-            .fold(f64::INFINITY, f64::min)
-    };
-    let out_of_range = |v: &[NumberPoly]| top(v).is_some_and(|t| t > 900.0) || bottom(v) < -900.0;
+    let out = |(t, b): (Option<f64>, f64)| t.is_some_and(|t| t > 900.0) || b < -900.0;
     let scale = |v: &[NumberPoly; 4], e: i64| -> [NumberPoly; 4] {
         let k = super::curve::rational(super::expr::power_of_two(e));
         std::array::from_fn(|i| v[i].map(|c| c.mul(&k)))
@@ -363,11 +385,12 @@ fn in_float_range(param: &ComponentParam) -> Option<ComponentParam> {
     match param {
         ComponentParam::Point(_) => None,
         ComponentParam::Rational { x, degree } => {
-            if !out_of_range(x) {
+            let rx = range(x);
+            if !out(rx) {
                 return None;
             }
-            let e = top(x)? as i64;
-            if bottom(x) - (e as f64) < -900.0 {
+            let e = rx.0? as i64;
+            if rx.1 - (e as f64) < -900.0 {
                 return None;
             }
             Some(ComponentParam::Rational {
@@ -382,17 +405,17 @@ fn in_float_range(param: &ComponentParam) -> Option<ComponentParam> {
             alternate,
             s,
         } => {
-            let s_slice = std::slice::from_ref(s);
-            if !(out_of_range(a) || out_of_range(d) || out_of_range(s_slice)) {
+            let (ra, rd, rs) = (range(a), range(d), range(std::slice::from_ref(s)));
+            if !(out(ra) || out(rd) || out(rs)) {
                 return None;
             }
-            let (ea, ed) = (top(a)? as i64, top(d)? as i64);
+            let (ea, ed) = (ra.0? as i64, rd.0? as i64);
             let es = 2 * (ed - ea);
             // every coefficient in range after the scaling (none lost below the floats)
-            let spread = |v: &[NumberPoly], e: i64| {
-                top(v).is_none_or(|t| t + (e as f64) < 900.0) && bottom(v) + (e as f64) > -900.0
+            let spread = |(t, b): (Option<f64>, f64), e: i64| {
+                t.is_none_or(|t| t + (e as f64) < 900.0) && b + (e as f64) > -900.0
             };
-            if !(spread(a, -ea) && spread(d, -ed) && spread(s_slice, es)) {
+            if !(spread(ra, -ea) && spread(rd, -ed) && spread(rs, es)) {
                 return None;
             }
             let k = super::curve::rational(super::expr::power_of_two(es));
@@ -437,7 +460,8 @@ fn singular_params(
 struct Chart {
     exact: [RBig; 4],
     h: [f64; 4],
-    drop: usize,
+    /// The coordinates kept (all but the last whose coefficient in `h` is nonzero).
+    keep: [usize; 3],
 }
 
 impl Chart {
@@ -456,8 +480,8 @@ impl Chart {
         if h == 0.0 {
             return None;
         }
-        let keep = |k: usize| if k < self.drop { k } else { k + 1 };
-        Some([x[keep(0)] / h, x[keep(1)] / h, x[keep(2)] / h])
+        let k = self.keep;
+        Some([x[k[0]] / h, x[k[1]] / h, x[k[2]] / h])
     }
 }
 
@@ -525,8 +549,21 @@ fn sqrt_field_value(num: &Poly, root: Dd, delta: &IBig) -> Option<Dd> {
     if t0.0 == 0.0 || t1.0 == 0.0 || (t0.0 > 0.0) == (t1.0 > 0.0) {
         return Some(t0.add(t1));
     }
-    let norm = c0 * c0 - c1 * c1 * delta;
-    Some(int_dd(&norm).div(t0.add(t1.neg())))
+    // the norm in machine integers where it fits, else in big integers
+    let small = || -> Option<i128> {
+        let (a, b, d) = (
+            i128::try_from(c0).ok()?,
+            i128::try_from(c1).ok()?,
+            i128::try_from(delta).ok()?,
+        );
+        a.checked_mul(a)?
+            .checked_sub(b.checked_mul(b)?.checked_mul(d)?)
+    };
+    let norm = match small() {
+        Some(n) => int_dd(&IBig::from(n)),
+        None => int_dd(&(c0 * c0 - c1 * c1 * delta)),
+    };
+    Some(norm.div(t0.add(t1.neg())))
 }
 
 fn to_f64(c: &Number) -> Result<f64, Error> {
@@ -580,6 +617,9 @@ fn point_piece(
         affine,
     })
 }
+
+/// Grid points between exact values of `(sin θ, cos θ)` ([`Evaluator::grid`]).
+const RESYNC: usize = 64;
 
 /// Most coefficients of one coordinate: homogeneous degree at most 8 (a quartic has 4).
 const MAX_TERMS: usize = 9;
@@ -708,11 +748,26 @@ fn integral_f64_to_ibig(x: f64) -> IBig {
 
 /// An integer in double-double (exact below `2¹⁰⁶` in magnitude, rounded beyond).
 fn int_dd(v: &IBig) -> Dd {
+    if let Ok(small) = i64::try_from(v) {
+        // |v| < 2⁶² keeps `hi as i64` in range; the rest is then exact
+        if small.unsigned_abs() < 1 << 62 {
+            let hi = small as f64;
+            return Dd(hi, (small - hi as i64) as f64);
+        }
+    }
     if let Ok(small) = i128::try_from(v) {
-        // hi rounds to nearest; for |v| < 2¹²⁷ the rest is exact in i128
-        let hi = small as f64;
-        if hi.abs() < 1.0e38 {
-            return Dd::two_sum(hi, (small - hi as i128) as f64);
+        return i128_dd(small);
+    }
+    // beyond 2¹²⁷: the leading 120 bits (the rest is below the double-double's precision)
+    let e = {
+        use dashu_int::ops::BitTest;
+        v.bit_len() - 120
+    };
+    if e <= 900 {
+        if let Ok(top) = i128::try_from(&(v >> e)) {
+            let d = i128_dd(top);
+            let scale = f64::from_bits(((1023 + e) as u64) << 52);
+            return Dd(d.0 * scale, d.1 * scale);
         }
     }
     let hi = v.to_f64().value();
@@ -722,6 +777,28 @@ fn int_dd(v: &IBig) -> Dd {
     // |hi| ≥ 2⁵³: an integer, so the remainder is exact
     let lo = (v - integral_f64_to_ibig(hi)).to_f64().value();
     Dd(hi, lo)
+}
+
+/// An `i128` in double-double: its leading 53 bits (exact) plus the rest rounded, in
+/// machine integers only.
+fn i128_dd(v: i128) -> Dd {
+    let m = v.unsigned_abs();
+    let bits = 128 - m.leading_zeros();
+    if bits <= 53 {
+        let x = (m as u64) as f64;
+        return Dd(if v < 0 { -x } else { x }, 0.0);
+    }
+    let e = bits - 53;
+    let top = (m >> e) as u64;
+    let scale = f64::from_bits(((1023 + e) as u64) << 52);
+    let rest = m - ((top as u128) << e);
+    let rest_f = ((rest >> 64) as u64) as f64 * 18446744073709551616.0 + (rest as u64) as f64;
+    let d = Dd::two_sum(top as f64 * scale, rest_f);
+    if v < 0 {
+        d.neg()
+    } else {
+        d
+    }
 }
 
 /// `α` in double-double and `δ` when `α = ±√δ`, a root of `x² − δ` (Newton step in
@@ -973,13 +1050,128 @@ impl<'a> Evaluator<'a> {
             (false, 4) => self.values::<5, 0>(t, rev, sheet),
             _ => self.values_any(t, rev, sheet),
         };
+        self.unit_of(x, root, t, rev, sheet)
+    }
+
+    /// The unit vector of the value `x` (with `√s = root`) at the reduced parameter `t`,
+    /// certified: the majorant `Σ|cₖ|` first, the bound at `|t|` where it does not certify.
+    #[inline(always)]
+    fn unit_of(&self, x: Lanes, root: f64, t: f64, rev: bool, sheet: Sheet) -> Option<[f64; 4]> {
         let norm = dot(&x, &x).sqrt();
-        // the majorant Σ|cₖ| first, the bound at |t| where it does not certify
         let cheap = self.x_abs_max + self.d_abs_max * root;
         if norm.is_finite() && norm > 0.0 && self.gamma * cheap <= 1e-10 * norm {
             return Some(x.map(|v| v / norm));
         }
         self.certify(t, rev, sheet, x, norm, root)
+    }
+
+    /// [`Evaluator::eval_unit`] on the uniform grid `θₖ = t₀ + k·step`, `k = 1, …, n − 1`,
+    /// written to `out` (cleared first); `[NaN; 4]` where it gives `None`. `(sin θ, cos θ)` by
+    /// rotations of the step, exact every [`RESYNC`] points: the drift stays within a few
+    /// hundred ulps.
+    fn grid(&self, t0: f64, step: f64, n: usize, sheet: Sheet, out: &mut Vec<[f64; 4]>) {
+        match (self.levin, self.big_d) {
+            (true, 2) => self.grid_of::<3, 1>(t0, step, n, sheet, out),
+            (true, 3) => self.grid_of::<4, 2>(t0, step, n, sheet, out),
+            (true, 4) => self.grid_of::<5, 3>(t0, step, n, sheet, out),
+            (false, 1) => self.grid_of::<2, 0>(t0, step, n, sheet, out),
+            (false, 2) => self.grid_of::<3, 0>(t0, step, n, sheet, out),
+            (false, 3) => self.grid_of::<4, 0>(t0, step, n, sheet, out),
+            (false, 4) => self.grid_of::<5, 0>(t0, step, n, sheet, out),
+            _ => {
+                out.clear();
+                out.extend((1..n).map(|k| {
+                    let u = (t0 + step * (k as f64)).sin_cos();
+                    self.eval_unit(u, sheet).unwrap_or([f64::NAN; 4])
+                }));
+            }
+        }
+    }
+
+    /// [`Evaluator::grid`] on both sheets of Levin's form at once (`a`, `d` and `√s`
+    /// evaluated once a point): `plus` and `minus`.
+    fn grid_both(
+        &self,
+        t0: f64,
+        step: f64,
+        n: usize,
+        plus: &mut Vec<[f64; 4]>,
+        minus: &mut Vec<[f64; 4]>,
+    ) {
+        match self.big_d {
+            2 => self.grid_both_of::<3, 1>(t0, step, n, plus, minus),
+            3 => self.grid_both_of::<4, 2>(t0, step, n, plus, minus),
+            4 => self.grid_both_of::<5, 3>(t0, step, n, plus, minus),
+            _ => {
+                self.grid(t0, step, n, Sheet::Plus, plus);
+                self.grid(t0, step, n, Sheet::Minus, minus);
+            }
+        }
+    }
+
+    /// [`Evaluator::grid_both`] for `NA` and `ND` coefficients.
+    #[inline(never)]
+    fn grid_both_of<const NA: usize, const ND: usize>(
+        &self,
+        t0: f64,
+        step: f64,
+        n: usize,
+        plus: &mut Vec<[f64; 4]>,
+        minus: &mut Vec<[f64; 4]>,
+    ) {
+        plus.clear();
+        plus.reserve(n);
+        minus.clear();
+        minus.reserve(n);
+        let (sh, ch) = step.sin_cos();
+        let mut u = (0.0, 1.0);
+        for k in 1..n {
+            u = if k % RESYNC == 1 {
+                (t0 + step * (k as f64)).sin_cos()
+            } else {
+                (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh)
+            };
+            let (t, rev) = reduced_parameter(u);
+            let (a, w, root) = self.parts::<NA, ND>(t, rev);
+            // the same operations as `values` on either sheet
+            let (mut p, mut m) = (a, a);
+            for i in 0..4 {
+                p[i] += root * w[i];
+                m[i] += -root * w[i];
+            }
+            let nan = [f64::NAN; 4];
+            plus.push(self.unit_of(p, root, t, rev, Sheet::Plus).unwrap_or(nan));
+            minus.push(self.unit_of(m, root, t, rev, Sheet::Minus).unwrap_or(nan));
+        }
+    }
+
+    /// [`Evaluator::grid`] for `NA` and `ND` coefficients ([`Evaluator::values`]).
+    #[inline(never)]
+    fn grid_of<const NA: usize, const ND: usize>(
+        &self,
+        t0: f64,
+        step: f64,
+        n: usize,
+        sheet: Sheet,
+        out: &mut Vec<[f64; 4]>,
+    ) {
+        out.clear();
+        out.reserve(n);
+        let (sh, ch) = step.sin_cos();
+        let mut u = (0.0, 1.0);
+        for k in 1..n {
+            u = if k % RESYNC == 1 {
+                (t0 + step * (k as f64)).sin_cos()
+            } else {
+                (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh)
+            };
+            let (t, rev) = reduced_parameter(u);
+            let (x, root) = self.values::<NA, ND>(t, rev, sheet);
+            out.push(
+                self.unit_of(x, root, t, rev, sheet)
+                    .unwrap_or([f64::NAN; 4]),
+            );
+        }
     }
 
     /// `X` (and `√s`, 0 for a rational param) by Horner's rule with `NA` coefficients of `x`
@@ -991,33 +1183,44 @@ impl<'a> Evaluator<'a> {
         rev: bool,
         sheet: Sheet,
     ) -> (Lanes, f64) {
-        let (xc, dc, sc) = if rev {
-            (&self.x, &self.d, &self.s)
-        } else {
-            (&self.x_desc, &self.d_desc, &self.s_desc)
-        };
-        let mut v = [0.0; 4];
-        for c in &xc[..NA] {
-            for i in 0..4 {
-                v[i] = v[i] * t + c[i];
-            }
-        }
+        let (mut v, w, root) = self.parts::<NA, ND>(t, rev);
         if ND == 0 {
             return (v, 0.0);
-        }
-        let s = sc.iter().fold(0.0, |acc, c| acc * t + c);
-        let root = s.max(0.0).sqrt();
-        let mut w = [0.0; 4];
-        for c in &dc[..ND] {
-            for i in 0..4 {
-                w[i] = w[i] * t + c[i];
-            }
         }
         let sr = if sheet == Sheet::Minus { -root } else { root };
         for i in 0..4 {
             v[i] += sr * w[i];
         }
         (v, root)
+    }
+
+    /// `a(t)`, `d(t)` and `√s(t)` ([`Evaluator::values`] before the sheet is chosen), Horner's
+    /// rule started at the leading coefficient.
+    #[inline(always)]
+    fn parts<const NA: usize, const ND: usize>(&self, t: f64, rev: bool) -> (Lanes, Lanes, f64) {
+        let (xc, dc, sc) = if rev {
+            (&self.x, &self.d, &self.s)
+        } else {
+            (&self.x_desc, &self.d_desc, &self.s_desc)
+        };
+        let mut v = xc[0];
+        for c in &xc[1..NA] {
+            for i in 0..4 {
+                v[i] = v[i] * t + c[i];
+            }
+        }
+        if ND == 0 {
+            return (v, [0.0; 4], 0.0);
+        }
+        let s = sc[1..].iter().fold(sc[0], |acc, c| acc * t + c);
+        let root = s.max(0.0).sqrt();
+        let mut w = dc[0];
+        for c in &dc[1..ND] {
+            for i in 0..4 {
+                w[i] = w[i] * t + c[i];
+            }
+        }
+        (v, w, root)
     }
 
     /// [`Evaluator::values`] for any degree.
@@ -1590,7 +1793,85 @@ struct Walk {
     stack: Vec<(Sample, u32)>,
     /// Crossings of the plane at infinity located along the walk (not known exactly).
     unknown: bool,
+    /// The polyline's last point is `−prev.x` (the polyline is oriented as it is walked).
+    flip: bool,
 }
+
+/// A polyline being built: its unit vectors, and the marks of those that are crossings of the
+/// plane at infinity or singular points (the few points that carry one).
+#[derive(Default)]
+struct Line {
+    x: Vec<[f64; 4]>,
+    /// `(index, at infinity, singular)`, ascending, at most one per index, never both false.
+    marks: Vec<(usize, bool, bool)>,
+}
+
+impl Line {
+    fn len(&self) -> usize {
+        self.x.len()
+    }
+
+    /// Appends the point of `s` with its marks.
+    #[inline(always)]
+    fn push(&mut self, s: &Sample) {
+        if s.at_infinity || s.singular {
+            self.marks.push((self.x.len(), s.at_infinity, s.singular));
+        }
+        self.x.push(s.x);
+    }
+
+    /// Joins the marks `(at_infinity, singular)` to those of point `k`.
+    fn mark(&mut self, k: usize, at_infinity: bool, singular: bool) {
+        if !(at_infinity || singular) {
+            return;
+        }
+        let at = self.marks.partition_point(|m| m.0 < k);
+        match self.marks.get_mut(at) {
+            Some(m) if m.0 == k => {
+                m.1 |= at_infinity;
+                m.2 |= singular;
+            }
+            _ => self.marks.insert(at, (k, at_infinity, singular)),
+        }
+    }
+
+    /// Removes the last point; its marks.
+    fn pop(&mut self) -> (bool, bool) {
+        self.x.pop();
+        match self.marks.last() {
+            Some(&(k, inf, sing)) if k == self.x.len() => {
+                self.marks.pop();
+                (inf, sing)
+            }
+            _ => (false, false),
+        }
+    }
+
+    /// Reverses the points from `start` on, with their marks.
+    fn reverse_from(&mut self, start: usize) {
+        let end = self.x.len();
+        self.x[start..].reverse();
+        let m0 = self.marks.partition_point(|m| m.0 < start);
+        for m in &mut self.marks[m0..] {
+            m.0 = start + end - 1 - m.0;
+        }
+        self.marks[m0..].reverse();
+    }
+}
+
+/// Appends `s` to `line` with its sign chosen so that its dot product with the last point is
+/// nonnegative; whether it was negated.
+fn push_oriented(line: &mut Line, mut s: Sample) -> bool {
+    let flip = line.x.last().is_some_and(|l| dot(l, &s.x) < 0.0);
+    if flip {
+        s.x = s.x.map(|v| -v);
+    }
+    line.push(&s);
+    flip
+}
+
+/// A grid kept for the other sheet: `(t₀, step, n)` as bits, the sheet, its points.
+type OtherSheet = ((u64, u64, usize), Sheet, Vec<[f64; 4]>);
 
 /// Samples the pieces of one component.
 struct Sampler<'a> {
@@ -1602,9 +1883,38 @@ struct Sampler<'a> {
     chart: &'a Chart,
     tolerance: Option<f64>,
     approx: &'a Approximations,
+    /// The grid of the other sheet made with the last one of Levin's form: `(t₀, step, n)`
+    /// as bits, the sheet and its points ([`Evaluator::grid_both`]).
+    other_sheet: RefCell<Option<OtherSheet>>,
 }
 
 impl Sampler<'_> {
+    /// The grid of `sheet` on `θₖ = t₀ + k·step` ([`Evaluator::grid`]): on Levin's form both
+    /// sheets at once, the other kept for an arc over the same range.
+    fn grid(&self, t0: f64, step: f64, n: usize, sheet: Sheet, out: &mut Vec<[f64; 4]>) {
+        if !self.eval.levin {
+            return self.eval.grid(t0, step, n, sheet, out);
+        }
+        let key = (t0.to_bits(), step.to_bits(), n);
+        let mut cache = self.other_sheet.borrow_mut();
+        if let Some((k, s, _)) = cache.as_ref() {
+            if *k == key && *s == sheet {
+                let (_, _, v) = cache.take().expect("checked");
+                *out = v;
+                return;
+            }
+        }
+        let mut other = cache.take().map(|(_, _, v)| v).unwrap_or_default();
+        let other_sheet = if sheet == Sheet::Minus {
+            self.eval.grid_both(t0, step, n, &mut other, out);
+            Sheet::Plus
+        } else {
+            self.eval.grid_both(t0, step, n, out, &mut other);
+            Sheet::Minus
+        };
+        *cache = Some((key, other_sheet, other));
+    }
+
     /// A float of an arc end `r`: on Levin's form a root of `s`, found by Newton's method on
     /// `s` inside the isolating interval of `r` (one simple root of `s` there);
     /// [`AlgebraicReal::to_f64`] (once per call) where that does not bracket it or is
@@ -1824,7 +2134,7 @@ impl Sampler<'_> {
         arc: &Arc,
         n: usize,
         budget: &mut usize,
-        line: &mut Vec<Sample>,
+        line: &mut Line,
     ) -> Result<(), Error> {
         let sp = span(&arc.range, &|r| self.end_value(r))?;
         let (t0, t1) = sp.theta;
@@ -1846,67 +2156,136 @@ impl Sampler<'_> {
         let first = marked(self.at_end(sp.ends.0, t0, t1, sheet)?, ends[0]);
         let last = marked(self.at_end(sp.ends.1, t1, t0, sheet)?, ends[1]);
         let start = line.len();
-        line.reserve(n + n / 8 + events.len() + 4);
-        let joins = |a: &Sample, b: &Sample| dot(&a.x, &b.x).abs() >= 1.0 - 1e-12;
-        match line.last_mut() {
-            Some(l) if !arc.reversed && joins(l, &first) => {
-                l.at_infinity |= first.at_infinity;
-                l.singular |= first.singular;
+        line.x.reserve(n + n / 8 + events.len() + 4);
+        let joins = |a: &[f64; 4], b: &[f64; 4]| dot(a, b).abs() >= 1.0 - 1e-12;
+        let flip = match line.x.last() {
+            Some(&l) if !arc.reversed && joins(&l, &first.x) => {
+                line.mark(start - 1, first.at_infinity, first.singular);
+                dot(&l, &first.x) < 0.0
             }
-            _ => line.push(first),
-        }
+            _ => push_oriented(line, first),
+        };
         let mut walk = Walk {
             prev: first,
             h_prev: self.chart.value(&first.x),
             stack: Vec::new(),
             unknown: matches!(self.crossings, Crossings::Unknown),
+            flip,
         };
-        let mut next_event = events.iter().peekable();
-        // (sin θ, cos θ) on the uniform grid by rotations of the step, exact sines every
-        // RESYNC steps: the drift stays within a few hundred ulps
-        const RESYNC: usize = 64;
         let step = (t1 - t0) / (n as f64);
-        let (sh, ch) = step.sin_cos();
-        let mut u = (0.0, 1.0);
-        for k in 1..=n {
+        let mut grid = Vec::new();
+        self.grid(t0, step, n, sheet, &mut grid);
+        let mut ei = 0;
+        let event_theta = |ei: usize| events.get(ei).map_or(f64::INFINITY, |e| e.theta);
+        let mut next = event_theta(0);
+        let mut k = 1;
+        while k <= n {
+            if k < n && self.tolerance.is_none() {
+                k = self.fast_run(&mut walk, &grid, k, n, (t0, step), next, line);
+            }
             let g = if k < n {
                 let th = t0 + step * (k as f64);
-                u = if k % RESYNC == 1 {
-                    th.sin_cos()
+                let x = grid[k - 1];
+                if x[0].is_nan() {
+                    self.at(th, t0, t1, sheet)?
                 } else {
-                    (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh)
-                };
-                match self.eval.eval_unit(u, sheet) {
-                    Some(x) => Sample::new(th, x),
-                    None => self.at_u(th, u, t0, t1, sheet)?,
+                    Sample::new(th, x)
                 }
             } else {
                 last
             };
             // an event goes before the first grid point at or after it; a grid point at the
             // event's parameter is the same point (left out: its rounding could mark it)
-            let mut same = false;
-            while let Some(e) = next_event.next_if(|e| e.theta <= g.theta + 1e-12) {
-                same |= k < n && (g.theta - e.theta).abs() <= 1e-12;
-                self.walk_to(&mut walk, *e, sheet, budget, line)?;
+            if next <= g.theta + 1e-12 {
+                let mut same = false;
+                while next <= g.theta + 1e-12 {
+                    let e = events[ei];
+                    same |= k < n && (g.theta - e.theta).abs() <= 1e-12;
+                    self.walk_to(&mut walk, e, sheet, budget, line)?;
+                    ei += 1;
+                    next = event_theta(ei);
+                }
+                if same {
+                    k += 1;
+                    continue;
+                }
             }
-            if !same {
-                self.walk_to(&mut walk, g, sheet, budget, line)?;
-            }
+            self.walk_to(&mut walk, g, sheet, budget, line)?;
+            k += 1;
         }
-        for e in next_event {
+        for e in &events[ei..] {
             self.walk_to(&mut walk, *e, sheet, budget, line)?;
         }
         if arc.reversed {
-            if start > 0 && line.len() > start + 1 && joins(&line[start - 1], &line[line.len() - 1])
-            {
-                let l = line.pop().expect("nonempty");
-                line[start - 1].at_infinity |= l.at_infinity;
-                line[start - 1].singular |= l.singular;
+            let x = &line.x;
+            if start > 0 && x.len() > start + 1 && joins(&x[start - 1], &x[x.len() - 1]) {
+                let (inf, sing) = line.pop();
+                line.mark(start - 1, inf, sing);
             }
-            line[start..].reverse();
+            line.reverse_from(start);
+            // oriented within the arc; the whole arc negated where it meets the line reversed
+            let x = &mut line.x;
+            if start > 0 && x.len() > start && dot(&x[start - 1], &x[start]) < 0.0 {
+                for v in &mut x[start..] {
+                    *v = v.map(|c| -c);
+                }
+            }
         }
         Ok(())
+    }
+
+    /// The usual case of [`Sampler::walk_to`] on the grid points `k, k + 1, …` (`grid[k − 1]`
+    /// at `θ = t₀ + k·step`) before the next event (at `next`) without a tolerance: each
+    /// within [`MAX_ANGLE`] of the last and, where the crossings are not known exactly, with
+    /// no sign change of `h`; appended oriented. Returns the first grid index not taken.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn fast_run(
+        &self,
+        walk: &mut Walk,
+        grid: &[[f64; 4]],
+        mut k: usize,
+        n: usize,
+        (t0, step): (f64, f64),
+        next: f64,
+        line: &mut Line,
+    ) -> usize {
+        // a point known exactly to be at infinity is left to `accept`
+        if walk.unknown && walk.prev.at_infinity {
+            return k;
+        }
+        let cos = MAX_ANGLE.cos();
+        let (mut px, mut hp, mut th) = (walk.prev.x, walk.h_prev, walk.prev.theta);
+        let first = k;
+        let mut kf = k as f64;
+        let (unknown, flip) = (walk.unknown, walk.flip);
+        let out = &mut line.x;
+        while k < n {
+            let x = grid[k - 1];
+            let t = t0 + step * kf;
+            // `d ≥ cos > 0`: no change of orientation (false for NaN, a failed point)
+            let d = dot(&px, &x);
+            if next <= t + 1e-12 || d.partial_cmp(&cos).is_none_or(|o| o.is_lt()) {
+                break;
+            }
+            if unknown {
+                let hq = self.chart.value(&x);
+                // h at zero, or a sign change (by the sign bits, `hq` nonzero)
+                if hp == 0.0 || ((hp.to_bits() ^ hq.to_bits()) >> 63 == 1 && hq != 0.0) {
+                    break;
+                }
+                hp = hq;
+            }
+            out.push(if flip { x.map(|v| -v) } else { x });
+            (px, th) = (x, t);
+            k += 1;
+            kf += 1.0;
+        }
+        if k > first {
+            walk.prev = Sample::new(th, px);
+            walk.h_prev = hp;
+        }
+        k
     }
 
     /// Extends the polyline from `walk.prev` to `q`: bisected until [`Sampler::split`] is
@@ -1919,7 +2298,7 @@ impl Sampler<'_> {
         q: Sample,
         sheet: Sheet,
         budget: &mut usize,
-        line: &mut Vec<Sample>,
+        line: &mut Line,
     ) -> Result<(), Error> {
         let d = dot(&walk.prev.x, &q.x);
         if self.tolerance.is_none() && d >= MAX_ANGLE.cos() {
@@ -1937,7 +2316,7 @@ impl Sampler<'_> {
         q: Sample,
         sheet: Sheet,
         budget: &mut usize,
-        line: &mut Vec<Sample>,
+        line: &mut Line,
     ) -> Result<(), Error> {
         walk.stack.push((q, 0));
         while let Some((q, depth)) = walk.stack.pop() {
@@ -1969,8 +2348,9 @@ impl Sampler<'_> {
         q: Sample,
         d: f64,
         sheet: Sheet,
-        line: &mut Vec<Sample>,
+        line: &mut Line,
     ) -> Result<(), Error> {
+        let pushed = line.len();
         if walk.unknown {
             let hp = walk.h_prev;
             let hq = self.chart.value(&q.x);
@@ -1978,8 +2358,8 @@ impl Sampler<'_> {
             // crossing: the rounding of h near it says nothing
             let exact_end = walk.prev.at_infinity || q.at_infinity;
             if hp == 0.0 {
-                if let Some(l) = line.last_mut() {
-                    l.at_infinity = true;
+                if line.len() > 0 {
+                    line.mark(line.len() - 1, true, false);
                 }
             } else if !exact_end {
                 let hq_along = if d < 0.0 { -hq } else { hq };
@@ -1996,13 +2376,13 @@ impl Sampler<'_> {
                         };
                         if walk.prev.singular {
                             if let Some(m) = mid(&walk.prev, &c)? {
-                                line.push(m);
+                                push_oriented(line, m);
                             }
                         }
-                        line.push(c);
+                        push_oriented(line, c);
                         if q.singular {
                             if let Some(m) = mid(&c, &q)? {
-                                line.push(m);
+                                push_oriented(line, m);
                             }
                         }
                     }
@@ -2010,7 +2390,21 @@ impl Sampler<'_> {
             }
             walk.h_prev = hq;
         }
-        line.push(q);
+        if line.len() == pushed {
+            // oriented against the last point: `d` is the dot product with its raw vector
+            let flip = (d < 0.0) != walk.flip;
+            line.push(&if flip {
+                Sample {
+                    x: q.x.map(|v| -v),
+                    ..q
+                }
+            } else {
+                q
+            });
+            walk.flip = flip;
+        } else {
+            walk.flip = push_oriented(line, q);
+        }
         walk.prev = q;
         Ok(())
     }
@@ -2025,22 +2419,18 @@ impl Sampler<'_> {
         budget: &mut usize,
     ) -> Result<SampledPiece, Error> {
         let n = points.div_ceil(arcs.len().max(1)).max(8) + 1;
-        let mut line: Vec<Sample> = Vec::with_capacity(arcs.len() * (n + n / 8 + 8));
+        let mut line = Line {
+            x: Vec::with_capacity(arcs.len() * (n + n / 8 + 8)),
+            marks: Vec::new(),
+        };
         for arc in arcs {
             self.arc_into(arc, n, budget, &mut line)?;
         }
         if closed && line.len() > 1 {
-            let last = line.len() - 1;
-            line[0].at_infinity |= line[last].at_infinity;
-            line[0].singular |= line[last].singular;
-            line.pop();
+            let (inf, sing) = line.pop();
+            line.mark(0, inf, sing);
         }
-        // orient: consecutive dot products nonnegative
-        for k in 1..line.len() {
-            if dot(&line[k - 1].x, &line[k].x) < 0.0 {
-                line[k].x = line[k].x.map(|v| -v);
-            }
-        }
+        // oriented as walked: consecutive dot products nonnegative
         let affine = if matches!(self.crossings, Crossings::InPlane) {
             AffinePiece {
                 branches: Vec::new(),
@@ -2051,8 +2441,8 @@ impl Sampler<'_> {
         } else {
             self.affine(&line, closed)
         };
-        let mut pts: Vec<[f64; 4]> = Vec::with_capacity(line.len() + 1);
-        pts.extend(line.iter().map(|s| s.x));
+        let breaks = line.marks.iter().filter(|m| m.2).map(|m| m.0).collect();
+        let mut pts = line.x;
         if closed && !pts.is_empty() {
             let first = pts[0];
             let last = pts[pts.len() - 1];
@@ -2062,12 +2452,6 @@ impl Sampler<'_> {
                 first
             });
         }
-        let breaks = line
-            .iter()
-            .enumerate()
-            .filter(|(_, s)| s.singular)
-            .map(|(k, _)| k)
-            .collect();
         Ok(SampledPiece {
             component,
             isolated: false,
@@ -2145,50 +2529,118 @@ impl Sampler<'_> {
     /// Splits the oriented polyline at its crossings with the plane at infinity (the branches
     /// end before and start after them) and at its real singular points (both branches keep
     /// the point).
-    fn affine(&self, line: &[Sample], closed: bool) -> AffinePiece {
-        let n = line.len();
+    fn affine(&self, line: &Line, closed: bool) -> AffinePiece {
+        let (x, marks) = (&line.x, &line.marks);
+        let n = x.len();
         let points_at_infinity: Vec<[f64; 4]> =
-            line.iter().filter(|s| s.at_infinity).map(|s| s.x).collect();
-        let first_cut = line.iter().position(|s| s.at_infinity || s.singular);
+            marks.iter().filter(|m| m.1).map(|m| x[m.0]).collect();
+        let first_cut = marks.first().map(|m| m.0);
         let mut branches = Vec::new();
-        let mut current: Vec<[f64; 3]> = Vec::new();
         let (first, count) = match first_cut {
             Some(k) if closed => (k, n + 1),
             _ => (0, n),
         };
-        current.reserve(n);
-        // the previous point oriented along the walk (a loop may come back reversed), and
-        // its h
-        let mut prev: Option<([f64; 4], f64)> = None;
+        let mut current: Vec<[f64; 3]> = Vec::with_capacity(count);
+        // the line is oriented, but a loop may come back reversed at its start: `sign`
+        // orients along the walk from there on; `prev_h` is h of the previous point so
+        // oriented (`None` after a crossing)
+        let mut sign = 1.0;
+        let mut prev_h: Option<f64> = None;
         // `current` holds only the singular point it restarts from
         let mut restarted = false;
-        for j in 0..count {
-            let s = &line[(j + first) % n];
-            if s.at_infinity {
+        // the steps `j` where a mark is met or the loop wraps round to point 0, ascending:
+        // between them a run of plain points
+        let cut = closed && first_cut.is_some();
+        let mut special: Vec<usize> = marks.iter().map(|m| m.0 - first).collect();
+        if cut {
+            special.push(n);
+            special.push(n - first);
+        }
+        special.sort_unstable();
+        special.dedup();
+        // the next mark in the order of the walk, the next special step
+        let (mut mi, mut si) = (0, 0);
+        let mut j = 0;
+        while j < count {
+            let stop = special.get(si).map_or(count, |&s| s.min(count));
+            if j < stop {
+                // a run of plain points, `k` contiguous
+                let k0 = if j + first >= n {
+                    j + first - n
+                } else {
+                    j + first
+                };
+                for p in &x[k0..k0 + (stop - j)] {
+                    let h = self.chart.value(p);
+                    let hx = sign * h;
+                    if prev_h.is_some_and(|hp| (hp > 0.0) != (hx > 0.0)) {
+                        // a sign change of h without a crossing point: the branch breaks here
+                        branches.push(std::mem::replace(
+                            &mut current,
+                            Vec::with_capacity(count - j),
+                        ));
+                    }
+                    prev_h = Some(hx);
+                    if let Some(a) = self.chart.affine_with(p, h) {
+                        current.push(a);
+                        restarted = false;
+                    }
+                }
+                j = stop;
+                continue;
+            }
+            si += 1;
+            let mut k = j + first;
+            if k >= n {
+                k -= n;
+                if k == 0 {
+                    mi = 0;
+                    if j > 0 && prev_h.is_some() && dot(&x[n - 1], &x[0]) < 0.0 {
+                        sign = -sign;
+                    }
+                }
+            }
+            let (at_infinity, singular) = match marks.get(mi) {
+                Some(&(i, inf, sing)) if i == k => {
+                    mi += 1;
+                    (inf, sing)
+                }
+                _ => (false, false),
+            };
+            j += 1;
+            if at_infinity {
                 if !current.is_empty() && !restarted {
-                    branches.push(std::mem::take(&mut current));
+                    branches.push(std::mem::replace(
+                        &mut current,
+                        Vec::with_capacity(count - j + 1),
+                    ));
                 }
                 current.clear();
                 restarted = false;
-                prev = None;
+                prev_h = None;
+                sign = 1.0;
                 continue;
             }
-            let h = self.chart.value(&s.x);
-            let (x, hx) = match prev {
-                Some((p, _)) if dot(&p, &s.x) < 0.0 => (s.x.map(|v| -v), -h),
-                _ => (s.x, h),
-            };
-            if prev.is_some_and(|(_, hp)| (hp > 0.0) != (hx > 0.0)) {
+            let p = &x[k];
+            let h = self.chart.value(p);
+            let hx = sign * h;
+            if prev_h.is_some_and(|hp| (hp > 0.0) != (hx > 0.0)) {
                 // a sign change of h without a crossing point: the branch breaks here
-                branches.push(std::mem::take(&mut current));
+                branches.push(std::mem::replace(
+                    &mut current,
+                    Vec::with_capacity(count - j + 1),
+                ));
             }
-            prev = Some((x, hx));
-            if let Some(a) = self.chart.affine_with(&s.x, h) {
+            prev_h = Some(hx);
+            if let Some(a) = self.chart.affine_with(p, h) {
                 current.push(a);
-                if s.singular {
+                if singular {
                     // the branch ends at the singular point and the next one starts there
                     if current.len() > 1 {
-                        branches.push(std::mem::take(&mut current));
+                        branches.push(std::mem::replace(
+                            &mut current,
+                            Vec::with_capacity(count - j + 1),
+                        ));
                     }
                     current.clear();
                     current.push(a);
@@ -2272,6 +2724,82 @@ mod tests {
             }
         }
         out
+    }
+
+    /// The grid of both sheets at once ([`Evaluator::grid_both`]) against [`Evaluator::grid`]
+    /// on each sheet and against single evaluations at `(sin θ, cos θ)`, over ranges all
+    /// round ℙ¹.
+    #[test]
+    fn both_sheet_grid_matches_single_evaluations() {
+        let mut checked = 0;
+        for param in levin_params(0x5eed, 4) {
+            let eval = Evaluator::new(&param).unwrap();
+            for (t0, t1) in [(-FRAC_PI_2, FRAC_PI_2), (-0.3, 1.2), (1.0, 1.0 + PI)] {
+                let n = 200;
+                let step = (t1 - t0) / n as f64;
+                let (mut plus, mut minus, mut one) = (Vec::new(), Vec::new(), Vec::new());
+                eval.grid_both(t0, step, n, &mut plus, &mut minus);
+                assert_eq!((plus.len(), minus.len()), (n - 1, n - 1));
+                for (sheet, got) in [(Sheet::Plus, &plus), (Sheet::Minus, &minus)] {
+                    eval.grid(t0, step, n, sheet, &mut one);
+                    assert_eq!(&one, got, "the same operations on one sheet");
+                    for (k, x) in got.iter().enumerate() {
+                        let u = (t0 + step * (k + 1) as f64).sin_cos();
+                        match eval.eval_unit(u, sheet) {
+                            Some(y) if !x[0].is_nan() => {
+                                assert!(dot(x, &y) > 1.0 - 1e-12, "{x:?} {y:?}");
+                                checked += 1;
+                            }
+                            _ => {}
+                        }
+                    }
+                }
+            }
+        }
+        assert!(checked > 4000, "{checked}");
+    }
+
+    /// Marks follow their points through pushes, joins, pops and the reversal of a tail.
+    #[test]
+    fn line_marks_follow_their_points() {
+        let mut line = Line::default();
+        for k in 0..10 {
+            let mut s = Sample::new(k as f64, [k as f64, 1.0, 0.0, 0.0]);
+            s.at_infinity = k == 2 || k == 7;
+            s.singular = k == 8;
+            line.push(&s);
+        }
+        line.mark(4, false, true);
+        line.mark(2, false, true);
+        assert_eq!(
+            line.marks,
+            vec![
+                (2, true, true),
+                (4, false, true),
+                (7, true, false),
+                (8, false, true)
+            ]
+        );
+        line.reverse_from(3);
+        // points 3..10 reversed: index i ↦ 12 − i
+        assert_eq!(line.x[3][0], 9.0);
+        assert_eq!(
+            line.marks,
+            vec![
+                (2, true, true),
+                (4, false, true),
+                (5, true, false),
+                (8, false, true)
+            ]
+        );
+        for &(k, _, _) in &line.marks[1..] {
+            assert!([4.0, 7.0, 8.0].contains(&line.x[k][0]));
+        }
+        assert_eq!(line.pop(), (false, false));
+        // point 8 (the old point 4, singular) joins a crossing
+        line.mark(line.len() - 1, true, false);
+        assert_eq!(line.pop(), (true, true));
+        assert_eq!(line.len(), 8);
     }
 
     /// `x − y√2` for the solutions of Pell's equation `x² − 2y² = 1`: the terms cancel to
