@@ -39,10 +39,12 @@
 //! of `N` pieces, checked by two signs.
 
 pub mod certified;
+mod simplest;
 
 pub use certified::{
     certified_real_roots, certified_real_roots_enclosed, CertifiedRoot, MAX_CERTIFIED_DEGREE,
 };
+pub use simplest::{simplest_between_roots, simplest_rational_in, Bound};
 
 use crate::poly::Poly;
 use crate::sign::Sign;
