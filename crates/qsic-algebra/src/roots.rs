@@ -44,7 +44,7 @@ mod simplest;
 pub use certified::{
     certified_real_roots, certified_real_roots_enclosed, CertifiedRoot, MAX_CERTIFIED_DEGREE,
 };
-pub use simplest::{simplest_between_roots, simplest_rational_in, Bound};
+pub use simplest::{between_roots, floor_of_root, simplest_rational_in, Bound};
 
 use crate::poly::Poly;
 use crate::sign::Sign;

@@ -8,9 +8,9 @@
 //! minors, the elementary divisors at `α` have exponents `ord_α(D_k) − ord_α(D_{k−1})`.
 //! This is exact rational arithmetic and needs no arithmetic in `ℚ(α)`.
 //!
-//! The sample of each arc is the simplest rational strictly between its two roots (least
-//! denominator, then least absolute numerator; [`simplest_between_roots`]): it depends on
-//! the roots only, not on how they were isolated, so the fast path (four simple roots: the
+//! The sample of each arc is a small rational chosen from its roots alone ([`arc_samples`]:
+//! the leftmost of least dyadic denominator between two roots, `⌊α₁⌋ − 1` and `⌈αₖ⌉ + 1`
+//! outside them), not from how they were isolated, so the fast path (four simple roots: the
 //! certified float isolation [`AlgebraicReal::certified_real_roots_of`], which proves `f`
 //! square-free, and signs of `E₁…E₄` at the samples in `i128`) and the exact path give the
 //! same analysis, and the parameterization member chosen from a sample stays the same.
@@ -18,7 +18,7 @@
 use crate::quadric::Quadric;
 use qsic_algebra::matrix::{Inertia, MatrixPencil, SymMatrix4};
 use qsic_algebra::poly::binary::BinaryForm;
-use qsic_algebra::roots::{simplest_between_roots, Bound, RootInterval};
+use qsic_algebra::roots::{between_roots, floor_of_root, simplest_between, Bound, RootInterval};
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Sign};
 use std::cmp::Ordering;
 
@@ -292,55 +292,82 @@ fn sign_homogeneous(c: &[i128], n: i128, d: i128) -> Option<Sign> {
     Some(Sign::of_i128(acc))
 }
 
-/// The simplest rational strictly between two reals given by isolating intervals of roots of
-/// the polynomials with them (`None`: `−∞` on the left, `+∞` on the right), the side of a
-/// rational inside an open interval told by `sign(p, ·)` there against its sign at the lower
-/// end ([`simplest_between_roots`]).
-pub(crate) fn simplest_between_isolated(
-    left: Option<(&RootInterval, &Poly)>,
-    right: Option<(&RootInterval, &Poly)>,
+/// How a rational `q` inside the open isolating interval `iv` of a root of `p` compares with
+/// the root: by `sign(p, q)` against the sign at the interval's lower end.
+fn side_of(
+    iv: &RootInterval,
+    p: &Poly,
+    q: &RBig,
+    sign: &impl Fn(&Poly, &RBig) -> Sign,
+) -> Ordering {
+    let at_q = sign(p, q);
+    if at_q.is_zero() {
+        Ordering::Equal
+    } else if at_q == sign(p, iv.lo()) {
+        Ordering::Less
+    } else {
+        Ordering::Greater
+    }
+}
+
+/// The leftmost rational of least dyadic denominator (an integer if there is one) strictly
+/// between two reals given by isolating intervals of roots of the polynomials with them
+/// ([`between_roots`] with [`simplest_between`]): the same whatever the intervals.
+pub(crate) fn dyadic_between_isolated(
+    left: (&RootInterval, &Poly),
+    right: (&RootInterval, &Poly),
     sign: &impl Fn(&Poly, &RBig) -> Sign,
 ) -> RBig {
-    simplest_between_roots(left.map(|x| x.0), right.map(|x| x.0), |b, q| {
+    let pick = |l: Option<&RBig>, h: Option<&RBig>| {
+        simplest_between(l.expect("bounded"), h.expect("bounded"), false, false)
+    };
+    between_roots(Some(left.0), Some(right.0), pick, |b, q| {
         let (iv, p) = match b {
             Bound::Left => left,
             Bound::Right => right,
-        }
-        .expect("asked only about a given root");
-        let at_q = sign(p, q);
-        if at_q.is_zero() {
-            Ordering::Equal
-        } else if at_q == sign(p, iv.lo()) {
-            Ordering::Less
-        } else {
-            Ordering::Greater
-        }
+        };
+        side_of(iv, p, q, sign)
     })
 }
 
-/// The samples of the arcs of the chart cut by the increasing finite real roots: the
-/// simplest rational left of the first, between consecutive ones, right of the last (`0`
-/// when there is none).
+/// `⌊α⌋` and `⌈α⌉` of the root `α` of `p` isolated by `iv`.
+fn floor_and_ceil(
+    iv: &RootInterval,
+    p: &Poly,
+    sign: &impl Fn(&Poly, &RBig) -> Sign,
+) -> (IBig, IBig) {
+    let n = floor_of_root(iv, |q| side_of(iv, p, q, sign));
+    let integral = match iv {
+        RootInterval::Exact(v) => v.denominator().is_one(),
+        RootInterval::Open(lo, hi) => {
+            let v = RBig::from(n.clone());
+            lo < &v && &v < hi && side_of(iv, p, &v, sign) == Ordering::Equal
+        }
+    };
+    let c = if integral { n.clone() } else { &n + IBig::ONE };
+    (n, c)
+}
+
+/// The samples of the arcs of the chart cut by the increasing finite real roots `α₁ < … <
+/// αₖ`: `⌊α₁⌋ − 1`, the leftmost rational of least dyadic denominator between consecutive
+/// roots ([`dyadic_between_isolated`]), `⌈αₖ⌉ + 1` (`0` when there is no root). They depend
+/// on the roots only, not on their isolating intervals.
 fn arc_samples(finite: &[&AlgebraicReal], sign: &impl Fn(&Poly, &RBig) -> Sign) -> Vec<RBig> {
-    fn iso<'b>(x: &'b AlgebraicReal) -> (&'b RootInterval, &'b Poly) {
-        (x.interval(), x.poly())
-    }
+    let (Some(first), Some(last)) = (finite.first(), finite.last()) else {
+        return vec![RBig::ZERO];
+    };
     let mut out = Vec::with_capacity(finite.len() + 1);
-    out.push(simplest_between_isolated(
-        None,
-        finite.first().map(|x| iso(x)),
-        sign,
-    ));
+    let (lo, _) = floor_and_ceil(first.interval(), first.poly(), sign);
+    out.push(RBig::from(lo - IBig::ONE));
     for w in finite.windows(2) {
-        out.push(simplest_between_isolated(
-            Some(iso(w[0])),
-            Some(iso(w[1])),
+        out.push(dyadic_between_isolated(
+            (w[0].interval(), w[0].poly()),
+            (w[1].interval(), w[1].poly()),
             sign,
         ));
     }
-    if let Some(last) = finite.last() {
-        out.push(simplest_between_isolated(Some(iso(last)), None, sign));
-    }
+    let (_, hi) = floor_and_ceil(last.interval(), last.poly(), sign);
+    out.push(RBig::from(hi + IBig::ONE));
     out
 }
 

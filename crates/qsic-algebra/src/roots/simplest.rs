@@ -1,5 +1,5 @@
-//! The simplest rational of an open interval, and between two isolated roots, independent of
-//! the isolating intervals' shape.
+//! The simplest rational of an open interval; a rational between two isolated roots and the
+//! floor of one, independent of the isolating intervals' shape.
 //!
 //! "Simplest" orders rationals by denominator, then by absolute numerator. In an open
 //! interval the least one is unique (two of one denominator with opposite numerators would
@@ -123,19 +123,22 @@ pub enum Bound {
     Right,
 }
 
-/// The simplest rational (as [`simplest_rational_in`]) strictly between two reals `α < β`,
-/// each given by an interval that isolates it as a root (`None`: `α = −∞` or `β = +∞`; an
-/// exact interval for a known rational). `side(b, q)` compares `q` with the root `b`
-/// (`q.cmp(α)`) for a rational `q` strictly inside that root's open interval, typically from
-/// the sign of its polynomial there.
+/// A rational strictly between two reals `α < β` chosen by `pick` independently of how they
+/// are isolated: each is given by an interval that isolates it as a root (`None`: `α = −∞`
+/// or `β = +∞`; an exact interval for a known rational), and `side(b, q)` compares `q` with
+/// the root `b` (`q.cmp(α)`) for a rational `q` strictly inside that root's open interval,
+/// typically from the sign of its polynomial there.
 ///
-/// The answer depends only on `α` and `β`, not on the intervals: the simplest `q` of
-/// `(lo(α), hi(β))` is the answer unless it falls in one of the open intervals on the wrong
-/// side of its root; then the search interval shrinks to `q` on that side and goes on. Each
-/// `q` is simpler than the next and than the answer, so the loop ends.
+/// `pick(lo, hi)` chooses a rational of the open interval `(lo, hi)` (`None` unbounded) such
+/// that whenever `pick(L, H)` lies in `(l, h) ⊆ (L, H)`, `pick(l, h) = pick(L, H)`, and
+/// that a bounded interval holds finitely many picks of its subintervals: the simplest
+/// rational ([`simplest_rational_in`]) or the leftmost dyadic of least denominator
+/// ([`simplest_between`](super::simplest_between)). The answer is `pick(α, β)`: the pick `q`
+/// of `(lo(α), hi(β))` is the answer unless it falls in one of the open intervals on the
+/// wrong side of its root; then the search interval shrinks to `q` on that side and goes on.
 ///
 /// ```
-/// # use qsic_algebra::{Poly, RBig, roots::{isolate_real_roots, simplest_between_roots, Bound, RootInterval}};
+/// # use qsic_algebra::{Poly, RBig, roots::{isolate_real_roots, between_roots, simplest_rational_in, Bound, RootInterval}};
 /// # use std::cmp::Ordering;
 /// // x² − 2: between −√2 and √2 lies 0; between √2 and +∞, 2
 /// let p = Poly::from_i64s(&[-2, 0, 1]);
@@ -145,39 +148,92 @@ pub enum Bound {
 ///     if at_q.is_zero() { Ordering::Equal } else if at_q == at_lo { Ordering::Less } else { Ordering::Greater }
 /// };
 /// let pick = |a: Option<&RootInterval>, b: Option<&RootInterval>| {
-///     simplest_between_roots(a, b, |s, q| side(if s == Bound::Left { a.unwrap() } else { b.unwrap() }, q))
+///     between_roots(a, b, simplest_rational_in, |s, q| side(if s == Bound::Left { a.unwrap() } else { b.unwrap() }, q))
 /// };
 /// assert_eq!(pick(Some(&r[0]), Some(&r[1])), RBig::ZERO);
 /// assert_eq!(pick(Some(&r[1]), None), RBig::from(2));
 /// // the wide interval (0, 100) of √2 gives the same answer
 /// let wide = RootInterval::Open(RBig::ZERO, RBig::from(100));
-/// assert_eq!(simplest_between_roots(Some(&wide), None, |_, q| side(&wide, q)), RBig::from(2));
+/// assert_eq!(between_roots(Some(&wide), None, simplest_rational_in, |_, q| side(&wide, q)), RBig::from(2));
 /// ```
-pub fn simplest_between_roots(
+pub fn between_roots(
     left: Option<&RootInterval>,
     right: Option<&RootInterval>,
+    pick: impl Fn(Option<&RBig>, Option<&RBig>) -> RBig,
     mut side: impl FnMut(Bound, &RBig) -> Ordering,
 ) -> RBig {
-    // lo ≤ α and β ≤ hi throughout
+    // lo ≤ α < left_hi and right_lo < β ≤ hi throughout; a pick on the wrong side of a root
+    // also halves that root's interval, so that wide intervals cost O(log) picks
     let mut lo = left.map(|iv| iv.lo().clone());
     let mut hi = right.map(|iv| iv.hi().clone());
+    let mut left_hi = match left {
+        Some(RootInterval::Open(_, h)) => Some(h.clone()),
+        _ => None,
+    };
+    let mut right_lo = match right {
+        Some(RootInterval::Open(l, _)) => Some(l.clone()),
+        _ => None,
+    };
+    let half = RBig::from_parts_signed(IBig::ONE, IBig::from(2));
     loop {
-        let q = simplest_rational_in(lo.as_ref(), hi.as_ref());
+        let q = pick(lo.as_ref(), hi.as_ref());
         // q > lo ≥ lo(α): inside α's interval iff below its upper end
-        if let Some(RootInterval::Open(_, left_hi)) = left {
-            if &q < left_hi && side(Bound::Left, &q) != Ordering::Greater {
-                lo = Some(q);
+        if let Some(h) = &mut left_hi {
+            if &q < h && side(Bound::Left, &q) != Ordering::Greater {
+                let m = (&q + &*h) * &half;
+                if side(Bound::Left, &m) == Ordering::Greater {
+                    *h = m;
+                    lo = Some(q);
+                } else {
+                    lo = Some(m);
+                }
                 continue;
             }
         }
-        if let Some(RootInterval::Open(right_lo, _)) = right {
-            if &q > right_lo && side(Bound::Right, &q) != Ordering::Less {
-                hi = Some(q);
+        if let Some(l) = &mut right_lo {
+            if &q > l && side(Bound::Right, &q) != Ordering::Less {
+                let m = (&*l + &q) * &half;
+                if side(Bound::Right, &m) == Ordering::Less {
+                    *l = m;
+                    hi = Some(q);
+                } else {
+                    hi = Some(m);
+                }
                 continue;
             }
         }
         return q;
     }
+}
+
+/// `⌊α⌋` for the root `α` isolated by `iv`, `side(q)` comparing a rational `q` inside the
+/// open interval with `α` (as in [`between_roots`]): a binary search over the integers of
+/// the interval.
+///
+/// ```
+/// # use qsic_algebra::{IBig, RBig, roots::{floor_of_root, RootInterval}};
+/// # use std::cmp::Ordering;
+/// // √2 ∈ (−3, 7): q < √2 iff q < 0 or q² < 2
+/// let iv = RootInterval::Open(RBig::from(-3), RBig::from(7));
+/// let side = |q: &RBig| if q < &RBig::ZERO { Ordering::Less } else { (q * q).cmp(&RBig::from(2)) };
+/// assert_eq!(floor_of_root(&iv, side), IBig::ONE);
+/// ```
+pub fn floor_of_root(iv: &RootInterval, mut side: impl FnMut(&RBig) -> Ordering) -> IBig {
+    let (lo, hi) = match iv {
+        RootInterval::Exact(v) => return v.floor(),
+        RootInterval::Open(lo, hi) => (lo, hi),
+    };
+    // ⌊α⌋ ∈ [n, m): n = ⌊lo⌋ ≤ α, m = ⌈hi⌉ > α
+    let (mut n, mut m) = (lo.floor(), hi.ceil());
+    while &m - &n > IBig::ONE {
+        let mid: IBig = (&n + &m) >> 1;
+        if side(&RBig::from(mid.clone())) == Ordering::Greater {
+            m = mid;
+        } else {
+            n = mid;
+        }
+    }
+    n
 }
 
 #[cfg(test)]
@@ -263,7 +319,7 @@ mod tests {
     #[test]
     fn between_roots_is_independent_of_the_intervals() {
         let mut rng = SplitMix(11);
-        let mut rational = |rng: &mut SplitMix, den: i64| {
+        let rational = |rng: &mut SplitMix, den: i64| {
             RBig::from_parts_signed(rng.int(-400, 400).into(), IBig::from(rng.int(1, den)))
         };
         for _ in 0..2000 {
@@ -273,7 +329,7 @@ mod tests {
             }
             let (a, b) = if a < b { (a, b) } else { (b, a) };
             let want = brute(&a, &b);
-            let mut around = |v: &RBig, rng: &mut SplitMix| match rng.int(0, 3) {
+            let around = |v: &RBig, rng: &mut SplitMix| match rng.int(0, 3) {
                 0 => RootInterval::Exact(v.clone()),
                 _ => {
                     let w = |rng: &mut SplitMix| {
@@ -283,16 +339,49 @@ mod tests {
                 }
             };
             let (ia, ib) = (around(&a, &mut rng), around(&b, &mut rng));
-            let got = simplest_between_roots(Some(&ia), Some(&ib), |s, q| match s {
+            let sides = |s: Bound, q: &RBig| match s {
                 Bound::Left => q.cmp(&a),
                 Bound::Right => q.cmp(&b),
-            });
+            };
+            let got = between_roots(Some(&ia), Some(&ib), simplest_rational_in, sides);
             assert_eq!(got, want, "({a}, {b}) from {ia:?}, {ib:?}");
+            let dyadic = |l: Option<&RBig>, h: Option<&RBig>| {
+                super::super::simplest_between(l.unwrap(), h.unwrap(), false, false)
+            };
+            let got = between_roots(Some(&ia), Some(&ib), dyadic, sides);
+            assert_eq!(
+                got,
+                dyadic(Some(&a), Some(&b)),
+                "({a}, {b}) from {ia:?}, {ib:?}"
+            );
             // half-lines: the simplest below a, above b
-            let below = simplest_between_roots(None, Some(&ia), |_, q| q.cmp(&a));
+            let below = between_roots(None, Some(&ia), simplest_rational_in, |_, q| q.cmp(&a));
             assert_eq!(below, simplest_rational_in(None, Some(&a)));
-            let above = simplest_between_roots(Some(&ib), None, |_, q| q.cmp(&b));
+            let above = between_roots(Some(&ib), None, simplest_rational_in, |_, q| q.cmp(&b));
             assert_eq!(above, simplest_rational_in(Some(&b), None));
+            assert_eq!(floor_of_root(&ia, |q| q.cmp(&a)), a.floor());
+            assert_eq!(floor_of_root(&ib, |q| q.cmp(&b)), b.floor());
         }
+    }
+
+    /// A root far inside a wide interval (10⁹ + 1/2 in (0, 2⁴⁰)): the picks halve the
+    /// interval instead of walking the integers one by one.
+    #[test]
+    fn wide_intervals_cost_logarithmically_many_picks() {
+        let a = RBig::from_parts_signed(IBig::from(2_000_000_001), IBig::from(2));
+        let b = &a + RBig::from_parts_signed(IBig::ONE, IBig::from(1000));
+        let wide = RootInterval::Open(RBig::ZERO, RBig::from(1u64 << 40));
+        let mut calls = 0;
+        let got = between_roots(
+            Some(&wide),
+            Some(&RootInterval::Exact(b.clone())),
+            simplest_rational_in,
+            |_, q| {
+                calls += 1;
+                q.cmp(&a)
+            },
+        );
+        assert_eq!(got, brute(&a, &b));
+        assert!(calls < 200, "{calls} side calls");
     }
 }

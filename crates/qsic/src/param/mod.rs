@@ -35,11 +35,11 @@ pub use surface::{PolyVector, RuledParameterization};
 
 use crate::classify::{analyze_pencil, classify, Classification, ComponentKind, PencilKind};
 use crate::error::Error;
-use crate::pencil::{simplest_between_isolated, PencilAnalysis, PencilPoint};
+use crate::pencil::{dyadic_between_isolated, PencilAnalysis, PencilPoint};
 use crate::quadric::Quadric;
 use qsic_algebra::field::Quadratic;
 use qsic_algebra::roots::{
-    isolate_squarefree_real_roots, rational_between, simplest_rational_in, RootInterval,
+    isolate_squarefree_real_roots, rational_between, simplest_between, RootInterval,
 };
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Sign};
 use surface::{parameterize_cone, parameterize_doubly_ruled, poly_form, q, to_quadratic};
@@ -860,34 +860,35 @@ fn more_candidates(analysis: &PencilAnalysis) -> Vec<(Option<RBig>, SurfaceKind)
 
 /// Small-height rationals of the arc between the roots `lo` and `hi` (isolating interval
 /// and polynomial; unbounded for `None`) other than its `sample`: the simplest ones on
-/// either side of it, then between those and `sample`, then between those and the roots.
-/// Simplest as [`simplest_rational_in`], so they depend on the roots, not on their
-/// intervals.
+/// either side of it, then between those and `sample`, then between those and the roots
+/// ([`simplest_between`]; next to a root, [`dyadic_between_isolated`], so that they depend
+/// on the roots, not on their intervals).
 fn more_samples(
     lo: Option<(&RootInterval, &Poly)>,
     sample: &RBig,
     hi: Option<(&RootInterval, &Poly)>,
 ) -> Vec<RBig> {
     let sign = |p: &Poly, x: &RBig| p.sign_at(x);
+    let one = Poly::constant(IBig::ONE);
     let exact = |x: &RBig| RootInterval::Exact(x.clone());
-    let (at, one) = (exact(sample), Poly::constant(IBig::ONE));
+    let at = exact(sample);
     let left = match lo {
-        Some(l) => simplest_between_isolated(Some(l), Some((&at, &one)), &sign),
+        Some(l) => dyadic_between_isolated(l, (&at, &one), &sign),
         None => sample - RBig::ONE,
     };
     let right = match hi {
-        Some(h) => simplest_between_isolated(Some((&at, &one)), Some(h), &sign),
+        Some(h) => dyadic_between_isolated((&at, &one), h, &sign),
         None => sample + RBig::ONE,
     };
-    let mid_left = simplest_rational_in(Some(&left), Some(sample));
-    let mid_right = simplest_rational_in(Some(sample), Some(&right));
+    let mid_left = simplest_between(&left, sample, false, false);
+    let mid_right = simplest_between(sample, &right, false, false);
     let (at_left, at_right) = (exact(&left), exact(&right));
     let far_left = match lo {
-        Some(l) => simplest_between_isolated(Some(l), Some((&at_left, &one)), &sign),
+        Some(l) => dyadic_between_isolated(l, (&at_left, &one), &sign),
         None => &left - RBig::ONE,
     };
     let far_right = match hi {
-        Some(h) => simplest_between_isolated(Some((&at_right, &one)), Some(h), &sign),
+        Some(h) => dyadic_between_isolated((&at_right, &one), h, &sign),
         None => &right + RBig::ONE,
     };
     vec![left, right, mid_left, mid_right, far_left, far_right]
