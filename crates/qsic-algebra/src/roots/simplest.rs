@@ -102,7 +102,7 @@ fn simplest_nonnegative_big(mut lo: (IBig, IBig), mut hi: Option<(IBig, IBig)>) 
         let next = &n + IBig::ONE;
         // next < hi, i.e. next·hd < hn
         if hi.as_ref().is_none_or(|(hn, hd)| &next * hd < *hn) {
-            return RBig::from_parts_signed(&p * &next + q, IBig::from(&r * &next + u));
+            return RBig::from_parts_signed(&p * &next + q, &r * &next + u);
         }
         let (hn, hd) = hi.expect("bounded: checked above");
         // s ∈ (1/(hi − n), 1/(lo − n)); lo − n = 0 makes the upper end +∞
