@@ -11,11 +11,11 @@
 //!
 //! For degree ≤ [`MAX_CERTIFIED_DEGREE`] the certified float path ([`certified`]: Aberth–
 //! Ehrlich and inclusion disks with rigorous error bounds) gives the same postconditions
-//! with other intervals, or `None`. It is not the default here: callers that pick "the
-//! simplest rational between two roots" (the pencil's parameterization member) would pick
-//! other rationals and change their (correct) results — on `rw2-43` of the stress set a
-//! member with 900-bit coefficients that sampling cannot evaluate. Callers whose results do
-//! not depend on the intervals' shape call it first (`param::discriminant_roots`).
+//! with other intervals, or `None`. It is not the default here: a caller that reads
+//! anything off the intervals' shape would change its (correct) results — the pencil once
+//! picked "the simplest rational between two roots" from the intervals, and on `rw2-43` of
+//! the stress set got a member with 900-bit coefficients; it now picks from the roots alone
+//! ([`between_roots`]) and takes the certified path first, as `param::discriminant_roots`.
 //!
 //! # Method and cost
 //! Positive and negative roots are isolated apart (root 0 is pulled out first), each
@@ -39,10 +39,12 @@
 //! of `N` pieces, checked by two signs.
 
 pub mod certified;
+mod simplest;
 
 pub use certified::{
     certified_real_roots, certified_real_roots_enclosed, CertifiedRoot, MAX_CERTIFIED_DEGREE,
 };
+pub use simplest::{between_roots, floor_of_root, simplest_rational_in, Bound};
 
 use crate::poly::Poly;
 use crate::sign::Sign;

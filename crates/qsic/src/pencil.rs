@@ -7,12 +7,20 @@
 //! root `α` come from the invariant factors of `λA − μB`: with `D_k` the gcd of the `k×k`
 //! minors, the elementary divisors at `α` have exponents `ord_α(D_k) − ord_α(D_{k−1})`.
 //! This is exact rational arithmetic and needs no arithmetic in `ℚ(α)`.
+//!
+//! The sample of each arc is a small rational chosen from its roots alone ([`arc_samples`]:
+//! the leftmost of least dyadic denominator between two roots, `⌊α₁⌋ − 1` and `⌈αₖ⌉ + 1`
+//! outside them), not from how they were isolated, so the fast path (four simple roots: the
+//! certified float isolation [`AlgebraicReal::certified_real_roots_of`], which proves `f`
+//! square-free, and signs of `E₁…E₄` at the samples in `i128`) and the exact path give the
+//! same analysis, and the parameterization member chosen from a sample stays the same.
 
 use crate::quadric::Quadric;
 use qsic_algebra::matrix::{Inertia, MatrixPencil, SymMatrix4};
 use qsic_algebra::poly::binary::BinaryForm;
-use qsic_algebra::roots::{rational_between, RootInterval};
-use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
+use qsic_algebra::roots::{between_roots, floor_of_root, simplest_between, Bound, RootInterval};
+use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Sign};
+use std::cmp::Ordering;
 
 /// A point `(λ : μ)` of the pencil: `(α : 1)` is the member `αA − B`, `(1 : 0)` the member `A`.
 pub use qsic_algebra::poly::binary::ProjectivePoint as PencilPoint;
@@ -219,19 +227,208 @@ fn inertia_at(e: &[Poly; 4], x: &AlgebraicReal) -> Inertia {
     ])
 }
 
-/// Inertia of `λA − B` at a rational `λ`.
-fn inertia_at_rational(e: &[Poly; 4], x: &RBig) -> Inertia {
-    Inertia::from_minor_sum_signs([
-        e[0].sign_at(x),
-        e[1].sign_at(x),
-        e[2].sign_at(x),
-        e[3].sign_at(x),
-    ])
+/// `E₁…E₄` of `λA − B` with their coefficients in `i128` when they fit: the signs at the
+/// samples (small rationals) by Horner's rule on the homogenised form in checked `i128`
+/// arithmetic, the big-integer evaluation when a step overflows.
+struct MinorSumSigns<'a> {
+    e: &'a [Poly; 4],
+    small: Option<[[i128; 5]; 4]>,
+}
+
+impl<'a> MinorSumSigns<'a> {
+    fn new(e: &'a [Poly; 4]) -> MinorSumSigns<'a> {
+        let small = (|| {
+            let mut c = [[0i128; 5]; 4];
+            for (row, p) in c.iter_mut().zip(e) {
+                for (slot, v) in row.iter_mut().zip(p.coeffs()) {
+                    *slot = i128::try_from(v).ok()?;
+                }
+            }
+            Some(c)
+        })();
+        MinorSumSigns { e, small }
+    }
+
+    /// The sign of `E_{k+1}(x)`.
+    fn sign(&self, k: usize, x: &RBig) -> Sign {
+        self.small
+            .as_ref()
+            .zip(small_parts(x))
+            .and_then(|(c, (n, d))| sign_homogeneous(&c[k][..=k + 1], n, d))
+            .unwrap_or_else(|| self.e[k].sign_at(x))
+    }
+
+    /// Inertia of `λA − B` at the rational `x`.
+    fn inertia(&self, x: &RBig) -> Inertia {
+        let parts = small_parts(x);
+        Inertia::from_minor_sum_signs(std::array::from_fn::<Sign, 4, _>(|k| {
+            self.small
+                .as_ref()
+                .zip(parts)
+                .and_then(|(c, (n, d))| sign_homogeneous(&c[k][..=k + 1], n, d))
+                .unwrap_or_else(|| self.e[k].sign_at(x))
+        }))
+    }
+}
+
+/// `x = n/d` with `d > 0`, both in `i128`.
+fn small_parts(x: &RBig) -> Option<(i128, i128)> {
+    Some((
+        i128::try_from(x.numerator()).ok()?,
+        i128::try_from(x.denominator()).ok()?,
+    ))
+}
+
+/// The sign of `Σ cᵢ nⁱ d^(m−i)` (`m = c.len() − 1`, the sign of `p(n/d)` for `d > 0`),
+/// `None` on overflow.
+fn sign_homogeneous(c: &[i128], n: i128, d: i128) -> Option<Sign> {
+    let (last, rest) = c.split_last()?;
+    let mut acc = *last;
+    let mut dpow = 1i128;
+    for &ci in rest.iter().rev() {
+        dpow = dpow.checked_mul(d)?;
+        acc = acc.checked_mul(n)?.checked_add(ci.checked_mul(dpow)?)?;
+    }
+    Some(Sign::of_i128(acc))
+}
+
+/// How a rational `q` inside the open isolating interval `iv` of a root of `p` compares with
+/// the root: by `sign(p, q)` against the sign at the interval's lower end.
+fn side_of(
+    iv: &RootInterval,
+    p: &Poly,
+    q: &RBig,
+    sign: &impl Fn(&Poly, &RBig) -> Sign,
+) -> Ordering {
+    let at_q = sign(p, q);
+    if at_q.is_zero() {
+        Ordering::Equal
+    } else if at_q == sign(p, iv.lo()) {
+        Ordering::Less
+    } else {
+        Ordering::Greater
+    }
+}
+
+/// The leftmost rational of least dyadic denominator (an integer if there is one) strictly
+/// between two reals given by isolating intervals of roots of the polynomials with them
+/// ([`between_roots`] with [`simplest_between`]): the same whatever the intervals.
+pub(crate) fn dyadic_between_isolated(
+    left: (&RootInterval, &Poly),
+    right: (&RootInterval, &Poly),
+    sign: &impl Fn(&Poly, &RBig) -> Sign,
+) -> RBig {
+    let pick = |l: Option<&RBig>, h: Option<&RBig>| {
+        simplest_between(l.expect("bounded"), h.expect("bounded"), false, false)
+    };
+    between_roots(Some(left.0), Some(right.0), pick, |b, q| {
+        let (iv, p) = match b {
+            Bound::Left => left,
+            Bound::Right => right,
+        };
+        side_of(iv, p, q, sign)
+    })
+}
+
+/// `⌊α⌋` and `⌈α⌉` of the root `α` of `p` isolated by `iv`.
+fn floor_and_ceil(
+    iv: &RootInterval,
+    p: &Poly,
+    sign: &impl Fn(&Poly, &RBig) -> Sign,
+) -> (IBig, IBig) {
+    let n = floor_of_root(iv, |q| side_of(iv, p, q, sign));
+    let integral = match iv {
+        RootInterval::Exact(v) => v.denominator().is_one(),
+        RootInterval::Open(lo, hi) => {
+            let v = RBig::from(n.clone());
+            lo < &v && &v < hi && side_of(iv, p, &v, sign) == Ordering::Equal
+        }
+    };
+    let c = if integral { n.clone() } else { &n + IBig::ONE };
+    (n, c)
+}
+
+/// The samples of the arcs of the chart cut by the increasing finite real roots `α₁ < … <
+/// αₖ`: `⌊α₁⌋ − 1`, the leftmost rational of least dyadic denominator between consecutive
+/// roots ([`dyadic_between_isolated`]), `⌈αₖ⌉ + 1` (`0` when there is no root). They depend
+/// on the roots only, not on their isolating intervals.
+fn arc_samples(finite: &[&AlgebraicReal], sign: &impl Fn(&Poly, &RBig) -> Sign) -> Vec<RBig> {
+    let (Some(first), Some(last)) = (finite.first(), finite.last()) else {
+        return vec![RBig::ZERO];
+    };
+    let mut out = Vec::with_capacity(finite.len() + 1);
+    let (lo, _) = floor_and_ceil(first.interval(), first.poly(), sign);
+    out.push(RBig::from(lo - IBig::ONE));
+    for w in finite.windows(2) {
+        out.push(dyadic_between_isolated(
+            (w[0].interval(), w[0].poly()),
+            (w[1].interval(), w[1].poly()),
+            sign,
+        ));
+    }
+    let (_, hi) = floor_and_ceil(last.interval(), last.poly(), sign);
+    out.push(RBig::from(hi + IBig::ONE));
+    out
+}
+
+/// The inertia at a simple finite root: exactly one eigenvalue crosses zero there, so the
+/// member's counts are the smaller of its two arcs'.
+fn simple_root_inertia(l: &Inertia, h: &Inertia) -> Inertia {
+    Inertia {
+        positive: l.positive.min(h.positive),
+        negative: l.negative.min(h.negative),
+        zero: 1,
+    }
 }
 
 impl PencilAnalysis {
-    /// Analyses the pencil of a regular pair (`f ≢ 0`).
+    /// Analyses the pencil of a regular pair (`f ≢ 0`): the fast path for four simple roots
+    /// when its certificate holds, else the exact path (the same answer; module docs).
     pub(crate) fn compute(data: &PencilData) -> PencilAnalysis {
+        PencilAnalysis::compute_simple(data).unwrap_or_else(|| PencilAnalysis::compute_exact(data))
+    }
+
+    /// Four simple roots, none at ∞: `None` unless the certified float isolation of `f`
+    /// answers (which proves `f` square-free). No minor beyond `E₁…E₄`, no square-free
+    /// decomposition; the arcs' signs in `i128`.
+    fn compute_simple(data: &PencilData) -> Option<PencilAnalysis> {
+        let f = &data.f;
+        if f.degree() != Some(4) {
+            return None;
+        }
+        let roots = AlgebraicReal::certified_real_roots_of(f)?;
+        let sums = MinorSumSigns::new(&data.e);
+        // every open interval isolates a root of f itself (its primitive part)
+        let finite: Vec<&AlgebraicReal> = roots.iter().collect();
+        let arcs: Vec<(RBig, Inertia)> = arc_samples(&finite, &|_, x| sums.sign(3, x))
+            .into_iter()
+            .map(|x| {
+                let i = sums.inertia(&x);
+                (x, i)
+            })
+            .collect();
+        let complex = 4 - roots.len();
+        let real_roots = roots
+            .into_iter()
+            .enumerate()
+            .map(|(i, r)| PencilRoot {
+                point: PencilPoint::Finite(r),
+                multiplicity: 1,
+                blocks: vec![1],
+                inertia: simple_root_inertia(&arcs[i].1, &arcs[i + 1].1),
+            })
+            .collect();
+        Some(PencilAnalysis {
+            characteristic: f.clone(),
+            real_roots,
+            complex_roots: vec![vec![1]; complex],
+            arcs,
+        })
+    }
+
+    /// The exact path: square-free decomposition, the minors' gcds when a root is multiple,
+    /// Descartes isolation of the pieces.
+    fn compute_exact(data: &PencilData) -> PencilAnalysis {
         let f = &data.f;
         let m_inf = BinaryForm::new(f.clone(), 4).multiplicity_at_infinity();
         let decomposition = f.squarefree_decomposition();
@@ -304,42 +501,25 @@ impl PencilAnalysis {
             }
         }
 
-        // Sample points of the arcs, in the gaps between the isolating intervals.
-        let isolated: Vec<&RootInterval> = real_roots
+        // The arcs' samples: the simplest rationals between the finite roots.
+        let finite: Vec<&AlgebraicReal> = real_roots
             .iter()
             .filter_map(|r| match &r.point {
-                PencilPoint::Finite(x) => Some(x.interval()),
+                PencilPoint::Finite(x) => Some(x),
                 PencilPoint::Infinity => None,
             })
             .collect();
-        let mut arcs = Vec::with_capacity(isolated.len() + 1);
-        match (isolated.first(), isolated.last()) {
-            (Some(first), Some(last)) => {
-                let x = RBig::from(first.lo().floor() - IBig::ONE);
-                arcs.push((x.clone(), inertia_at_rational(e, &x)));
-                for w in isolated.windows(2) {
-                    let x = rational_between(w[0], w[1]);
-                    arcs.push((x.clone(), inertia_at_rational(e, &x)));
-                }
-                let x = RBig::from(last.hi().ceil() + IBig::ONE);
-                arcs.push((x.clone(), inertia_at_rational(e, &x)));
-            }
-            _ => {
-                let x = RBig::ZERO;
-                arcs.push((x.clone(), inertia_at_rational(e, &x)));
-            }
-        }
-
-        // At a simple root exactly one eigenvalue crosses zero: the member's inertia is the
-        // smaller of its two arcs' counts.
+        let sums = MinorSumSigns::new(e);
+        let arcs: Vec<(RBig, Inertia)> = arc_samples(&finite, &|p: &Poly, x| p.sign_at(x))
+            .into_iter()
+            .map(|x| {
+                let i = sums.inertia(&x);
+                (x, i)
+            })
+            .collect();
         for (i, r) in real_roots.iter_mut().enumerate() {
             if r.multiplicity == 1 && matches!(r.point, PencilPoint::Finite(_)) {
-                let (l, h) = (&arcs[i].1, &arcs[i + 1].1);
-                r.inertia = Inertia {
-                    positive: l.positive.min(h.positive),
-                    negative: l.negative.min(h.negative),
-                    zero: 1,
-                };
+                r.inertia = simple_root_inertia(&arcs[i].1, &arcs[i + 1].1);
             }
         }
         PencilAnalysis {
@@ -402,6 +582,7 @@ impl SigItem {
 mod tests {
     use super::*;
     use qsic_algebra::matrix::Inertia;
+    use qsic_algebra::testing::SplitMix;
 
     fn diag(v: [i64; 4]) -> Quadric {
         let mut m = [[0i64; 4]; 4];
@@ -494,5 +675,164 @@ mod tests {
         let an = PencilAnalysis::compute(&PencilData::new(&a, &b));
         let blocks: Vec<Vec<u8>> = an.real_roots.iter().map(|r| r.blocks.clone()).collect();
         assert_eq!(blocks, vec![vec![2], vec![2]]);
+    }
+
+    type Big4 = [[IBig; 4]; 4];
+
+    fn quadric(m: &Big4) -> Option<Quadric> {
+        Quadric::from_matrix(m.clone().map(|r| r.map(RBig::from))).ok()
+    }
+
+    /// `PᵀDP`.
+    fn congruent(p: &Big4, d: &[IBig; 4]) -> Big4 {
+        std::array::from_fn(|i| {
+            std::array::from_fn(|j| (0..4).map(|k| &p[k][i] * &d[k] * &p[k][j]).sum())
+        })
+    }
+
+    /// Random pairs of the families: entries in [−10, 10], below 2²⁰, about 10⁴⁰; disguised
+    /// diagonal pencils with roots 1, 2, 2 + 1/K, −3 (K up to 2⁶⁰: near-double) and with a
+    /// double root 2 (never the fast path).
+    fn random_pair(rng: &mut SplitMix, family: usize) -> Option<(Quadric, Quadric)> {
+        let mut sym = |r: i64, scale: &IBig| -> Big4 {
+            let mut m: Big4 = Default::default();
+            for i in 0..4 {
+                for j in i..4 {
+                    m[i][j] = IBig::from(rng.int(-r, r)) * scale + IBig::from(rng.int(-r, r));
+                    m[j][i] = m[i][j].clone();
+                }
+            }
+            m
+        };
+        let (a, b) = match family {
+            0 => (sym(10, &IBig::ONE), sym(10, &IBig::ONE)),
+            1 => (sym(1 << 20, &IBig::ONE), sym(1 << 20, &IBig::ONE)),
+            2 => {
+                let big = IBig::from(10).pow(40);
+                (sym(9, &big), sym(9, &big))
+            }
+            _ => {
+                let k = IBig::ONE << rng.int(10, 60) as usize;
+                let p: Big4 =
+                    std::array::from_fn(|_| std::array::from_fn(|_| rng.int(-2, 2).into()));
+                let signs: [IBig; 4] = std::array::from_fn(|_| IBig::from(2 * rng.int(0, 1) - 1));
+                let da: [IBig; 4] = std::array::from_fn(|i| &signs[i] * &k);
+                let near = if family == 3 { IBig::ONE } else { IBig::ZERO };
+                let roots = [k.clone(), &k * 2, &k * 2 + near, &k * -3];
+                let db: [IBig; 4] = std::array::from_fn(|i| &signs[i] * &roots[i]);
+                (congruent(&p, &da), congruent(&p, &db))
+            }
+        };
+        Some((quadric(&a)?, quadric(&b)?))
+    }
+
+    fn assert_same(fast: &PencilAnalysis, exact: &PencilAnalysis, what: &str) {
+        assert_eq!(fast.characteristic, exact.characteristic, "{what}");
+        assert_eq!(fast.real_roots, exact.real_roots, "{what}");
+        assert_eq!(fast.complex_roots, exact.complex_roots, "{what}");
+        assert_eq!(fast.arcs, exact.arcs, "{what}");
+    }
+
+    /// The fast path and the exact path give the same analysis (roots, blocks, inertia, arcs
+    /// and their samples) on every family; the fast path answers the common pairs and never a
+    /// pencil with a double root.
+    #[test]
+    fn fast_path_equals_exact_path() {
+        let mut rng = SplitMix(77);
+        for family in 0..5 {
+            let (mut total, mut fast) = (0, 0);
+            while total < 60 {
+                let Some((a, b)) = random_pair(&mut rng, family) else {
+                    continue;
+                };
+                let data = PencilData::new(&a, &b);
+                if data.f.is_zero() {
+                    continue;
+                }
+                total += 1;
+                let exact = PencilAnalysis::compute_exact(&data);
+                let what = format!("family {family}: {:?} / {:?}", a.matrix(), b.matrix());
+                if let Some(simple) = PencilAnalysis::compute_simple(&data) {
+                    fast += 1;
+                    assert_same(&simple, &exact, &what);
+                }
+                assert_same(&PencilAnalysis::compute(&data), &exact, &what);
+            }
+            match family {
+                0..=2 => assert!(fast >= 50, "family {family}: {fast} of {total} fast"),
+                4 => assert_eq!(fast, 0, "a double root on the fast path"),
+                _ => {}
+            }
+        }
+    }
+
+    /// The arcs' samples depend on the roots only: from the certified intervals, from the
+    /// Descartes ones, from narrow refinements and from the widest isolating intervals
+    /// (between neighbouring samples) they are the same, each strictly between its roots.
+    #[test]
+    fn arc_samples_do_not_depend_on_the_intervals() {
+        let mut rng = SplitMix(78);
+        let mut checked = 0;
+        while checked < 40 {
+            let Some((a, b)) = random_pair(&mut rng, 0) else {
+                continue;
+            };
+            let data = PencilData::new(&a, &b);
+            if data.f.degree() != Some(4) {
+                continue;
+            }
+            let exact = PencilAnalysis::compute_exact(&data);
+            let roots: Vec<AlgebraicReal> = exact
+                .real_roots
+                .iter()
+                .map(|r| match &r.point {
+                    PencilPoint::Finite(x) => x.clone(),
+                    PencilPoint::Infinity => unreachable!("f has degree 4"),
+                })
+                .collect();
+            if roots.is_empty() || exact.real_roots.iter().any(|r| r.multiplicity > 1) {
+                continue;
+            }
+            checked += 1;
+            let want: Vec<RBig> = exact.arcs.iter().map(|(x, _)| x.clone()).collect();
+            let sign = |p: &Poly, x: &RBig| p.sign_at(x);
+            let samples = |xs: &[AlgebraicReal]| arc_samples(&xs.iter().collect::<Vec<_>>(), &sign);
+            let reshaped =
+                |iv: &dyn Fn(usize, &AlgebraicReal) -> RootInterval| -> Vec<AlgebraicReal> {
+                    roots
+                        .iter()
+                        .enumerate()
+                        .map(|(i, r)| {
+                            AlgebraicReal::from_isolating_interval(r.poly(), &iv(i, r))
+                                .expect("an isolating interval")
+                        })
+                        .collect()
+                };
+            let width = RBig::from_parts_signed(IBig::ONE, IBig::ONE << 60usize);
+            let narrow = reshaped(&|_, r| r.refined_interval(&width));
+            let widest = reshaped(&|i, r| match r.as_rational() {
+                Some(v) => RootInterval::Exact(v.clone()),
+                None => RootInterval::Open(want[i].clone(), want[i + 1].clone()),
+            });
+            let certified = AlgebraicReal::certified_real_roots_of(&data.f);
+            for (name, got) in [
+                ("exact", samples(&roots)),
+                ("narrow", samples(&narrow)),
+                ("widest", samples(&widest)),
+            ]
+            .into_iter()
+            .chain(certified.map(|c| ("certified", samples(&c))))
+            {
+                assert_eq!(got, want, "{name} intervals");
+            }
+            for (i, x) in want.iter().enumerate() {
+                let x = AlgebraicReal::from_rational(x.clone());
+                assert!(i == 0 || roots[i - 1] < x, "sample {i} right of its root");
+                assert!(
+                    i == roots.len() || x < roots[i],
+                    "sample {i} left of its root"
+                );
+            }
+        }
     }
 }

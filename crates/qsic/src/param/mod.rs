@@ -35,7 +35,7 @@ pub use surface::{PolyVector, RuledParameterization};
 
 use crate::classify::{analyze_pencil, classify, Classification, ComponentKind, PencilKind};
 use crate::error::Error;
-use crate::pencil::{PencilAnalysis, PencilPoint};
+use crate::pencil::{dyadic_between_isolated, PencilAnalysis, PencilPoint};
 use crate::quadric::Quadric;
 use qsic_algebra::field::Quadratic;
 use qsic_algebra::roots::{
@@ -934,20 +934,20 @@ fn choose_surface_full(
 
 /// More doubly ruled candidates: [`more_samples`] of each (2, 2) arc.
 fn more_candidates(analysis: &PencilAnalysis) -> Vec<(Option<RBig>, SurfaceKind)> {
-    let finite: Vec<&RootInterval> = analysis
+    let finite: Vec<(&RootInterval, &Poly)> = analysis
         .real_roots
         .iter()
         .filter_map(|r| match &r.point {
-            PencilPoint::Finite(v) => Some(v.interval()),
+            PencilPoint::Finite(v) => Some((v.interval(), v.poly())),
             PencilPoint::Infinity => None,
         })
         .collect();
     let mut out = Vec::new();
     for (i, (sample, inertia)) in analysis.arcs.iter().enumerate() {
         if inertia.positive == 2 && inertia.negative == 2 {
-            let lo = i.checked_sub(1).map(|k| finite[k].hi().clone());
-            let hi = finite.get(i).map(|r| r.lo().clone());
-            for lambda in more_samples(lo.as_ref(), sample, hi.as_ref()) {
+            let lo = i.checked_sub(1).map(|k| finite[k]);
+            let hi = finite.get(i).copied();
+            for lambda in more_samples(lo, sample, hi) {
                 out.push((Some(lambda), SurfaceKind::DoublyRuled));
             }
         }
@@ -955,25 +955,37 @@ fn more_candidates(analysis: &PencilAnalysis) -> Vec<(Option<RBig>, SurfaceKind)
     out
 }
 
-/// Small-height rationals of the open interval `(lo, hi)` (unbounded for `None`) other than
-/// `sample`: the simplest ones on either side of it, then between those and `sample`.
-fn more_samples(lo: Option<&RBig>, sample: &RBig, hi: Option<&RBig>) -> Vec<RBig> {
+/// Small-height rationals of the arc between the roots `lo` and `hi` (isolating interval
+/// and polynomial; unbounded for `None`) other than its `sample`: the simplest ones on
+/// either side of it, then between those and `sample`, then between those and the roots
+/// ([`simplest_between`]; next to a root, [`dyadic_between_isolated`], so that they depend
+/// on the roots, not on their intervals).
+fn more_samples(
+    lo: Option<(&RootInterval, &Poly)>,
+    sample: &RBig,
+    hi: Option<(&RootInterval, &Poly)>,
+) -> Vec<RBig> {
+    let sign = |p: &Poly, x: &RBig| p.sign_at(x);
+    let one = Poly::constant(IBig::ONE);
+    let exact = |x: &RBig| RootInterval::Exact(x.clone());
+    let at = exact(sample);
     let left = match lo {
-        Some(l) => simplest_between(l, sample, false, false),
+        Some(l) => dyadic_between_isolated(l, (&at, &one), &sign),
         None => sample - RBig::ONE,
     };
     let right = match hi {
-        Some(h) => simplest_between(sample, h, false, false),
+        Some(h) => dyadic_between_isolated((&at, &one), h, &sign),
         None => sample + RBig::ONE,
     };
     let mid_left = simplest_between(&left, sample, false, false);
     let mid_right = simplest_between(sample, &right, false, false);
+    let (at_left, at_right) = (exact(&left), exact(&right));
     let far_left = match lo {
-        Some(l) => simplest_between(l, &left, false, false),
+        Some(l) => dyadic_between_isolated(l, (&at_left, &one), &sign),
         None => &left - RBig::ONE,
     };
     let far_right = match hi {
-        Some(h) => simplest_between(&right, h, false, false),
+        Some(h) => dyadic_between_isolated((&at_right, &one), h, &sign),
         None => &right + RBig::ONE,
     };
     vec![left, right, mid_left, mid_right, far_left, far_right]
@@ -1469,15 +1481,22 @@ mod tests {
         );
     }
 
+    /// Between −√2 and √3 (wide intervals), and on half-lines: six distinct samples inside
+    /// the arc, other than the sample itself.
     #[test]
     fn more_samples_stay_inside_the_arc() {
-        let (lo, hi) = (RBig::from(-1), RBig::from(3));
+        let (p2, p3) = (Poly::from_i64s(&[-2, 0, 1]), Poly::from_i64s(&[-3, 0, 1]));
+        let lo = (RootInterval::Open(RBig::from(-5), RBig::from(-1)), &p2);
+        let hi = (RootInterval::Open(RBig::ONE, RBig::from(2)), &p3);
+        let above_lo = |x: &RBig| x >= &RBig::ZERO || x * x < RBig::from(2);
+        let below_hi = |x: &RBig| x <= &RBig::ZERO || x * x < RBig::from(3);
         for (l, h) in [(Some(&lo), Some(&hi)), (None, Some(&hi)), (Some(&lo), None)] {
-            let xs = more_samples(l, &RBig::ONE, h);
+            let xs = more_samples(l.map(|l| (&l.0, l.1)), &RBig::ONE, h.map(|h| (&h.0, h.1)));
             assert_eq!(xs.len(), 6);
-            for x in xs {
-                assert!(x != RBig::ONE);
-                assert!(l.is_none_or(|l| &x > l) && h.is_none_or(|h| &x < h), "{x}");
+            for (i, x) in xs.iter().enumerate() {
+                assert!(x != &RBig::ONE && !xs[..i].contains(x));
+                assert!(l.is_none() || above_lo(x), "{x}");
+                assert!(h.is_none() || below_hi(x), "{x}");
             }
         }
     }
