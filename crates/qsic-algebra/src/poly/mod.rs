@@ -48,6 +48,24 @@ impl<C: Ring> Poly<C> {
         Poly { c }
     }
 
+    /// The polynomial with coefficients `c` (constant first) when the caller knows that
+    /// the last one is not zero (or `c` is empty): [`Poly::new`] without its zero test,
+    /// which is costly in some rings (an interval evaluation in a number field). Checked in
+    /// debug builds.
+    ///
+    /// ```
+    /// # use qsic_algebra::{IBig, Poly};
+    /// let p = Poly::from_trimmed(vec![IBig::from(1), IBig::from(2)]);
+    /// assert_eq!(p, Poly::from_i64s(&[1, 2]));
+    /// ```
+    pub fn from_trimmed(c: Vec<C>) -> Self {
+        debug_assert!(
+            c.last().is_none_or(|v| !v.is_zero()),
+            "a zero leading coefficient"
+        );
+        Poly { c }
+    }
+
     /// The zero polynomial.
     pub fn zero() -> Self {
         Poly { c: Vec::new() }

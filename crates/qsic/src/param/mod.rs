@@ -217,9 +217,6 @@ fn smooth_quartic(
     // the pencil analysis works on the primitive integer matrices: so does λ
     let (am, bm) = (integer_matrix(a), integer_matrix(b));
     let mut surface = choose_surface(&am, &bm, &analysis)?;
-    if surface.kind == SurfaceKind::DoublyRuled {
-        reduce_doubly_ruled(&mut surface.ruling);
-    }
     let (qm, substituted) = match surface.lambda {
         Some(_) => (a, Substituted::A),
         None => (b, Substituted::B),
@@ -248,6 +245,10 @@ fn smooth_quartic(
             surface,
         };
         return Ok((levin, Some(fast)));
+    }
+    // the reduction `integral_levin` makes on its integers, here on the rational ruling
+    if surface.kind == SurfaceKind::DoublyRuled {
+        reduce_doubly_ruled(&mut surface.ruling);
     }
     let qm = to_quadratic(&integer_matrix(qm));
     let forms = |b: &PolyVector, d: &PolyVector| {
@@ -327,10 +328,10 @@ fn reduce_doubly_ruled(ruling: &mut RuledParameterization) {
 }
 
 /// The forms of [`smooth_quartic`] over ℤ[√δ] on the integer matrix `qm` of the substituted
-/// quadric: `c₀ = bᵀQb`, `c₁ = bᵀQd`, `c₂ = dᵀQd`, `s`, `a`, `alt`, then the balancing as a
+/// quadric, on the ruling reduced first ([`zsqrt::reduce_ruling`]): `c₀ = bᵀQb`, `c₁ = bᵀQd`, `c₂ = dᵀQd`, `s`, `a`, `alt`, then the balancing as a
 /// substitution in every form ([`balance_exponent`]: a form of the substituted ruling is
 /// the substituted form, the substitution being a ring map); for `k < 0` integral forms
-/// times `2^(−k·degree)`, divided out by the conversions (`down`). `Ok(None)` when the ruling is
+/// times `2^(−k·degree)`, divided out by the conversions when large (`down`). `Ok(None)` when the ruling is
 /// not integral (the rational route then).
 ///
 /// # Errors
@@ -351,6 +352,9 @@ fn integral_levin(
     let (Some(mut b), Some(mut d)) = (conv(&ruling.b), conv(&ruling.d)) else {
         return Ok(None);
     };
+    if kind == SurfaceKind::DoublyRuled {
+        zsqrt::reduce_ruling(&mut b, &mut d);
+    }
     // in machine integers when everything fits, else in big integers
     let (mut s, mut a, mut alt) = match zsqrt::levin_small(qm, &b, &d, &delta) {
         Some(forms) => forms,

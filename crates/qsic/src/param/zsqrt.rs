@@ -247,7 +247,9 @@ pub(crate) fn to_number_poly(
     p: &[Zq],
     field: Option<&qsic_algebra::field::NumberField>,
 ) -> super::NumberPoly {
-    Poly::new(p.iter().map(|c| to_number(c, field)).collect())
+    // a + b√δ = 0 exactly when a = b = 0 (δ not a square): the zero test on integers
+    let n = p.iter().rposition(|c| !c.is_zero()).map_or(0, |i| i + 1);
+    Poly::from_trimmed(p[..n].iter().map(|c| to_number(c, field)).collect())
 }
 
 /// Makes the integers of a doubly ruled surface's ruling `b(u) + v·d(u)` (`b`, `d` of
@@ -414,10 +416,16 @@ impl Zi {
     }
 
     fn mul(self, o: Zi, delta: i128) -> Option<Zi> {
-        if self.b == 0 && o.b == 0 {
+        if self.b == 0 {
             return Some(Zi {
                 a: mul_i(self.a, o.a)?,
-                b: 0,
+                b: mul_i(self.a, o.b)?,
+            });
+        }
+        if o.b == 0 {
+            return Some(Zi {
+                a: mul_i(self.a, o.a)?,
+                b: mul_i(self.b, o.a)?,
             });
         }
         Some(Zi {
@@ -515,7 +523,11 @@ fn zi_form(m: &[[i128; 4]; 4], x: &[Vec<Zi>; 4], y: &[Vec<Zi>; 4], delta: i128) 
             }
         }
     }
-    Some(acc.to_vec())
+    let n = acc
+        .iter()
+        .rposition(|c| *c != Zi::default())
+        .map_or(0, |i| i + 1);
+    Some(acc[..n].to_vec())
 }
 
 /// `c₀ = bᵀMb`, `c₁ = bᵀMd`, `c₂ = dᵀMd` and `s = c₁² − c₀c₂` over ℤ[√δ]: in machine
