@@ -668,6 +668,10 @@ struct Evaluator<'a> {
     d_abs: [Lanes; MAX_TERMS],
     x_abs_desc: [Lanes; MAX_TERMS],
     d_abs_desc: [Lanes; MAX_TERMS],
+    /// For the Horner order of `rev` (index `rev as usize`): the largest `|c₀ᵢ|` (the
+    /// constant term in `t`) and `Σₖ₌₁|cₖᵢ|` over `i`, of `x` and of `d`: the majorant
+    /// `|c₀| + |t|·Σₖ₌₁|cₖ|` of the bound `Σₖ|cₖ||t|ᵏ`, tighter than `Σₖ|cₖ|` near `t = 0`.
+    split_abs: [(f64, f64, f64, f64); 2],
     /// The largest `Σₖ|xₖᵢ|` and `Σₖ|dₖᵢ|` over the coordinates `i`.
     x_abs_max: f64,
     d_abs_max: f64,
@@ -1019,7 +1023,30 @@ impl<'a> Evaluator<'a> {
         let mut s_desc = sv;
         s_desc.reverse();
         let abs = |c: &[Lanes; MAX_TERMS]| c.map(|k| k.map(f64::abs));
+        // the constant term and the others' sums, in increasing powers of `t` (`rev` false)
+        // and decreasing (`rev` true: the constant term is the last coefficient)
+        let split = |c: &[Lanes], constant: usize| -> (f64, f64) {
+            let c0 = c
+                .get(constant)
+                .map_or(0.0, |k| k.iter().fold(0.0, |m, v| v.abs().max(m)));
+            let rest = (0..4)
+                .map(|i| {
+                    (c.iter().enumerate())
+                        .filter(|(k, _)| *k != constant)
+                        .map(|(_, k)| k[i].abs())
+                        .sum::<f64>()
+                })
+                .fold(0.0, f64::max);
+            (c0, rest)
+        };
+        let nd = if levin { n - 2 } else { 0 };
+        let split_abs = [(0, 0), (n - 1, nd.saturating_sub(1))].map(|(cx, cd)| {
+            let (x0, x1) = split(&x[..n], cx);
+            let (d0, d1) = split(&dv[..nd], cd);
+            (x0, x1, d0, d1)
+        });
         Ok(Evaluator {
+            split_abs,
             x_abs: abs(&x),
             d_abs: abs(&dv),
             x_abs_desc: abs(&x_desc),
@@ -1068,7 +1095,7 @@ impl<'a> Evaluator<'a> {
     #[inline(always)]
     fn unit_of(&self, x: Lanes, root: f64, t: f64, rev: bool, sheet: Sheet) -> Option<[f64; 4]> {
         let norm = dot(&x, &x).sqrt();
-        let cheap = self.x_abs_max + self.d_abs_max * root;
+        let cheap = self.majorant(t, rev, root);
         if norm.is_finite() && norm > 0.0 && self.gamma * cheap <= 1e-10 * norm {
             return Some(x.map(|v| v / norm));
         }
@@ -1151,7 +1178,7 @@ impl<'a> Evaluator<'a> {
             }
             // `unit_of` on either sheet, the bound at `|t|` shared where it is needed
             let (np, nm) = (dot(&p, &p).sqrt(), dot(&m, &m).sqrt());
-            let lhs = self.gamma * (self.x_abs_max + self.d_abs_max * root);
+            let lhs = self.gamma * self.majorant(t, rev, root);
             let ok = |norm: f64| norm.is_finite() && norm > 0.0 && lhs <= 1e-10 * norm;
             let (p_ok, m_ok) = (ok(np), ok(nm));
             if p_ok && m_ok {
@@ -1242,6 +1269,16 @@ impl<'a> Evaluator<'a> {
             }
         }
         (v, w, root)
+    }
+
+    /// A majorant of the rounding bound at `t` of [`Evaluator::certify`] in a few operations:
+    /// `Σₖ|cₖ|` and `|c₀| + |t|·Σₖ₌₁|cₖ|` (`|t| ≤ 1`), the smaller, for `x` and `d`.
+    #[inline(always)]
+    fn majorant(&self, t: f64, rev: bool, root: f64) -> f64 {
+        let (x0, x1, d0, d1) = self.split_abs[rev as usize];
+        let at = t.abs();
+        let near = (x0 + at * x1) + (d0 + at * d1) * root;
+        near.min(self.x_abs_max + self.d_abs_max * root)
     }
 
     /// The rounding bound of [`Evaluator::certify`] (`maxᵢ Σₖ (|xₖᵢ| + |dₖᵢ|·√s)|t|ᵏ`) for
