@@ -663,6 +663,15 @@ struct Evaluator<'a> {
     s_desc: [f64; 5],
     /// Levin's form (else rational).
     levin: bool,
+    /// `|x|`, `|d|` in both orders (the rounding bound's majorant at `|t|`).
+    x_abs: [Lanes; MAX_TERMS],
+    d_abs: [Lanes; MAX_TERMS],
+    x_abs_desc: [Lanes; MAX_TERMS],
+    d_abs_desc: [Lanes; MAX_TERMS],
+    /// For the Horner order of `rev` (index `rev as usize`): the largest `|c₀ᵢ|` (the
+    /// constant term in `t`) and `Σₖ₌₁|cₖᵢ|` over `i`, of `x` and of `d`: the majorant
+    /// `|c₀| + |t|·Σₖ₌₁|cₖ|` of the bound `Σₖ|cₖ||t|ᵏ`, tighter than `Σₖ|cₖ|` near `t = 0`.
+    split_abs: [(f64, f64, f64, f64); 2],
     /// The largest `Σₖ|xₖᵢ|` and `Σₖ|dₖᵢ|` over the coordinates `i`.
     x_abs_max: f64,
     d_abs_max: f64,
@@ -1013,7 +1022,35 @@ impl<'a> Evaluator<'a> {
         }
         let mut s_desc = sv;
         s_desc.reverse();
+        let abs = |c: &[Lanes; MAX_TERMS]| c.map(|k| k.map(f64::abs));
+        // the constant term and the others' sums, in increasing powers of `t` (`rev` false)
+        // and decreasing (`rev` true: the constant term is the last coefficient)
+        let split = |c: &[Lanes], constant: usize| -> (f64, f64) {
+            let c0 = c
+                .get(constant)
+                .map_or(0.0, |k| k.iter().fold(0.0, |m, v| v.abs().max(m)));
+            let rest = (0..4)
+                .map(|i| {
+                    (c.iter().enumerate())
+                        .filter(|(k, _)| *k != constant)
+                        .map(|(_, k)| k[i].abs())
+                        .sum::<f64>()
+                })
+                .fold(0.0, f64::max);
+            (c0, rest)
+        };
+        let nd = if levin { n - 2 } else { 0 };
+        let split_abs = [(0, 0), (n - 1, nd.saturating_sub(1))].map(|(cx, cd)| {
+            let (x0, x1) = split(&x[..n], cx);
+            let (d0, d1) = split(&dv[..nd], cd);
+            (x0, x1, d0, d1)
+        });
         Ok(Evaluator {
+            split_abs,
+            x_abs: abs(&x),
+            d_abs: abs(&dv),
+            x_abs_desc: abs(&x_desc),
+            d_abs_desc: abs(&d_desc),
             x_abs_max: abs_sum(&x),
             d_abs_max: abs_sum(&dv),
             x_desc,
@@ -1058,7 +1095,7 @@ impl<'a> Evaluator<'a> {
     #[inline(always)]
     fn unit_of(&self, x: Lanes, root: f64, t: f64, rev: bool, sheet: Sheet) -> Option<[f64; 4]> {
         let norm = dot(&x, &x).sqrt();
-        let cheap = self.x_abs_max + self.d_abs_max * root;
+        let cheap = self.majorant(t, rev, root);
         if norm.is_finite() && norm > 0.0 && self.gamma * cheap <= 1e-10 * norm {
             return Some(x.map(|v| v / norm));
         }
@@ -1139,9 +1176,20 @@ impl<'a> Evaluator<'a> {
                 p[i] += root * w[i];
                 m[i] += -root * w[i];
             }
-            let nan = [f64::NAN; 4];
-            plus.push(self.unit_of(p, root, t, rev, Sheet::Plus).unwrap_or(nan));
-            minus.push(self.unit_of(m, root, t, rev, Sheet::Minus).unwrap_or(nan));
+            // `unit_of` on either sheet, the bound at `|t|` shared where it is needed
+            let (np, nm) = (dot(&p, &p).sqrt(), dot(&m, &m).sqrt());
+            let lhs = self.gamma * self.majorant(t, rev, root);
+            let ok = |norm: f64| norm.is_finite() && norm > 0.0 && lhs <= 1e-10 * norm;
+            let (p_ok, m_ok) = (ok(np), ok(nm));
+            if p_ok && m_ok {
+                plus.push(p.map(|v| v / np));
+                minus.push(m.map(|v| v / nm));
+            } else {
+                let (pu, mu) =
+                    self.certify_both::<NA, ND>(t, rev, root, (p, np, p_ok), (m, nm, m_ok));
+                plus.push(pu);
+                minus.push(mu);
+            }
         }
     }
 
@@ -1223,6 +1271,74 @@ impl<'a> Evaluator<'a> {
         (v, w, root)
     }
 
+    /// A majorant of the rounding bound at `t` of [`Evaluator::certify`] in a few operations:
+    /// `Σₖ|cₖ|` and `|c₀| + |t|·Σₖ₌₁|cₖ|` (`|t| ≤ 1`), the smaller, for `x` and `d`.
+    #[inline(always)]
+    fn majorant(&self, t: f64, rev: bool, root: f64) -> f64 {
+        let (x0, x1, d0, d1) = self.split_abs[rev as usize];
+        let at = t.abs();
+        let near = (x0 + at * x1) + (d0 + at * d1) * root;
+        near.min(self.x_abs_max + self.d_abs_max * root)
+    }
+
+    /// The rounding bound of [`Evaluator::certify`] (`maxᵢ Σₖ (|xₖᵢ| + |dₖᵢ|·√s)|t|ᵏ`) for
+    /// `NA` and `ND` coefficients: the same operations in the same order, unrolled.
+    #[inline(always)]
+    fn bound_of<const NA: usize, const ND: usize>(&self, t: f64, rev: bool, root: f64) -> f64 {
+        let at = t.abs();
+        let (xc, dc) = if rev {
+            (&self.x_abs, &self.d_abs)
+        } else {
+            (&self.x_abs_desc, &self.d_abs_desc)
+        };
+        let mut bx = xc[0];
+        for c in &xc[1..NA] {
+            for i in 0..4 {
+                bx[i] = bx[i] * at + c[i];
+            }
+        }
+        let mut bd = [0.0; 4];
+        if ND > 0 {
+            bd = dc[0];
+            for c in &dc[1..ND] {
+                for i in 0..4 {
+                    bd[i] = bd[i] * at + c[i];
+                }
+            }
+        }
+        (0..4).map(|i| bx[i] + bd[i] * root).fold(0.0, f64::max)
+    }
+
+    /// The two sheets' points at a node of [`Evaluator::grid_both_of`] where the majorant
+    /// `Σ|cₖ|` does not certify one of them: the bound at `|t|` (the same for both sheets)
+    /// computed once, as [`Evaluator::unit_of`] would.
+    #[cold]
+    #[inline(never)]
+    #[allow(clippy::too_many_arguments)]
+    fn certify_both<const NA: usize, const ND: usize>(
+        &self,
+        t: f64,
+        rev: bool,
+        root: f64,
+        (p, np, p_ok): (Lanes, f64, bool),
+        (m, nm, m_ok): (Lanes, f64, bool),
+    ) -> ([f64; 4], [f64; 4]) {
+        let bound = self.bound_of::<NA, ND>(t, rev, root);
+        let nan = [f64::NAN; 4];
+        let one = |x: Lanes, norm: f64, ok: bool, sheet: Sheet| {
+            if ok {
+                x.map(|v| v / norm)
+            } else {
+                self.certify_with(bound, t, rev, sheet, x, norm)
+                    .unwrap_or(nan)
+            }
+        };
+        (
+            one(p, np, p_ok, Sheet::Plus),
+            one(m, nm, m_ok, Sheet::Minus),
+        )
+    }
+
     /// [`Evaluator::values`] for any degree.
     fn values_any(&self, t: f64, rev: bool, sheet: Sheet) -> (Lanes, f64) {
         let n = self.big_d + 1;
@@ -1259,6 +1375,19 @@ impl<'a> Evaluator<'a> {
             [0.0; 4]
         };
         let bound = (0..4).map(|i| bx[i] + bd[i] * root).fold(0.0, f64::max);
+        self.certify_with(bound, t, rev, sheet, x, norm)
+    }
+
+    /// [`Evaluator::certify`] given the rounding bound at `|t|`.
+    fn certify_with(
+        &self,
+        bound: f64,
+        t: f64,
+        rev: bool,
+        sheet: Sheet,
+        x: Lanes,
+        norm: f64,
+    ) -> Option<[f64; 4]> {
         if norm.is_finite() && norm > 0.0 && self.gamma * bound <= 1e-10 * norm {
             return Some(x.map(|v| v / norm));
         }
@@ -1859,6 +1988,30 @@ impl Line {
     }
 }
 
+/// The first grid index `j` in `k..n` whose parameter `θⱼ = t₀ + j·step` satisfies
+/// `next ≤ θⱼ + 10⁻¹²` (the test of [`Sampler::arc_into`] for an event at `next`), `n` if
+/// none: from the estimate `(next − t₀)/step`, corrected by the test itself, which is
+/// monotone in `j` for `step > 0` (rounding is monotone); a scan from `k` otherwise.
+fn grid_before_event(k: usize, n: usize, (t0, step): (f64, f64), next: f64) -> usize {
+    let at_or_after = |j: usize| next <= t0 + step * (j as f64) + 1e-12;
+    if !next.is_finite() && next > 0.0 {
+        return n;
+    }
+    if !(step > 0.0 && step.is_finite() && t0.is_finite() && next.is_finite()) {
+        return (k..n).find(|&j| at_or_after(j)).unwrap_or(n);
+    }
+    let est = ((next - t0) / step).clamp(k as f64, n as f64);
+    // `est` is within [k, n] (NaN is excluded above); `as` truncates toward zero
+    let mut j = (est as usize).clamp(k, n);
+    while j > k && at_or_after(j - 1) {
+        j -= 1;
+    }
+    while j < n && !at_or_after(j) {
+        j += 1;
+    }
+    j
+}
+
 /// Appends `s` to `line` with its sign chosen so that its dot product with the last point is
 /// nonnegative; whether it was negated.
 fn push_oriented(line: &mut Line, mut s: Sample) -> bool {
@@ -2255,17 +2408,16 @@ impl Sampler<'_> {
             return k;
         }
         let cos = MAX_ANGLE.cos();
-        let (mut px, mut hp, mut th) = (walk.prev.x, walk.h_prev, walk.prev.theta);
+        let (mut px, mut hp) = (walk.prev.x, walk.h_prev);
         let first = k;
-        let mut kf = k as f64;
+        let end = grid_before_event(k, n, (t0, step), next);
         let (unknown, flip) = (walk.unknown, walk.flip);
         let out = &mut line.x;
-        while k < n {
+        while k < end {
             let x = grid[k - 1];
-            let t = t0 + step * kf;
             // `d ≥ cos > 0`: no change of orientation (false for NaN, a failed point)
             let d = dot(&px, &x);
-            if next <= t + 1e-12 || d.partial_cmp(&cos).is_none_or(|o| o.is_lt()) {
+            if d.partial_cmp(&cos).is_none_or(|o| o.is_lt()) {
                 break;
             }
             if unknown {
@@ -2277,12 +2429,11 @@ impl Sampler<'_> {
                 hp = hq;
             }
             out.push(if flip { x.map(|v| -v) } else { x });
-            (px, th) = (x, t);
+            px = x;
             k += 1;
-            kf += 1.0;
         }
         if k > first {
-            walk.prev = Sample::new(th, px);
+            walk.prev = Sample::new(t0 + step * ((k - 1) as f64), px);
             walk.h_prev = hp;
         }
         k
@@ -2757,6 +2908,65 @@ mod tests {
             }
         }
         assert!(checked > 4000, "{checked}");
+    }
+
+    /// The unrolled rounding bound of the two-sheet grid ([`Evaluator::bound_of`]) is the
+    /// generic one of [`Evaluator::certify`] bit for bit, on both Horner orders.
+    #[test]
+    fn unrolled_bound_matches_generic_bound() {
+        let mut rng = SplitMix(0xb0d);
+        let mut checked = 0;
+        for param in levin_params(0xb0e, 6) {
+            let eval = Evaluator::new(&param).unwrap();
+            let n = eval.big_d + 1;
+            for _ in 0..200 {
+                let t = rng.int(-1000, 1000) as f64 / 1000.0;
+                let root = rng.int(0, 1 << 20) as f64 / 1024.0;
+                for rev in [false, true] {
+                    let bx = horner_lanes_abs(&eval.x[..n], t, rev);
+                    let bd = horner_lanes_abs(&eval.d[..n - 2], t, rev);
+                    let want = (0..4).map(|i| bx[i] + bd[i] * root).fold(0.0, f64::max);
+                    let got = match eval.big_d {
+                        2 => eval.bound_of::<3, 1>(t, rev, root),
+                        3 => eval.bound_of::<4, 2>(t, rev, root),
+                        4 => eval.bound_of::<5, 3>(t, rev, root),
+                        _ => continue,
+                    };
+                    assert_eq!(got.to_bits(), want.to_bits(), "t = {t}, rev = {rev}");
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked >= 2000, "{checked}");
+    }
+
+    /// The first grid index at or after an event, from the estimate, is the one a scan of
+    /// the test finds: events on grid points, just off them, outside the range, none.
+    #[test]
+    fn grid_index_of_event_matches_scan() {
+        let mut rng = SplitMix(0xe7);
+        for _ in 0..2000 {
+            let n = rng.int(2, 600) as usize;
+            let t0 = rng.int(-4000, 4000) as f64 / 1000.0;
+            let step = rng.int(1, 3000) as f64 / (1000.0 * n as f64);
+            let k = rng.int(1, n as i64) as usize;
+            let j = rng.int(-3, n as i64 + 3) as f64;
+            let next = match rng.int(0, 4) {
+                0 => t0 + step * j,
+                1 => t0 + step * j - 1e-12,
+                2 => t0 + step * j + 2e-12 * (rng.int(-2, 2) as f64),
+                3 => t0 + step * (j + 0.5),
+                _ => f64::INFINITY,
+            };
+            let scan = (k..n)
+                .find(|&j| next <= t0 + step * (j as f64) + 1e-12)
+                .unwrap_or(n);
+            assert_eq!(
+                grid_before_event(k, n, (t0, step), next),
+                scan,
+                "k = {k}, n = {n}, t0 = {t0}, step = {step}, next = {next}"
+            );
+        }
     }
 
     /// Marks follow their points through pushes, joins, pops and the reversal of a tail.
