@@ -1285,6 +1285,40 @@ mod tests {
         out
     }
 
+    /// The curves of small random pairs come with integral Levin forms (the ruling reduced,
+    /// a negative balancing kept integral by its homogeneous factor): no denominators, and
+    /// coefficients far smaller than the 900-bit ones the balancing once made.
+    #[test]
+    fn levin_forms_of_small_pairs_are_integral_and_small() {
+        use dashu_int::ops::BitTest;
+        let (mut integral, mut total, mut widest) = (0, 0, 0);
+        for (a, b) in smooth_pairs(7, 60, 10) {
+            let Ok(curve) = parameterize(&a, &b) else {
+                continue;
+            };
+            let Some(ComponentParam::Levin { a, d, s, .. }) = &curve.components[0].param else {
+                continue;
+            };
+            total += 1;
+            let numbers: Vec<&Number> = a
+                .iter()
+                .chain(d)
+                .chain(std::iter::once(s))
+                .flat_map(|p| p.coeffs())
+                .collect();
+            if numbers.iter().all(|c| c.denominator().is_one()) {
+                integral += 1;
+            }
+            for c in &numbers {
+                for v in c.numerator().coeffs() {
+                    widest = widest.max(v.bit_len());
+                }
+            }
+        }
+        assert!(total >= 40 && integral * 10 >= total * 9, "{integral}/{total}");
+        assert!(widest <= 300, "a {widest}-bit coefficient");
+    }
+
     /// The integral route (forms over ℤ[√δ], conversions without gcds) gives exactly the
     /// parameterization and the curve of the rational route.
     #[test]
