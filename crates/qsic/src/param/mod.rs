@@ -1019,6 +1019,35 @@ fn variations(chain: &[Poly<Quadratic>], x: &RBig) -> usize {
     signs.windows(2).filter(|w| w[0] != w[1]).count()
 }
 
+/// The norm `Σ_{i+j=k} (aᵢaⱼ − δ·bᵢbⱼ)` of [`norm_of`] in checked `i128` when every
+/// coefficient and `δ` fit an `i64`; `None` on an overflow (the caller uses big integers).
+fn norm_i128(z: &[zsqrt::Zq], delta: &IBig) -> Option<Poly> {
+    let small = |v: &IBig| i64::try_from(v).ok().map(i128::from);
+    let d = small(delta)?;
+    let ab: Vec<(i128, i128)> = z
+        .iter()
+        .map(|c| Some((small(&c.a)?, small(&c.b)?)))
+        .collect::<Option<_>>()?;
+    let n = ab.len();
+    let coeffs = (0..(2 * n).saturating_sub(1))
+        .map(|k| {
+            let (mut a, mut b) = (0i128, 0i128);
+            for i in k.saturating_sub(n - 1)..=k.min(n - 1) {
+                let j = k - i;
+                // products of two i64 fit an i128; the sums are checked
+                let (pa, pb) = (ab[i].0 * ab[j].0, ab[i].1 * ab[j].1);
+                let twice = |v: i128| if i < j { v.checked_mul(2) } else { Some(v) };
+                if i <= j {
+                    a = a.checked_add(twice(pa)?)?;
+                    b = b.checked_add(twice(pb)?)?;
+                }
+            }
+            Some(IBig::from(a.checked_sub(b.checked_mul(d)?)?))
+        })
+        .collect::<Option<Vec<IBig>>>()?;
+    Some(Poly::new(coeffs))
+}
+
 /// The norm `s·s̄ ∈ ℚ[u]` of `s` over ℚ(√δ) as an integer polynomial: `s_a² − δs_b²`
 /// for `s = s_a + s_b√δ`, fraction-free when the coefficients are integral.
 fn norm_of(s: &Poly<Quadratic>) -> Poly {
@@ -1029,6 +1058,9 @@ fn norm_of(s: &Poly<Quadratic>) -> Poly {
         .map(|c| c.radicand().clone())
         .unwrap_or(IBig::ZERO);
     if let Some(z) = zsqrt::zpoly(s, &delta) {
+        if let Some(norm) = norm_i128(&z, &delta) {
+            return norm;
+        }
         // Σ_{i+j=k} (aᵢaⱼ − δ·bᵢbⱼ): the rational part of s·s̄ only
         let n = z.len();
         let coeffs = (0..(2 * n).saturating_sub(1))
@@ -1384,6 +1416,14 @@ mod tests {
                 }
                 None => exact_roots_by_norm(&s, &norm_of(&s), &exact_sign),
             };
+            // the norm (in i128 or big integers) is s·s̄ computed over ℚ(√δ)
+            let generic: Vec<RBig> = (&s * &s.map(Quadratic::conjugate))
+                .coeffs()
+                .iter()
+                .map(|c| c.as_rational().cloned().expect("a norm is rational"))
+                .collect();
+            let generic = Poly::from_rational(&Poly::new(generic)).0;
+            assert_eq!(norm_of(&s).primitive_part(), generic.primitive_part());
             // which route discriminant_roots takes: the certificate on the norm of s/uᵏ
             let k = s
                 .coeffs()
