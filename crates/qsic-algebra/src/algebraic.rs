@@ -176,9 +176,12 @@ impl AlgebraicReal {
             }
             g = crate::int_gcd(&g, c);
         }
+        let lead_positive = p.leading() > IBig::ZERO;
         let sf = if !g.is_one() {
-            p.primitive_part()
-        } else if p.leading() > IBig::ZERO {
+            // g is the content (the loop ran through every coefficient)
+            let g = if lead_positive { g } else { -g };
+            Poly::new(coeffs.iter().map(|c| c / &g).collect())
+        } else if lead_positive {
             p.clone()
         } else {
             -p
