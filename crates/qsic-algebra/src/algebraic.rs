@@ -141,17 +141,50 @@ impl AlgebraicReal {
     /// assert!(AlgebraicReal::certified_real_roots_of(&Poly::from_roots(&[1, 1])).is_none());
     /// ```
     pub fn certified_real_roots_of(p: &Poly) -> Option<Vec<AlgebraicReal>> {
+        AlgebraicReal::certified_real_roots_where(p, |_| true)
+    }
+
+    /// [`Self::certified_real_roots_of`], keeping only the roots whose isolating interval
+    /// passes `keep` (the others are never built). `Some` proves `p` square-free.
+    ///
+    /// ```
+    /// # use qsic_algebra::{AlgebraicReal, Poly, RBig};
+    /// let p = Poly::from_i64s(&[-4, 0, 2]); // 2x² − 4: ±√2
+    /// let r = AlgebraicReal::certified_real_roots_where(&p, |iv| iv.lo() > &RBig::ZERO).unwrap();
+    /// assert_eq!(r.len(), 1);
+    /// assert!((r[0].to_f64() - 2f64.sqrt()).abs() < 1e-15);
+    /// ```
+    pub fn certified_real_roots_where(
+        p: &Poly,
+        mut keep: impl FnMut(&RootInterval) -> bool,
+    ) -> Option<Vec<AlgebraicReal>> {
         if p.degree().unwrap_or(0) == 0 || p.degree() > Some(MAX_CERTIFIED_DEGREE) {
             return None;
         }
         let roots = certified_real_roots_enclosed(p)?;
-        // primitive with a positive leading coefficient: two coprime coefficients prove the
-        // content 1 without the gcd of all of them
-        let lead = p.leading();
-        let sf = if lead > IBig::ZERO && crate::int_gcd(&lead, &p.coeff(0)).is_one() {
+        let roots: Vec<_> = roots.into_iter().filter(|r| keep(&r.interval)).collect();
+        if roots.is_empty() {
+            return Some(Vec::new());
+        }
+        // primitive with a positive leading coefficient: the gcd of the coefficients taken
+        // in turn until it is 1 (usually after two) proves the content 1 without dividing
+        let coeffs = p.coeffs();
+        let mut g = crate::int_gcd(&coeffs[coeffs.len() - 1], &IBig::ZERO);
+        for c in coeffs.iter().take(coeffs.len() - 1) {
+            if g.is_one() {
+                break;
+            }
+            g = crate::int_gcd(&g, c);
+        }
+        let lead_positive = p.leading() > IBig::ZERO;
+        let sf = if !g.is_one() {
+            // g is the content (the loop ran through every coefficient)
+            let g = if lead_positive { g } else { -g };
+            Poly::new(coeffs.iter().map(|c| c / &g).collect())
+        } else if lead_positive {
             p.clone()
         } else {
-            p.primitive_part()
+            -p
         };
         Some(
             roots

@@ -368,9 +368,22 @@ fn certified_disks(s: &Scaled) -> Option<(Vec<Complex>, Vec<f64>)> {
     Some((z, r))
 }
 
-/// `j·2ᵉ` as a rational.
+/// `j·2ᵉ` as a rational (`j` an integer below `2⁶³` in magnitude): the odd part of `j`
+/// over a power of two is already in lowest terms, so no gcd is taken; a normal float
+/// `j·2ᵉ` converts directly.
 fn dyadic(j: f64, e: i64) -> RBig {
-    let j = IBig::from(j as i64);
+    let j = j as i64;
+    if j == 0 {
+        return RBig::ZERO;
+    }
+    let t = j.trailing_zeros() as i64;
+    let (j, e) = (j >> t, e + t);
+    if (-1000..=0).contains(&e) && j.unsigned_abs() < 1 << 53 {
+        // j and j·2ᵉ ≥ 2⁻¹⁰⁰⁰ are exact floats; the conversion of an odd numerator over a
+        // power of two only strips trailing zeros
+        return RBig::try_from(j as f64 * pow2(e)).expect("a finite float");
+    }
+    let j = IBig::from(j);
     if e >= 0 {
         RBig::from(j << e as usize)
     } else {

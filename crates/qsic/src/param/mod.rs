@@ -1023,6 +1023,35 @@ fn variations(chain: &[Poly<Quadratic>], x: &RBig) -> usize {
     signs.windows(2).filter(|w| w[0] != w[1]).count()
 }
 
+/// The norm `Σ_{i+j=k} (aᵢaⱼ − δ·bᵢbⱼ)` of [`norm_of`] in checked `i128` when every
+/// coefficient and `δ` fit an `i64`; `None` on an overflow (the caller uses big integers).
+fn norm_i128(z: &[zsqrt::Zq], delta: &IBig) -> Option<Poly> {
+    let small = |v: &IBig| i64::try_from(v).ok().map(i128::from);
+    let d = small(delta)?;
+    let ab: Vec<(i128, i128)> = z
+        .iter()
+        .map(|c| Some((small(&c.a)?, small(&c.b)?)))
+        .collect::<Option<_>>()?;
+    let n = ab.len();
+    let coeffs = (0..(2 * n).saturating_sub(1))
+        .map(|k| {
+            let (mut a, mut b) = (0i128, 0i128);
+            for i in k.saturating_sub(n - 1)..=k.min(n - 1) {
+                let j = k - i;
+                // products of two i64 fit an i128; the sums are checked
+                let (pa, pb) = (ab[i].0 * ab[j].0, ab[i].1 * ab[j].1);
+                let twice = |v: i128| if i < j { v.checked_mul(2) } else { Some(v) };
+                if i <= j {
+                    a = a.checked_add(twice(pa)?)?;
+                    b = b.checked_add(twice(pb)?)?;
+                }
+            }
+            Some(IBig::from(a.checked_sub(b.checked_mul(d)?)?))
+        })
+        .collect::<Option<Vec<IBig>>>()?;
+    Some(Poly::new(coeffs))
+}
+
 /// The norm `s·s̄ ∈ ℚ[u]` of `s` over ℚ(√δ) as an integer polynomial: `s_a² − δs_b²`
 /// for `s = s_a + s_b√δ`, fraction-free when the coefficients are integral.
 fn norm_of(s: &Poly<Quadratic>) -> Poly {
@@ -1033,6 +1062,9 @@ fn norm_of(s: &Poly<Quadratic>) -> Poly {
         .map(|c| c.radicand().clone())
         .unwrap_or(IBig::ZERO);
     if let Some(z) = zsqrt::zpoly(s, &delta) {
+        if let Some(norm) = norm_i128(&z, &delta) {
+            return norm;
+        }
         // Σ_{i+j=k} (aᵢaⱼ − δ·bᵢbⱼ): the rational part of s·s̄ only
         let n = z.len();
         let coeffs = (0..(2 * n).saturating_sub(1))
@@ -1093,15 +1125,87 @@ fn certified_sign_zsqrt(a: &[f64], b: &[f64], sqrt_delta: f64, x: f64) -> Option
     qsic_algebra::filter::certified_sign(value, bound)
 }
 
-/// `x` as a float if it is one exactly (a dyadic of at most 53 bits).
+/// `x` as a float if it is one exactly: a dyadic `m/2ᵏ` with `|m| < 2⁵³` and `k ≤ 1000`
+/// (then `m` and `m·2⁻ᵏ`, normal, are exact in `f64`), without a rational round trip.
 fn exact_f64(x: &RBig) -> Option<f64> {
     use dashu_int::ops::{BitTest, PowerOfTwo};
     let den = x.denominator();
-    if !den.is_power_of_two() || x.numerator().bit_len() > 53 {
+    if !den.is_power_of_two() {
         return None;
     }
-    let v = x.to_f64().value();
-    (RBig::try_from(v).ok().as_ref() == Some(x)).then_some(v)
+    let k = den.bit_len() - 1;
+    let m = i64::try_from(x.numerator()).ok()?;
+    if k > 1000 || m.unsigned_abs() >= 1 << 53 {
+        return None;
+    }
+    // 2⁻ᵏ from its bits (1023 − k is a biased exponent of a normal float)
+    let scale = f64::from_bits(((1023 - k) as u64) << 52);
+    Some(m as f64 * scale)
+}
+
+/// A rational strictly between the real roots isolated by `a` < `b` (disjoint intervals
+/// whose open ends are not roots): an open end of one of them when it lies beyond the
+/// other's root (a dyadic of few bits from the isolation), else [`rational_between`].
+fn sample_between(a: &RootInterval, b: &RootInterval) -> RBig {
+    use RootInterval::{Exact, Open};
+    match (a, b) {
+        // root_a < hi_a ≤ lo_b < root_b
+        (Open(_, h), Open(l, _)) if h <= l => h.clone(),
+        // root_a < hi_a < v
+        (Open(_, h), Exact(v)) if h < v => h.clone(),
+        // v < lo_b < root_b
+        (Exact(v), Open(l, _)) if v < l => l.clone(),
+        _ => rational_between(a, b),
+    }
+}
+
+/// The real roots of `s` over ℚ(√δ) (`s(0) ≠ 0`, not over ℚ) and whether `s` is
+/// square-free: the roots of the norm `s·s̄` where `sign_at` (the sign of `s`, or of `s`
+/// times a power of `u`) changes.
+fn nonzero_roots(
+    s: &Poly<Quadratic>,
+    sign_at: &dyn Fn(&RBig) -> Sign,
+) -> (Vec<AlgebraicReal>, bool) {
+    let norm = norm_of(s);
+    // the certified float isolation proves the norm square-free when it answers
+    // (then each root of s·s̄ is a simple root of exactly one of s, s̄)
+    let of_s = |iv: &RootInterval| match iv {
+        RootInterval::Exact(v) => sign_at(v) == Sign::Zero,
+        RootInterval::Open(lo, hi) => sign_at(lo) != sign_at(hi),
+    };
+    if let Some(roots) = AlgebraicReal::certified_real_roots_where(&norm, of_s) {
+        return (roots, true);
+    }
+    exact_roots_by_norm(s, &norm, sign_at)
+}
+
+/// The real roots of `s` over ℚ(√δ) from the exact isolation of its norm `s·s̄` (any `s`
+/// not over ℚ, also one with `s(0) = 0`), and whether `s` is square-free.
+fn exact_roots_by_norm(
+    s: &Poly<Quadratic>,
+    norm: &Poly,
+    sign_at: &dyn Fn(&RBig) -> Sign,
+) -> (Vec<AlgebraicReal>, bool) {
+    let sf = norm.squarefree_part();
+    // s divides its norm: a square-free norm makes s square-free (the common
+    // case, without a gcd over ℚ(√δ))
+    let squarefree =
+        sf.degree() == norm.degree() || s.gcd_monic(&s.derivative()).degree() == Some(0);
+    // each interval holds one root of s·s̄; a simple root of s there changes its
+    // sign, and a square-free s has no other kind (else count by Sturm)
+    let chain = (!squarefree).then(|| sturm_chain(s));
+    let roots = isolate_squarefree_real_roots(&sf)
+        .into_iter()
+        .filter(|iv| match (iv, &chain) {
+            (RootInterval::Exact(r), _) => sign_at(r) == Sign::Zero,
+            (RootInterval::Open(lo, hi), None) => sign_at(lo) != sign_at(hi),
+            (RootInterval::Open(lo, hi), Some(chain)) => {
+                variations(chain, lo) > variations(chain, hi)
+            }
+        })
+        .filter_map(|iv| AlgebraicReal::from_isolating_interval(&sf, &iv))
+        .collect();
+    (roots, squarefree)
 }
 
 /// The real roots of `s` (see [`DiscriminantRoots`]).
@@ -1135,44 +1239,33 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
     let (roots, squarefree) = match rational {
         Some(c) => {
             let p = Poly::from_rational(&Poly::new(c)).0;
-            let squarefree = p.squarefree_part().degree() == p.degree();
-            (AlgebraicReal::real_roots_of(&p), squarefree)
+            // the certified float isolation proves p square-free when it answers
+            match AlgebraicReal::certified_real_roots_of(&p) {
+                Some(roots) => (roots, true),
+                None => {
+                    let squarefree = p.squarefree_part().degree() == p.degree();
+                    (AlgebraicReal::real_roots_of(&p), squarefree)
+                }
+            }
         }
         None => {
-            let norm = norm_of(s);
-            // the certified float isolation proves the norm square-free when it answers
-            // (then each root of s·s̄ is a simple root of exactly one of s, s̄)
-            if let Some(all) = AlgebraicReal::certified_real_roots_of(&norm) {
-                let roots = all
-                    .into_iter()
-                    .filter(|r| match r.interval() {
-                        RootInterval::Exact(v) => sign_at(v) == Sign::Zero,
-                        RootInterval::Open(lo, hi) => sign_at(lo) != sign_at(hi),
-                    })
-                    .collect();
-                (roots, true)
+            // s = uᵏ·s₁ with s₁(0) ≠ 0: the root 0 apart, so that the norm of s₁ is
+            // square-free in the generic case (that of s has the double root 0)
+            let k = s
+                .coeffs()
+                .iter()
+                .take_while(|c| c.as_rational().is_some_and(|v| v.is_zero()))
+                .count();
+            let (mut roots, squarefree) = if k > 0 {
+                nonzero_roots(&s.shift_down(k), &sign_at)
             } else {
-                let sf = norm.squarefree_part();
-                // s divides its norm: a square-free norm makes s square-free (the common
-                // case, without a gcd over ℚ(√δ))
-                let squarefree = sf.degree() == norm.degree()
-                    || s.gcd_monic(&s.derivative()).degree() == Some(0);
-                // each interval holds one root of s·s̄; a simple root of s there changes its
-                // sign, and a square-free s has no other kind (else count by Sturm)
-                let chain = (!squarefree).then(|| sturm_chain(s));
-                let roots = isolate_squarefree_real_roots(&sf)
-                    .into_iter()
-                    .filter(|iv| match (iv, &chain) {
-                        (RootInterval::Exact(r), _) => sign_at(r) == Sign::Zero,
-                        (RootInterval::Open(lo, hi), None) => sign_at(lo) != sign_at(hi),
-                        (RootInterval::Open(lo, hi), Some(chain)) => {
-                            variations(chain, lo) > variations(chain, hi)
-                        }
-                    })
-                    .filter_map(|iv| AlgebraicReal::from_isolating_interval(&sf, &iv))
-                    .collect();
-                (roots, squarefree)
+                nonzero_roots(s, &sign_at)
+            };
+            if k > 0 {
+                let at = roots.partition_point(|r| r.interval().hi() <= &RBig::ZERO);
+                roots.insert(at, AlgebraicReal::from_rational(RBig::ZERO));
             }
+            (roots, squarefree && k <= 1)
         }
     };
     let mut samples = Vec::new();
@@ -1181,7 +1274,7 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
             samples.push(RBig::from(first.interval().lo().floor()) - RBig::ONE);
             // the stated intervals come from one isolation of the norm: disjoint, short ends
             for w in roots.windows(2) {
-                samples.push(rational_between(w[0].interval(), w[1].interval()));
+                samples.push(sample_between(w[0].interval(), w[1].interval()));
             }
             samples.push(RBig::from(last.interval().hi().ceil()) + RBig::ONE);
         }
@@ -1239,6 +1332,137 @@ mod tests {
         // no real root, negative: the sample's sign
         let d = discriminant_roots(&Poly::new(vec![rq(-1), rq(0), rq(0), rq(0), r2.neg()]));
         assert!(d.roots.is_empty() && d.arcs == [(RBig::ZERO, Sign::Negative)]);
+    }
+
+    /// A random `s` over ℤ[√δ] (`δ = 0`: over ℤ) of one of the families: small random
+    /// coefficients; products of linear factors with roots `2⁻³⁰` apart (near-double roots),
+    /// a rational root, or a repeated factor; a root at 0 (simple or double); coefficients of
+    /// sizes from 1 to 2¹²⁰ (the certificate may fail: the exact route answers).
+    fn random_s(rng: &mut qsic_algebra::testing::SplitMix, family: u64) -> Poly<Quadratic> {
+        let delta = [0i64, 2, 3, 5, 7, 13][rng.int(0, 5) as usize];
+        let d = IBig::from(delta);
+        let zq = |a: IBig, b: IBig| zsqrt::Zq {
+            a,
+            b: if delta == 0 { IBig::ZERO } else { b },
+        };
+        let small = |rng: &mut qsic_algebra::testing::SplitMix| IBig::from(rng.int(-20, 20));
+        let mul = |x: &[zsqrt::Zq], y: &[zsqrt::Zq]| zsqrt::poly_mul(x, y, &d);
+        let z: Vec<zsqrt::Zq> = match family % 5 {
+            0 => (0..5).map(|_| zq(small(rng), small(rng))).collect(),
+            1 => {
+                // (2³⁰u − p − q√δ)(2³⁰u − p − 1 − q√δ)·(quadratic)
+                let (p, q) = (IBig::from(rng.int(-1 << 31, 1 << 31)), small(rng));
+                let big = IBig::ONE << 30;
+                let l1 = [zq(-&p, -&q), zq(big.clone(), IBig::ZERO)];
+                let l2 = [zq(-&p - IBig::ONE, -&q), zq(big, IBig::ZERO)];
+                let quad: Vec<_> = (0..3).map(|_| zq(small(rng), small(rng))).collect();
+                mul(&mul(&l1, &l2), &quad)
+            }
+            2 => {
+                // a rational root m/n, or a squared factor
+                let n = IBig::from(rng.int(1, 9));
+                let lin = [zq(small(rng), IBig::ZERO), zq(n, IBig::ZERO)];
+                let other = if rng.int(0, 1) == 0 {
+                    lin.to_vec()
+                } else {
+                    vec![zq(small(rng), small(rng)), zq(small(rng), small(rng))]
+                };
+                let quad: Vec<_> = (0..3).map(|_| zq(small(rng), small(rng))).collect();
+                mul(&mul(&lin, &other), &quad)
+            }
+            3 => {
+                // a root at 0 of multiplicity 1 or 2
+                let k = rng.int(1, 2) as usize;
+                (0..5)
+                    .map(|i| {
+                        if i < k {
+                            zq(IBig::ZERO, IBig::ZERO)
+                        } else {
+                            zq(small(rng), small(rng))
+                        }
+                    })
+                    .collect()
+            }
+            _ => (0..5)
+                .map(|_| {
+                    let shift = rng.int(0, 120) as usize;
+                    zq(small(rng) << shift, small(rng) << shift)
+                })
+                .collect(),
+        };
+        zsqrt::to_poly(&z, &d)
+    }
+
+    /// The certified route of [`discriminant_roots`] against the exact isolation (Descartes
+    /// on the square-free part of the norm, Sturm for a repeated root): the same roots, the
+    /// same square-freeness, and samples strictly between the roots with the exact signs.
+    #[test]
+    fn discriminant_roots_agree_with_the_exact_isolation() {
+        let mut rng = qsic_algebra::testing::SplitMix(77);
+        let mut checked = [0usize; 5];
+        let mut routes = [0usize; 2];
+        for i in 0..400u64 {
+            let s = random_s(&mut rng, i);
+            if s.degree().unwrap_or(0) == 0 {
+                continue;
+            }
+            let exact_sign = |x: &RBig| sign(&s.eval(&q(x)));
+            let (roots, squarefree) = match s
+                .coeffs()
+                .iter()
+                .map(|c| c.as_rational().cloned())
+                .collect::<Option<Vec<RBig>>>()
+            {
+                Some(c) => {
+                    let p = Poly::from_rational(&Poly::new(c)).0;
+                    let sf = p.squarefree_part().degree() == p.degree();
+                    (AlgebraicReal::real_roots_of(&p), sf)
+                }
+                None => exact_roots_by_norm(&s, &norm_of(&s), &exact_sign),
+            };
+            // the norm (in i128 or big integers) is s·s̄ computed over ℚ(√δ)
+            let generic: Vec<RBig> = (&s * &s.map(Quadratic::conjugate))
+                .coeffs()
+                .iter()
+                .map(|c| c.as_rational().cloned().expect("a norm is rational"))
+                .collect();
+            let generic = Poly::from_rational(&Poly::new(generic)).0;
+            assert_eq!(norm_of(&s).primitive_part(), generic.primitive_part());
+            // which route discriminant_roots takes: the certificate on the norm of s/uᵏ
+            let k = s
+                .coeffs()
+                .iter()
+                .take_while(|c| c.sign() == Some(Sign::Zero))
+                .count();
+            let s1 = s.shift_down(k);
+            let p = match s1.coeffs().iter().all(|c| c.as_rational().is_some()) {
+                true => Poly::from_rational(&s1.map(|c| c.as_rational().cloned().unwrap())).0,
+                false => norm_of(&s1),
+            };
+            routes[usize::from(AlgebraicReal::certified_real_roots_of(&p).is_some())] += 1;
+            let d = discriminant_roots(&s);
+            assert_eq!(d.roots, roots, "roots of {s}");
+            assert_eq!(d.squarefree, squarefree, "square-free {s}");
+            assert_eq!(d.at_infinity, s.degree() < Some(4));
+            assert!(d.roots.iter().all(AlgebraicReal::is_valid));
+            assert_eq!(d.arcs.len(), d.roots.len() + 1, "{s}");
+            for (j, (x, sg)) in d.arcs.iter().enumerate() {
+                let at = AlgebraicReal::from_rational(x.clone());
+                assert!(j == 0 || d.roots[j - 1] < at, "sample {x} of {s}");
+                assert!(j == d.roots.len() || at < d.roots[j], "sample {x} of {s}");
+                assert_eq!(*sg, exact_sign(x), "sign at {x} of {s}");
+                assert_ne!(*sg, Sign::Zero);
+                // short: about the bits that separate the roots (down to 2⁻¹²⁰ here)
+                assert!(
+                    dashu_int::ops::BitTest::bit_len(x.denominator()) <= 160,
+                    "a short sample {x}"
+                );
+            }
+            checked[(i % 5) as usize] += 1;
+        }
+        assert!(checked.iter().all(|&c| c > 50), "{checked:?}");
+        // both routes: the certificate and its failure (double roots, huge ranges)
+        assert!(routes[0] > 20 && routes[1] > 100, "{routes:?}");
     }
 
     /// The pairs of cases 1–4: random ones (entries up to `bound`) and the corpus lines.
