@@ -1539,7 +1539,10 @@ mod tests {
                 }
             }
         }
-        assert!(total >= 40 && integral * 10 >= total * 9, "{integral}/{total}");
+        assert!(
+            total >= 40 && integral * 10 >= total * 9,
+            "{integral}/{total}"
+        );
         assert!(widest <= 300, "a {widest}-bit coefficient");
     }
 
