@@ -234,13 +234,18 @@ fn smooth_quartic(
         surface.ruling.b = std::array::from_fn(|i| down(&fast.b[i], db));
         surface.ruling.d = std::array::from_fn(|i| down(&fast.d[i], dd));
         let s = down(&fast.s, 2 * (db + dd));
+        // the integral s: a positive multiple of `s` (same roots and signs)
+        let discriminant = if fast.down == 0 {
+            discriminant_roots(&s)
+        } else {
+            discriminant_roots(&zsqrt::to_poly(&fast.s, d0))
+        };
         let levin = LevinParameterization {
             delta,
             substituted,
             a: std::array::from_fn(|i| down(&fast.a[i], 2 * dd + db)),
             d: surface.ruling.d.clone(),
-            // the integral s: a positive multiple of `s` (same roots and signs)
-            discriminant: discriminant_roots(&zsqrt::to_poly(&fast.s, d0)),
+            discriminant,
             s,
             surface,
         };
@@ -306,10 +311,11 @@ fn smooth_quartic(
     ))
 }
 
-/// The ruling of a doubly ruled surface with small integers ([`zsqrt::reduce_ruling`]: the
-/// same surface and lines, another parameterization of them); left as it is when a
-/// coefficient is not integral over ℤ[√δ].
-fn reduce_doubly_ruled(ruling: &mut RuledParameterization) {
+/// The ruling's `δ` (0 over ℚ), `b` and `d` over ℤ[√δ]; `None` when a coefficient is not
+/// integral.
+fn integral_ruling(
+    ruling: &RuledParameterization,
+) -> Option<(IBig, [zsqrt::ZPoly; 4], [zsqrt::ZPoly; 4])> {
     let delta = ruling.delta.clone().unwrap_or(IBig::ZERO);
     let conv = |v: &PolyVector| -> Option<[zsqrt::ZPoly; 4]> {
         let out: Vec<zsqrt::ZPoly> = v
@@ -318,7 +324,15 @@ fn reduce_doubly_ruled(ruling: &mut RuledParameterization) {
             .collect::<Option<_>>()?;
         out.try_into().ok()
     };
-    let (Some(mut b), Some(mut d)) = (conv(&ruling.b), conv(&ruling.d)) else {
+    let (b, d) = (conv(&ruling.b)?, conv(&ruling.d)?);
+    Some((delta, b, d))
+}
+
+/// The ruling of a doubly ruled surface with small integers ([`zsqrt::reduce_ruling`]: the
+/// same surface and lines, another parameterization of them); left as it is when a
+/// coefficient is not integral over ℤ[√δ].
+fn reduce_doubly_ruled(ruling: &mut RuledParameterization) {
+    let Some((delta, mut b, mut d)) = integral_ruling(ruling) else {
         return;
     };
     if zsqrt::reduce_ruling(&mut b, &mut d) {
@@ -328,11 +342,12 @@ fn reduce_doubly_ruled(ruling: &mut RuledParameterization) {
 }
 
 /// The forms of [`smooth_quartic`] over ℤ[√δ] on the integer matrix `qm` of the substituted
-/// quadric, on the ruling reduced first ([`zsqrt::reduce_ruling`]): `c₀ = bᵀQb`, `c₁ = bᵀQd`, `c₂ = dᵀQd`, `s`, `a`, `alt`, then the balancing as a
-/// substitution in every form ([`balance_exponent`]: a form of the substituted ruling is
-/// the substituted form, the substitution being a ring map); for `k < 0` integral forms
-/// times `2^(−k·degree)`, divided out by the conversions when large (`down`). `Ok(None)` when the ruling is
-/// not integral (the rational route then).
+/// quadric, on the ruling reduced first ([`zsqrt::reduce_ruling`]): `c₀ = bᵀQb`,
+/// `c₁ = bᵀQd`, `c₂ = dᵀQd`, `s`, `a`, `alt`, then the balancing as a substitution in every
+/// form ([`balance_exponent`]: a form of the substituted ruling is the substituted form, the
+/// substitution being a ring map); for `k < 0` integral forms times `2^(−k·degree)`,
+/// divided out by the conversions when large (`down`). `Ok(None)` when the ruling is not
+/// integral (the rational route then).
 ///
 /// # Errors
 /// [`Error::Algebra`] if `s ≡ 0`.
@@ -341,30 +356,15 @@ fn integral_levin(
     ruling: &RuledParameterization,
     kind: SurfaceKind,
 ) -> Result<Option<IntegralLevin>, Error> {
-    let delta = ruling.delta.clone().unwrap_or(IBig::ZERO);
-    let conv = |v: &PolyVector| -> Option<[zsqrt::ZPoly; 4]> {
-        let out: Vec<zsqrt::ZPoly> = v
-            .iter()
-            .map(|p| zsqrt::zpoly(p, &delta))
-            .collect::<Option<_>>()?;
-        out.try_into().ok()
-    };
-    let (Some(mut b), Some(mut d)) = (conv(&ruling.b), conv(&ruling.d)) else {
+    let Some((delta, mut b, mut d)) = integral_ruling(ruling) else {
         return Ok(None);
     };
     if kind == SurfaceKind::DoublyRuled {
         zsqrt::reduce_ruling(&mut b, &mut d);
     }
     // in machine integers when everything fits, else in big integers
-    let (mut s, mut a, mut alt) = match zsqrt::levin_small(qm, &b, &d, &delta) {
-        Some(forms) => forms,
-        None => {
-            let [c0, c1, c2, s] = zsqrt::levin_forms(qm, &b, &d, &delta);
-            let a = zsqrt::combine(&c2, &b, &c1, &d, &delta);
-            let alt = zsqrt::combine(&c1, &b, &c0, &d, &delta);
-            (s, a, alt)
-        }
-    };
+    let (mut s, mut a, mut alt) = zsqrt::levin_small(qm, &b, &d, &delta)
+        .unwrap_or_else(|| zsqrt::levin_big(qm, &b, &d, &delta));
     for p in b.iter_mut().chain(&mut d).chain(&mut a).chain(&mut alt) {
         zsqrt::trim(p);
     }

@@ -530,60 +530,27 @@ fn zi_form(m: &[[i128; 4]; 4], x: &[Vec<Zi>; 4], y: &[Vec<Zi>; 4], delta: i128) 
     Some(acc[..n].to_vec())
 }
 
-/// `c₀ = bᵀMb`, `c₁ = bᵀMd`, `c₂ = dᵀMd` and `s = c₁² − c₀c₂` over ℤ[√δ]: in machine
-/// integers when everything fits (checked), else in [`Zq`]; the same values.
-pub(crate) fn levin_forms(
+/// [`levin_small`]'s `s`, `a`, `alt` in big integers: the route when a number leaves
+/// `i128` (and the reference its tests compare with).
+pub(crate) fn levin_big(
     m: &[[IBig; 4]; 4],
     b: &[ZPoly; 4],
     d: &[ZPoly; 4],
     delta: &IBig,
-) -> [ZPoly; 4] {
-    let small = || -> Option<[ZPoly; 4]> {
-        let mi: [[i128; 4]; 4] = {
-            let mut out = [[0i128; 4]; 4];
-            for i in 0..4 {
-                for j in 0..4 {
-                    out[i][j] = i128::try_from(&m[i][j]).ok()?;
-                }
-            }
-            out
-        };
-        let dl = i128::try_from(delta).ok()?;
-        let conv = |v: &[ZPoly; 4]| -> Option<[Vec<Zi>; 4]> {
-            Some([
-                zi_poly(&v[0])?,
-                zi_poly(&v[1])?,
-                zi_poly(&v[2])?,
-                zi_poly(&v[3])?,
-            ])
-        };
-        let (bi, di) = (conv(b)?, conv(d)?);
-        let c0 = zi_form(&mi, &bi, &bi, dl)?;
-        let c1 = zi_form(&mi, &bi, &di, dl)?;
-        let c2 = zi_form(&mi, &di, &di, dl)?;
-        let big = |p: &[Zi]| -> ZPoly { p.iter().map(|c| c.big()).collect() };
-        let s = match (zi_mul(&c1, &c1, dl), zi_mul(&c0, &c2, dl)) {
-            (Some(x), Some(y)) => zi_sub(&x, &y).map(|s| big(&s)),
-            _ => None,
-        };
-        let (c0, c1, c2) = (big(&c0), big(&c1), big(&c2));
-        let s =
-            s.unwrap_or_else(|| poly_sub(&poly_mul(&c1, &c1, delta), &poly_mul(&c0, &c2, delta)));
-        Some([c0, c1, c2, s])
-    };
-    if let Some(out) = small() {
-        return out;
-    }
+) -> (ZPoly, [ZPoly; 4], [ZPoly; 4]) {
     let c0 = poly_form(m, b, b, delta);
     let c1 = poly_form(m, b, d, delta);
     let c2 = poly_form(m, d, d, delta);
     let s = poly_sub(&poly_mul(&c1, &c1, delta), &poly_mul(&c0, &c2, delta));
-    [c0, c1, c2, s]
+    let combine = |x: &[Zq], y: &[Zq]| -> [ZPoly; 4] {
+        std::array::from_fn(|i| poly_sub(&poly_mul(x, &b[i], delta), &poly_mul(y, &d[i], delta)))
+    };
+    (s, combine(&c2, &c1), combine(&c1, &c0))
 }
 
 /// Levin's whole form in machine integers, every operation checked: `s = c₁² − c₀c₂`,
 /// `a = c₂b − c₁d` and `alt = c₁b − c₀d` with `c₀ = bᵀMb`, `c₁ = bᵀMd`, `c₂ = dᵀMd` over
-/// ℤ[√δ] ([`levin_forms`] and [`combine`] in one pass, converted to [`Zq`] once); `None`
+/// ℤ[√δ] (in one pass, converted to [`Zq`] once; [`levin_big`] computes the same); `None`
 /// when a number leaves `i128`.
 pub(crate) fn levin_small(
     m: &[[IBig; 4]; 4],
@@ -632,32 +599,6 @@ pub(crate) fn levin_small(
         )?);
     }
     Some((big(&s), a, alt))
-}
-
-/// `x·v − y·w` coordinatewise over ℤ[√δ] (machine integers when they fit, checked).
-pub(crate) fn combine(
-    x: &[Zq],
-    v: &[ZPoly; 4],
-    y: &[Zq],
-    w: &[ZPoly; 4],
-    delta: &IBig,
-) -> [ZPoly; 4] {
-    let small = || -> Option<[ZPoly; 4]> {
-        let dl = i128::try_from(delta).ok()?;
-        let (xi, yi) = (zi_poly(x)?, zi_poly(y)?);
-        let mut out: [ZPoly; 4] = Default::default();
-        for i in 0..4 {
-            let p = zi_sub(
-                &zi_mul(&xi, &zi_poly(&v[i])?, dl)?,
-                &zi_mul(&yi, &zi_poly(&w[i])?, dl)?,
-            )?;
-            out[i] = p.iter().map(|c| c.big()).collect();
-        }
-        Some(out)
-    };
-    small().unwrap_or_else(|| {
-        std::array::from_fn(|i| poly_sub(&poly_mul(x, &v[i], delta), &poly_mul(y, &w[i], delta)))
-    })
 }
 
 #[cfg(test)]
@@ -781,6 +722,7 @@ mod tests {
     #[test]
     fn machine_forms_equal_big_forms() {
         let mut rng = SplitMix(17);
+        let (mut small, mut overflowed) = (0, 0);
         for (bits, delta) in [(4usize, 0i64), (10, 7), (30, 2), (60, 3), (90, 5)] {
             let delta = IBig::from(delta);
             for _ in 0..20 {
@@ -792,23 +734,34 @@ mod tests {
                 let irr = !delta.is_zero();
                 let b: [ZPoly; 4] = std::array::from_fn(|_| random_poly(&mut rng, bits, irr, 2));
                 let d: [ZPoly; 4] = std::array::from_fn(|_| random_poly(&mut rng, bits, irr, 3));
-                let [c0, c1, c2, s] = levin_forms(&m, &b, &d, &delta);
                 let same = |x: &[Zq], y: &[Zq]| to_poly(x, &delta) == to_poly(y, &delta);
                 let (e0, e1, e2) = (
                     poly_form(&m, &b, &b, &delta),
                     poly_form(&m, &b, &d, &delta),
                     poly_form(&m, &d, &d, &delta),
                 );
-                assert!(same(&c0, &e0) && same(&c1, &e1) && same(&c2, &e2));
                 let es = poly_sub(&poly_mul(&e1, &e1, &delta), &poly_mul(&e0, &e2, &delta));
+                let (bs, ba, balt) = levin_big(&m, &b, &d, &delta);
+                assert!(same(&bs, &es));
+                let Some((s, a, alt)) = levin_small(&m, &b, &d, &delta) else {
+                    overflowed += 1;
+                    continue;
+                };
+                small += 1;
                 assert!(same(&s, &es));
-                let a = combine(&c2, &b, &c1, &d, &delta);
                 for i in 0..4 {
                     let want =
                         poly_sub(&poly_mul(&e2, &b[i], &delta), &poly_mul(&e1, &d[i], &delta));
-                    assert!(same(&a[i], &want));
+                    assert!(same(&a[i], &want) && same(&ba[i], &want));
+                    let want =
+                        poly_sub(&poly_mul(&e1, &b[i], &delta), &poly_mul(&e0, &d[i], &delta));
+                    assert!(same(&alt[i], &want) && same(&balt[i], &want));
                 }
             }
         }
+        assert!(
+            small >= 40 && overflowed >= 10,
+            "{small} small, {overflowed} past i128"
+        );
     }
 }
