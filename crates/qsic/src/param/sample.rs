@@ -930,6 +930,22 @@ fn newton_bracketed(f: &dyn Fn(f64) -> (f64, f64), lo: f64, hi: f64, flo: f64) -
     x
 }
 
+/// The reduced parameters ([`reduced_parameter`]) of the grid `θₖ = t₀ + k·step`,
+/// `k = 1, …, n − 1`: `(sin θₖ, cos θₖ)` by rotations from `(0, 1)`, exact every
+/// [`RESYNC`] points.
+fn grid_parameters(t0: f64, step: f64, n: usize) -> impl Iterator<Item = (f64, bool)> {
+    let (sh, ch) = step.sin_cos();
+    let mut u = (0.0, 1.0);
+    (1..n).map(move |k| {
+        u = if k % RESYNC == 1 {
+            (t0 + step * (k as f64)).sin_cos()
+        } else {
+            (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh)
+        };
+        reduced_parameter(u)
+    })
+}
+
 /// `X(U₀, U₁)` as `t = U₀/U₁` (`|t| ≤ 1`) or `t = U₁/U₀` with the coefficients reversed.
 fn reduced_parameter(u: (f64, f64)) -> (f64, bool) {
     if u.1.abs() >= u.0.abs() {
@@ -1160,15 +1176,7 @@ impl<'a> Evaluator<'a> {
         plus.reserve(n);
         minus.clear();
         minus.reserve(n);
-        let (sh, ch) = step.sin_cos();
-        let mut u = (0.0, 1.0);
-        for k in 1..n {
-            u = if k % RESYNC == 1 {
-                (t0 + step * (k as f64)).sin_cos()
-            } else {
-                (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh)
-            };
-            let (t, rev) = reduced_parameter(u);
+        for (t, rev) in grid_parameters(t0, step, n) {
             let (a, w, root) = self.parts::<NA, ND>(t, rev);
             // the same operations as `values` on either sheet
             let (mut p, mut m) = (a, a);
@@ -1205,15 +1213,7 @@ impl<'a> Evaluator<'a> {
     ) {
         out.clear();
         out.reserve(n);
-        let (sh, ch) = step.sin_cos();
-        let mut u = (0.0, 1.0);
-        for k in 1..n {
-            u = if k % RESYNC == 1 {
-                (t0 + step * (k as f64)).sin_cos()
-            } else {
-                (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh)
-            };
-            let (t, rev) = reduced_parameter(u);
+        for (t, rev) in grid_parameters(t0, step, n) {
             let (x, root) = self.values::<NA, ND>(t, rev, sheet);
             out.push(
                 self.unit_of(x, root, t, rev, sheet)
