@@ -317,14 +317,10 @@ fn integral_ruling(
     ruling: &RuledParameterization,
 ) -> Option<(IBig, [zsqrt::ZPoly; 4], [zsqrt::ZPoly; 4])> {
     let delta = ruling.delta.clone().unwrap_or(IBig::ZERO);
-    let conv = |v: &PolyVector| -> Option<[zsqrt::ZPoly; 4]> {
-        let out: Vec<zsqrt::ZPoly> = v
-            .iter()
-            .map(|p| zsqrt::zpoly(p, &delta))
-            .collect::<Option<_>>()?;
-        out.try_into().ok()
-    };
-    let (b, d) = (conv(&ruling.b)?, conv(&ruling.d)?);
+    let (b, d) = (
+        zsqrt::zvector(&ruling.b, &delta)?,
+        zsqrt::zvector(&ruling.d, &delta)?,
+    );
     Some((delta, b, d))
 }
 

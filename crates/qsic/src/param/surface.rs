@@ -156,14 +156,7 @@ fn integral_poly_form(m: &Mat4, x: &PolyVector, y: &PolyVector) -> Option<Poly<Q
     let mi = zsqrt::integer_matrix(m)?;
     let delta =
         radicand_of(x.iter().chain(y.iter()).flat_map(|p| p.coeffs())).unwrap_or(IBig::ZERO);
-    let conv = |v: &PolyVector| -> Option<[zsqrt::ZPoly; 4]> {
-        let out: Vec<zsqrt::ZPoly> = v
-            .iter()
-            .map(|p| zsqrt::zpoly(p, &delta))
-            .collect::<Option<_>>()?;
-        out.try_into().ok()
-    };
-    let (xz, yz) = (conv(x)?, conv(y)?);
+    let (xz, yz) = (zsqrt::zvector(x, &delta)?, zsqrt::zvector(y, &delta)?);
     Some(zsqrt::to_poly(
         &zsqrt::poly_form(&mi, &xz, &yz, &delta),
         &delta,

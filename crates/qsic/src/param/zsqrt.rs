@@ -83,6 +83,16 @@ pub(crate) fn zpoly(p: &Poly<Quadratic>, delta: &IBig) -> Option<ZPoly> {
         .collect()
 }
 
+/// The four coordinates of `v` over ℤ[√δ] ([`zpoly`]); `None` unless all are integral.
+pub(crate) fn zvector(v: &[Poly<Quadratic>; 4], delta: &IBig) -> Option<[ZPoly; 4]> {
+    Some([
+        zpoly(&v[0], delta)?,
+        zpoly(&v[1], delta)?,
+        zpoly(&v[2], delta)?,
+        zpoly(&v[3], delta)?,
+    ])
+}
+
 /// Back to a polynomial over ℚ(√δ).
 pub(crate) fn to_poly(p: &[Zq], delta: &IBig) -> Poly<Quadratic> {
     Poly::new(p.iter().map(|c| c.to_quadratic(delta)).collect())
