@@ -96,43 +96,20 @@ impl PencilData {
 /// Five 4×4 principal-minor evaluations instead of every minor of the pencil.
 pub(crate) fn principal_minor_sums_of_pencil(a: &[[IBig; 4]; 4], b: &[[IBig; 4]; 4]) -> [Poly; 4] {
     use qsic_algebra::linalg::minors::principal_minor_sums;
-    // entries below 2²² in A and B: those of λA − B (|λ| ≤ 2) below 2²⁴, every minor below
-    // 2¹⁰⁸, so i128 (the bound of `minors`' machine path)
-    let small = |m: &[[IBig; 4]; 4]| -> Option<[[i128; 4]; 4]> {
-        let mut out = [[0i128; 4]; 4];
+    let small = |m: &[[IBig; 4]; 4]| -> Option<[[i64; 4]; 4]> {
+        let mut out = [[0i64; 4]; 4];
         for i in 0..4 {
             for j in 0..4 {
-                let v = i64::try_from(&m[i][j]).ok()?;
-                if v.unsigned_abs() >= 1 << 22 {
-                    return None;
-                }
-                out[i][j] = i128::from(v);
+                out[i][j] = i64::try_from(&m[i][j]).ok()?;
             }
         }
         Some(out)
     };
-    if let Some((ai, bi)) = small(a).zip(small(b)) {
-        let at = |l: i128| -> [i128; 4] {
-            let m: [[i128; 4]; 4] =
-                std::array::from_fn(|i| std::array::from_fn(|j| l * ai[i][j] - bi[i][j]));
-            principal_minor_sums(&m)
-        };
-        // every value below 2¹⁰¹ in size: the combinations below stay under 2¹¹⁰
-        let lead = principal_minor_sums(&ai);
-        let (v0, v1, vm1, v2) = (at(0), at(1), at(-1), at(2));
-        return std::array::from_fn(|k| {
-            let (deg, c) = (k as u32 + 1, lead[k]);
-            let q0 = v0[k];
-            let q1 = v1[k] - c;
-            let qm1 = vm1[k] - c * (-1i128).pow(deg);
-            let q2 = v2[k] - c * 2i128.pow(deg);
-            let a2 = (q1 + qm1) / 2 - q0;
-            let t = (q1 - qm1) / 2;
-            let a3 = (q2 - q0 - 4 * a2 - 2 * t) / 6;
-            let mut coeffs = [q0, t - a3, a2, a3, 0];
-            coeffs[k + 1] += c;
-            Poly::new(coeffs.iter().map(|&v| IBig::from(v)).collect())
-        });
+    if let Some(e) = small(a)
+        .zip(small(b))
+        .and_then(|(ai, bi)| minor_sums_i128(&ai, &bi))
+    {
+        return e.map(|c| Poly::new(c.iter().map(|&v| IBig::from(v)).collect()));
     }
     let at = |l: i64| -> [IBig; 4] {
         let l = IBig::from(l);
@@ -160,6 +137,33 @@ pub(crate) fn principal_minor_sums_of_pencil(a: &[[IBig; 4]; 4], b: &[[IBig; 4];
         coeffs[deg] += c;
         Poly::new(coeffs)
     })
+}
+
+/// `E₁(λ), …, E₄(λ)` of `λA − B` in `i128` (coefficients from degree 0), `None` unless every
+/// entry is below `2²²` in absolute value: then the members' entries at `|λ| ≤ 2` are below
+/// `2²⁴`, every minor below `24·2⁹⁶ < 2¹⁰¹`, and the interpolation's combinations of a few
+/// such values with factors up to 16 below `2¹¹⁰` (no overflow).
+fn minor_sums_i128(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> Option<[[i128; 5]; 4]> {
+    use qsic_algebra::linalg::pencil::principal_minor_sums_of_members;
+    if a.iter()
+        .chain(b)
+        .flatten()
+        .any(|v| v.unsigned_abs() >= 1 << 22)
+    {
+        return None;
+    }
+    let member = |l: i128, k: i128| -> [[i128; 4]; 4] {
+        std::array::from_fn(|i| {
+            std::array::from_fn(|j| l * i128::from(a[i][j]) - k * i128::from(b[i][j]))
+        })
+    };
+    Some(principal_minor_sums_of_members([
+        &member(1, 0),
+        &member(0, 1),
+        &member(1, 1),
+        &member(-1, 1),
+        &member(2, 1),
+    ]))
 }
 
 /// `D_k`, the gcd of the `k×k` minors of `λA − μB` as binary forms of degree `k`, for
@@ -359,6 +363,138 @@ fn floor_and_ceil(
     };
     let c = if integral { n.clone() } else { &n + IBig::ONE };
     (n, c)
+}
+
+/// The arcs' samples of [`arc_samples`] and the inertia there, computed from float
+/// approximations of the real roots of `f = det(λA − B)` instead of isolated roots: for a
+/// caller that needs members of a given inertia, not the roots. Each inertia is exact (signs
+/// of `E₁…E₄` at the rational sample, in `i128`), so every sample is a correct answer for its
+/// member whatever the floats; the samples equal [`arc_samples`]' when the floats separate
+/// the roots from the dyadics the rule compares them with, which holds but for roots within
+/// rounding of such a dyadic. `None` when `f` has degree below 4, an entry is `2²²` or more,
+/// or a number leaves `i128`.
+pub(crate) fn quick_arc_samples(a: &Quadric, b: &Quadric) -> Option<Vec<(RBig, Inertia)>> {
+    let e = minor_sums_i128(a.small_integer_matrix()?, b.small_integer_matrix()?)?;
+    if e[3][4] == 0 {
+        return None;
+    }
+    let roots = real_roots_f64(&e[3].map(|c| c as f64));
+    let mut samples: Vec<(i128, u32)> = Vec::with_capacity(roots.len() + 1);
+    let integer = |x: f64| (x.is_finite() && x.abs() < 1e30).then_some(x as i128);
+    match (roots.first(), roots.last()) {
+        (Some(&lo), Some(&hi)) => {
+            samples.push((integer(lo.floor())? - 1, 0));
+            for w in roots.windows(2) {
+                samples.push(dyadic_between_f64(w[0], w[1])?);
+            }
+            samples.push((integer(hi.ceil())? + 1, 0));
+        }
+        _ => samples.push((0, 0)),
+    }
+    // consecutive samples on either side of a root (f of opposite signs), none at a root;
+    // else the floats were too coarse here and the caller takes the analysis
+    let mut last = Sign::Zero;
+    samples
+        .into_iter()
+        .map(|(n, k)| {
+            let d = 1i128.checked_shl(k)?;
+            let signs: [Sign; 4] = [
+                sign_homogeneous(&e[0][..2], n, d)?,
+                sign_homogeneous(&e[1][..3], n, d)?,
+                sign_homogeneous(&e[2][..4], n, d)?,
+                sign_homogeneous(&e[3][..5], n, d)?,
+            ];
+            if signs[3] == Sign::Zero || signs[3] == last {
+                return None;
+            }
+            last = signs[3];
+            let x = RBig::from_parts_signed(IBig::from(n), IBig::ONE << k as usize);
+            Some((x, Inertia::from_minor_sum_signs(signs)))
+        })
+        .collect()
+}
+
+/// The rule of [`simplest_between`] on floats `lo < hi`: `⌊lo⌋ + 1` if it is below `hi`, else
+/// `(⌊lo·2ᵏ⌋ + 1)/2ᵏ` for the least `k` where that is below `hi` (scaling by `2ᵏ` and `⌊·⌋`
+/// are exact), as `(numerator, k)`; `None` past `k = 100` or outside `i128`.
+fn dyadic_between_f64(lo: f64, hi: f64) -> Option<(i128, u32)> {
+    let mut scale = 1.0f64;
+    for k in 0..=100u32 {
+        let m = (lo * scale).floor() + 1.0;
+        if m < hi * scale {
+            return (m.abs() < 1e30).then_some((m as i128, k));
+        }
+        scale *= 2.0;
+    }
+    None
+}
+
+/// Float approximations of the real roots of the polynomial with coefficients `c` (from
+/// degree 0, `c[4] ≠ 0`), increasing: Aberth's iteration on the four complex roots, the ones
+/// with a negligible imaginary part kept. Not certified, and not meant to be: callers check
+/// what they build from it exactly.
+fn real_roots_f64(c: &[f64; 5]) -> Vec<f64> {
+    #[derive(Clone, Copy)]
+    struct Z(f64, f64);
+    let mul = |a: Z, b: Z| Z(a.0 * b.0 - a.1 * b.1, a.0 * b.1 + a.1 * b.0);
+    let div = |a: Z, b: Z| {
+        let n = b.0 * b.0 + b.1 * b.1;
+        Z((a.0 * b.0 + a.1 * b.1) / n, (a.1 * b.0 - a.0 * b.1) / n)
+    };
+    let m: [f64; 4] = std::array::from_fn(|i| c[i] / c[4]);
+    // every root below this bound (Fujiwara): the starting circle
+    let radius = (0..4)
+        .map(|i| m[i].abs().powf(1.0 / (4 - i) as f64))
+        .fold(0.0f64, f64::max)
+        * 2.0;
+    if !radius.is_finite() || radius == 0.0 {
+        return Vec::new();
+    }
+    let mut z: [Z; 4] = std::array::from_fn(|i| {
+        let t = 0.4 + std::f64::consts::FRAC_PI_2 * i as f64;
+        Z(radius * t.cos(), radius * t.sin())
+    });
+    for _ in 0..80 {
+        let mut moved = 0.0f64;
+        for i in 0..4 {
+            let x = z[i];
+            // p and p′ by Horner (monic)
+            let (mut p, mut dp) = (Z(1.0, 0.0), Z(0.0, 0.0));
+            for &ci in m.iter().rev() {
+                dp = Z(mul(dp, x).0 + p.0, mul(dp, x).1 + p.1);
+                p = Z(mul(p, x).0 + ci, mul(p, x).1);
+            }
+            if p.0 == 0.0 && p.1 == 0.0 {
+                continue;
+            }
+            let ratio = div(p, dp);
+            let mut sum = Z(0.0, 0.0);
+            for (j, y) in z.iter().enumerate() {
+                if j != i {
+                    let r = div(Z(1.0, 0.0), Z(x.0 - y.0, x.1 - y.1));
+                    sum = Z(sum.0 + r.0, sum.1 + r.1);
+                }
+            }
+            let den = Z(1.0 - mul(ratio, sum).0, -mul(ratio, sum).1);
+            let w = div(ratio, den);
+            if w.0.is_finite() && w.1.is_finite() {
+                z[i] = Z(x.0 - w.0, x.1 - w.1);
+                moved = moved.max(w.0.hypot(w.1) / x.0.hypot(x.1).max(1e-300));
+            }
+        }
+        // relative steps at the rounding level: converged (a few steps after the
+        // quadratic phase begins)
+        if moved < 1e-13 {
+            break;
+        }
+    }
+    let mut real: Vec<f64> = z
+        .iter()
+        .filter(|r| r.1.abs() <= 1e-9 * r.0.abs().max(1e-300) && r.0.is_finite())
+        .map(|r| r.0)
+        .collect();
+    real.sort_by(f64::total_cmp);
+    real
 }
 
 /// The samples of the arcs of the chart cut by the increasing finite real roots `α₁ < … <
@@ -777,6 +913,50 @@ mod tests {
                 _ => {}
             }
         }
+    }
+
+    /// The quick samples' inertia is that of the member itself (by the matrix, another
+    /// route), and on pencils with four simple roots the samples and inertia are the
+    /// analysis' arcs (floats separate the roots from the rule's dyadics); on pencils with
+    /// near-double roots the samples may differ, the inertia stays exact.
+    #[test]
+    fn quick_arc_samples_have_exact_inertia_and_equal_the_analysis() {
+        let mut rng = SplitMix(91);
+        let (mut answered, mut simple, mut hard) = (0, 0, 0);
+        for family in [0usize, 1, 0, 3, 4] {
+            for _ in 0..40 {
+                let Some((a, b)) = random_pair(&mut rng, family) else {
+                    continue;
+                };
+                let quick = quick_arc_samples(&a, &b);
+                let (am, bm) = (a.integer_matrix(), b.integer_matrix());
+                for (x, inertia) in quick.iter().flatten() {
+                    let (n, d) = (x.numerator().clone(), IBig::from(x.denominator().clone()));
+                    let m = SymMatrix4::new(std::array::from_fn(|i| {
+                        std::array::from_fn(|j| &n * &am.entries()[i][j] - &d * &bm.entries()[i][j])
+                    }))
+                    .expect("symmetric");
+                    assert_eq!(*inertia, m.inertia(), "inertia at {x}");
+                }
+                let data = PencilData::new(&a, &b);
+                let exact = PencilAnalysis::compute_exact(&data);
+                if exact.real_roots.iter().all(|r| r.multiplicity == 1)
+                    && exact.complex_roots.iter().all(|c| c == &[1])
+                    && data.f.degree() == Some(4)
+                {
+                    simple += 1;
+                    hard += usize::from(family >= 3);
+                    if let Some(quick) = quick {
+                        answered += 1;
+                        assert_eq!(quick, exact.arcs);
+                    }
+                }
+            }
+        }
+        // families 3 and 4 have roots at integers, 3 a quarter apart: the floats may land on
+        // a root, and the analysis decides; the random families are all answered
+        assert!(simple >= 100 && hard >= 20, "{simple}, {hard}");
+        assert!(answered >= simple - hard, "{answered} of {simple}");
     }
 
     /// The arcs' samples depend on the roots only: from the certified intervals, from the

@@ -178,7 +178,8 @@ pub fn parameterize_smooth_quartic(
     a: &Quadric,
     b: &Quadric,
 ) -> Result<LevinParameterization, Error> {
-    smooth_quartic(a, b, true).map(|(levin, _)| levin)
+    let simple = matches!(classify(a, b).case, Some(1..=4));
+    smooth_quartic(a, b, true, simple).map(|(levin, _)| levin)
 }
 
 /// The forms of a Levin parameterization over ℤ[√δ] (`δ = 0` over ℚ), after the balancing
@@ -203,20 +204,31 @@ fn smooth_quartic(
     a: &Quadric,
     b: &Quadric,
     fast: bool,
+    simple: bool,
 ) -> Result<(LevinParameterization, Option<IntegralLevin>), Error> {
-    let analysis = analyze_pencil(a, b)
-        .ok_or_else(|| Error::Unsupported("a singular or single pencil".into()))?;
-    let simple = analysis.real_roots.iter().all(|r| r.multiplicity == 1)
-        && analysis.complex_roots.iter().all(|blocks| blocks == &[1])
-        && analysis.real_roots.len() + analysis.complex_roots.len() == 4;
-    if !simple {
-        return Err(Error::Unsupported(
-            "only nonsingular quartics (four simple roots of det(λA − B)) so far".into(),
-        ));
-    }
     // the pencil analysis works on the primitive integer matrices: so does λ
     let (am, bm) = (integer_matrix(a), integer_matrix(b));
-    let mut surface = choose_surface(&am, &bm, &analysis)?;
+    let quick = if simple {
+        choose_surface_quick(a, b, &am, &bm)?
+    } else {
+        None
+    };
+    let mut surface = match quick {
+        Some(surface) => surface,
+        None => {
+            let analysis = analyze_pencil(a, b)
+                .ok_or_else(|| Error::Unsupported("a singular or single pencil".into()))?;
+            let simple = analysis.real_roots.iter().all(|r| r.multiplicity == 1)
+                && analysis.complex_roots.iter().all(|blocks| blocks == &[1])
+                && analysis.real_roots.len() + analysis.complex_roots.len() == 4;
+            if !simple {
+                return Err(Error::Unsupported(
+                    "only nonsingular quartics (four simple roots of det(λA − B)) so far".into(),
+                ));
+            }
+            choose_surface(&am, &bm, &analysis)?
+        }
+    };
     let (qm, substituted) = match surface.lambda {
         Some(_) => (a, Substituted::A),
         None => (b, Substituted::B),
@@ -513,7 +525,7 @@ fn balancing_exponent_of(log2_sizes: &[f64]) -> i64 {
 pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
     let classification = classify(a, b);
     match (classification.pencil, classification.case) {
-        (PencilKind::Regular, Some(1..=4)) => match smooth_quartic(a, b, true) {
+        (PencilKind::Regular, Some(1..=4)) => match smooth_quartic(a, b, true, true) {
             Ok((levin, fast)) => levin_curve(classification, &levin, fast.as_ref(), a, b),
             // no ruling over one square root at the tried members: a biquadratic one
             Err(Error::Unsupported(why)) => {
@@ -814,35 +826,82 @@ fn choose_surface_small(
         } else {
             more_candidates(analysis)
         };
-        let mut scored = Vec::with_capacity(candidates.len());
+        let mut lambdas = Vec::with_capacity(candidates.len());
         for (lambda, _) in candidates {
             let Some(l) = lambda else { return Ok(None) };
-            let Some((m, den)) = surface::small_member(&ai, &bi, &l) else {
-                return Ok(None);
-            };
-            let Some(delta) = surface::member_radicand(&m) else {
-                return Ok(None);
-            };
-            scored.push((delta, l, m, den));
+            lambdas.push(l);
         }
-        // stable: equal radicands keep the candidates' order
-        scored.sort_by(|x, y| x.0.cmp(&y.0));
-        for (delta, l, m, den) in scored {
-            let Some(p) = surface::small_point_of(&m) else {
-                continue;
-            };
-            let Some(ruling) = surface::ruling_through_small(&m, &p, &delta)? else {
-                continue;
-            };
-            return Ok(Some(ParameterizationSurface {
-                lambda: Some(l),
-                matrix: surface::member_from_small(&m, den),
-                kind: SurfaceKind::DoublyRuled,
-                ruling,
-            }));
+        match surface_among(&ai, &bi, lambdas)? {
+            Some(Some(surface)) => return Ok(Some(surface)),
+            Some(None) => {}
+            None => return Ok(None),
         }
     }
     Ok(None)
+}
+
+/// The first of the doubly ruled members `λA − B` at `lambdas` (each of inertia (2, 2)) by
+/// increasing radicand with a small point, and its ruling ([`choose_surface_small`]):
+/// `Some(None)` when no candidate has a small point, `None` when a number leaves machine
+/// integers.
+fn surface_among(
+    ai: &[[i128; 4]; 4],
+    bi: &[[i128; 4]; 4],
+    lambdas: Vec<RBig>,
+) -> Result<Option<Option<ParameterizationSurface>>, Error> {
+    let mut scored = Vec::with_capacity(lambdas.len());
+    for l in lambdas {
+        let Some((m, den)) = surface::small_member(ai, bi, &l) else {
+            return Ok(None);
+        };
+        let Some(delta) = surface::member_radicand(&m) else {
+            return Ok(None);
+        };
+        scored.push((delta, l, m, den));
+    }
+    // stable: equal radicands keep the candidates' order
+    scored.sort_by(|x, y| x.0.cmp(&y.0));
+    for (delta, l, m, den) in scored {
+        let Some(p) = surface::small_point_of(&m) else {
+            continue;
+        };
+        let Some(ruling) = surface::ruling_through_small(&m, &p, &delta)? else {
+            continue;
+        };
+        return Ok(Some(Some(ParameterizationSurface {
+            lambda: Some(l),
+            matrix: surface::member_from_small(&m, den),
+            kind: SurfaceKind::DoublyRuled,
+            ruling,
+        })));
+    }
+    Ok(Some(None))
+}
+
+/// The parameterization surface of a pencil known to have four simple roots, from the (2, 2)
+/// samples of [`pencil::quick_arc_samples`] (no pencil analysis) by [`surface_among`]; `None`
+/// when that gives none (then [`choose_surface`] decides from the analysis).
+fn choose_surface_quick(
+    a: &Quadric,
+    b: &Quadric,
+    am: &[[RBig; 4]; 4],
+    bm: &[[RBig; 4]; 4],
+) -> Result<Option<ParameterizationSurface>, Error> {
+    let Some(arcs) = crate::pencil::quick_arc_samples(a, b) else {
+        return Ok(None);
+    };
+    let lambdas: Vec<RBig> = arcs
+        .into_iter()
+        .filter(|(_, i)| i.positive == 2 && i.negative == 2)
+        .map(|(x, _)| x)
+        .collect();
+    if lambdas.is_empty() {
+        return Ok(None);
+    }
+    let (Some(ai), Some(bi)) = (surface::integer_entries(am), surface::integer_entries(bm)) else {
+        return Ok(None);
+    };
+    Ok(surface_among(&ai, &bi, lambdas)?.flatten())
 }
 
 /// The candidates in order: the sample of each (2, 2) arc, then the cones at rational
@@ -1550,9 +1609,11 @@ mod tests {
         let mut total = 0;
         for (seed, bound) in [(1u64, 10i64), (2, 1000), (3, 3)] {
             for (a, b) in smooth_pairs(seed, 40, bound) {
-                let (Ok((l1, f1)), Ok((l2, f2))) =
-                    (smooth_quartic(&a, &b, true), smooth_quartic(&a, &b, false))
-                else {
+                let simple = matches!(classify(&a, &b).case, Some(1..=4));
+                let (Ok((l1, f1)), Ok((l2, f2))) = (
+                    smooth_quartic(&a, &b, true, simple),
+                    smooth_quartic(&a, &b, false, simple),
+                ) else {
                     continue;
                 };
                 total += 1;
