@@ -207,9 +207,8 @@ fn smooth_quartic(
     simple: bool,
 ) -> Result<(LevinParameterization, Option<IntegralLevin>), Error> {
     // the pencil analysis works on the primitive integer matrices: so does λ
-    let (am, bm) = (integer_matrix(a), integer_matrix(b));
     let quick = if simple {
-        choose_surface_quick(a, b, &am, &bm)?
+        choose_surface_quick(a, b)?
     } else {
         None
     };
@@ -226,7 +225,7 @@ fn smooth_quartic(
                     "only nonsingular quartics (four simple roots of det(λA − B)) so far".into(),
                 ));
             }
-            choose_surface(&am, &bm, &analysis)?
+            choose_surface(&integer_matrix(a), &integer_matrix(b), &analysis)?
         }
     };
     let (qm, substituted) = match surface.lambda {
@@ -884,8 +883,6 @@ fn surface_among(
 fn choose_surface_quick(
     a: &Quadric,
     b: &Quadric,
-    am: &[[RBig; 4]; 4],
-    bm: &[[RBig; 4]; 4],
 ) -> Result<Option<ParameterizationSurface>, Error> {
     let Some(arcs) = crate::pencil::quick_arc_samples(a, b) else {
         return Ok(None);
@@ -898,10 +895,12 @@ fn choose_surface_quick(
     if lambdas.is_empty() {
         return Ok(None);
     }
-    let (Some(ai), Some(bi)) = (surface::integer_entries(am), surface::integer_entries(bm)) else {
+    // the primitive integer matrices, as the pencil analysis and `λ` take them
+    let (Some(ai), Some(bi)) = (a.small_integer_matrix(), b.small_integer_matrix()) else {
         return Ok(None);
     };
-    Ok(surface_among(&ai, &bi, lambdas)?.flatten())
+    let wide = |m: &[[i64; 4]; 4]| m.map(|row| row.map(i128::from));
+    Ok(surface_among(&wide(ai), &wide(bi), lambdas)?.flatten())
 }
 
 /// The candidates in order: the sample of each (2, 2) arc, then the cones at rational
