@@ -442,11 +442,16 @@ fn real_roots_f64(c: &[f64; 5]) -> Vec<f64> {
         Z((a.0 * b.0 + a.1 * b.1) / n, (a.1 * b.0 - a.0 * b.1) / n)
     };
     let m: [f64; 4] = std::array::from_fn(|i| c[i] / c[4]);
-    // every root below this bound (Fujiwara): the starting circle
-    let radius = (0..4)
-        .map(|i| m[i].abs().powf(1.0 / (4 - i) as f64))
-        .fold(0.0f64, f64::max)
-        * 2.0;
+    // the starting circle: the roots' geometric mean in size, `|c₀/c₄|^¼`, else (a root at
+    // 0) twice Fujiwara's bound on them
+    let radius = if m[0] != 0.0 {
+        m[0].abs().powf(0.25)
+    } else {
+        (1..4)
+            .map(|i| m[i].abs().powf(1.0 / (4 - i) as f64))
+            .fold(0.0f64, f64::max)
+            * 2.0
+    };
     if !radius.is_finite() || radius == 0.0 {
         return Vec::new();
     }
