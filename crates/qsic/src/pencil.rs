@@ -455,10 +455,9 @@ fn real_roots_f64(c: &[f64; 5]) -> Vec<f64> {
     if !radius.is_finite() || radius == 0.0 {
         return Vec::new();
     }
-    let mut z: [Z; 4] = std::array::from_fn(|i| {
-        let t = 0.4 + std::f64::consts::FRAC_PI_2 * i as f64;
-        Z(radius * t.cos(), radius * t.sin())
-    });
+    // at angles 0.4 + kπ/2 (off the axes, where symmetric polynomials have roots)
+    let (c, s) = (0.921_060_994_002_885_1 * radius, 0.389_418_342_308_650_5 * radius);
+    let mut z = [Z(c, s), Z(-s, c), Z(-c, -s), Z(s, -c)];
     for _ in 0..80 {
         let mut moved = 0.0f64;
         for i in 0..4 {
@@ -484,12 +483,12 @@ fn real_roots_f64(c: &[f64; 5]) -> Vec<f64> {
             let w = div(ratio, den);
             if w.0.is_finite() && w.1.is_finite() {
                 z[i] = Z(x.0 - w.0, x.1 - w.1);
-                moved = moved.max(w.0.hypot(w.1) / x.0.hypot(x.1).max(1e-300));
+                moved = moved.max((w.0 * w.0 + w.1 * w.1) / (x.0 * x.0 + x.1 * x.1).max(1e-300));
             }
         }
-        // relative steps at the rounding level: converged (a few steps after the
+        // relative steps (squared) at the rounding level: converged (a few steps after the
         // quadratic phase begins)
-        if moved < 1e-13 {
+        if moved < 1e-26 {
             break;
         }
     }
