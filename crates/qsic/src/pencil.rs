@@ -456,7 +456,10 @@ fn real_roots_f64(c: &[f64; 5]) -> Vec<f64> {
         return Vec::new();
     }
     // at angles 0.4 + kπ/2 (off the axes, where symmetric polynomials have roots)
-    let (c, s) = (0.921_060_994_002_885_1 * radius, 0.389_418_342_308_650_5 * radius);
+    let (c, s) = (
+        0.921_060_994_002_885_1 * radius,
+        0.389_418_342_308_650_5 * radius,
+    );
     let mut z = [Z(c, s), Z(-s, c), Z(-c, -s), Z(s, -c)];
     for _ in 0..80 {
         let mut moved = 0.0f64;

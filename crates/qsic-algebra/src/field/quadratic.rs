@@ -173,6 +173,12 @@ impl Quadratic {
 
 /// `true` if `v` is the square of an integer (negative numbers are not).
 fn is_square(v: &IBig) -> bool {
+    if let Ok(small) = u64::try_from(v) {
+        // the float root is within one of ⌊√v⌋ (v < 2⁶⁴): the candidates around it, exactly
+        let r = (small as f64).sqrt() as u128;
+        let v = u128::from(small);
+        return (r.saturating_sub(1)..=r + 1).any(|c| c * c == v);
+    }
     *v >= IBig::ZERO && {
         let r = isqrt(v);
         &r * &r == *v
@@ -313,6 +319,39 @@ mod tests {
 
     fn elem(a: (i64, i64), b: (i64, i64), d: i64) -> Quadratic {
         Quadratic::new(r(a.0, a.1), r(b.0, b.1), IBig::from(d)).unwrap()
+    }
+
+    /// The machine-word test of `is_square` agrees with `⌊√v⌋²` on big integers: squares and
+    /// their neighbours up to `2⁶⁴` and past it, and random values.
+    #[test]
+    fn is_square_matches_the_integer_root() {
+        let by_root = |v: &IBig| *v >= IBig::ZERO && &isqrt(v) * &isqrt(v) == *v;
+        let mut values: Vec<IBig> = vec![IBig::ZERO, IBig::ONE, IBig::from(-4)];
+        for k in [
+            2u128,
+            3,
+            1 << 20,
+            (1 << 26) + 1,
+            (1 << 32) - 1,
+            1 << 32,
+            1 << 33,
+        ] {
+            for d in [-1i128, 0, 1] {
+                values.push(IBig::from(k) * IBig::from(k) + IBig::from(d));
+            }
+        }
+        values.push(IBig::from(u64::MAX));
+        let mut rng = crate::testing::SplitMix(5);
+        for _ in 0..2000 {
+            let k = IBig::from(rng.int(0, i64::MAX >> 31));
+            values.push(&k * &k + IBig::from(rng.int(-1, 1)));
+            values.push(IBig::from(rng.int(0, i64::MAX >> 1)) << 1usize);
+        }
+        let squares = values.iter().filter(|v| is_square(v)).count();
+        assert!(squares > 600, "{squares}");
+        for v in &values {
+            assert_eq!(is_square(v), by_root(v), "{v}");
+        }
     }
 
     #[test]
