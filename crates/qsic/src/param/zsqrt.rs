@@ -39,6 +39,7 @@ impl Zq {
         })
     }
 
+    #[cfg(test)]
     pub(crate) fn to_quadratic(&self, delta: &IBig) -> Quadratic {
         if self.b.is_zero() {
             return Quadratic::rational(RBig::from(self.a.clone()));
@@ -49,6 +50,15 @@ impl Zq {
             delta.clone(),
         )
         .expect("δ is not a square")
+    }
+
+    /// [`Self::to_quadratic`] with `root = √δ` ([`Quadratic::sqrt`]): no square test.
+    fn to_quadratic_in(&self, root: &Quadratic) -> Quadratic {
+        if self.b.is_zero() {
+            return Quadratic::rational(RBig::from(self.a.clone()));
+        }
+        debug_assert!(root.as_rational().is_none(), "δ is not a square");
+        Quadratic::in_field_of(RBig::from(self.a.clone()), RBig::from(self.b.clone()), root)
     }
 
     pub(crate) fn mul(&self, o: &Zq, delta: &IBig) -> Zq {
@@ -95,7 +105,57 @@ pub(crate) fn zvector(v: &[Poly<Quadratic>; 4], delta: &IBig) -> Option<[ZPoly; 
 
 /// Back to a polynomial over ℚ(√δ).
 pub(crate) fn to_poly(p: &[Zq], delta: &IBig) -> Poly<Quadratic> {
-    Poly::new(p.iter().map(|c| c.to_quadratic(delta)).collect())
+    let root = root_of(p, delta);
+    Poly::new(p.iter().map(|c| c.to_quadratic_in(&root)).collect())
+}
+
+/// `√δ` when a coefficient of `p` is irrational (one square test for all), else 0.
+fn root_of(p: &[Zq], delta: &IBig) -> Quadratic {
+    if p.iter().all(|c| c.b.is_zero()) {
+        return Quadratic::rational(RBig::ZERO);
+    }
+    let root = Quadratic::sqrt(delta);
+    assert!(root.as_rational().is_none(), "δ is not a square");
+    root
+}
+
+/// The `log₂` sizes of the coefficients of `p` (`−∞` for zero), as `log2_size` in the parent
+/// module computes them on [`to_poly`] of `p`, from the integers: the float of `a + b√δ` is
+/// `a + b·√δ` in floats (each correctly rounded), else bit lengths.
+pub(crate) fn log2_sizes(p: &[Zq], delta: &IBig) -> Vec<f64> {
+    use dashu_int::ops::BitTest;
+    let root = delta.to_f64().value().sqrt();
+    let bits = |v: &IBig| {
+        if v.is_zero() {
+            f64::NEG_INFINITY
+        } else {
+            // the bit length of the numerator less that of the denominator 1
+            v.bit_len() as f64 - 1.0
+        }
+    };
+    p.iter()
+        .map(|c| {
+            if c.is_zero() {
+                return f64::NEG_INFINITY;
+            }
+            let a = c.a.to_f64().value();
+            let v = if c.b.is_zero() {
+                a
+            } else {
+                a + c.b.to_f64().value() * root
+            }
+            .abs();
+            if v.is_finite() && v > 0.0 {
+                return v.log2();
+            }
+            let root_bits = if c.b.is_zero() {
+                0.0
+            } else {
+                delta.bit_len() as f64 / 2.0
+            };
+            bits(&c.a).max(bits(&c.b) + root_bits) + 1.0
+        })
+        .collect()
 }
 
 pub(crate) fn poly_mul(x: &[Zq], y: &[Zq], delta: &IBig) -> ZPoly {
@@ -221,12 +281,12 @@ pub(crate) fn scale_powers_of_two(p: &mut [Zq], exponent: impl Fn(usize) -> usiz
 
 /// `x` as a [`super::Number`] in `field` = ℚ(√δ) (rational when `b = 0`): the same element
 /// as [`super::curve::from_quadratic`] of [`Zq::to_quadratic`], without the rational gcds.
-pub(crate) fn to_number(x: &Zq, field: Option<&qsic_algebra::field::NumberField>) -> super::Number {
+pub(crate) fn to_number(x: Zq, field: Option<&qsic_algebra::field::NumberField>) -> super::Number {
     match field {
-        Some(k) if !x.b.is_zero() => k.integer_element(&Poly::new(vec![x.a.clone(), x.b.clone()])),
+        Some(k) if !x.b.is_zero() => k.linear_element(x.a, x.b),
         _ => {
             debug_assert!(x.b.is_zero(), "an irrational coefficient needs its field");
-            super::curve::rational(RBig::from(x.a.clone()))
+            qsic_algebra::field::NumberFieldElement::integer(x.a)
         }
     }
 }
@@ -238,14 +298,14 @@ pub(crate) fn to_poly_down(p: &[Zq], delta: &IBig, e: usize) -> Poly<Quadratic> 
     }
     let den = dashu_int::UBig::ONE << e;
     let part = |v: &IBig| RBig::from_parts(v.clone(), den.clone());
+    let root = root_of(p, delta);
     Poly::new(
         p.iter()
             .map(|c| {
                 if c.b.is_zero() {
                     Quadratic::rational(part(&c.a))
                 } else {
-                    Quadratic::new(part(&c.a), part(&c.b), delta.clone())
-                        .expect("δ is not a square")
+                    Quadratic::in_field_of(part(&c.a), part(&c.b), &root)
                 }
             })
             .collect(),
@@ -254,12 +314,12 @@ pub(crate) fn to_poly_down(p: &[Zq], delta: &IBig, e: usize) -> Poly<Quadratic> 
 
 /// `p` as a [`super::NumberPoly`] over `field` = ℚ(√δ) ([`to_number`]).
 pub(crate) fn to_number_poly(
-    p: &[Zq],
+    mut p: ZPoly,
     field: Option<&qsic_algebra::field::NumberField>,
 ) -> super::NumberPoly {
     // a + b√δ = 0 exactly when a = b = 0 (δ not a square): the zero test on integers
-    let n = p.iter().rposition(|c| !c.is_zero()).map_or(0, |i| i + 1);
-    Poly::from_trimmed(p[..n].iter().map(|c| to_number(c, field)).collect())
+    trim(&mut p);
+    Poly::from_trimmed(p.into_iter().map(|c| to_number(c, field)).collect())
 }
 
 /// Makes the integers of a doubly ruled surface's ruling `b(u) + v·d(u)` (`b`, `d` of
@@ -725,6 +785,69 @@ mod tests {
                 "{before} -> {b:?} {d:?}"
             );
         }
+    }
+
+    /// The conversions without gcds and square tests build the representations of the
+    /// general routes: [`to_poly`] and [`to_poly_down`] those of [`Quadratic::new`],
+    /// [`to_number_poly`] that of `curve::from_quadratic`, and [`log2_sizes`] the sizes of
+    /// the parent's `log2_size` on the converted coefficients (small, huge and zero numbers).
+    #[test]
+    fn conversions_equal_the_general_routes() {
+        use qsic_algebra::field::NumberFieldElement;
+        let mut rng = SplitMix(29);
+        let same = |x: &NumberFieldElement, y: &NumberFieldElement| {
+            x.numerator() == y.numerator()
+                && x.denominator() == y.denominator()
+                && x.field().is_some() == y.field().is_some()
+                && x == y
+        };
+        let mut checked = 0;
+        for (bits, delta) in [(4usize, 0i64), (10, 7), (60, 2), (200, 3), (1100, 5)] {
+            let delta = IBig::from(delta);
+            let huge_delta = IBig::from(7) << 1100;
+            for d in [&delta, &huge_delta] {
+                if delta.is_zero() && !d.is_zero() {
+                    continue;
+                }
+                let field = (!d.is_zero()).then(|| super::super::curve::sqrt_field(d));
+                for len in 0..6 {
+                    let mut p = random_poly(&mut rng, bits, !d.is_zero(), len);
+                    for c in p.iter_mut() {
+                        match rng.int(0, 3) {
+                            0 => c.a = IBig::ZERO,
+                            1 => c.b = IBig::ZERO,
+                            _ => {}
+                        }
+                    }
+                    let old = Poly::new(p.iter().map(|c| c.to_quadratic(d)).collect());
+                    assert_eq!(to_poly(&p, d), old);
+                    for e in [1usize, 5, 40] {
+                        let den = dashu_int::UBig::ONE << e;
+                        let part = |v: &IBig| RBig::from_parts(v.clone(), den.clone());
+                        let want: Poly<Quadratic> = Poly::new(
+                            p.iter()
+                                .map(|c| Quadratic::new(part(&c.a), part(&c.b), d.clone()).unwrap())
+                                .collect(),
+                        );
+                        assert_eq!(to_poly_down(&p, d, e), want);
+                    }
+                    let sizes: Vec<f64> =
+                        old.coeffs().iter().map(super::super::log2_size).collect();
+                    let new = log2_sizes(&p, d);
+                    // the trailing zeros of p have no coefficient in `old`
+                    assert!(new[sizes.len()..].iter().all(|v| *v == f64::NEG_INFINITY));
+                    assert_eq!(&new[..sizes.len()], &sizes[..], "{p:?}");
+                    let fast = to_number_poly(p.clone(), field.as_ref());
+                    let general = super::super::curve::poly_from_quadratic(&old, field.as_ref());
+                    assert_eq!(fast.coeffs().len(), general.coeffs().len());
+                    for (x, y) in fast.coeffs().iter().zip(general.coeffs()) {
+                        assert!(same(x, y), "{x} vs {y}");
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert!(checked >= 100, "{checked}");
     }
 
     /// The machine-integer forms equal the big-integer ones, small (i128) and past i128
