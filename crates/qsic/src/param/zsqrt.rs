@@ -618,10 +618,11 @@ pub(crate) fn levin_big(
     (s, combine(&c2, &c1), combine(&c1, &c0))
 }
 
-/// Levin's whole form in machine integers, every operation checked: `s = c₁² − c₀c₂`,
-/// `a = c₂b − c₁d` and `alt = c₁b − c₀d` with `c₀ = bᵀMb`, `c₁ = bᵀMd`, `c₂ = dᵀMd` over
-/// ℤ[√δ] (in one pass, converted to [`Zq`] once; [`levin_big`] computes the same); `None`
-/// when a number leaves `i128`.
+/// Levin's whole form in machine integers: `s = c₁² − c₀c₂`, `a = c₂b − c₁d` and
+/// `alt = c₁b − c₀d` with `c₀ = bᵀMb`, `c₁ = bᵀMd`, `c₂ = dᵀMd` over ℤ[√δ], converted to
+/// [`Zq`] once ([`levin_big`] computes the same): without overflow checks when the bit
+/// lengths of the inputs bound every number below `2¹²⁶` ([`levin_bounded`], the common
+/// case), else every operation checked; `None` when a number leaves `i128`.
 pub(crate) fn levin_small(
     m: &[[IBig; 4]; 4],
     b: &[ZPoly; 4],
@@ -635,6 +636,131 @@ pub(crate) fn levin_small(
         }
     }
     let dl = i128::try_from(delta).ok()?;
+    levin_bounded(&mi, b, d, dl).or_else(|| levin_checked(&mi, b, d, dl))
+}
+
+/// The bit length of `|v|`.
+fn bit_len(v: i128) -> u32 {
+    128 - v.unsigned_abs().leading_zeros()
+}
+
+/// `x·y` in ℤ[√δ] without overflow checks (the caller's bounds exclude overflow).
+fn mul_unchecked(x: Zi, y: Zi, delta: i128) -> Zi {
+    Zi {
+        a: x.a * y.a + x.b * y.b * delta,
+        b: x.a * y.b + x.b * y.a,
+    }
+}
+
+/// `xᵀMy` without overflow checks, into a fixed buffer (`x`, `y` of at most 3
+/// coefficients).
+fn form_unchecked(m: &[[i128; 4]; 4], x: &[&[Zi]; 4], y: &[&[Zi]; 4], delta: i128) -> [Zi; 5] {
+    let mut acc = [Zi::default(); 5];
+    for i in 0..4 {
+        let mut row = [Zi::default(); 3];
+        for j in 0..4 {
+            let k = m[i][j];
+            if k != 0 {
+                for (r, c) in row.iter_mut().zip(y[j]) {
+                    r.a += k * c.a;
+                    r.b += k * c.b;
+                }
+            }
+        }
+        for (e, xc) in x[i].iter().enumerate() {
+            if *xc == Zi::default() {
+                continue;
+            }
+            for (f, rc) in row.iter().enumerate() {
+                let p = mul_unchecked(*xc, *rc, delta);
+                acc[e + f].a += p.a;
+                acc[e + f].b += p.b;
+            }
+        }
+    }
+    acc
+}
+
+/// `x·y − z·w` of polynomials over ℤ[√δ] without overflow checks, as a [`ZPoly`] without
+/// trailing zeros (at most 9 coefficients).
+fn cross_unchecked(x: &[Zi], y: &[Zi], z: &[Zi], w: &[Zi], delta: i128) -> ZPoly {
+    let mut out = [Zi::default(); 9];
+    for (sign, p, q) in [(1, x, y), (-1, z, w)] {
+        for (i, pc) in p.iter().enumerate() {
+            if *pc == Zi::default() {
+                continue;
+            }
+            for (j, qc) in q.iter().enumerate() {
+                let v = mul_unchecked(*pc, *qc, delta);
+                out[i + j].a += sign * v.a;
+                out[i + j].b += sign * v.b;
+            }
+        }
+    }
+    let n = out
+        .iter()
+        .rposition(|c| *c != Zi::default())
+        .map_or(0, |i| i + 1);
+    out[..n].iter().map(|c| c.big()).collect()
+}
+
+/// [`levin_small`] without overflow checks when size bounds prove that none can overflow,
+/// else `None`. The size of `x = a + b√δ` is its weight `N(x) = |a| + |b|√δ`, which bounds
+/// both parts (`|a| ≤ N`, `|b|√δ ≤ N`, so every partial product of `mul_unchecked` is
+/// below `N(x)N(y)`) and is submultiplicative, `N(xy) ≤ N(x)N(y)`; with `√δ < 2^h`,
+/// `N(x) < 2^σ(x)`, `σ = max(bits(a), bits(b) + h) + 1`. With `σ_q` that of the
+/// coefficients of `b` and `d` (at most 3) and `β_M` the bit length of `M`'s entries, a row
+/// `Σⱼ Mᵢⱼ yⱼ` weighs below `2^(β_M+σ_q+2)` and a form's coefficient (at most 4·3 products)
+/// below `2^(2σ_q+β_M+6)`: the forms are computed when that is at most `2¹²⁶`; then with
+/// `σ_c` the largest size of their coefficients, `s` (at most 2·5 products) weighs below
+/// `2^(2σ_c+4)` and `a`, `alt` (2·3 products) below `2^(σ_c+σ_q+3)`, computed when at most
+/// `2¹²⁶`. Every partial sum is bounded by its final bound.
+fn levin_bounded(
+    m: &[[i128; 4]; 4],
+    b: &[ZPoly; 4],
+    d: &[ZPoly; 4],
+    delta: i128,
+) -> Option<(ZPoly, [ZPoly; 4], [ZPoly; 4])> {
+    if b.iter().chain(d).any(|p| p.len() > 3) || delta < 0 {
+        return None;
+    }
+    // √δ < 2^h: δ < 2^bits(δ) ≤ 2^(2h)
+    let h = bit_len(delta).div_ceil(2);
+    let size = |x: &Zi| bit_len(x.a).max(bit_len(x.b) + h) + 1;
+    let bm = m.iter().flatten().map(|v| bit_len(*v)).max().unwrap_or(0);
+    let mut sq = 0;
+    let mut fixed = [[Zi::default(); 3]; 8];
+    for (k, p) in b.iter().chain(d).enumerate() {
+        for (slot, c) in fixed[k].iter_mut().zip(p) {
+            *slot = Zi::of(c)?;
+            sq = sq.max(size(slot));
+        }
+    }
+    if 2 * sq + bm + 6 > 126 {
+        return None;
+    }
+    let bi: [&[Zi]; 4] = std::array::from_fn(|i| &fixed[i][..b[i].len()]);
+    let di: [&[Zi]; 4] = std::array::from_fn(|i| &fixed[4 + i][..d[i].len()]);
+    let c0 = form_unchecked(m, &bi, &bi, delta);
+    let c1 = form_unchecked(m, &bi, &di, delta);
+    let c2 = form_unchecked(m, &di, &di, delta);
+    let sc = c0.iter().chain(&c1).chain(&c2).map(size).max().unwrap_or(0);
+    if 2 * sc + 4 > 126 || sc + sq + 3 > 126 {
+        return None;
+    }
+    let s = cross_unchecked(&c1, &c1, &c0, &c2, delta);
+    let a = std::array::from_fn(|i| cross_unchecked(&c2, bi[i], &c1, di[i], delta));
+    let alt = std::array::from_fn(|i| cross_unchecked(&c1, bi[i], &c0, di[i], delta));
+    Some((s, a, alt))
+}
+
+/// [`levin_small`] with every operation checked.
+fn levin_checked(
+    mi: &[[i128; 4]; 4],
+    b: &[ZPoly; 4],
+    d: &[ZPoly; 4],
+    dl: i128,
+) -> Option<(ZPoly, [ZPoly; 4], [ZPoly; 4])> {
     let conv = |v: &[ZPoly; 4]| -> Option<[Vec<Zi>; 4]> {
         Some([
             zi_poly(&v[0])?,
@@ -644,9 +770,9 @@ pub(crate) fn levin_small(
         ])
     };
     let (bi, di) = (conv(b)?, conv(d)?);
-    let c0 = zi_form(&mi, &bi, &bi, dl)?;
-    let c1 = zi_form(&mi, &bi, &di, dl)?;
-    let c2 = zi_form(&mi, &di, &di, dl)?;
+    let c0 = zi_form(mi, &bi, &bi, dl)?;
+    let c1 = zi_form(mi, &bi, &di, dl)?;
+    let c2 = zi_form(mi, &di, &di, dl)?;
     let s = zi_sub(&zi_mul(&c1, &c1, dl)?, &zi_mul(&c0, &c2, dl)?)?;
     // without trailing zeros (the fixed buffers of the forms leave some)
     let big = |p: &[Zi]| -> ZPoly {
@@ -850,13 +976,24 @@ mod tests {
         assert!(checked >= 100, "{checked}");
     }
 
-    /// The machine-integer forms equal the big-integer ones, small (i128) and past i128
-    /// (the checked fallback).
+    /// The machine-integer forms equal the big-integer ones: without checks (bounded), checked
+    /// (the bound fails, the numbers fit), and past i128 (the big fallback).
     #[test]
     fn machine_forms_equal_big_forms() {
         let mut rng = SplitMix(17);
-        let (mut small, mut overflowed) = (0, 0);
-        for (bits, delta) in [(4usize, 0i64), (10, 7), (30, 2), (60, 3), (90, 5)] {
+        let (mut small, mut overflowed, mut bounded, mut checked_only) = (0, 0, 0, 0);
+        for (bits, delta) in [
+            (4usize, 0i64),
+            (6, 11),
+            (10, 7),
+            (16, 0),
+            (18, 2),
+            (20, 0),
+            (22, 3),
+            (30, 2),
+            (60, 3),
+            (90, 5),
+        ] {
             let delta = IBig::from(delta);
             for _ in 0..20 {
                 let m: [[IBig; 4]; 4] = std::array::from_fn(|_| {
@@ -865,8 +1002,10 @@ mod tests {
                     })
                 });
                 let irr = !delta.is_zero();
-                let b: [ZPoly; 4] = std::array::from_fn(|_| random_poly(&mut rng, bits, irr, 2));
-                let d: [ZPoly; 4] = std::array::from_fn(|_| random_poly(&mut rng, bits, irr, 3));
+                // lines (2 coefficients) or a vertex and a conic (1 and 3)
+                let (lb, ld) = if rng.int(0, 1) == 0 { (2, 2) } else { (1, 3) };
+                let b: [ZPoly; 4] = std::array::from_fn(|_| random_poly(&mut rng, bits, irr, lb));
+                let d: [ZPoly; 4] = std::array::from_fn(|_| random_poly(&mut rng, bits, irr, ld));
                 let same = |x: &[Zq], y: &[Zq]| to_poly(x, &delta) == to_poly(y, &delta);
                 let (e0, e1, e2) = (
                     poly_form(&m, &b, &b, &delta),
@@ -881,6 +1020,19 @@ mod tests {
                     continue;
                 };
                 small += 1;
+                let mi: [[i128; 4]; 4] = std::array::from_fn(|i| {
+                    std::array::from_fn(|j| i128::try_from(&m[i][j]).unwrap())
+                });
+                let dl = i128::try_from(&delta).unwrap();
+                let slow = levin_checked(&mi, &b, &d, dl).expect("fits i128");
+                assert_eq!((&s, &a, &alt), (&slow.0, &slow.1, &slow.2));
+                match levin_bounded(&mi, &b, &d, dl) {
+                    Some(fast) => {
+                        bounded += 1;
+                        assert_eq!((&s, &a, &alt), (&fast.0, &fast.1, &fast.2));
+                    }
+                    None => checked_only += 1,
+                }
                 assert!(same(&s, &es));
                 for i in 0..4 {
                     let want =
@@ -893,8 +1045,8 @@ mod tests {
             }
         }
         assert!(
-            small >= 40 && overflowed >= 10,
-            "{small} small, {overflowed} past i128"
+            small >= 80 && overflowed >= 50 && bounded >= 60 && checked_only >= 10,
+            "{small} small ({bounded} bounded, {checked_only} checked), {overflowed} past i128"
         );
     }
 }
