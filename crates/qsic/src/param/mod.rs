@@ -697,7 +697,7 @@ fn levin_curve(
         ends.push(ParamValue::Infinity);
         after.push(everywhere);
     }
-    quartic_curve(classification, param, (&ends, &after, everywhere), n)
+    quartic_curve(classification, param, (ends, &after, everywhere), n)
 }
 
 /// The Levin form `a ± d√s` (homogeneous degree `degree`) with its alternate, reduced where
@@ -751,7 +751,7 @@ fn reduced_levin(
 fn quartic_curve(
     classification: Classification,
     param: ComponentParam,
-    (ends, after, everywhere): (&[ParamValue], &[Sign], Sign),
+    (ends, after, everywhere): (Vec<ParamValue>, &[Sign], Sign),
     n: u8,
 ) -> Result<Curve, Error> {
     let pieces = levin_pieces(ends, after, everywhere);
@@ -781,8 +781,25 @@ fn quartic_curve(
 /// order, `after[i]` the sign of `s` on the arc after `ends[i]`, `everywhere` its sign when it
 /// has no real root. One closed piece per positive arc (the sheets `+` and `−` joined at its
 /// ends), two (the two sheets) when `s > 0` everywhere.
-fn levin_pieces(ends: &[ParamValue], after: &[Sign], everywhere: Sign) -> Vec<RealPiece> {
+fn levin_pieces(ends: Vec<ParamValue>, after: &[Sign], everywhere: Sign) -> Vec<RealPiece> {
     let mut pieces = Vec::new();
+    // each end moved into the piece that uses it last, cloned for the others
+    let count = ends.len();
+    let mut uses = vec![0usize; count];
+    for i in (0..count).filter(|&i| after[i] == Sign::Positive) {
+        uses[i] += 1;
+        uses[(i + 1) % count] += 1;
+    }
+    let mut ends: Vec<Option<ParamValue>> = ends.into_iter().map(Some).collect();
+    let mut take = |k: usize| -> ParamValue {
+        uses[k] -= 1;
+        let end = if uses[k] == 0 {
+            ends[k].take()
+        } else {
+            ends[k].clone()
+        };
+        end.expect("an end is moved at its last use")
+    };
     let loop_over = |range: ParamRange| RealPiece::Curve {
         component: 0,
         arcs: vec![
@@ -799,7 +816,7 @@ fn levin_pieces(ends: &[ParamValue], after: &[Sign], everywhere: Sign) -> Vec<Re
         ],
         closed: true,
     };
-    if ends.is_empty() {
+    if count == 0 {
         if everywhere == Sign::Positive {
             for sheet in [Sheet::Plus, Sheet::Minus] {
                 pieces.push(RealPiece::Curve {
@@ -814,10 +831,11 @@ fn levin_pieces(ends: &[ParamValue], after: &[Sign], everywhere: Sign) -> Vec<Re
             }
         }
     } else {
-        for i in 0..ends.len() {
+        for i in 0..count {
             if after[i] == Sign::Positive {
-                let next = ends[(i + 1) % ends.len()].clone();
-                pieces.push(loop_over(ParamRange::Between(ends[i].clone(), next)));
+                let start = take(i);
+                let next = take((i + 1) % count);
+                pieces.push(loop_over(ParamRange::Between(start, next)));
             }
         }
     }

@@ -587,6 +587,12 @@ fn bit_len(v: i128) -> u32 {
 
 /// `x·y` in ℤ[√δ] without overflow checks (the caller's bounds exclude overflow).
 fn mul_unchecked(x: Zi, y: Zi, delta: i128) -> Zi {
+    if x.b == 0 {
+        return Zi {
+            a: x.a * y.a,
+            b: x.a * y.b,
+        };
+    }
     Zi {
         a: x.a * y.a + x.b * y.b * delta,
         b: x.a * y.b + x.b * y.a,
@@ -700,9 +706,10 @@ fn cross_fixed(
 /// the coefficients of `b` and `d` and `β_M` the bit length of `M`'s entries, a row
 /// `Σⱼ Mᵢⱼ yⱼ` weighs below `2^(β_M+σ_q+2)` and a form's coefficient (at most 4·3 products)
 /// below `2^(2σ_q+β_M+6)`: the forms go unchecked when that is at most `2¹²⁶`; then with
-/// `σ_c` the largest size of their coefficients, `s` (at most 2·5 products) weighs below
-/// `2^(2σ_c+4)` and `a`, `alt` (2·3 products) below `2^(σ_c+σ_q+3)`: unchecked when at
-/// most `2¹²⁶`. Every partial sum is bounded by its final bound.
+/// `σ₀`, `σ₁`, `σ₂` the largest sizes of their coefficients, `s = c₁² − c₀c₂` (at most 5
+/// products each) weighs below `2^(max(2σ₁, σ₀+σ₂)+4)` and `a`, `alt` (2·3 products) below
+/// `2^(max σᵢ + σ_q + 3)`: unchecked when at most `2¹²⁶`. Every partial sum is bounded by
+/// its final bound.
 fn levin_fixed(
     m: &[[i128; 4]; 4],
     b: &[ZPoly; 4],
@@ -731,16 +738,26 @@ fn levin_fixed(
     let c0 = form_fixed(m, &bi, &bi, delta, checked)?;
     let c1 = form_fixed(m, &bi, &di, delta, checked)?;
     let c2 = form_fixed(m, &di, &di, delta, checked)?;
-    let sc = c0.iter().chain(&c1).chain(&c2).map(size).max().unwrap_or(0);
-    let checked_products = always_check || 2 * sc + 4 > 126 || sc + sq + 3 > 126;
+    // without their trailing zeros, and the size of each
+    let trimmed = |c: &[Zi; 5]| -> (usize, u32) {
+        let n = c
+            .iter()
+            .rposition(|v| *v != Zi::default())
+            .map_or(0, |i| i + 1);
+        (n, c[..n].iter().map(size).max().unwrap_or(0))
+    };
+    let ((n0, s0), (n1, s1), (n2, s2)) = (trimmed(&c0), trimmed(&c1), trimmed(&c2));
+    let (c0, c1, c2) = (&c0[..n0], &c1[..n1], &c2[..n2]);
+    let checked_products =
+        always_check || (2 * s1).max(s0 + s2) + 4 > 126 || s2.max(s1).max(s0) + sq + 3 > 126;
     let cross =
         |x: &[Zi], y: &[Zi], z: &[Zi], w: &[Zi]| cross_fixed(x, y, z, w, delta, checked_products);
-    let s = cross(&c1, &c1, &c0, &c2)?;
+    let s = cross(c1, c1, c0, c2)?;
     let mut a: [ZPoly; 4] = Default::default();
     let mut alt: [ZPoly; 4] = Default::default();
     for i in 0..4 {
-        a[i] = cross(&c2, bi[i], &c1, di[i])?;
-        alt[i] = cross(&c1, bi[i], &c0, di[i])?;
+        a[i] = cross(c2, bi[i], c1, di[i])?;
+        alt[i] = cross(c1, bi[i], c0, di[i])?;
     }
     Some(((s, a, alt), !checked && !checked_products))
 }
