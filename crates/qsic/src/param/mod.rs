@@ -209,6 +209,8 @@ struct SmoothQuartic {
 }
 
 /// The forms of a [`SmoothQuartic`].
+// One value per curve, moved twice: boxing the integral forms would only add an allocation.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone)]
 enum Forms {
     /// Over ℤ[√δ] (the common case).

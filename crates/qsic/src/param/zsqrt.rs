@@ -85,6 +85,9 @@ impl Zq {
 /// A polynomial in `u` over ℤ[√δ], increasing powers (trailing zeros allowed).
 pub(crate) type ZPoly = Vec<Zq>;
 
+/// Levin's `s`, `a` and `alt` over ℤ[√δ] ([`levin_small`], [`levin_big`]).
+pub(crate) type LevinForms = (ZPoly, [ZPoly; 4], [ZPoly; 4]);
+
 /// `p` over ℤ[√δ], `None` if a coefficient is not integral in ℚ(√δ).
 pub(crate) fn zpoly(p: &Poly<Quadratic>, delta: &IBig) -> Option<ZPoly> {
     p.coeffs()
@@ -547,7 +550,7 @@ pub(crate) fn levin_big(
     b: &[ZPoly; 4],
     d: &[ZPoly; 4],
     delta: &IBig,
-) -> (ZPoly, [ZPoly; 4], [ZPoly; 4]) {
+) -> LevinForms {
     let c0 = poly_form(m, b, b, delta);
     let c1 = poly_form(m, b, d, delta);
     let c2 = poly_form(m, d, d, delta);
@@ -569,7 +572,7 @@ pub(crate) fn levin_small(
     b: &[ZPoly; 4],
     d: &[ZPoly; 4],
     delta: &IBig,
-) -> Option<(ZPoly, [ZPoly; 4], [ZPoly; 4])> {
+) -> Option<LevinForms> {
     let mut mi = [[0i128; 4]; 4];
     for (row, src) in mi.iter_mut().zip(m) {
         for (x, v) in row.iter_mut().zip(src) {
@@ -716,7 +719,7 @@ fn levin_fixed(
     d: &[ZPoly; 4],
     delta: i128,
     always_check: bool,
-) -> Option<((ZPoly, [ZPoly; 4], [ZPoly; 4]), bool)> {
+) -> Option<(LevinForms, bool)> {
     if b.iter().chain(d).any(|p| p.len() > 3) {
         return None;
     }
