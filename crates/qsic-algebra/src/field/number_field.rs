@@ -17,7 +17,8 @@
 //! # Design
 //! A [`NumberField`] is a cheap handle (`Arc`) to a context holding `α` (whose polynomial is
 //! the defining polynomial), behind a `Mutex` held only to read or replace an `Arc` of that
-//! state: `Send + Sync`, no global state. The defining polynomial only ever shrinks to a
+//! state (its degree also in an atomic, read without the lock by
+//! [`NumberField::linear_element`]): `Send + Sync`, no global state. The defining polynomial only ever shrinks to a
 //! factor of itself that vanishes at `α`, so an element reduced modulo an older multiple stays
 //! a valid representative and elements are never touched when the context learns something;
 //! two threads that each learn a factor are merged by their gcd (also a factor vanishing at
