@@ -17,7 +17,8 @@
 //! # Design
 //! A [`NumberField`] is a cheap handle (`Arc`) to a context holding `α` (whose polynomial is
 //! the defining polynomial), behind a `Mutex` held only to read or replace an `Arc` of that
-//! state: `Send + Sync`, no global state. The defining polynomial only ever shrinks to a
+//! state (its degree also in an atomic, read without the lock by
+//! [`NumberField::linear_element`]): `Send + Sync`, no global state. The defining polynomial only ever shrinks to a
 //! factor of itself that vanishes at `α`, so an element reduced modulo an older multiple stays
 //! a valid representative and elements are never touched when the context learns something;
 //! two threads that each learn a factor are merged by their gcd (also a factor vanishing at
@@ -35,12 +36,22 @@ use crate::sign::Sign;
 use dashu_int::IBig;
 use dashu_ratio::RBig;
 use std::fmt;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 
 /// The field ℚ(α) of a real algebraic number `α`: a handle to a shared context (module docs).
 #[derive(Clone)]
 pub struct NumberField {
-    state: Arc<Mutex<Arc<State>>>,
+    shared: Arc<Shared>,
+}
+
+/// The context behind the handles.
+struct Shared {
+    state: Mutex<Arc<State>>,
+    /// The degree of the defining polynomial, read without the lock: it only decreases, so a
+    /// value read is an upper bound of the current degree and the degree of a multiple of the
+    /// current defining polynomial (an element reduced modulo that multiple stays valid).
+    degree: AtomicUsize,
 }
 
 /// What the context knows; replaced as a whole when the defining polynomial shrinks.
@@ -82,9 +93,12 @@ impl NumberField {
     /// ```
     pub fn new(alpha: &AlgebraicReal) -> NumberField {
         NumberField {
-            state: Arc::new(Mutex::new(Arc::new(State {
-                alpha: alpha.clone(),
-            }))),
+            shared: Arc::new(Shared {
+                state: Mutex::new(Arc::new(State {
+                    alpha: alpha.clone(),
+                })),
+                degree: AtomicUsize::new(alpha.poly().degree().unwrap_or(0)),
+            }),
         }
     }
 
@@ -106,6 +120,29 @@ impl NumberField {
         self.reduced(c.clone(), IBig::ONE)
     }
 
+    /// The element `a + b·α` of integers `a`, `b`: [`Self::integer_element`] of `a + b·x`
+    /// (the same representation), without the lock and the reduction when the defining
+    /// polynomial has degree at least 2 (then `a + b·x` is reduced).
+    ///
+    /// ```
+    /// # use qsic_algebra::{field::NumberField, AlgebraicReal, IBig, Poly};
+    /// let k = NumberField::new(&AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 1]))[1]);
+    /// let x = k.linear_element(IBig::from(3), IBig::from(-2)); // 3 − 2√2
+    /// assert_eq!(x, k.integer_element(&Poly::from_i64s(&[3, -2])));
+    /// assert_eq!(x.numerator(), &Poly::from_i64s(&[3, -2]));
+    /// ```
+    pub fn linear_element(&self, a: IBig, b: IBig) -> NumberFieldElement {
+        let num = Poly::new(vec![a, b]);
+        if num.degree().unwrap_or(0) >= self.shared.degree.load(Ordering::Acquire) {
+            return self.reduced(num, IBig::ONE);
+        }
+        NumberFieldElement {
+            num,
+            den: IBig::ONE,
+            field: Some(self.clone()),
+        }
+    }
+
     /// The current defining polynomial: square-free, primitive, vanishing at `α`, a factor
     /// of the one the field was made with (its degree bounds `[ℚ(α) : ℚ]`).
     pub fn modulus(&self) -> Poly {
@@ -124,7 +161,10 @@ impl NumberField {
     }
 
     fn lock(&self) -> MutexGuard<'_, Arc<State>> {
-        self.state.lock().unwrap_or_else(PoisonError::into_inner)
+        self.shared
+            .state
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
     }
 
     fn snapshot(&self) -> Arc<State> {
@@ -133,7 +173,7 @@ impl NumberField {
 
     /// Whether `self` and `other` are the same field context (elements of both combine).
     pub fn same_as(&self, other: &NumberField) -> bool {
-        Arc::ptr_eq(&self.state, &other.state)
+        Arc::ptr_eq(&self.shared, &other.shared)
     }
 
     /// Records that `factor` (a primitive factor of `seen`'s modulus) vanishes at `α`.
@@ -147,6 +187,9 @@ impl NumberField {
         };
         if factor.degree() < cur.modulus().degree() {
             let alpha = cur.alpha.with_factor(&factor);
+            self.shared
+                .degree
+                .store(alpha.poly().degree().unwrap_or(0), Ordering::Release);
             *cur = Arc::new(State { alpha });
         }
     }
@@ -293,6 +336,26 @@ impl NumberFieldElement {
         NumberFieldElement {
             num: Poly::constant(v.numerator().clone()),
             den: IBig::from(v.denominator().clone()),
+            field: None,
+        }
+    }
+
+    /// The integer `v` (in every field): [`Self::rational`] of `v` without the rational.
+    ///
+    /// ```
+    /// # use qsic_algebra::{field::NumberFieldElement, IBig, RBig};
+    /// let x = NumberFieldElement::integer(IBig::from(-7));
+    /// assert_eq!(x, NumberFieldElement::rational(RBig::from(-7)));
+    /// assert!(x.denominator().is_one() && x.field().is_none());
+    /// ```
+    pub fn integer(v: IBig) -> NumberFieldElement {
+        NumberFieldElement {
+            num: if v.is_zero() {
+                Poly::zero()
+            } else {
+                Poly::from_trimmed(vec![v])
+            },
+            den: IBig::ONE,
             field: None,
         }
     }
@@ -1428,6 +1491,57 @@ mod tests {
             assert_eq!(k.modulus().degree(), Some(6));
         }
         assert!(nonzero >= 12 * 13);
+    }
+
+    /// The fast constructors build the representation of the general ones: `a + b·α` that of
+    /// [`NumberField::integer_element`] (reduced when the defining polynomial has shrunk to
+    /// degree 1), an integer that of [`Nfe::rational`].
+    #[test]
+    fn fast_constructors_equal_the_general_ones() {
+        let mut rng = crate::testing::SplitMix(5);
+        let same = |x: &Nfe, y: &Nfe| {
+            x.numerator() == y.numerator()
+                && x.denominator() == y.denominator()
+                && x.field().is_some() == y.field().is_some()
+                && x == y
+        };
+        // α = 2 as a root of (x − 2)(x² − 3): the modulus shrinks to x − 2 after a zero test
+        let m = &Poly::from_i64s(&[-2, 1]) * &Poly::from_i64s(&[-3, 0, 1]);
+        let two = AlgebraicReal::real_roots_of(&m).remove(2);
+        let shrinking = NumberField::new(&two);
+        let mut ks = fields();
+        ks.push(NumberField::new(
+            &AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-7, 0, 1]))[1],
+        ));
+        ks.push(shrinking.clone());
+        for k in &ks {
+            for i in 0..200 {
+                let big = |rng: &mut crate::testing::SplitMix| {
+                    IBig::from(rng.int(-99, 99)) << rng.int(0, 200) as usize
+                };
+                let (a, b) = match i % 4 {
+                    0 => (big(&mut rng), IBig::ZERO),
+                    1 => (IBig::ZERO, big(&mut rng)),
+                    2 => (IBig::ZERO, IBig::ZERO),
+                    _ => (big(&mut rng), big(&mut rng)),
+                };
+                let fast = k.linear_element(a.clone(), b.clone());
+                let general = k.integer_element(&Poly::new(vec![a.clone(), b]));
+                assert!(same(&fast, &general), "{fast} vs {general}");
+                let int = Nfe::integer(a.clone());
+                assert!(same(&int, &Nfe::rational(RBig::from(a))), "{int}");
+            }
+        }
+        let e = &shrinking.generator() - &Nfe::integer(IBig::from(2));
+        assert!(e.is_zero());
+        assert_eq!(shrinking.modulus(), Poly::from_i64s(&[-2, 1]));
+        // reduced modulo x − 2 now: 3 + 5α = 13
+        let x = shrinking.linear_element(IBig::from(3), IBig::from(5));
+        assert!(x.numerator().is_constant() && x == Nfe::integer(IBig::from(13)));
+        assert!(same(
+            &x,
+            &shrinking.integer_element(&Poly::from_i64s(&[3, 5]))
+        ));
     }
 
     #[test]

@@ -39,6 +39,22 @@ impl Quadratic {
         (!is_square(&delta)).then_some(Quadratic { a, b, d: delta })
     }
 
+    /// `a + b√δ` with `δ` the radicand of `x` (`a` when `x` is rational, `δ = 0`): no
+    /// square test, `δ` being the radicand of an element already.
+    ///
+    /// ```
+    /// # use qsic_algebra::{field::Quadratic, IBig, RBig};
+    /// let r2 = Quadratic::sqrt(&IBig::from(2));
+    /// let x = Quadratic::in_field_of(RBig::from(3), RBig::from(-2), &r2);
+    /// assert_eq!(Some(x), Quadratic::new(RBig::from(3), RBig::from(-2), IBig::from(2)));
+    /// ```
+    pub fn in_field_of(a: RBig, b: RBig, x: &Quadratic) -> Quadratic {
+        if x.d.is_zero() {
+            return Quadratic::rational(a);
+        }
+        Quadratic::from_parts(a, b, x.d.clone())
+    }
+
     /// `√δ` for an integer `δ`: rational when `δ` is a perfect square (`√−4` is not real:
     /// `2√−1`, in ℚ(√−1)).
     ///
@@ -351,6 +367,28 @@ mod tests {
         assert!(squares > 600, "{squares}");
         for v in &values {
             assert_eq!(is_square(v), by_root(v), "{v}");
+        }
+    }
+
+    /// [`Quadratic::in_field_of`] equals [`Quadratic::new`] with the radicand of its model.
+    #[test]
+    fn in_field_of_equals_new() {
+        let mut rng = crate::testing::SplitMix(3);
+        for delta in [0i64, 2, 3, 7, -5, 1_000_003] {
+            let model = Quadratic::sqrt(&IBig::from(delta));
+            for _ in 0..50 {
+                let (a, b) = (
+                    r(rng.int(-999, 999), rng.int(1, 99)),
+                    r(rng.int(-3, 3), rng.int(1, 99)),
+                );
+                let fast = Quadratic::in_field_of(a.clone(), b.clone(), &model);
+                let want = if delta == 0 {
+                    Quadratic::rational(a)
+                } else {
+                    Quadratic::new(a, b, IBig::from(delta)).unwrap()
+                };
+                assert_eq!(fast, want);
+            }
         }
     }
 

@@ -256,7 +256,7 @@ fn levin_over_field(
             ends.len()
         ))
     })?;
-    quartic_curve(classification, param, (&ends, &after, signs[0]), n)
+    quartic_curve(classification, param, (ends, &after, signs[0]), n)
 }
 
 #[cfg(test)]

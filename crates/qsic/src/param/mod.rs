@@ -123,19 +123,32 @@ impl LevinParameterization {
     /// [`Error::Algebra`] if `s` has a multiple root or an odd number of real roots: the
     /// curve is not a nonsingular quartic (an internal inconsistency for cases 1–4).
     pub fn real_components(&self) -> Result<u8, Error> {
-        let s = &self.s;
-        let deg = s.degree().unwrap_or(0);
-        if deg < 3 || !self.discriminant.squarefree {
-            return Err(Error::Algebra(format!("s(u) = {s} has a multiple root")));
-        }
-        let dr = &self.discriminant;
-        let n = dr.roots.len() + usize::from(dr.at_infinity);
-        theorem_12(n, dr.arcs[0].1).ok_or_else(|| {
-            Error::Algebra(format!(
-                "s(u) = {s} has {n} real roots on the projective line"
-            ))
+        real_components(self.s.degree().unwrap_or(0), &self.discriminant, || {
+            self.s.clone()
         })
     }
+}
+
+/// [`LevinParameterization::real_components`] of an `s` of degree `deg` with the real roots
+/// `dr` (`s` itself only for the messages).
+fn real_components(
+    deg: usize,
+    dr: &DiscriminantRoots,
+    s: impl Fn() -> Poly<Quadratic>,
+) -> Result<u8, Error> {
+    if deg < 3 || !dr.squarefree {
+        return Err(Error::Algebra(format!(
+            "s(u) = {} has a multiple root",
+            s()
+        )));
+    }
+    let n = dr.roots.len() + usize::from(dr.at_infinity);
+    theorem_12(n, dr.arcs[0].1).ok_or_else(|| {
+        Error::Algebra(format!(
+            "s(u) = {} has {n} real roots on the projective line",
+            s()
+        ))
+    })
 }
 
 /// Theorem 12: the real components of a nonsingular quartic from the number of simple real
@@ -179,12 +192,94 @@ pub fn parameterize_smooth_quartic(
     b: &Quadric,
 ) -> Result<LevinParameterization, Error> {
     let simple = matches!(classify(a, b).case, Some(1..=4));
-    smooth_quartic(a, b, true, simple).map(|(levin, _)| levin)
+    smooth_quartic(a, b, true, simple).map(SmoothQuartic::into_levin)
+}
+
+/// What [`smooth_quartic`] finds before any conversion to the output types: the surface,
+/// the real roots of `s` and the forms, converted by [`SmoothQuartic::into_levin`] or
+/// straight into the curve's numbers by [`levin_curve`] (which needs neither `b`, `d` nor
+/// `a` over ℚ(√δ)).
+#[derive(Clone)]
+struct SmoothQuartic {
+    /// The surface; for [`Forms::Integral`] with the ruling as chosen (the forms hold the
+    /// reduced and balanced one).
+    surface: ParameterizationSurface,
+    substituted: Substituted,
+    discriminant: DiscriminantRoots,
+    forms: Forms,
+}
+
+/// The forms of a [`SmoothQuartic`].
+// One value per curve, moved twice: boxing the integral forms would only add an allocation.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone)]
+enum Forms {
+    /// Over ℤ[√δ] (the common case).
+    Integral(IntegralLevin),
+    /// Over ℚ(√δ) (the rational route), with the final ruling in the surface.
+    Rational { a: PolyVector, s: Poly<Quadratic> },
+}
+
+impl SmoothQuartic {
+    /// The exact `s` (for messages and [`Self::into_levin`]).
+    fn exact_s(&self) -> Poly<Quadratic> {
+        match &self.forms {
+            Forms::Integral(f) => {
+                let (db, dd) = ruling_degrees(self.surface.kind);
+                zsqrt::to_poly_down(&f.s, &f.delta, f.down * 2 * (db + dd))
+            }
+            Forms::Rational { s, .. } => s.clone(),
+        }
+    }
+
+    /// Theorem 12 ([`LevinParameterization::real_components`]).
+    fn real_components(&self) -> Result<u8, Error> {
+        let deg = match &self.forms {
+            // trimmed: the degree of s (a power of two divides it for `down`)
+            Forms::Integral(f) => f.s.len().saturating_sub(1),
+            Forms::Rational { s, .. } => s.degree().unwrap_or(0),
+        };
+        real_components(deg, &self.discriminant, || self.exact_s())
+    }
+
+    /// The public parameterization: the integral forms divided by their power of two and
+    /// converted to ℚ(√δ).
+    fn into_levin(self) -> LevinParameterization {
+        let s = self.exact_s();
+        let SmoothQuartic {
+            mut surface,
+            substituted,
+            discriminant,
+            forms,
+        } = self;
+        let a = match forms {
+            Forms::Integral(f) => {
+                let (db, dd) = ruling_degrees(surface.kind);
+                let down = |p: &zsqrt::ZPoly, degree: usize| {
+                    zsqrt::to_poly_down(p, &f.delta, f.down * degree)
+                };
+                surface.ruling.b = std::array::from_fn(|i| down(&f.b[i], db));
+                surface.ruling.d = std::array::from_fn(|i| down(&f.d[i], dd));
+                std::array::from_fn(|i| down(&f.a[i], 2 * dd + db))
+            }
+            Forms::Rational { a, .. } => a,
+        };
+        LevinParameterization {
+            delta: surface.ruling.delta.clone(),
+            substituted,
+            a,
+            d: surface.ruling.d.clone(),
+            s,
+            discriminant,
+            surface,
+        }
+    }
 }
 
 /// The forms of a Levin parameterization over ℤ[√δ] (`δ = 0` over ℚ), after the balancing
 /// substitution: `b`, `d` the ruling, `a = c₂b − c₁d`, `alt = c₁b − c₀d`, `s = c₁² − c₀c₂`.
 /// Kept by [`smooth_quartic`] for [`levin_curve`]: its conversions then need no rational gcd.
+#[derive(Clone)]
 struct IntegralLevin {
     delta: IBig,
     /// `m = −k` for a balancing `k < 0`, else 0: the forms held are those of `u ↦ 2ᵏu`
@@ -197,15 +292,16 @@ struct IntegralLevin {
     s: zsqrt::ZPoly,
 }
 
-/// [`parameterize_smooth_quartic`], with the integral forms when the ruling is integral (the
-/// common case); `fast = false` takes the
-/// rational route (the tests compare the two).
+/// [`parameterize_smooth_quartic`] before the conversions, with the integral forms when the
+/// ruling is integral (the common case); `fast = false` takes the rational route (the tests
+/// compare the two). `simple`: the class says four simple roots of `det(λA − B)`, so the
+/// surface may come from [`choose_surface_quick`].
 fn smooth_quartic(
     a: &Quadric,
     b: &Quadric,
     fast: bool,
     simple: bool,
-) -> Result<(LevinParameterization, Option<IntegralLevin>), Error> {
+) -> Result<SmoothQuartic, Error> {
     // the pencil analysis works on the primitive integer matrices: so does λ
     let quick = if simple {
         choose_surface_quick(a, b)?
@@ -238,29 +334,14 @@ fn smooth_quartic(
         None
     };
     if let Some(fast) = integral {
-        let delta = surface.ruling.delta.clone();
-        let d0 = &fast.delta;
-        let (db, dd) = ruling_degrees(surface.kind);
-        let down = |p: &zsqrt::ZPoly, degree: usize| zsqrt::to_poly_down(p, d0, fast.down * degree);
-        surface.ruling.b = std::array::from_fn(|i| down(&fast.b[i], db));
-        surface.ruling.d = std::array::from_fn(|i| down(&fast.d[i], dd));
-        let s = down(&fast.s, 2 * (db + dd));
         // the integral s: a positive multiple of `s` (same roots and signs)
-        let discriminant = if fast.down == 0 {
-            discriminant_roots(&s)
-        } else {
-            discriminant_roots(&zsqrt::to_poly(&fast.s, d0))
-        };
-        let levin = LevinParameterization {
-            delta,
-            substituted,
-            a: std::array::from_fn(|i| down(&fast.a[i], 2 * dd + db)),
-            d: surface.ruling.d.clone(),
-            discriminant,
-            s,
+        let discriminant = discriminant_roots(&zsqrt::to_poly(&fast.s, &fast.delta));
+        return Ok(SmoothQuartic {
             surface,
-        };
-        return Ok((levin, Some(fast)));
+            substituted,
+            discriminant,
+            forms: Forms::Integral(fast),
+        });
     }
     // the reduction `integral_levin` makes on its integers, here on the rational ruling
     if surface.kind == SurfaceKind::DoublyRuled {
@@ -306,20 +387,13 @@ fn smooth_quartic(
     }
     let (bv, dv) = (&surface.ruling.b, &surface.ruling.d);
     let av: PolyVector = std::array::from_fn(|i| &(&c2 * &bv[i]) - &(&c1 * &dv[i]));
-    let dv = dv.clone();
     let discriminant = discriminant_roots(&s);
-    Ok((
-        LevinParameterization {
-            delta: surface.ruling.delta.clone(),
-            substituted,
-            a: av,
-            d: dv,
-            s,
-            discriminant,
-            surface,
-        },
-        None,
-    ))
+    Ok(SmoothQuartic {
+        surface,
+        substituted,
+        discriminant,
+        forms: Forms::Rational { a: av, s },
+    })
 }
 
 /// The ruling's `δ` (0 over ℚ), `b` and `d` over ℤ[√δ]; `None` when a coefficient is not
@@ -379,7 +453,7 @@ fn integral_levin(
     if s.is_empty() {
         return Err(Error::Algebra("s(u) vanishes identically".into()));
     }
-    let k = balancing_exponent(&zsqrt::to_poly(&s, &delta));
+    let k = balancing_exponent_of(&zsqrt::log2_sizes(&s, &delta));
     if k != 0 {
         let (db, dd) = ruling_degrees(kind);
         let forms = [
@@ -525,7 +599,7 @@ pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
     let classification = classify(a, b);
     match (classification.pencil, classification.case) {
         (PencilKind::Regular, Some(1..=4)) => match smooth_quartic(a, b, true, true) {
-            Ok((levin, fast)) => levin_curve(classification, &levin, fast.as_ref(), a, b),
+            Ok(quartic) => levin_curve(classification, quartic, a, b),
             // no ruling over one square root at the tried members: a biquadratic one
             Err(Error::Unsupported(why)) => {
                 biquadratic::biquadratic_curve(classification, a, b)?.ok_or(Error::Unsupported(why))
@@ -558,59 +632,65 @@ pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
 /// `s > 0` everywhere; the pieces are disjoint (a nonsingular curve).
 fn levin_curve(
     classification: Classification,
-    levin: &LevinParameterization,
-    fast: Option<&IntegralLevin>,
+    quartic: SmoothQuartic,
     a_quadric: &Quadric,
     b_quadric: &Quadric,
 ) -> Result<Curve, Error> {
-    let n = levin.real_components()?;
+    let n = quartic.real_components()?;
+    let kind = quartic.surface.kind;
     // homogeneous degree of a: 3 on a doubly ruled surface (b, d lines), 4 on a cone
-    let degree = match levin.surface.kind {
+    let degree = match kind {
         SurfaceKind::DoublyRuled => 3,
         SurfaceKind::Cone => 4,
     };
     // c₁·b: (2 + 1) on a doubly ruled surface, (2 + 0) on a cone
-    let alt_degree = match levin.surface.kind {
+    let alt_degree = match kind {
         SurfaceKind::DoublyRuled => 3,
         SurfaceKind::Cone => 2,
     };
-    let field = levin.delta.as_ref().map(curve::sqrt_field);
-    let (a, d, s, alternate) = match fast {
-        Some(f) => {
-            let (db, dd) = ruling_degrees(levin.surface.kind);
-            let convert = |p: &zsqrt::ZPoly, degree: usize| -> NumberPoly {
+    let SmoothQuartic {
+        surface,
+        substituted,
+        discriminant: dr,
+        forms,
+    } = quartic;
+    let field = surface.ruling.delta.as_ref().map(curve::sqrt_field);
+    let (a, d, s, alternate) = match forms {
+        Forms::Integral(f) => {
+            let (db, dd) = ruling_degrees(kind);
+            let convert = |p: zsqrt::ZPoly, degree: usize| -> NumberPoly {
                 if f.down == 0 {
                     zsqrt::to_number_poly(p, field.as_ref())
                 } else {
-                    let down = zsqrt::to_poly_down(p, &f.delta, f.down * degree);
+                    let down = zsqrt::to_poly_down(&p, &f.delta, f.down * degree);
                     curve::poly_from_quadratic(&down, field.as_ref())
                 }
             };
-            let vector = |v: &[zsqrt::ZPoly; 4], degree: usize| -> PointPoly {
-                std::array::from_fn(|i| convert(&v[i], degree))
+            let vector = |v: [zsqrt::ZPoly; 4], degree: usize| -> PointPoly {
+                v.map(|p| convert(p, degree))
             };
             let alternate = LevinForm {
-                a: vector(&f.alt, 2 * db + dd),
-                d: vector(&f.b, db),
+                a: vector(f.alt, 2 * db + dd),
+                d: vector(f.b, db),
                 degree: alt_degree,
             };
             (
-                vector(&f.a, 2 * dd + db),
-                vector(&f.d, dd),
-                convert(&f.s, 2 * (db + dd)),
+                vector(f.a, 2 * dd + db),
+                vector(f.d, dd),
+                convert(f.s, 2 * (db + dd)),
                 alternate,
             )
         }
-        None => {
+        Forms::Rational { a, s } => {
             let vector = |v: &PolyVector| -> PointPoly {
                 std::array::from_fn(|i| curve::poly_from_quadratic(&v[i], field.as_ref()))
             };
             // the alternate form: v = −c₀/(c₁ ± √s) gives (c₁ ± √s)·b − c₀·d on the same sheet
-            let qm = to_quadratic(&match levin.substituted {
+            let qm = to_quadratic(&match substituted {
                 Substituted::A => integer_matrix(a_quadric),
                 Substituted::B => integer_matrix(b_quadric),
             });
-            let (rb, rd) = (&levin.surface.ruling.b, &levin.surface.ruling.d);
+            let (rb, rd) = (&surface.ruling.b, &surface.ruling.d);
             let (c0, c1) = (poly_form(&qm, rb, rb), poly_form(&qm, rb, rd));
             let alt_a: PolyVector = std::array::from_fn(|i| &(&c1 * &rb[i]) - &(&c0 * &rd[i]));
             let alternate = LevinForm {
@@ -619,23 +699,23 @@ fn levin_curve(
                 degree: alt_degree,
             };
             (
-                vector(&levin.a),
-                vector(&levin.d),
-                curve::poly_from_quadratic(&levin.s, field.as_ref()),
+                vector(&a),
+                vector(rd),
+                curve::poly_from_quadratic(&s, field.as_ref()),
                 alternate,
             )
         }
     };
     let param = reduced_levin(a, d, s, degree, alternate);
-    let dr = &levin.discriminant;
-    let mut ends: Vec<ParamValue> = dr.roots.iter().cloned().map(ParamValue::Finite).collect();
     // the sign of s on the arc after each end, in the same cyclic order
     let mut after: Vec<Sign> = dr.arcs.iter().skip(1).map(|a| a.1).collect();
+    let everywhere = dr.arcs[0].1;
+    let mut ends: Vec<ParamValue> = dr.roots.into_iter().map(ParamValue::Finite).collect();
     if dr.at_infinity {
         ends.push(ParamValue::Infinity);
-        after.push(dr.arcs[0].1);
+        after.push(everywhere);
     }
-    quartic_curve(classification, param, (&ends, &after, dr.arcs[0].1), n)
+    quartic_curve(classification, param, (ends, &after, everywhere), n)
 }
 
 /// The Levin form `a ± d√s` (homogeneous degree `degree`) with its alternate, reduced where
@@ -689,7 +769,7 @@ fn reduced_levin(
 fn quartic_curve(
     classification: Classification,
     param: ComponentParam,
-    (ends, after, everywhere): (&[ParamValue], &[Sign], Sign),
+    (ends, after, everywhere): (Vec<ParamValue>, &[Sign], Sign),
     n: u8,
 ) -> Result<Curve, Error> {
     let pieces = levin_pieces(ends, after, everywhere);
@@ -719,8 +799,25 @@ fn quartic_curve(
 /// order, `after[i]` the sign of `s` on the arc after `ends[i]`, `everywhere` its sign when it
 /// has no real root. One closed piece per positive arc (the sheets `+` and `−` joined at its
 /// ends), two (the two sheets) when `s > 0` everywhere.
-fn levin_pieces(ends: &[ParamValue], after: &[Sign], everywhere: Sign) -> Vec<RealPiece> {
+fn levin_pieces(ends: Vec<ParamValue>, after: &[Sign], everywhere: Sign) -> Vec<RealPiece> {
     let mut pieces = Vec::new();
+    // each end moved into the piece that uses it last, cloned for the others
+    let count = ends.len();
+    let mut uses = vec![0usize; count];
+    for i in (0..count).filter(|&i| after[i] == Sign::Positive) {
+        uses[i] += 1;
+        uses[(i + 1) % count] += 1;
+    }
+    let mut ends: Vec<Option<ParamValue>> = ends.into_iter().map(Some).collect();
+    let mut take = |k: usize| -> ParamValue {
+        uses[k] -= 1;
+        let end = if uses[k] == 0 {
+            ends[k].take()
+        } else {
+            ends[k].clone()
+        };
+        end.expect("an end is moved at its last use")
+    };
     let loop_over = |range: ParamRange| RealPiece::Curve {
         component: 0,
         arcs: vec![
@@ -737,7 +834,7 @@ fn levin_pieces(ends: &[ParamValue], after: &[Sign], everywhere: Sign) -> Vec<Re
         ],
         closed: true,
     };
-    if ends.is_empty() {
+    if count == 0 {
         if everywhere == Sign::Positive {
             for sheet in [Sheet::Plus, Sheet::Minus] {
                 pieces.push(RealPiece::Curve {
@@ -752,10 +849,11 @@ fn levin_pieces(ends: &[ParamValue], after: &[Sign], everywhere: Sign) -> Vec<Re
             }
         }
     } else {
-        for i in 0..ends.len() {
+        for i in 0..count {
             if after[i] == Sign::Positive {
-                let next = ends[(i + 1) % ends.len()].clone();
-                pieces.push(loop_over(ParamRange::Between(ends[i].clone(), next)));
+                let start = take(i);
+                let next = take((i + 1) % count);
+                pieces.push(loop_over(ParamRange::Between(start, next)));
             }
         }
     }
@@ -1609,21 +1707,23 @@ mod tests {
         for (seed, bound) in [(1u64, 10i64), (2, 1000), (3, 3)] {
             for (a, b) in smooth_pairs(seed, 40, bound) {
                 let simple = matches!(classify(&a, &b).case, Some(1..=4));
-                let (Ok((l1, f1)), Ok((l2, f2))) = (
+                let (Ok(q1), Ok(q2)) = (
                     smooth_quartic(&a, &b, true, simple),
                     smooth_quartic(&a, &b, false, simple),
                 ) else {
                     continue;
                 };
                 total += 1;
-                assert!(f2.is_none());
-                fast_used += usize::from(f1.is_some());
+                assert!(matches!(q2.forms, Forms::Rational { .. }));
+                fast_used += usize::from(matches!(q1.forms, Forms::Integral(_)));
+                let (l1, l2) = (q1.clone().into_levin(), q2.clone().into_levin());
                 assert_eq!(l1.surface, l2.surface);
                 assert_eq!((&l1.a, &l1.d, &l1.s), (&l2.a, &l2.d, &l2.s));
                 assert_eq!((&l1.delta, l1.substituted), (&l2.delta, l2.substituted));
+                assert_eq!(q1.real_components().ok(), l1.real_components().ok());
                 let cls = classify(&a, &b);
-                let c1 = levin_curve(cls.clone(), &l1, f1.as_ref(), &a, &b).expect("curve");
-                let c2 = levin_curve(cls, &l2, None, &a, &b).expect("curve");
+                let c1 = levin_curve(cls.clone(), q1, &a, &b).expect("curve");
+                let c2 = levin_curve(cls, q2, &a, &b).expect("curve");
                 let levin = |c: &Curve| match c.components[0].param.clone() {
                     Some(ComponentParam::Levin {
                         a,

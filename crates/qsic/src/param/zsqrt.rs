@@ -39,6 +39,7 @@ impl Zq {
         })
     }
 
+    #[cfg(test)]
     pub(crate) fn to_quadratic(&self, delta: &IBig) -> Quadratic {
         if self.b.is_zero() {
             return Quadratic::rational(RBig::from(self.a.clone()));
@@ -49,6 +50,15 @@ impl Zq {
             delta.clone(),
         )
         .expect("δ is not a square")
+    }
+
+    /// [`Self::to_quadratic`] with `root = √δ` ([`Quadratic::sqrt`]): no square test.
+    fn to_quadratic_in(&self, root: &Quadratic) -> Quadratic {
+        if self.b.is_zero() {
+            return Quadratic::rational(RBig::from(self.a.clone()));
+        }
+        debug_assert!(root.as_rational().is_none(), "δ is not a square");
+        Quadratic::in_field_of(RBig::from(self.a.clone()), RBig::from(self.b.clone()), root)
     }
 
     pub(crate) fn mul(&self, o: &Zq, delta: &IBig) -> Zq {
@@ -75,6 +85,9 @@ impl Zq {
 /// A polynomial in `u` over ℤ[√δ], increasing powers (trailing zeros allowed).
 pub(crate) type ZPoly = Vec<Zq>;
 
+/// Levin's `s`, `a` and `alt` over ℤ[√δ] ([`levin_small`], [`levin_big`]).
+pub(crate) type LevinForms = (ZPoly, [ZPoly; 4], [ZPoly; 4]);
+
 /// `p` over ℤ[√δ], `None` if a coefficient is not integral in ℚ(√δ).
 pub(crate) fn zpoly(p: &Poly<Quadratic>, delta: &IBig) -> Option<ZPoly> {
     p.coeffs()
@@ -95,7 +108,57 @@ pub(crate) fn zvector(v: &[Poly<Quadratic>; 4], delta: &IBig) -> Option<[ZPoly; 
 
 /// Back to a polynomial over ℚ(√δ).
 pub(crate) fn to_poly(p: &[Zq], delta: &IBig) -> Poly<Quadratic> {
-    Poly::new(p.iter().map(|c| c.to_quadratic(delta)).collect())
+    let root = root_of(p, delta);
+    Poly::new(p.iter().map(|c| c.to_quadratic_in(&root)).collect())
+}
+
+/// `√δ` when a coefficient of `p` is irrational (one square test for all), else 0.
+fn root_of(p: &[Zq], delta: &IBig) -> Quadratic {
+    if p.iter().all(|c| c.b.is_zero()) {
+        return Quadratic::rational(RBig::ZERO);
+    }
+    let root = Quadratic::sqrt(delta);
+    assert!(root.as_rational().is_none(), "δ is not a square");
+    root
+}
+
+/// The `log₂` sizes of the coefficients of `p` (`−∞` for zero), as `log2_size` in the parent
+/// module computes them on [`to_poly`] of `p`, from the integers: the float of `a + b√δ` is
+/// `a + b·√δ` in floats (each correctly rounded), else bit lengths.
+pub(crate) fn log2_sizes(p: &[Zq], delta: &IBig) -> Vec<f64> {
+    use dashu_int::ops::BitTest;
+    let root = delta.to_f64().value().sqrt();
+    let bits = |v: &IBig| {
+        if v.is_zero() {
+            f64::NEG_INFINITY
+        } else {
+            // the bit length of the numerator less that of the denominator 1
+            v.bit_len() as f64 - 1.0
+        }
+    };
+    p.iter()
+        .map(|c| {
+            if c.is_zero() {
+                return f64::NEG_INFINITY;
+            }
+            let a = c.a.to_f64().value();
+            let v = if c.b.is_zero() {
+                a
+            } else {
+                a + c.b.to_f64().value() * root
+            }
+            .abs();
+            if v.is_finite() && v > 0.0 {
+                return v.log2();
+            }
+            let root_bits = if c.b.is_zero() {
+                0.0
+            } else {
+                delta.bit_len() as f64 / 2.0
+            };
+            bits(&c.a).max(bits(&c.b) + root_bits) + 1.0
+        })
+        .collect()
 }
 
 pub(crate) fn poly_mul(x: &[Zq], y: &[Zq], delta: &IBig) -> ZPoly {
@@ -210,23 +273,33 @@ pub(crate) fn trim(p: &mut ZPoly) {
 
 /// Coefficient `i` of `p` times `2^exponent(i)`.
 pub(crate) fn scale_powers_of_two(p: &mut [Zq], exponent: impl Fn(usize) -> usize) {
+    // `v·2^e`: nothing for zero, in `i128` for a `v` of `i64` and `e < 63` (`|v·2^e| < 2¹²⁶`)
+    let shift = |v: &mut IBig, e: usize| {
+        if v.is_zero() {
+            return;
+        }
+        match i64::try_from(&*v) {
+            Ok(x) if e < 63 => *v = IBig::from(i128::from(x) << e),
+            _ => *v <<= e,
+        }
+    };
     for (i, c) in p.iter_mut().enumerate() {
         let e = exponent(i);
         if e > 0 {
-            c.a <<= e;
-            c.b <<= e;
+            shift(&mut c.a, e);
+            shift(&mut c.b, e);
         }
     }
 }
 
 /// `x` as a [`super::Number`] in `field` = ℚ(√δ) (rational when `b = 0`): the same element
 /// as [`super::curve::from_quadratic`] of [`Zq::to_quadratic`], without the rational gcds.
-pub(crate) fn to_number(x: &Zq, field: Option<&qsic_algebra::field::NumberField>) -> super::Number {
+pub(crate) fn to_number(x: Zq, field: Option<&qsic_algebra::field::NumberField>) -> super::Number {
     match field {
-        Some(k) if !x.b.is_zero() => k.integer_element(&Poly::new(vec![x.a.clone(), x.b.clone()])),
+        Some(k) if !x.b.is_zero() => k.linear_element(x.a, x.b),
         _ => {
             debug_assert!(x.b.is_zero(), "an irrational coefficient needs its field");
-            super::curve::rational(RBig::from(x.a.clone()))
+            qsic_algebra::field::NumberFieldElement::integer(x.a)
         }
     }
 }
@@ -238,14 +311,14 @@ pub(crate) fn to_poly_down(p: &[Zq], delta: &IBig, e: usize) -> Poly<Quadratic> 
     }
     let den = dashu_int::UBig::ONE << e;
     let part = |v: &IBig| RBig::from_parts(v.clone(), den.clone());
+    let root = root_of(p, delta);
     Poly::new(
         p.iter()
             .map(|c| {
                 if c.b.is_zero() {
                     Quadratic::rational(part(&c.a))
                 } else {
-                    Quadratic::new(part(&c.a), part(&c.b), delta.clone())
-                        .expect("δ is not a square")
+                    Quadratic::in_field_of(part(&c.a), part(&c.b), &root)
                 }
             })
             .collect(),
@@ -254,12 +327,12 @@ pub(crate) fn to_poly_down(p: &[Zq], delta: &IBig, e: usize) -> Poly<Quadratic> 
 
 /// `p` as a [`super::NumberPoly`] over `field` = ℚ(√δ) ([`to_number`]).
 pub(crate) fn to_number_poly(
-    p: &[Zq],
+    mut p: ZPoly,
     field: Option<&qsic_algebra::field::NumberField>,
 ) -> super::NumberPoly {
     // a + b√δ = 0 exactly when a = b = 0 (δ not a square): the zero test on integers
-    let n = p.iter().rposition(|c| !c.is_zero()).map_or(0, |i| i + 1);
-    Poly::from_trimmed(p[..n].iter().map(|c| to_number(c, field)).collect())
+    trim(&mut p);
+    Poly::from_trimmed(p.into_iter().map(|c| to_number(c, field)).collect())
 }
 
 /// Makes the integers of a doubly ruled surface's ruling `b(u) + v·d(u)` (`b`, `d` of
@@ -470,76 +543,6 @@ fn mul_i(x: i128, y: i128) -> Option<i128> {
     }
 }
 
-fn zi_poly(p: &[Zq]) -> Option<Vec<Zi>> {
-    p.iter().map(Zi::of).collect()
-}
-
-fn zi_mul(x: &[Zi], y: &[Zi], delta: i128) -> Option<Vec<Zi>> {
-    if x.is_empty() || y.is_empty() {
-        return Some(Vec::new());
-    }
-    let mut out = vec![Zi::default(); x.len() + y.len() - 1];
-    for (i, a) in x.iter().enumerate() {
-        if *a == Zi::default() {
-            continue;
-        }
-        for (j, b) in y.iter().enumerate() {
-            out[i + j] = out[i + j].add(a.mul(*b, delta)?)?;
-        }
-    }
-    Some(out)
-}
-
-fn zi_sub(x: &[Zi], y: &[Zi]) -> Option<Vec<Zi>> {
-    zi_zip(x, y, Zi::sub)
-}
-
-fn zi_zip(x: &[Zi], y: &[Zi], f: impl Fn(Zi, Zi) -> Option<Zi>) -> Option<Vec<Zi>> {
-    (0..x.len().max(y.len()))
-        .map(|i| {
-            f(
-                x.get(i).copied().unwrap_or_default(),
-                y.get(i).copied().unwrap_or_default(),
-            )
-        })
-        .collect()
-}
-
-/// `xᵀMy` in machine integers (`x`, `y` of at most 3 coefficients, fixed buffers).
-fn zi_form(m: &[[i128; 4]; 4], x: &[Vec<Zi>; 4], y: &[Vec<Zi>; 4], delta: i128) -> Option<Vec<Zi>> {
-    if x.iter().chain(y).any(|p| p.len() > 3) {
-        return None;
-    }
-    let mut acc = [Zi::default(); 5];
-    for i in 0..4 {
-        if x[i].iter().all(|c| *c == Zi::default()) {
-            continue;
-        }
-        let mut row = [Zi::default(); 3];
-        for j in 0..4 {
-            if m[i][j] != 0 {
-                let k = Zi { a: m[i][j], b: 0 };
-                for (r, c) in row.iter_mut().zip(&y[j]) {
-                    *r = r.add(k.mul(*c, delta)?)?;
-                }
-            }
-        }
-        for (e, xc) in x[i].iter().enumerate() {
-            if *xc == Zi::default() {
-                continue;
-            }
-            for (f, rc) in row.iter().enumerate() {
-                acc[e + f] = acc[e + f].add(xc.mul(*rc, delta)?)?;
-            }
-        }
-    }
-    let n = acc
-        .iter()
-        .rposition(|c| *c != Zi::default())
-        .map_or(0, |i| i + 1);
-    Some(acc[..n].to_vec())
-}
-
 /// [`levin_small`]'s `s`, `a`, `alt` in big integers: the route when a number leaves
 /// `i128` (and the reference its tests compare with).
 pub(crate) fn levin_big(
@@ -547,7 +550,7 @@ pub(crate) fn levin_big(
     b: &[ZPoly; 4],
     d: &[ZPoly; 4],
     delta: &IBig,
-) -> (ZPoly, [ZPoly; 4], [ZPoly; 4]) {
+) -> LevinForms {
     let c0 = poly_form(m, b, b, delta);
     let c1 = poly_form(m, b, d, delta);
     let c2 = poly_form(m, d, d, delta);
@@ -558,16 +561,18 @@ pub(crate) fn levin_big(
     (s, combine(&c2, &c1), combine(&c1, &c0))
 }
 
-/// Levin's whole form in machine integers, every operation checked: `s = c₁² − c₀c₂`,
-/// `a = c₂b − c₁d` and `alt = c₁b − c₀d` with `c₀ = bᵀMb`, `c₁ = bᵀMd`, `c₂ = dᵀMd` over
-/// ℤ[√δ] (in one pass, converted to [`Zq`] once; [`levin_big`] computes the same); `None`
-/// when a number leaves `i128`.
+/// Levin's whole form in machine integers: `s = c₁² − c₀c₂`, `a = c₂b − c₁d` and
+/// `alt = c₁b − c₀d` with `c₀ = bᵀMb`, `c₁ = bᵀMd`, `c₂ = dᵀMd` over ℤ[√δ], in fixed
+/// buffers, converted to [`Zq`] once ([`levin_big`] computes the same): each stage without
+/// overflow checks when size bounds exclude overflow ([`levin_fixed`], the common case),
+/// else checked; `None` when a number leaves `i128` or a coordinate of the ruling has more
+/// than 3 coefficients.
 pub(crate) fn levin_small(
     m: &[[IBig; 4]; 4],
     b: &[ZPoly; 4],
     d: &[ZPoly; 4],
     delta: &IBig,
-) -> Option<(ZPoly, [ZPoly; 4], [ZPoly; 4])> {
+) -> Option<LevinForms> {
     let mut mi = [[0i128; 4]; 4];
     for (row, src) in mi.iter_mut().zip(m) {
         for (x, v) in row.iter_mut().zip(src) {
@@ -575,40 +580,189 @@ pub(crate) fn levin_small(
         }
     }
     let dl = i128::try_from(delta).ok()?;
-    let conv = |v: &[ZPoly; 4]| -> Option<[Vec<Zi>; 4]> {
-        Some([
-            zi_poly(&v[0])?,
-            zi_poly(&v[1])?,
-            zi_poly(&v[2])?,
-            zi_poly(&v[3])?,
-        ])
-    };
-    let (bi, di) = (conv(b)?, conv(d)?);
-    let c0 = zi_form(&mi, &bi, &bi, dl)?;
-    let c1 = zi_form(&mi, &bi, &di, dl)?;
-    let c2 = zi_form(&mi, &di, &di, dl)?;
-    let s = zi_sub(&zi_mul(&c1, &c1, dl)?, &zi_mul(&c0, &c2, dl)?)?;
-    // without trailing zeros (the fixed buffers of the forms leave some)
-    let big = |p: &[Zi]| -> ZPoly {
-        let n = p
+    levin_fixed(&mi, b, d, dl, false).map(|(forms, _)| forms)
+}
+
+/// The bit length of `|v|`.
+fn bit_len(v: i128) -> u32 {
+    128 - v.unsigned_abs().leading_zeros()
+}
+
+/// `x·y` in ℤ[√δ] without overflow checks (the caller's bounds exclude overflow).
+fn mul_unchecked(x: Zi, y: Zi, delta: i128) -> Zi {
+    if x.b == 0 {
+        return Zi {
+            a: x.a * y.a,
+            b: x.a * y.b,
+        };
+    }
+    Zi {
+        a: x.a * y.a + x.b * y.b * delta,
+        b: x.a * y.b + x.b * y.a,
+    }
+}
+
+/// `xᵀMy` into a fixed buffer (`x`, `y` of at most 3 coefficients), without overflow checks
+/// when `checked` is false (the caller's bounds exclude overflow); `None` on overflow.
+fn form_fixed(
+    m: &[[i128; 4]; 4],
+    x: &[&[Zi]; 4],
+    y: &[&[Zi]; 4],
+    delta: i128,
+    checked: bool,
+) -> Option<[Zi; 5]> {
+    let mut acc = [Zi::default(); 5];
+    for i in 0..4 {
+        let mut row = [Zi::default(); 3];
+        for j in 0..4 {
+            let k = Zi { a: m[i][j], b: 0 };
+            if k.a != 0 {
+                for (r, c) in row.iter_mut().zip(y[j]) {
+                    *r = if checked {
+                        r.add(k.mul(*c, delta)?)?
+                    } else {
+                        Zi {
+                            a: r.a + k.a * c.a,
+                            b: r.b + k.a * c.b,
+                        }
+                    };
+                }
+            }
+        }
+        for (e, xc) in x[i].iter().enumerate() {
+            if *xc == Zi::default() {
+                continue;
+            }
+            for (f, rc) in row.iter().enumerate() {
+                let o = &mut acc[e + f];
+                *o = if checked {
+                    o.add(xc.mul(*rc, delta)?)?
+                } else {
+                    let p = mul_unchecked(*xc, *rc, delta);
+                    Zi {
+                        a: o.a + p.a,
+                        b: o.b + p.b,
+                    }
+                };
+            }
+        }
+    }
+    Some(acc)
+}
+
+/// `x·y − z·w` of polynomials over ℤ[√δ] (product degrees below 9) as a [`ZPoly`] without
+/// trailing zeros; without overflow checks when `checked` is false (as [`form_fixed`]).
+fn cross_fixed(
+    x: &[Zi],
+    y: &[Zi],
+    z: &[Zi],
+    w: &[Zi],
+    delta: i128,
+    checked: bool,
+) -> Option<ZPoly> {
+    let mut out = [Zi::default(); 9];
+    for (negate, p, q) in [(false, x, y), (true, z, w)] {
+        for (i, pc) in p.iter().enumerate() {
+            if *pc == Zi::default() {
+                continue;
+            }
+            for (j, qc) in q.iter().enumerate() {
+                let o = &mut out[i + j];
+                *o = if checked {
+                    let v = pc.mul(*qc, delta)?;
+                    if negate {
+                        o.sub(v)?
+                    } else {
+                        o.add(v)?
+                    }
+                } else {
+                    let v = mul_unchecked(*pc, *qc, delta);
+                    if negate {
+                        Zi {
+                            a: o.a - v.a,
+                            b: o.b - v.b,
+                        }
+                    } else {
+                        Zi {
+                            a: o.a + v.a,
+                            b: o.b + v.b,
+                        }
+                    }
+                };
+            }
+        }
+    }
+    let n = out
+        .iter()
+        .rposition(|c| *c != Zi::default())
+        .map_or(0, |i| i + 1);
+    Some(out[..n].iter().map(|c| c.big()).collect())
+}
+
+/// [`levin_small`] on machine integers; also whether both stages ran without checks
+/// (`always_check` forces the checks, for the tests).
+///
+/// The bounds: the size of `x = a + b√δ` is its weight `N(x) = |a| + |b|√|δ|`, which bounds
+/// both parts (`|a| ≤ N`, `|b|·|δ| ≤ N·√|δ|`, so every partial product of an unchecked
+/// product is below `N(x)N(y)`) and is submultiplicative, `N(xy) ≤ N(x)N(y)`; with
+/// `√|δ| < 2^h`, `N(x) < 2^σ(x)`, `σ = max(bits(a), bits(b) + h) + 1`. With `σ_q` that of
+/// the coefficients of `b` and `d` and `β_M` the bit length of `M`'s entries, a row
+/// `Σⱼ Mᵢⱼ yⱼ` weighs below `2^(β_M+σ_q+2)` and a form's coefficient (at most 4·3 products)
+/// below `2^(2σ_q+β_M+6)`: the forms go unchecked when that is at most `2¹²⁶`; then with
+/// `σ₀`, `σ₁`, `σ₂` the largest sizes of their coefficients, `s = c₁² − c₀c₂` (at most 5
+/// products each) weighs below `2^(max(2σ₁, σ₀+σ₂)+4)` and `a`, `alt` (2·3 products) below
+/// `2^(max σᵢ + σ_q + 3)`: unchecked when at most `2¹²⁶`. Every partial sum is bounded by
+/// its final bound.
+fn levin_fixed(
+    m: &[[i128; 4]; 4],
+    b: &[ZPoly; 4],
+    d: &[ZPoly; 4],
+    delta: i128,
+    always_check: bool,
+) -> Option<(LevinForms, bool)> {
+    if b.iter().chain(d).any(|p| p.len() > 3) {
+        return None;
+    }
+    // √|δ| < 2^h: |δ| < 2^bits(δ) ≤ 2^(2h)
+    let h = bit_len(delta).div_ceil(2);
+    let size = |x: &Zi| bit_len(x.a).max(bit_len(x.b) + h) + 1;
+    let bm = m.iter().flatten().map(|v| bit_len(*v)).max().unwrap_or(0);
+    let mut sq = 0;
+    let mut fixed = [[Zi::default(); 3]; 8];
+    for (k, p) in b.iter().chain(d).enumerate() {
+        for (slot, c) in fixed[k].iter_mut().zip(p) {
+            *slot = Zi::of(c)?;
+            sq = sq.max(size(slot));
+        }
+    }
+    let bi: [&[Zi]; 4] = std::array::from_fn(|i| &fixed[i][..b[i].len()]);
+    let di: [&[Zi]; 4] = std::array::from_fn(|i| &fixed[4 + i][..d[i].len()]);
+    let checked = always_check || 2 * sq + bm + 6 > 126;
+    let c0 = form_fixed(m, &bi, &bi, delta, checked)?;
+    let c1 = form_fixed(m, &bi, &di, delta, checked)?;
+    let c2 = form_fixed(m, &di, &di, delta, checked)?;
+    // without their trailing zeros, and the size of each
+    let trimmed = |c: &[Zi; 5]| -> (usize, u32) {
+        let n = c
             .iter()
-            .rposition(|c| *c != Zi::default())
+            .rposition(|v| *v != Zi::default())
             .map_or(0, |i| i + 1);
-        p[..n].iter().map(|c| c.big()).collect()
+        (n, c[..n].iter().map(size).max().unwrap_or(0))
     };
+    let ((n0, s0), (n1, s1), (n2, s2)) = (trimmed(&c0), trimmed(&c1), trimmed(&c2));
+    let (c0, c1, c2) = (&c0[..n0], &c1[..n1], &c2[..n2]);
+    let checked_products =
+        always_check || (2 * s1).max(s0 + s2) + 4 > 126 || s2.max(s1).max(s0) + sq + 3 > 126;
+    let cross =
+        |x: &[Zi], y: &[Zi], z: &[Zi], w: &[Zi]| cross_fixed(x, y, z, w, delta, checked_products);
+    let s = cross(c1, c1, c0, c2)?;
     let mut a: [ZPoly; 4] = Default::default();
     let mut alt: [ZPoly; 4] = Default::default();
     for i in 0..4 {
-        a[i] = big(&zi_sub(
-            &zi_mul(&c2, &bi[i], dl)?,
-            &zi_mul(&c1, &di[i], dl)?,
-        )?);
-        alt[i] = big(&zi_sub(
-            &zi_mul(&c1, &bi[i], dl)?,
-            &zi_mul(&c0, &di[i], dl)?,
-        )?);
+        a[i] = cross(c2, bi[i], c1, di[i])?;
+        alt[i] = cross(c1, bi[i], c0, di[i])?;
     }
-    Some((big(&s), a, alt))
+    Some(((s, a, alt), !checked && !checked_products))
 }
 
 #[cfg(test)]
@@ -727,13 +881,111 @@ mod tests {
         }
     }
 
-    /// The machine-integer forms equal the big-integer ones, small (i128) and past i128
-    /// (the checked fallback).
+    /// The conversions without gcds and square tests build the representations of the
+    /// general routes: [`to_poly`] and [`to_poly_down`] those of [`Quadratic::new`],
+    /// [`to_number_poly`] that of `curve::from_quadratic`, and [`log2_sizes`] the sizes of
+    /// the parent's `log2_size` on the converted coefficients (small, huge and zero numbers).
+    #[test]
+    fn conversions_equal_the_general_routes() {
+        use qsic_algebra::field::NumberFieldElement;
+        let mut rng = SplitMix(29);
+        let same = |x: &NumberFieldElement, y: &NumberFieldElement| {
+            x.numerator() == y.numerator()
+                && x.denominator() == y.denominator()
+                && x.field().is_some() == y.field().is_some()
+                && x == y
+        };
+        let mut checked = 0;
+        for (bits, delta) in [(4usize, 0i64), (10, 7), (60, 2), (200, 3), (1100, 5)] {
+            let delta = IBig::from(delta);
+            let huge_delta = IBig::from(7) << 1100;
+            for d in [&delta, &huge_delta] {
+                if delta.is_zero() && !d.is_zero() {
+                    continue;
+                }
+                let field = (!d.is_zero()).then(|| super::super::curve::sqrt_field(d));
+                for len in 0..6 {
+                    let mut p = random_poly(&mut rng, bits, !d.is_zero(), len);
+                    for c in p.iter_mut() {
+                        match rng.int(0, 3) {
+                            0 => c.a = IBig::ZERO,
+                            1 => c.b = IBig::ZERO,
+                            _ => {}
+                        }
+                    }
+                    let old = Poly::new(p.iter().map(|c| c.to_quadratic(d)).collect());
+                    assert_eq!(to_poly(&p, d), old);
+                    for e in [1usize, 5, 40] {
+                        let den = dashu_int::UBig::ONE << e;
+                        let part = |v: &IBig| RBig::from_parts(v.clone(), den.clone());
+                        let want: Poly<Quadratic> = Poly::new(
+                            p.iter()
+                                .map(|c| Quadratic::new(part(&c.a), part(&c.b), d.clone()).unwrap())
+                                .collect(),
+                        );
+                        assert_eq!(to_poly_down(&p, d, e), want);
+                    }
+                    let sizes: Vec<f64> =
+                        old.coeffs().iter().map(super::super::log2_size).collect();
+                    let new = log2_sizes(&p, d);
+                    // the trailing zeros of p have no coefficient in `old`
+                    assert!(new[sizes.len()..].iter().all(|v| *v == f64::NEG_INFINITY));
+                    assert_eq!(&new[..sizes.len()], &sizes[..], "{p:?}");
+                    let fast = to_number_poly(p.clone(), field.as_ref());
+                    let general = super::super::curve::poly_from_quadratic(&old, field.as_ref());
+                    assert_eq!(fast.coeffs().len(), general.coeffs().len());
+                    for (x, y) in fast.coeffs().iter().zip(general.coeffs()) {
+                        assert!(same(x, y), "{x} vs {y}");
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert!(checked >= 100, "{checked}");
+    }
+
+    /// [`scale_powers_of_two`] multiplies each coefficient by its power of two, on small and
+    /// big integers and zeros.
+    #[test]
+    fn scaling_by_powers_of_two() {
+        let mut rng = SplitMix(31);
+        for bits in [0usize, 20, 50, 70, 200] {
+            for _ in 0..20 {
+                let mut p = random_poly(&mut rng, bits, true, 5);
+                p[rng.int(0, 4) as usize].a = IBig::ZERO;
+                let exps: Vec<usize> = (0..5).map(|_| rng.int(0, 100) as usize).collect();
+                let want: ZPoly = p
+                    .iter()
+                    .zip(&exps)
+                    .map(|(c, &e)| Zq {
+                        a: &c.a * (IBig::ONE << e),
+                        b: &c.b * (IBig::ONE << e),
+                    })
+                    .collect();
+                scale_powers_of_two(&mut p, |i| exps[i]);
+                assert_eq!(p, want);
+            }
+        }
+    }
+
+    /// The machine-integer forms equal the big-integer ones: without checks (bounded), checked
+    /// (the bound fails, the numbers fit), and past i128 (the big fallback).
     #[test]
     fn machine_forms_equal_big_forms() {
         let mut rng = SplitMix(17);
-        let (mut small, mut overflowed) = (0, 0);
-        for (bits, delta) in [(4usize, 0i64), (10, 7), (30, 2), (60, 3), (90, 5)] {
+        let (mut small, mut overflowed, mut bounded, mut checked_only) = (0, 0, 0, 0);
+        for (bits, delta) in [
+            (4usize, 0i64),
+            (6, 11),
+            (10, 7),
+            (16, 0),
+            (18, 2),
+            (20, 0),
+            (22, 3),
+            (30, 2),
+            (60, 3),
+            (90, 5),
+        ] {
             let delta = IBig::from(delta);
             for _ in 0..20 {
                 let m: [[IBig; 4]; 4] = std::array::from_fn(|_| {
@@ -742,8 +994,10 @@ mod tests {
                     })
                 });
                 let irr = !delta.is_zero();
-                let b: [ZPoly; 4] = std::array::from_fn(|_| random_poly(&mut rng, bits, irr, 2));
-                let d: [ZPoly; 4] = std::array::from_fn(|_| random_poly(&mut rng, bits, irr, 3));
+                // lines (2 coefficients) or a vertex and a conic (1 and 3)
+                let (lb, ld) = if rng.int(0, 1) == 0 { (2, 2) } else { (1, 3) };
+                let b: [ZPoly; 4] = std::array::from_fn(|_| random_poly(&mut rng, bits, irr, lb));
+                let d: [ZPoly; 4] = std::array::from_fn(|_| random_poly(&mut rng, bits, irr, ld));
                 let same = |x: &[Zq], y: &[Zq]| to_poly(x, &delta) == to_poly(y, &delta);
                 let (e0, e1, e2) = (
                     poly_form(&m, &b, &b, &delta),
@@ -758,6 +1012,18 @@ mod tests {
                     continue;
                 };
                 small += 1;
+                let mi: [[i128; 4]; 4] = std::array::from_fn(|i| {
+                    std::array::from_fn(|j| i128::try_from(&m[i][j]).unwrap())
+                });
+                let dl = i128::try_from(&delta).unwrap();
+                let (slow, _) = levin_fixed(&mi, &b, &d, dl, true).expect("fits i128");
+                assert_eq!((&s, &a, &alt), (&slow.0, &slow.1, &slow.2));
+                let (_, unchecked) = levin_fixed(&mi, &b, &d, dl, false).expect("fits i128");
+                if unchecked {
+                    bounded += 1;
+                } else {
+                    checked_only += 1;
+                }
                 assert!(same(&s, &es));
                 for i in 0..4 {
                     let want =
@@ -770,8 +1036,8 @@ mod tests {
             }
         }
         assert!(
-            small >= 40 && overflowed >= 10,
-            "{small} small, {overflowed} past i128"
+            small >= 80 && overflowed >= 50 && bounded >= 60 && checked_only >= 10,
+            "{small} small ({bounded} bounded, {checked_only} checked), {overflowed} past i128"
         );
     }
 }
