@@ -677,6 +677,12 @@ struct Evaluator<'a> {
     d_abs_max: f64,
     /// Relative rounding of one evaluation, per unit of the bound.
     gamma: f64,
+    /// A bound of every computed `√s` on `[−1, 1]` (`√(Σ|sₖ|)` with a margin), and the
+    /// norm at or above which an evaluation with `√s` within it is certified whatever `t`:
+    /// `γ·(Σ|x| + Σ|d|·√s) ≤ 10⁻¹⁰·‖X‖` ([`Evaluator::sure`]); infinite where the
+    /// coefficients are too large for the shortcut.
+    sure_root: f64,
+    sure_norm: f64,
     /// The double-double coefficients made with the floats, when all came cheaply.
     quick_dd: Option<Box<DdCoeffs>>,
     /// The double-double coefficients for the retry of an ill-conditioned evaluation when
@@ -930,6 +936,22 @@ fn newton_bracketed(f: &dyn Fn(f64) -> (f64, f64), lo: f64, hi: f64, flo: f64) -
     x
 }
 
+/// The bounds of [`Evaluator::sure`]: `R = √(Σ|sₖ|·(1 + 2⁻³⁰))` bounds the computed `√s` at
+/// any `|t| ≤ 1` (Horner's rounding is below `2⁻⁴⁰` relative to `Σ|sₖ||t|ᵏ` for five
+/// terms), and `K = 10¹⁰·γ·(Σ|x| + Σ|d|·R)·(1 + 2⁻³⁰)`. Both infinite (nothing certified
+/// this way) unless `K` is positive and the sum is below `10³⁰⁰`: the values are then finite.
+fn sure_bounds(gamma: f64, x_abs_max: f64, d_abs_max: f64, s: &[f64; 5]) -> (f64, f64) {
+    let margin = 1.0 + 2f64.powi(-30);
+    let root = (s.iter().map(|v| v.abs()).sum::<f64>() * margin).sqrt();
+    let size = x_abs_max + d_abs_max * root;
+    let norm = 1e10 * gamma * size * margin;
+    if size.is_finite() && size < 1e300 && norm > 0.0 && norm.is_finite() {
+        (root, norm)
+    } else {
+        (f64::INFINITY, f64::INFINITY)
+    }
+}
+
 /// The reduced parameters ([`reduced_parameter`]) of the grid `θₖ = t₀ + k·step`,
 /// `k = 1, …, n − 1`: `(sin θₖ, cos θₖ)` by rotations from `(0, 1)`, exact every
 /// [`RESYNC`] points.
@@ -1056,6 +1078,13 @@ impl<'a> Evaluator<'a> {
             (c0, rest)
         };
         let nd = if levin { n - 2 } else { 0 };
+        let gamma = if levin {
+            8.0 * (big_d as f64 + 4.0) * f64::EPSILON
+        } else {
+            4.0 * (big_d as f64 + 3.0) * f64::EPSILON
+        };
+        let (x_abs_max, d_abs_max) = (abs_sum(&x), abs_sum(&dv));
+        let (sure_root, sure_norm) = sure_bounds(gamma, x_abs_max, d_abs_max, &sv);
         let split_abs = [(0, 0), (n - 1, nd.saturating_sub(1))].map(|(cx, cd)| {
             let (x0, x1) = split(&x[..n], cx);
             let (d0, d1) = split(&dv[..nd], cd);
@@ -1067,8 +1096,10 @@ impl<'a> Evaluator<'a> {
             d_abs: abs(&dv),
             x_abs_desc: abs(&x_desc),
             d_abs_desc: abs(&d_desc),
-            x_abs_max: abs_sum(&x),
-            d_abs_max: abs_sum(&dv),
+            x_abs_max,
+            d_abs_max,
+            sure_root,
+            sure_norm,
             x_desc,
             d_desc,
             s_desc,
@@ -1076,11 +1107,7 @@ impl<'a> Evaluator<'a> {
             d: dv,
             s: sv,
             levin,
-            gamma: if levin {
-                8.0 * (big_d as f64 + 4.0) * f64::EPSILON
-            } else {
-                4.0 * (big_d as f64 + 3.0) * f64::EPSILON
-            },
+            gamma,
             quick_dd: all_dd.then_some(dd),
             dd: std::cell::OnceCell::new(),
             param,
@@ -1111,6 +1138,9 @@ impl<'a> Evaluator<'a> {
     #[inline(always)]
     fn unit_of(&self, x: Lanes, root: f64, t: f64, rev: bool, sheet: Sheet) -> Option<[f64; 4]> {
         let norm = dot(&x, &x).sqrt();
+        if self.sure(root, norm) {
+            return Some(x.map(|v| v / norm));
+        }
         let cheap = self.majorant(t, rev, root);
         if norm.is_finite() && norm > 0.0 && self.gamma * cheap <= 1e-10 * norm {
             return Some(x.map(|v| v / norm));
@@ -1173,10 +1203,11 @@ impl<'a> Evaluator<'a> {
         minus: &mut Vec<[f64; 4]>,
     ) {
         plus.clear();
-        plus.reserve(n);
+        plus.resize(n.saturating_sub(1), [0.0; 4]);
         minus.clear();
-        minus.reserve(n);
-        for (t, rev) in grid_parameters(t0, step, n) {
+        minus.resize(n.saturating_sub(1), [0.0; 4]);
+        let out = plus.iter_mut().zip(minus.iter_mut());
+        for ((pu, mu), (t, rev)) in out.zip(grid_parameters(t0, step, n)) {
             let (a, w, root) = self.parts::<NA, ND>(t, rev);
             // the same operations as `values` on either sheet
             let (mut p, mut m) = (a, a);
@@ -1184,20 +1215,23 @@ impl<'a> Evaluator<'a> {
                 p[i] += root * w[i];
                 m[i] += -root * w[i];
             }
-            // `unit_of` on either sheet, the bound at `|t|` shared where it is needed
             let (np, nm) = (dot(&p, &p).sqrt(), dot(&m, &m).sqrt());
-            let lhs = self.gamma * self.majorant(t, rev, root);
-            let ok = |norm: f64| norm.is_finite() && norm > 0.0 && lhs <= 1e-10 * norm;
-            let (p_ok, m_ok) = (ok(np), ok(nm));
-            if p_ok && m_ok {
-                plus.push(p.map(|v| v / np));
-                minus.push(m.map(|v| v / nm));
-            } else {
-                let (pu, mu) =
-                    self.certify_both::<NA, ND>(t, rev, root, (p, np, p_ok), (m, nm, m_ok));
-                plus.push(pu);
-                minus.push(mu);
+            if self.sure(root, np) && nm >= self.sure_norm {
+                *pu = p.map(|v| v / np);
+                *mu = m.map(|v| v / nm);
+                continue;
             }
+            // `unit_of` on either sheet, the bound at `|t|` shared where it is needed
+            let lhs = self.gamma * self.majorant(t, rev, root);
+            let ok = |norm: f64| {
+                self.sure(root, norm) || norm.is_finite() && norm > 0.0 && lhs <= 1e-10 * norm
+            };
+            let (p_ok, m_ok) = (ok(np), ok(nm));
+            (*pu, *mu) = if p_ok && m_ok {
+                (p.map(|v| v / np), m.map(|v| v / nm))
+            } else {
+                self.certify_both::<NA, ND>(t, rev, root, (p, np, p_ok), (m, nm, m_ok))
+            };
         }
     }
 
@@ -1269,6 +1303,14 @@ impl<'a> Evaluator<'a> {
             }
         }
         (v, w, root)
+    }
+
+    /// Whether an evaluation with `√s = root` and norm `norm` is certified by the bounds
+    /// made once ([`sure_bounds`]): `γ·maxᵢ Σₖ(|xₖᵢ| + |dₖᵢ|·√s)|t|ᵏ ≤ γ·(Σ|x| + Σ|d|·√s)
+    /// ≤ 10⁻¹⁰·‖X‖` for `|t| ≤ 1`; false for NaN.
+    #[inline(always)]
+    fn sure(&self, root: f64, norm: f64) -> bool {
+        root <= self.sure_root && norm >= self.sure_norm
     }
 
     /// A majorant of the rounding bound at `t` of [`Evaluator::certify`] in a few operations:
@@ -1931,6 +1973,10 @@ struct Walk {
 #[derive(Default)]
 struct Line {
     x: Vec<[f64; 4]>,
+    /// `h` of each point as stored (oriented), for the affine view.
+    h: Vec<f64>,
+    /// The chart's plane at infinity as floats.
+    chart: [f64; 4],
     /// `(index, at infinity, singular)`, ascending, at most one per index, never both false.
     marks: Vec<(usize, bool, bool)>,
 }
@@ -1947,6 +1993,7 @@ impl Line {
             self.marks.push((self.x.len(), s.at_infinity, s.singular));
         }
         self.x.push(s.x);
+        self.h.push(dot(&self.chart, &s.x));
     }
 
     /// Joins the marks `(at_infinity, singular)` to those of point `k`.
@@ -1967,6 +2014,7 @@ impl Line {
     /// Removes the last point; its marks.
     fn pop(&mut self) -> (bool, bool) {
         self.x.pop();
+        self.h.pop();
         match self.marks.last() {
             Some(&(k, inf, sing)) if k == self.x.len() => {
                 self.marks.pop();
@@ -1980,6 +2028,7 @@ impl Line {
     fn reverse_from(&mut self, start: usize) {
         let end = self.x.len();
         self.x[start..].reverse();
+        self.h[start..].reverse();
         let m0 = self.marks.partition_point(|m| m.0 < start);
         for m in &mut self.marks[m0..] {
             m.0 = start + end - 1 - m.0;
@@ -2310,6 +2359,7 @@ impl Sampler<'_> {
         let last = marked(self.at_end(sp.ends.1, t1, t0, sheet)?, ends[1]);
         let start = line.len();
         line.x.reserve(n + n / 8 + events.len() + 4);
+        line.h.reserve(n + n / 8 + events.len() + 4);
         let joins = |a: &[f64; 4], b: &[f64; 4]| dot(a, b).abs() >= 1.0 - 1e-12;
         let flip = match line.x.last() {
             Some(&l) if !arc.reversed && joins(&l, &first.x) => {
@@ -2382,6 +2432,9 @@ impl Sampler<'_> {
                 for v in &mut x[start..] {
                     *v = v.map(|c| -c);
                 }
+                for h in &mut line.h[start..] {
+                    *h = -*h;
+                }
             }
         }
         Ok(())
@@ -2409,30 +2462,33 @@ impl Sampler<'_> {
         }
         let cos = MAX_ANGLE.cos();
         let (mut px, mut hp) = (walk.prev.x, walk.h_prev);
-        let first = k;
         let end = grid_before_event(k, n, (t0, step), next);
         let (unknown, flip) = (walk.unknown, walk.flip);
-        let out = &mut line.x;
-        while k < end {
-            let x = grid[k - 1];
+        let xs = &grid[k - 1..end - 1];
+        let hs = &mut line.h;
+        let mut taken = 0;
+        for x in xs {
             // `d ≥ cos > 0`: no change of orientation (false for NaN, a failed point)
-            let d = dot(&px, &x);
+            let d = dot(&px, x);
             if d.partial_cmp(&cos).is_none_or(|o| o.is_lt()) {
                 break;
             }
-            if unknown {
-                let hq = self.chart.value(&x);
-                // h at zero, or a sign change (by the sign bits, `hq` nonzero)
-                if hp == 0.0 || ((hp.to_bits() ^ hq.to_bits()) >> 63 == 1 && hq != 0.0) {
-                    break;
-                }
-                hp = hq;
+            let hq = self.chart.value(x);
+            // h at zero, or a sign change (by the sign bits, `hq` nonzero)
+            if unknown && (hp == 0.0 || ((hp.to_bits() ^ hq.to_bits()) >> 63 == 1 && hq != 0.0))
+            {
+                break;
             }
-            out.push(if flip { x.map(|v| -v) } else { x });
-            px = x;
-            k += 1;
+            hs.push(if flip { -hq } else { hq });
+            hp = hq;
+            px = *x;
+            taken += 1;
         }
-        if k > first {
+        let xs = &xs[..taken];
+        line.x
+            .extend(xs.iter().map(|x| if flip { x.map(|v| -v) } else { *x }));
+        if taken > 0 {
+            k += taken;
             walk.prev = Sample::new(t0 + step * ((k - 1) as f64), px);
             walk.h_prev = hp;
         }
@@ -2572,6 +2628,8 @@ impl Sampler<'_> {
         let n = points.div_ceil(arcs.len().max(1)).max(8) + 1;
         let mut line = Line {
             x: Vec::with_capacity(arcs.len() * (n + n / 8 + 8)),
+            h: Vec::with_capacity(arcs.len() * (n + n / 8 + 8)),
+            chart: self.chart.h,
             marks: Vec::new(),
         };
         for arc in arcs {
@@ -2721,14 +2779,37 @@ impl Sampler<'_> {
                 } else {
                     j + first
                 };
-                for p in &x[k0..k0 + (stop - j)] {
-                    let h = self.chart.value(p);
+                let len = stop - j;
+                let (xs, hs) = (&x[k0..k0 + len], &line.h[k0..k0 + len]);
+                let keep = self.chart.keep;
+                let mut i = 0;
+                while i < len {
+                    // the stretch from `i` on where `h` keeps the sign of the last point and
+                    // is nonzero: no break, every point in the chart
+                    let from = i;
+                    if let Some(hp) = prev_h {
+                        let positive = hp > 0.0;
+                        while i < len && {
+                            let hx = sign * hs[i];
+                            hx != 0.0 && (hx > 0.0) == positive
+                        } {
+                            i += 1;
+                        }
+                    }
+                    if i > from {
+                        let run = xs[from..i].iter().zip(&hs[from..i]);
+                        current.extend(run.map(|(p, &h)| [p[keep[0]] / h, p[keep[1]] / h, p[keep[2]] / h]));
+                        prev_h = Some(sign * hs[i - 1]);
+                        restarted = false;
+                        continue;
+                    }
+                    let (p, h) = (&xs[i], hs[i]);
                     let hx = sign * h;
                     if prev_h.is_some_and(|hp| (hp > 0.0) != (hx > 0.0)) {
                         // a sign change of h without a crossing point: the branch breaks here
                         branches.push(std::mem::replace(
                             &mut current,
-                            Vec::with_capacity(count - j),
+                            Vec::with_capacity(count - j - i),
                         ));
                     }
                     prev_h = Some(hx);
@@ -2736,6 +2817,7 @@ impl Sampler<'_> {
                         current.push(a);
                         restarted = false;
                     }
+                    i += 1;
                 }
                 j = stop;
                 continue;
@@ -2773,7 +2855,7 @@ impl Sampler<'_> {
                 continue;
             }
             let p = &x[k];
-            let h = self.chart.value(p);
+            let h = line.h[k];
             let hx = sign * h;
             if prev_h.is_some_and(|hp| (hp > 0.0) != (hx > 0.0)) {
                 // a sign change of h without a crossing point: the branch breaks here
