@@ -2648,7 +2648,14 @@ impl Sampler<'_> {
                 at_infinity: true,
             }
         } else {
-            self.affine(&line, closed)
+            let affine = self.affine(&line, closed);
+            // the stored `h` is the chart's value at every point, and the view is the one
+            // built point by point from it
+            debug_assert!(line.h.len() == line.x.len());
+            debug_assert!((line.h.iter().zip(&line.x)).all(|(h, x)| *h == self.chart.value(x)));
+            #[cfg(debug_assertions)]
+            assert_eq!(affine, self.affine_two_pass(&line, closed));
+            affine
         };
         let breaks = line.marks.iter().filter(|m| m.2).map(|m| m.0).collect();
         let mut pts = line.x;
@@ -2896,6 +2903,145 @@ impl Sampler<'_> {
             at_infinity: false,
         }
     }
+
+    /// The reference for [`Sampler::affine`] (checked against it in debug builds): `h`
+    /// recomputed at every point, the line walked one point at a time.
+    #[cfg(debug_assertions)]
+    fn affine_two_pass(&self, line: &Line, closed: bool) -> AffinePiece {
+        let (x, marks) = (&line.x, &line.marks);
+        let n = x.len();
+        let points_at_infinity: Vec<[f64; 4]> =
+            marks.iter().filter(|m| m.1).map(|m| x[m.0]).collect();
+        let first_cut = marks.first().map(|m| m.0);
+        let mut branches = Vec::new();
+        let (first, count) = match first_cut {
+            Some(k) if closed => (k, n + 1),
+            _ => (0, n),
+        };
+        let mut current: Vec<[f64; 3]> = Vec::with_capacity(count);
+        // the line is oriented, but a loop may come back reversed at its start: `sign`
+        // orients along the walk from there on; `prev_h` is h of the previous point so
+        // oriented (`None` after a crossing)
+        let mut sign = 1.0;
+        let mut prev_h: Option<f64> = None;
+        // `current` holds only the singular point it restarts from
+        let mut restarted = false;
+        // the steps `j` where a mark is met or the loop wraps round to point 0, ascending:
+        // between them a run of plain points
+        let cut = closed && first_cut.is_some();
+        let mut special: Vec<usize> = marks.iter().map(|m| m.0 - first).collect();
+        if cut {
+            special.push(n);
+            special.push(n - first);
+        }
+        special.sort_unstable();
+        special.dedup();
+        // the next mark in the order of the walk, the next special step
+        let (mut mi, mut si) = (0, 0);
+        let mut j = 0;
+        while j < count {
+            let stop = special.get(si).map_or(count, |&s| s.min(count));
+            if j < stop {
+                // a run of plain points, `k` contiguous
+                let k0 = if j + first >= n {
+                    j + first - n
+                } else {
+                    j + first
+                };
+                for p in &x[k0..k0 + (stop - j)] {
+                    let h = self.chart.value(p);
+                    let hx = sign * h;
+                    if prev_h.is_some_and(|hp| (hp > 0.0) != (hx > 0.0)) {
+                        // a sign change of h without a crossing point: the branch breaks here
+                        branches.push(std::mem::replace(
+                            &mut current,
+                            Vec::with_capacity(count - j),
+                        ));
+                    }
+                    prev_h = Some(hx);
+                    if let Some(a) = self.chart.affine_with(p, h) {
+                        current.push(a);
+                        restarted = false;
+                    }
+                }
+                j = stop;
+                continue;
+            }
+            si += 1;
+            let mut k = j + first;
+            if k >= n {
+                k -= n;
+                if k == 0 {
+                    mi = 0;
+                    if j > 0 && prev_h.is_some() && dot(&x[n - 1], &x[0]) < 0.0 {
+                        sign = -sign;
+                    }
+                }
+            }
+            let (at_infinity, singular) = match marks.get(mi) {
+                Some(&(i, inf, sing)) if i == k => {
+                    mi += 1;
+                    (inf, sing)
+                }
+                _ => (false, false),
+            };
+            j += 1;
+            if at_infinity {
+                if !current.is_empty() && !restarted {
+                    branches.push(std::mem::replace(
+                        &mut current,
+                        Vec::with_capacity(count - j + 1),
+                    ));
+                }
+                current.clear();
+                restarted = false;
+                prev_h = None;
+                sign = 1.0;
+                continue;
+            }
+            let p = &x[k];
+            let h = self.chart.value(p);
+            let hx = sign * h;
+            if prev_h.is_some_and(|hp| (hp > 0.0) != (hx > 0.0)) {
+                // a sign change of h without a crossing point: the branch breaks here
+                branches.push(std::mem::replace(
+                    &mut current,
+                    Vec::with_capacity(count - j + 1),
+                ));
+            }
+            prev_h = Some(hx);
+            if let Some(a) = self.chart.affine_with(p, h) {
+                current.push(a);
+                if singular {
+                    // the branch ends at the singular point and the next one starts there
+                    if current.len() > 1 {
+                        branches.push(std::mem::replace(
+                            &mut current,
+                            Vec::with_capacity(count - j + 1),
+                        ));
+                    }
+                    current.clear();
+                    current.push(a);
+                    restarted = true;
+                } else {
+                    restarted = false;
+                }
+            }
+        }
+        if closed && first_cut.is_none() && !current.is_empty() {
+            current.push(current[0]);
+        }
+        if !current.is_empty() && !restarted {
+            branches.push(current);
+        }
+        AffinePiece {
+            bounded: points_at_infinity.is_empty() && !branches.is_empty(),
+            branches,
+            points_at_infinity,
+            at_infinity: false,
+        }
+    }
+
 }
 
 fn too_many_points() -> Error {
