@@ -2836,7 +2836,13 @@ impl Sampler<'_> {
                     }
                     if i > from {
                         let run = xs[from..i].iter().zip(&hs[from..i]);
-                        current.extend(run.map(|(p, &h)| [p[keep[0]] / h, p[keep[1]] / h, p[keep[2]] / h]));
+                        if keep == [0, 1, 2] {
+                            // the usual chart (`w` dropped), the indices known
+                            current.extend(run.map(|(p, &h)| [p[0] / h, p[1] / h, p[2] / h]));
+                        } else {
+                            let [k0, k1, k2] = keep.map(|k| k.min(3));
+                            current.extend(run.map(|(p, &h)| [p[k0] / h, p[k1] / h, p[k2] / h]));
+                        }
                         prev_h = Some(sign * hs[i - 1]);
                         restarted = false;
                         continue;
