@@ -487,7 +487,8 @@ impl ChartForm {
     #[inline(always)]
     fn value(&self, x: &[f64; 4]) -> f64 {
         match self.single {
-            Some((j, c)) => c * x[j],
+            // `j < 4` (made so in `new`): no bounds check
+            Some((j, c)) => c * x[j & 3],
             None => dot(&self.h, x),
         }
     }
@@ -2103,6 +2104,41 @@ fn push_oriented(line: &mut Line, mut s: Sample) -> bool {
     flip
 }
 
+/// The loop of [`Sampler::fast_run`] over the grid points `xs` with `h = value(x)`: how many
+/// are taken (each within [`MAX_ANGLE`] of the last and, where the crossings are not known,
+/// with `h` of the same sign, nonzero), their `h` oriented pushed to `hs`; the last point
+/// taken and its `h` (`walk`'s where none is).
+#[inline(always)]
+fn run_of(
+    xs: &[[f64; 4]],
+    walk: &Walk,
+    hs: &mut Vec<f64>,
+    value: impl Fn(&[f64; 4]) -> f64,
+) -> (usize, [f64; 4], f64) {
+    let cos = MAX_ANGLE.cos();
+    let (mut px, mut hp) = (walk.prev.x, walk.h_prev);
+    let (unknown, flip) = (walk.unknown, walk.flip);
+    let mut taken = 0;
+    for x in xs {
+        // `d ≥ cos > 0`: no change of orientation (false for NaN, a failed point)
+        let d = dot(&px, x);
+        if d.partial_cmp(&cos).is_none_or(|o| o.is_lt()) {
+            break;
+        }
+        let hq = value(x);
+        // h at zero or a sign change (or a product below the floats, or `hq = 0`: left to
+        // `accept` too, which takes such a point as this loop would)
+        if unknown && !(hp * hq > 0.0) {
+            break;
+        }
+        hs.push(if flip { -hq } else { hq });
+        hp = hq;
+        px = *x;
+        taken += 1;
+    }
+    (taken, px, hp)
+}
+
 /// A grid kept for the other sheet: `(t₀, step, n)` as bits, the sheet, its points.
 type OtherSheet = ((u64, u64, usize), Sheet, Vec<[f64; 4]>);
 
@@ -2491,30 +2527,15 @@ impl Sampler<'_> {
         if walk.unknown && walk.prev.at_infinity {
             return k;
         }
-        let cos = MAX_ANGLE.cos();
-        let (mut px, mut hp) = (walk.prev.x, walk.h_prev);
         let end = grid_before_event(k, n, (t0, step), next);
-        let (unknown, flip) = (walk.unknown, walk.flip);
         let xs = &grid[k - 1..end - 1];
-        let hs = &mut line.h;
-        let mut taken = 0;
-        for x in xs {
-            // `d ≥ cos > 0`: no change of orientation (false for NaN, a failed point)
-            let d = dot(&px, x);
-            if d.partial_cmp(&cos).is_none_or(|o| o.is_lt()) {
-                break;
-            }
-            let hq = self.chart.value(x);
-            // h at zero or a sign change (or a product below the floats, or `hq = 0`: left
-            // to `accept` too, which takes such a point as this loop would)
-            if unknown && !(hp * hq > 0.0) {
-                break;
-            }
-            hs.push(if flip { -hq } else { hq });
-            hp = hq;
-            px = *x;
-            taken += 1;
-        }
+        // the loop made once per form of `h` (the same values as `ChartForm::value`)
+        let form = self.chart.form;
+        let (taken, px, hp) = match form.single {
+            Some((j, c)) => run_of(xs, walk, &mut line.h, |x| c * x[j & 3]),
+            None => run_of(xs, walk, &mut line.h, |x| dot(&form.h, x)),
+        };
+        let flip = walk.flip;
         let xs = &xs[..taken];
         line.x
             .extend(xs.iter().map(|x| if flip { x.map(|v| -v) } else { *x }));
