@@ -2118,23 +2118,33 @@ fn run_of(
     let cos = MAX_ANGLE.cos();
     let (mut px, mut hp) = (walk.prev.x, walk.h_prev);
     let (unknown, flip) = (walk.unknown, walk.flip);
+    // `h` written to a buffer on the stack, appended a chunk at a time
+    let mut buf = [0.0; 64];
     let mut taken = 0;
-    for x in xs {
-        // `d ≥ cos > 0`: no change of orientation (false for NaN, a failed point)
-        let d = dot(&px, x);
-        if d.partial_cmp(&cos).is_none_or(|o| o.is_lt()) {
-            break;
+    'chunks: for chunk in xs.chunks(buf.len()) {
+        let mut m = 0;
+        for (x, h) in chunk.iter().zip(&mut buf) {
+            // `d ≥ cos > 0`: no change of orientation (false for NaN, a failed point)
+            let d = dot(&px, x);
+            if d.partial_cmp(&cos).is_none_or(|o| o.is_lt()) {
+                break;
+            }
+            let hq = value(x);
+            // h at zero or a sign change (or a product below the floats, or `hq = 0`: left to
+            // `accept` too, which takes such a point as this loop would)
+            if unknown && !(hp * hq > 0.0) {
+                break;
+            }
+            *h = if flip { -hq } else { hq };
+            hp = hq;
+            px = *x;
+            m += 1;
         }
-        let hq = value(x);
-        // h at zero or a sign change (or a product below the floats, or `hq = 0`: left to
-        // `accept` too, which takes such a point as this loop would)
-        if unknown && !(hp * hq > 0.0) {
-            break;
+        hs.extend_from_slice(&buf[..m]);
+        taken += m;
+        if m < chunk.len() {
+            break 'chunks;
         }
-        hs.push(if flip { -hq } else { hq });
-        hp = hq;
-        px = *x;
-        taken += 1;
     }
     (taken, px, hp)
 }
@@ -2847,11 +2857,10 @@ impl Sampler<'_> {
                     // is nonzero: no break, every point in the chart
                     let from = i;
                     if let Some(hp) = prev_h {
-                        let positive = hp > 0.0;
-                        while i < len && {
-                            let hx = sign * hs[i];
-                            hx != 0.0 && (hx > 0.0) == positive
-                        } {
+                        // `hx ≠ 0` with the sign of `hp > 0`: `±sign·h > 0` (false for NaN,
+                        // left to the point-by-point step)
+                        let s = if hp > 0.0 { sign } else { -sign };
+                        while i < len && s * hs[i] > 0.0 {
                             i += 1;
                         }
                     }
@@ -3099,7 +3108,6 @@ impl Sampler<'_> {
             at_infinity: false,
         }
     }
-
 }
 
 fn too_many_points() -> Error {
