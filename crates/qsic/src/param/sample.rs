@@ -3234,6 +3234,54 @@ mod tests {
         assert!(checked >= 2000, "{checked}");
     }
 
+    /// The certificate made once per evaluator ([`Evaluator::sure`]) implies the bound at
+    /// `|t|` ([`Evaluator::bound_of`]) that it stands for: every computed `√s` on `[−1, 1]`
+    /// is within `sure_root`, and a norm it passes passes the per-point test; beyond the range
+    /// of the shortcut it certifies nothing.
+    #[test]
+    fn certificate_made_once_implies_the_pointwise_bound() {
+        let mut rng = SplitMix(0x5a4e);
+        let (mut sure, mut total) = (0, 0);
+        for param in levin_params(0x5a4f, 8) {
+            let eval = Evaluator::new(&param).unwrap();
+            for _ in 0..400 {
+                let t = rng.int(-1 << 20, 1 << 20) as f64 / (1 << 20) as f64;
+                for rev in [false, true] {
+                    let (x, w, root, bound) = match eval.big_d {
+                        2 => {
+                            let (x, w, r) = eval.parts::<3, 1>(t, rev);
+                            (x, w, r, eval.bound_of::<3, 1>(t, rev, r))
+                        }
+                        3 => {
+                            let (x, w, r) = eval.parts::<4, 2>(t, rev);
+                            (x, w, r, eval.bound_of::<4, 2>(t, rev, r))
+                        }
+                        4 => {
+                            let (x, w, r) = eval.parts::<5, 3>(t, rev);
+                            (x, w, r, eval.bound_of::<5, 3>(t, rev, r))
+                        }
+                        _ => continue,
+                    };
+                    assert!(root <= eval.sure_root, "t = {t}");
+                    for sign in [1.0, -1.0] {
+                        let p: Lanes = std::array::from_fn(|i| x[i] + sign * root * w[i]);
+                        let norm = dot(&p, &p).sqrt();
+                        total += 1;
+                        if eval.sure(root, norm) {
+                            sure += 1;
+                            assert!(eval.gamma * bound <= 1e-10 * norm, "t = {t}");
+                        }
+                    }
+                }
+            }
+        }
+        assert!(sure > total / 2 && sure < total + 1, "{sure} of {total}");
+        let s = [1.0, 0.0, 0.0, 0.0, 1.0];
+        assert_eq!(sure_bounds(1e-14, 1e301, 1.0, &s), (f64::INFINITY, f64::INFINITY));
+        assert_eq!(sure_bounds(1e-14, 0.0, 0.0, &[0.0; 5]), (f64::INFINITY, f64::INFINITY));
+        assert!(sure_bounds(1e-14, 1.0, 1.0, &s).1.is_finite());
+    }
+
     /// The first grid index at or after an event, from the estimate, is the one a scan of
     /// the test finds: events on grid points, just off them, outside the range, none.
     #[test]
