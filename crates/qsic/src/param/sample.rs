@@ -549,13 +549,21 @@ impl Converter {
     /// double-double is not finite or not available.
     fn convert(&mut self, c: &Number) -> Result<Converted, Error> {
         let num = c.numerator();
+        // `v/1 = v` for a normalized double-double: the division left out
+        let over_den = |v: Dd| {
+            if *c.denominator() == IBig::ONE {
+                v
+            } else {
+                v.div(int_dd(c.denominator()))
+            }
+        };
         let dd = if num.is_constant() {
             let n = num.coeffs().first().map_or(Dd::default(), int_dd);
-            Some(n.div(int_dd(c.denominator())))
+            Some(over_den(n))
         } else {
             self.root(c)
                 .and_then(|(r, delta)| sqrt_field_value(num, r, delta))
-                .map(|v| v.div(int_dd(c.denominator())))
+                .map(over_den)
         }
         .filter(|v| v.0.is_finite() && v.1.is_finite());
         let value = dd.map_or_else(|| c.to_f64(), |v| v.0 + v.1);
