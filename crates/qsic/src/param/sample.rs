@@ -234,12 +234,12 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
     let approx = Approximations::default();
     let mut budget = MAX_POINTS;
     let mut pieces = Vec::with_capacity(curve.pieces.len());
-    // the parameterizations brought into the range of f64 where needed (made before the
-    // samplers, which borrow them)
-    let in_range: Vec<Option<ComponentParam>> = curve
+    // the parameterizations brought into the range of f64 where needed, made only where
+    // some float is near the ends of the range (before the samplers, which borrow them)
+    let in_range: Vec<std::cell::OnceCell<Option<ComponentParam>>> = curve
         .components
         .iter()
-        .map(|c| c.param.as_ref().and_then(in_float_range))
+        .map(|_| std::cell::OnceCell::new())
         .collect();
     // one sampler per component, made when its first piece is met
     let mut samplers: Vec<Option<Sampler>> = Vec::new();
@@ -262,7 +262,15 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
                 let slot = &mut samplers[*component];
                 if slot.is_none() {
                     *slot = Some(Sampler {
-                        eval: Evaluator::new(in_range[*component].as_ref().unwrap_or(param))?,
+                        eval: match Evaluator::new(param) {
+                            // the floats as they are where none is near the ends of the range
+                            Ok(e) if e.narrow => e,
+                            _ => {
+                                let scaled =
+                                    in_range[*component].get_or_init(|| in_float_range(param));
+                                Evaluator::new(scaled.as_ref().unwrap_or(param))?
+                            }
+                        },
                         crossings: if lies_in_plane(param, &chart.exact) {
                             Crossings::InPlane
                         } else {
@@ -658,6 +666,14 @@ fn point_piece(
     })
 }
 
+/// `2^∓800`: a parameterization whose floats are all zero or within these in magnitude
+/// needs no scaling ([`in_float_range`] leaves it as it is: its estimates are at least
+/// `log₂|c|`, and above it by a few bits unless the terms of `c` cancel).
+const NARROW: (f64, f64) = (
+    f64::from_bits((1023 - 800) << 52),
+    f64::from_bits((1023 + 800) << 52),
+);
+
 /// Grid points between exact values of `(sin θ, cos θ)` ([`Evaluator::grid`]).
 const RESYNC: usize = 64;
 
@@ -723,6 +739,8 @@ struct Evaluator<'a> {
     /// coefficients are too large for the shortcut.
     sure_root: f64,
     sure_norm: f64,
+    /// Every coefficient is zero or within [`NARROW`] in magnitude.
+    narrow: bool,
     /// The double-double coefficients made with the floats, when all came cheaply.
     quick_dd: Option<Box<DdCoeffs>>,
     /// The double-double coefficients for the retry of an ill-conditioned evaluation when
@@ -1055,9 +1073,12 @@ impl<'a> Evaluator<'a> {
         let mut conv = Converter::default();
         let mut dd = Box::<DdCoeffs>::default();
         let mut all_dd = true;
+        let mut narrow = true;
         let mut put = |c: &Number, f: &mut f64, g: &mut Dd| -> Result<(), Error> {
             let v = conv.convert(c)?;
             *f = v.value;
+            let size = v.value.abs();
+            narrow &= size == 0.0 || (NARROW.0..=NARROW.1).contains(&size);
             match v.dd {
                 Some(x) => *g = x,
                 None => all_dd = false,
@@ -1148,6 +1169,7 @@ impl<'a> Evaluator<'a> {
             s: sv,
             levin,
             gamma,
+            narrow,
             quick_dd: all_dd.then_some(dd),
             dd: std::cell::OnceCell::new(),
             param,
@@ -3285,9 +3307,74 @@ mod tests {
         }
         assert!(sure > total / 2 && sure < total + 1, "{sure} of {total}");
         let s = [1.0, 0.0, 0.0, 0.0, 1.0];
-        assert_eq!(sure_bounds(1e-14, 1e301, 1.0, &s), (f64::INFINITY, f64::INFINITY));
-        assert_eq!(sure_bounds(1e-14, 0.0, 0.0, &[0.0; 5]), (f64::INFINITY, f64::INFINITY));
+        assert_eq!(
+            sure_bounds(1e-14, 1e301, 1.0, &s),
+            (f64::INFINITY, f64::INFINITY)
+        );
+        assert_eq!(
+            sure_bounds(1e-14, 0.0, 0.0, &[0.0; 5]),
+            (f64::INFINITY, f64::INFINITY)
+        );
         assert!(sure_bounds(1e-14, 1.0, 1.0, &s).1.is_finite());
+        assert_eq!(NARROW, (2f64.powi(-800), 2f64.powi(800)));
+    }
+
+    /// A parameterization with coefficients beyond `2⁹⁰⁰` (not [`NARROW`], and beyond
+    /// [`in_float_range`]'s limit) is scaled into the floats' range first: the same points as
+    /// the parameterization it is a multiple of.
+    #[test]
+    fn wide_parameterizations_are_scaled_before_sampling() {
+        let mut rng = SplitMix(0x1de);
+        let mut checked = 0;
+        while checked < 3 {
+            let mut m = [[[0i64; 4]; 4]; 2];
+            for q in &mut m {
+                for i in 0..4 {
+                    for j in i..4 {
+                        q[i][j] = rng.int(-10, 10);
+                        q[j][i] = q[i][j];
+                    }
+                }
+            }
+            let (Ok(a), Ok(b)) = (Quadric::from_integers(m[0]), Quadric::from_integers(m[1]))
+            else {
+                continue;
+            };
+            let Ok(curve) = crate::param::parameterize(&a, &b) else {
+                continue;
+            };
+            if curve.pieces.is_empty()
+                || !(curve.components.iter())
+                    .any(|c| matches!(c.param, Some(ComponentParam::Levin { .. })))
+            {
+                continue;
+            }
+            let k = crate::param::curve::rational(RBig::from(IBig::ONE << 950));
+            let mut wide = curve.clone();
+            for c in &mut wide.components {
+                if let Some(ComponentParam::Levin { a, d, .. }) = &mut c.param {
+                    for v in a.iter_mut().chain(d.iter_mut()) {
+                        *v = v.map(|c| c.mul(&k));
+                    }
+                    let eval = Evaluator::new(c.param.as_ref().unwrap()).unwrap();
+                    assert!(!eval.narrow);
+                    assert!(in_float_range(c.param.as_ref().unwrap()).is_some());
+                }
+            }
+            let options = SampleOptions::default();
+            let (x, y) = (
+                sample(&curve, &options).unwrap(),
+                sample(&wide, &options).unwrap(),
+            );
+            assert_eq!(x.pieces.len(), y.pieces.len());
+            for (p, q) in x.pieces.iter().zip(&y.pieces) {
+                assert_eq!(p.points.len(), q.points.len());
+                for (u, v) in p.points.iter().zip(&q.points) {
+                    assert!(dot(u, v).abs() > 1.0 - 1e-12, "{u:?} {v:?}");
+                }
+            }
+            checked += 1;
+        }
     }
 
     /// The first grid index at or after an event, from the estimate, is the one a scan of
