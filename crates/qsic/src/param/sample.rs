@@ -24,9 +24,10 @@
 //! a point off the curve by `O(|s|)` only, because `aᵀMd ≡ 0` cancels the first-order error
 //! of `√s`. An evaluation whose rounding bound exceeds `10⁻¹⁰·‖X‖` (a sheet passing through
 //! the zero vector, a removable zero of Levin's form) is retried in double-double, then at a
-//! nearby parameter; the bound `Σₖ|cₖ||t|ᵏ` is first majorized by the precomputed `Σₖ|cₖ|`
-//! and computed only where that does not certify. Horner's rule runs on fixed-size arrays,
-//! unrolled for the usual degrees.
+//! nearby parameter; the bound `Σₖ|cₖ||t|ᵏ` is first majorized once per parameterization
+//! (`Σ|x| + Σ|d|·√(Σ|s|)`: one comparison with the norm), then by the precomputed sums at
+//! `|t|`, and computed only where neither certifies. Horner's rule runs on fixed-size
+//! arrays, unrolled for the usual degrees.
 //!
 //! # Density
 //! Each arc starts from a uniform grid in `θ` (together at least
@@ -44,7 +45,9 @@
 //! (for Levin's form of `h(a)² − h(d)²s`, the sheet from the signs of `h(a)` and `h(d)`),
 //! tangential touches included; otherwise the sign changes of `h` along the polyline,
 //! located by regula falsi (Illinois). Affine coordinates are those of `X/h(X)` without the last
-//! coordinate whose coefficient in `h` is nonzero (`(x/w, y/w, z/w)` for the default).
+//! coordinate whose coefficient in `h` is nonzero (`(x/w, y/w, z/w)` for the default); `h` is
+//! computed once per point during the walk and kept with the polyline, and the affine view
+//! is cut from it in stretches of one sign.
 
 use super::curve::{Arc, ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue};
 use super::curve::{RealPiece, Sheet};
@@ -2162,7 +2165,7 @@ fn run_of(
             let hq = value(x);
             // h at zero or a sign change (or a product below the floats, or `hq = 0`: left to
             // `accept` too, which takes such a point as this loop would)
-            if unknown && !(hp * hq > 0.0) {
+            if unknown && (hp * hq).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 break;
             }
             *h = if flip { -hq } else { hq };
