@@ -24,9 +24,10 @@
 //! a point off the curve by `O(|s|)` only, because `aᵀMd ≡ 0` cancels the first-order error
 //! of `√s`. An evaluation whose rounding bound exceeds `10⁻¹⁰·‖X‖` (a sheet passing through
 //! the zero vector, a removable zero of Levin's form) is retried in double-double, then at a
-//! nearby parameter; the bound `Σₖ|cₖ||t|ᵏ` is first majorized by the precomputed `Σₖ|cₖ|`
-//! and computed only where that does not certify. Horner's rule runs on fixed-size arrays,
-//! unrolled for the usual degrees.
+//! nearby parameter; the bound `Σₖ|cₖ||t|ᵏ` is first majorized once per parameterization
+//! (`Σ|x| + Σ|d|·√(Σ|s|)`: one comparison with the norm), then by the precomputed sums at
+//! `|t|`, and computed only where neither certifies. Horner's rule runs on fixed-size
+//! arrays, unrolled for the usual degrees.
 //!
 //! # Density
 //! Each arc starts from a uniform grid in `θ` (together at least
@@ -44,7 +45,9 @@
 //! (for Levin's form of `h(a)² − h(d)²s`, the sheet from the signs of `h(a)` and `h(d)`),
 //! tangential touches included; otherwise the sign changes of `h` along the polyline,
 //! located by regula falsi (Illinois). Affine coordinates are those of `X/h(X)` without the last
-//! coordinate whose coefficient in `h` is nonzero (`(x/w, y/w, z/w)` for the default).
+//! coordinate whose coefficient in `h` is nonzero (`(x/w, y/w, z/w)` for the default); `h` is
+//! computed once per point during the walk and kept with the polyline, and the affine view
+//! is cut from it in stretches of one sign.
 
 use super::curve::{Arc, ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue};
 use super::curve::{RealPiece, Sheet};
@@ -94,9 +97,11 @@ impl SampleOptions {
             .iter()
             .rposition(|c| *c != RBig::ZERO)
             .ok_or_else(|| Error::InvalidShape("the chart plane is zero".into()))?;
+        let h = self.chart.clone().map(|c| c.to_f64().value());
         Ok(Chart {
             exact: self.chart.clone(),
-            h: self.chart.clone().map(|c| c.to_f64().value()),
+            form: ChartForm::new(h),
+            h,
             keep: std::array::from_fn(|k| if k < drop { k } else { k + 1 }),
         })
     }
@@ -232,12 +237,12 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
     let approx = Approximations::default();
     let mut budget = MAX_POINTS;
     let mut pieces = Vec::with_capacity(curve.pieces.len());
-    // the parameterizations brought into the range of f64 where needed (made before the
-    // samplers, which borrow them)
-    let in_range: Vec<Option<ComponentParam>> = curve
+    // the parameterizations brought into the range of f64 where needed, made only where
+    // some float is near the ends of the range (before the samplers, which borrow them)
+    let in_range: Vec<std::cell::OnceCell<Option<ComponentParam>>> = curve
         .components
         .iter()
-        .map(|c| c.param.as_ref().and_then(in_float_range))
+        .map(|_| std::cell::OnceCell::new())
         .collect();
     // one sampler per component, made when its first piece is met
     let mut samplers: Vec<Option<Sampler>> = Vec::new();
@@ -260,7 +265,15 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
                 let slot = &mut samplers[*component];
                 if slot.is_none() {
                     *slot = Some(Sampler {
-                        eval: Evaluator::new(in_range[*component].as_ref().unwrap_or(param))?,
+                        eval: match Evaluator::new(param) {
+                            // the floats as they are where none is near the ends of the range
+                            Ok(e) if e.narrow => e,
+                            _ => {
+                                let scaled =
+                                    in_range[*component].get_or_init(|| in_float_range(param));
+                                Evaluator::new(scaled.as_ref().unwrap_or(param))?
+                            }
+                        },
                         crossings: if lies_in_plane(param, &chart.exact) {
                             Crossings::InPlane
                         } else {
@@ -460,14 +473,42 @@ fn singular_params(
 struct Chart {
     exact: [RBig; 4],
     h: [f64; 4],
+    form: ChartForm,
     /// The coordinates kept (all but the last whose coefficient in `h` is nonzero).
     keep: [usize; 3],
+}
+
+/// `h(X)` as floats: the dot product with `h`, or `c·Xⱼ` where `h = c·eⱼ` (the same value:
+/// the other products are zeros, which leave a nonzero sum unchanged and a zero one zero).
+#[derive(Clone, Copy, Default)]
+struct ChartForm {
+    h: [f64; 4],
+    single: Option<(usize, f64)>,
+}
+
+impl ChartForm {
+    fn new(h: [f64; 4]) -> ChartForm {
+        let nonzero = h.iter().filter(|v| **v != 0.0).count();
+        let single = (nonzero == 1 && h.iter().all(|v| v.is_finite()))
+            .then(|| (0..4).find(|&j| h[j] != 0.0).map(|j| (j, h[j])))
+            .flatten();
+        ChartForm { h, single }
+    }
+
+    #[inline(always)]
+    fn value(&self, x: &[f64; 4]) -> f64 {
+        match self.single {
+            // `j < 4` (made so in `new`): no bounds check
+            Some((j, c)) => c * x[j & 3],
+            None => dot(&self.h, x),
+        }
+    }
 }
 
 impl Chart {
     #[inline(always)]
     fn value(&self, x: &[f64; 4]) -> f64 {
-        dot(&self.h, x)
+        self.form.value(x)
     }
 
     /// Affine coordinates of `x`, `None` at infinity.
@@ -503,27 +544,37 @@ struct Converted {
 impl Converter {
     /// `α` in double-double and `δ` when the field of `c` is ℚ(√δ) generated by a root of
     /// `x² − δ` (the fields of Levin's form, [`super::curve::sqrt_field`]).
-    fn root(&mut self, c: &Number) -> Option<(Dd, IBig)> {
+    fn root(&mut self, c: &Number) -> Option<(Dd, &IBig)> {
         let k = c.field().filter(|_| !c.numerator().is_constant())?;
-        if let Some((_, r)) = self.roots.iter().find(|(f, _)| f.same_as(k)) {
-            return r.clone();
-        }
-        let r = sqrt_generator_dd(k);
-        self.roots.push((k.clone(), r.clone()));
-        r
+        let at = match self.roots.iter().position(|(f, _)| f.same_as(k)) {
+            Some(at) => at,
+            None => {
+                self.roots.push((k.clone(), sqrt_generator_dd(k)));
+                self.roots.len() - 1
+            }
+        };
+        self.roots[at].1.as_ref().map(|(r, delta)| (*r, delta))
     }
 
     /// `c` as a float and in double-double (module docs); [`Number::to_f64`] where the
     /// double-double is not finite or not available.
     fn convert(&mut self, c: &Number) -> Result<Converted, Error> {
         let num = c.numerator();
+        // `v/1 = v` for a normalized double-double: the division left out
+        let over_den = |v: Dd| {
+            if *c.denominator() == IBig::ONE {
+                v
+            } else {
+                v.div(int_dd(c.denominator()))
+            }
+        };
         let dd = if num.is_constant() {
             let n = num.coeffs().first().map_or(Dd::default(), int_dd);
-            Some(n.div(int_dd(c.denominator())))
+            Some(over_den(n))
         } else {
             self.root(c)
-                .and_then(|(r, delta)| sqrt_field_value(num, r, &delta))
-                .map(|v| v.div(int_dd(c.denominator())))
+                .and_then(|(r, delta)| sqrt_field_value(num, r, delta))
+                .map(over_den)
         }
         .filter(|v| v.0.is_finite() && v.1.is_finite());
         let value = dd.map_or_else(|| c.to_f64(), |v| v.0 + v.1);
@@ -560,7 +611,7 @@ fn sqrt_field_value(num: &Poly, root: Dd, delta: &IBig) -> Option<Dd> {
             .checked_sub(b.checked_mul(b)?.checked_mul(d)?)
     };
     let norm = match small() {
-        Some(n) => int_dd(&IBig::from(n)),
+        Some(n) => i128_dd(n),
         None => int_dd(&(c0 * c0 - c1 * c1 * delta)),
     };
     Some(norm.div(t0.add(t1.neg())))
@@ -617,6 +668,14 @@ fn point_piece(
         affine,
     })
 }
+
+/// `2^∓800`: a parameterization whose floats are all zero or within these in magnitude
+/// needs no scaling ([`in_float_range`] leaves it as it is: its estimates are at least
+/// `log₂|c|`, and above it by a few bits unless the terms of `c` cancel).
+const NARROW: (f64, f64) = (
+    f64::from_bits((1023 - 800) << 52),
+    f64::from_bits((1023 + 800) << 52),
+);
 
 /// Grid points between exact values of `(sin θ, cos θ)` ([`Evaluator::grid`]).
 const RESYNC: usize = 64;
@@ -677,6 +736,14 @@ struct Evaluator<'a> {
     d_abs_max: f64,
     /// Relative rounding of one evaluation, per unit of the bound.
     gamma: f64,
+    /// A bound of every computed `√s` on `[−1, 1]` (`√(Σ|sₖ|)` with a margin), and the
+    /// norm at or above which an evaluation with `√s` within it is certified whatever `t`:
+    /// `γ·(Σ|x| + Σ|d|·√s) ≤ 10⁻¹⁰·‖X‖` ([`Evaluator::sure`]); infinite where the
+    /// coefficients are too large for the shortcut.
+    sure_root: f64,
+    sure_norm: f64,
+    /// Every coefficient is zero or within [`NARROW`] in magnitude.
+    narrow: bool,
     /// The double-double coefficients made with the floats, when all came cheaply.
     quick_dd: Option<Box<DdCoeffs>>,
     /// The double-double coefficients for the retry of an ill-conditioned evaluation when
@@ -930,6 +997,22 @@ fn newton_bracketed(f: &dyn Fn(f64) -> (f64, f64), lo: f64, hi: f64, flo: f64) -
     x
 }
 
+/// The bounds of [`Evaluator::sure`]: `R = √(Σ|sₖ|·(1 + 2⁻³⁰))` bounds the computed `√s` at
+/// any `|t| ≤ 1` (Horner's rounding is below `2⁻⁴⁰` relative to `Σ|sₖ||t|ᵏ` for five
+/// terms), and `K = 10¹⁰·γ·(Σ|x| + Σ|d|·R)·(1 + 2⁻³⁰)`. Both infinite (nothing certified
+/// this way) unless `K` is positive and the sum is below `10³⁰⁰`: the values are then finite.
+fn sure_bounds(gamma: f64, x_abs_max: f64, d_abs_max: f64, s: &[f64; 5]) -> (f64, f64) {
+    let margin = 1.0 + 2f64.powi(-30);
+    let root = (s.iter().map(|v| v.abs()).sum::<f64>() * margin).sqrt();
+    let size = x_abs_max + d_abs_max * root;
+    let norm = 1e10 * gamma * size * margin;
+    if size.is_finite() && size < 1e300 && norm > 0.0 && norm.is_finite() {
+        (root, norm)
+    } else {
+        (f64::INFINITY, f64::INFINITY)
+    }
+}
+
 /// The reduced parameters ([`reduced_parameter`]) of the grid `θₖ = t₀ + k·step`,
 /// `k = 1, …, n − 1`: `(sin θₖ, cos θₖ)` by rotations from `(0, 1)`, exact every
 /// [`RESYNC`] points.
@@ -993,9 +1076,12 @@ impl<'a> Evaluator<'a> {
         let mut conv = Converter::default();
         let mut dd = Box::<DdCoeffs>::default();
         let mut all_dd = true;
+        let mut narrow = true;
         let mut put = |c: &Number, f: &mut f64, g: &mut Dd| -> Result<(), Error> {
             let v = conv.convert(c)?;
             *f = v.value;
+            let size = v.value.abs();
+            narrow &= size == 0.0 || (NARROW.0..=NARROW.1).contains(&size);
             match v.dd {
                 Some(x) => *g = x,
                 None => all_dd = false,
@@ -1056,6 +1142,13 @@ impl<'a> Evaluator<'a> {
             (c0, rest)
         };
         let nd = if levin { n - 2 } else { 0 };
+        let gamma = if levin {
+            8.0 * (big_d as f64 + 4.0) * f64::EPSILON
+        } else {
+            4.0 * (big_d as f64 + 3.0) * f64::EPSILON
+        };
+        let (x_abs_max, d_abs_max) = (abs_sum(&x), abs_sum(&dv));
+        let (sure_root, sure_norm) = sure_bounds(gamma, x_abs_max, d_abs_max, &sv);
         let split_abs = [(0, 0), (n - 1, nd.saturating_sub(1))].map(|(cx, cd)| {
             let (x0, x1) = split(&x[..n], cx);
             let (d0, d1) = split(&dv[..nd], cd);
@@ -1067,8 +1160,10 @@ impl<'a> Evaluator<'a> {
             d_abs: abs(&dv),
             x_abs_desc: abs(&x_desc),
             d_abs_desc: abs(&d_desc),
-            x_abs_max: abs_sum(&x),
-            d_abs_max: abs_sum(&dv),
+            x_abs_max,
+            d_abs_max,
+            sure_root,
+            sure_norm,
             x_desc,
             d_desc,
             s_desc,
@@ -1076,11 +1171,8 @@ impl<'a> Evaluator<'a> {
             d: dv,
             s: sv,
             levin,
-            gamma: if levin {
-                8.0 * (big_d as f64 + 4.0) * f64::EPSILON
-            } else {
-                4.0 * (big_d as f64 + 3.0) * f64::EPSILON
-            },
+            gamma,
+            narrow,
             quick_dd: all_dd.then_some(dd),
             dd: std::cell::OnceCell::new(),
             param,
@@ -1111,6 +1203,9 @@ impl<'a> Evaluator<'a> {
     #[inline(always)]
     fn unit_of(&self, x: Lanes, root: f64, t: f64, rev: bool, sheet: Sheet) -> Option<[f64; 4]> {
         let norm = dot(&x, &x).sqrt();
+        if self.sure(root, norm) {
+            return Some(x.map(|v| v / norm));
+        }
         let cheap = self.majorant(t, rev, root);
         if norm.is_finite() && norm > 0.0 && self.gamma * cheap <= 1e-10 * norm {
             return Some(x.map(|v| v / norm));
@@ -1173,10 +1268,11 @@ impl<'a> Evaluator<'a> {
         minus: &mut Vec<[f64; 4]>,
     ) {
         plus.clear();
-        plus.reserve(n);
+        plus.resize(n.saturating_sub(1), [0.0; 4]);
         minus.clear();
-        minus.reserve(n);
-        for (t, rev) in grid_parameters(t0, step, n) {
+        minus.resize(n.saturating_sub(1), [0.0; 4]);
+        let out = plus.iter_mut().zip(minus.iter_mut());
+        for ((pu, mu), (t, rev)) in out.zip(grid_parameters(t0, step, n)) {
             let (a, w, root) = self.parts::<NA, ND>(t, rev);
             // the same operations as `values` on either sheet
             let (mut p, mut m) = (a, a);
@@ -1184,20 +1280,23 @@ impl<'a> Evaluator<'a> {
                 p[i] += root * w[i];
                 m[i] += -root * w[i];
             }
-            // `unit_of` on either sheet, the bound at `|t|` shared where it is needed
             let (np, nm) = (dot(&p, &p).sqrt(), dot(&m, &m).sqrt());
-            let lhs = self.gamma * self.majorant(t, rev, root);
-            let ok = |norm: f64| norm.is_finite() && norm > 0.0 && lhs <= 1e-10 * norm;
-            let (p_ok, m_ok) = (ok(np), ok(nm));
-            if p_ok && m_ok {
-                plus.push(p.map(|v| v / np));
-                minus.push(m.map(|v| v / nm));
-            } else {
-                let (pu, mu) =
-                    self.certify_both::<NA, ND>(t, rev, root, (p, np, p_ok), (m, nm, m_ok));
-                plus.push(pu);
-                minus.push(mu);
+            if self.sure(root, np) && nm >= self.sure_norm {
+                *pu = p.map(|v| v / np);
+                *mu = m.map(|v| v / nm);
+                continue;
             }
+            // `unit_of` on either sheet, the bound at `|t|` shared where it is needed
+            let lhs = self.gamma * self.majorant(t, rev, root);
+            let ok = |norm: f64| {
+                self.sure(root, norm) || norm.is_finite() && norm > 0.0 && lhs <= 1e-10 * norm
+            };
+            let (p_ok, m_ok) = (ok(np), ok(nm));
+            (*pu, *mu) = if p_ok && m_ok {
+                (p.map(|v| v / np), m.map(|v| v / nm))
+            } else {
+                self.certify_both::<NA, ND>(t, rev, root, (p, np, p_ok), (m, nm, m_ok))
+            };
         }
     }
 
@@ -1269,6 +1368,14 @@ impl<'a> Evaluator<'a> {
             }
         }
         (v, w, root)
+    }
+
+    /// Whether an evaluation with `√s = root` and norm `norm` is certified by the bounds
+    /// made once ([`sure_bounds`]): `γ·maxᵢ Σₖ(|xₖᵢ| + |dₖᵢ|·√s)|t|ᵏ ≤ γ·(Σ|x| + Σ|d|·√s)
+    /// ≤ 10⁻¹⁰·‖X‖` for `|t| ≤ 1`; false for NaN.
+    #[inline(always)]
+    fn sure(&self, root: f64, norm: f64) -> bool {
+        root <= self.sure_root && norm >= self.sure_norm
     }
 
     /// A majorant of the rounding bound at `t` of [`Evaluator::certify`] in a few operations:
@@ -1931,6 +2038,10 @@ struct Walk {
 #[derive(Default)]
 struct Line {
     x: Vec<[f64; 4]>,
+    /// `h` of each point as stored (oriented), for the affine view.
+    h: Vec<f64>,
+    /// The chart's plane at infinity as floats.
+    chart: ChartForm,
     /// `(index, at infinity, singular)`, ascending, at most one per index, never both false.
     marks: Vec<(usize, bool, bool)>,
 }
@@ -1947,6 +2058,7 @@ impl Line {
             self.marks.push((self.x.len(), s.at_infinity, s.singular));
         }
         self.x.push(s.x);
+        self.h.push(self.chart.value(&s.x));
     }
 
     /// Joins the marks `(at_infinity, singular)` to those of point `k`.
@@ -1967,6 +2079,7 @@ impl Line {
     /// Removes the last point; its marks.
     fn pop(&mut self) -> (bool, bool) {
         self.x.pop();
+        self.h.pop();
         match self.marks.last() {
             Some(&(k, inf, sing)) if k == self.x.len() => {
                 self.marks.pop();
@@ -1980,6 +2093,7 @@ impl Line {
     fn reverse_from(&mut self, start: usize) {
         let end = self.x.len();
         self.x[start..].reverse();
+        self.h[start..].reverse();
         let m0 = self.marks.partition_point(|m| m.0 < start);
         for m in &mut self.marks[m0..] {
             m.0 = start + end - 1 - m.0;
@@ -2021,6 +2135,51 @@ fn push_oriented(line: &mut Line, mut s: Sample) -> bool {
     }
     line.push(&s);
     flip
+}
+
+/// The loop of [`Sampler::fast_run`] over the grid points `xs` with `h = value(x)`: how many
+/// are taken (each within [`MAX_ANGLE`] of the last and, where the crossings are not known,
+/// with `h` of the same sign, nonzero), their `h` oriented pushed to `hs`; the last point
+/// taken and its `h` (`walk`'s where none is).
+#[inline(always)]
+fn run_of(
+    xs: &[[f64; 4]],
+    walk: &Walk,
+    hs: &mut Vec<f64>,
+    value: impl Fn(&[f64; 4]) -> f64,
+) -> (usize, [f64; 4], f64) {
+    let cos = MAX_ANGLE.cos();
+    let (mut px, mut hp) = (walk.prev.x, walk.h_prev);
+    let (unknown, flip) = (walk.unknown, walk.flip);
+    // `h` written to a buffer on the stack, appended a chunk at a time
+    let mut buf = [0.0; 64];
+    let mut taken = 0;
+    'chunks: for chunk in xs.chunks(buf.len()) {
+        let mut m = 0;
+        for (x, h) in chunk.iter().zip(&mut buf) {
+            // `d ≥ cos > 0`: no change of orientation (false for NaN, a failed point)
+            let d = dot(&px, x);
+            if d.partial_cmp(&cos).is_none_or(|o| o.is_lt()) {
+                break;
+            }
+            let hq = value(x);
+            // h at zero or a sign change (or a product below the floats, or `hq = 0`: left to
+            // `accept` too, which takes such a point as this loop would)
+            if unknown && (hp * hq).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+                break;
+            }
+            *h = if flip { -hq } else { hq };
+            hp = hq;
+            px = *x;
+            m += 1;
+        }
+        hs.extend_from_slice(&buf[..m]);
+        taken += m;
+        if m < chunk.len() {
+            break 'chunks;
+        }
+    }
+    (taken, px, hp)
 }
 
 /// A grid kept for the other sheet: `(t₀, step, n)` as bits, the sheet, its points.
@@ -2310,6 +2469,7 @@ impl Sampler<'_> {
         let last = marked(self.at_end(sp.ends.1, t1, t0, sheet)?, ends[1]);
         let start = line.len();
         line.x.reserve(n + n / 8 + events.len() + 4);
+        line.h.reserve(n + n / 8 + events.len() + 4);
         let joins = |a: &[f64; 4], b: &[f64; 4]| dot(a, b).abs() >= 1.0 - 1e-12;
         let flip = match line.x.last() {
             Some(&l) if !arc.reversed && joins(&l, &first.x) => {
@@ -2382,6 +2542,9 @@ impl Sampler<'_> {
                 for v in &mut x[start..] {
                     *v = v.map(|c| -c);
                 }
+                for h in &mut line.h[start..] {
+                    *h = -*h;
+                }
             }
         }
         Ok(())
@@ -2407,32 +2570,20 @@ impl Sampler<'_> {
         if walk.unknown && walk.prev.at_infinity {
             return k;
         }
-        let cos = MAX_ANGLE.cos();
-        let (mut px, mut hp) = (walk.prev.x, walk.h_prev);
-        let first = k;
         let end = grid_before_event(k, n, (t0, step), next);
-        let (unknown, flip) = (walk.unknown, walk.flip);
-        let out = &mut line.x;
-        while k < end {
-            let x = grid[k - 1];
-            // `d ≥ cos > 0`: no change of orientation (false for NaN, a failed point)
-            let d = dot(&px, &x);
-            if d.partial_cmp(&cos).is_none_or(|o| o.is_lt()) {
-                break;
-            }
-            if unknown {
-                let hq = self.chart.value(&x);
-                // h at zero, or a sign change (by the sign bits, `hq` nonzero)
-                if hp == 0.0 || ((hp.to_bits() ^ hq.to_bits()) >> 63 == 1 && hq != 0.0) {
-                    break;
-                }
-                hp = hq;
-            }
-            out.push(if flip { x.map(|v| -v) } else { x });
-            px = x;
-            k += 1;
-        }
-        if k > first {
+        let xs = &grid[k - 1..end - 1];
+        // the loop made once per form of `h` (the same values as `ChartForm::value`)
+        let form = self.chart.form;
+        let (taken, px, hp) = match form.single {
+            Some((j, c)) => run_of(xs, walk, &mut line.h, |x| c * x[j & 3]),
+            None => run_of(xs, walk, &mut line.h, |x| dot(&form.h, x)),
+        };
+        let flip = walk.flip;
+        let xs = &xs[..taken];
+        line.x
+            .extend(xs.iter().map(|x| if flip { x.map(|v| -v) } else { *x }));
+        if taken > 0 {
+            k += taken;
             walk.prev = Sample::new(t0 + step * ((k - 1) as f64), px);
             walk.h_prev = hp;
         }
@@ -2572,6 +2723,8 @@ impl Sampler<'_> {
         let n = points.div_ceil(arcs.len().max(1)).max(8) + 1;
         let mut line = Line {
             x: Vec::with_capacity(arcs.len() * (n + n / 8 + 8)),
+            h: Vec::with_capacity(arcs.len() * (n + n / 8 + 8)),
+            chart: self.chart.form,
             marks: Vec::new(),
         };
         for arc in arcs {
@@ -2590,7 +2743,14 @@ impl Sampler<'_> {
                 at_infinity: true,
             }
         } else {
-            self.affine(&line, closed)
+            let affine = self.affine(&line, closed);
+            // the stored `h` is the chart's value at every point, and the view is the one
+            // built point by point from it
+            debug_assert!(line.h.len() == line.x.len());
+            debug_assert!((line.h.iter().zip(&line.x)).all(|(h, x)| *h == dot(&self.chart.h, x)));
+            #[cfg(debug_assertions)]
+            assert_eq!(affine, self.affine_two_pass(&line, closed));
+            affine
         };
         let breaks = line.marks.iter().filter(|m| m.2).map(|m| m.0).collect();
         let mut pts = line.x;
@@ -2681,6 +2841,173 @@ impl Sampler<'_> {
     /// end before and start after them) and at its real singular points (both branches keep
     /// the point).
     fn affine(&self, line: &Line, closed: bool) -> AffinePiece {
+        let (x, marks) = (&line.x, &line.marks);
+        let n = x.len();
+        let points_at_infinity: Vec<[f64; 4]> =
+            marks.iter().filter(|m| m.1).map(|m| x[m.0]).collect();
+        let first_cut = marks.first().map(|m| m.0);
+        let mut branches = Vec::new();
+        let (first, count) = match first_cut {
+            Some(k) if closed => (k, n + 1),
+            _ => (0, n),
+        };
+        let mut current: Vec<[f64; 3]> = Vec::with_capacity(count);
+        // the line is oriented, but a loop may come back reversed at its start: `sign`
+        // orients along the walk from there on; `prev_h` is h of the previous point so
+        // oriented (`None` after a crossing)
+        let mut sign = 1.0;
+        let mut prev_h: Option<f64> = None;
+        // `current` holds only the singular point it restarts from
+        let mut restarted = false;
+        // the steps `j` where a mark is met or the loop wraps round to point 0, ascending:
+        // between them a run of plain points
+        let cut = closed && first_cut.is_some();
+        let mut special: Vec<usize> = marks.iter().map(|m| m.0 - first).collect();
+        if cut {
+            special.push(n);
+            special.push(n - first);
+        }
+        special.sort_unstable();
+        special.dedup();
+        // the next mark in the order of the walk, the next special step
+        let (mut mi, mut si) = (0, 0);
+        let mut j = 0;
+        while j < count {
+            let stop = special.get(si).map_or(count, |&s| s.min(count));
+            if j < stop {
+                // a run of plain points, `k` contiguous
+                let k0 = if j + first >= n {
+                    j + first - n
+                } else {
+                    j + first
+                };
+                let len = stop - j;
+                let (xs, hs) = (&x[k0..k0 + len], &line.h[k0..k0 + len]);
+                let keep = self.chart.keep;
+                let mut i = 0;
+                while i < len {
+                    // the stretch from `i` on where `h` keeps the sign of the last point and
+                    // is nonzero: no break, every point in the chart
+                    let from = i;
+                    if let Some(hp) = prev_h {
+                        // `hx ≠ 0` with the sign of `hp > 0`: `±sign·h > 0` (false for NaN,
+                        // left to the point-by-point step)
+                        let s = if hp > 0.0 { sign } else { -sign };
+                        while i < len && s * hs[i] > 0.0 {
+                            i += 1;
+                        }
+                    }
+                    if i > from {
+                        let run = xs[from..i].iter().zip(&hs[from..i]);
+                        if keep == [0, 1, 2] {
+                            // the usual chart (`w` dropped), the indices known
+                            current.extend(run.map(|(p, &h)| [p[0] / h, p[1] / h, p[2] / h]));
+                        } else {
+                            let [k0, k1, k2] = keep.map(|k| k.min(3));
+                            current.extend(run.map(|(p, &h)| [p[k0] / h, p[k1] / h, p[k2] / h]));
+                        }
+                        prev_h = Some(sign * hs[i - 1]);
+                        restarted = false;
+                        continue;
+                    }
+                    let (p, h) = (&xs[i], hs[i]);
+                    let hx = sign * h;
+                    if prev_h.is_some_and(|hp| (hp > 0.0) != (hx > 0.0)) {
+                        // a sign change of h without a crossing point: the branch breaks here
+                        branches.push(std::mem::replace(
+                            &mut current,
+                            Vec::with_capacity(count - j - i),
+                        ));
+                    }
+                    prev_h = Some(hx);
+                    if let Some(a) = self.chart.affine_with(p, h) {
+                        current.push(a);
+                        restarted = false;
+                    }
+                    i += 1;
+                }
+                j = stop;
+                continue;
+            }
+            si += 1;
+            let mut k = j + first;
+            if k >= n {
+                k -= n;
+                if k == 0 {
+                    mi = 0;
+                    if j > 0 && prev_h.is_some() && dot(&x[n - 1], &x[0]) < 0.0 {
+                        sign = -sign;
+                    }
+                }
+            }
+            let (at_infinity, singular) = match marks.get(mi) {
+                Some(&(i, inf, sing)) if i == k => {
+                    mi += 1;
+                    (inf, sing)
+                }
+                _ => (false, false),
+            };
+            j += 1;
+            if at_infinity {
+                if !current.is_empty() && !restarted {
+                    branches.push(std::mem::replace(
+                        &mut current,
+                        Vec::with_capacity(count - j + 1),
+                    ));
+                }
+                current.clear();
+                restarted = false;
+                prev_h = None;
+                sign = 1.0;
+                continue;
+            }
+            let p = &x[k];
+            let h = line.h[k];
+            let hx = sign * h;
+            if prev_h.is_some_and(|hp| (hp > 0.0) != (hx > 0.0)) {
+                // a sign change of h without a crossing point: the branch breaks here
+                branches.push(std::mem::replace(
+                    &mut current,
+                    Vec::with_capacity(count - j + 1),
+                ));
+            }
+            prev_h = Some(hx);
+            if let Some(a) = self.chart.affine_with(p, h) {
+                current.push(a);
+                if singular {
+                    // the branch ends at the singular point and the next one starts there
+                    if current.len() > 1 {
+                        branches.push(std::mem::replace(
+                            &mut current,
+                            Vec::with_capacity(count - j + 1),
+                        ));
+                    }
+                    current.clear();
+                    current.push(a);
+                    restarted = true;
+                } else {
+                    restarted = false;
+                }
+            }
+        }
+        if closed && first_cut.is_none() && !current.is_empty() {
+            current.push(current[0]);
+        }
+        if !current.is_empty() && !restarted {
+            branches.push(current);
+        }
+        AffinePiece {
+            bounded: points_at_infinity.is_empty() && !branches.is_empty(),
+            branches,
+            points_at_infinity,
+            at_infinity: false,
+        }
+    }
+
+    /// The reference for [`Sampler::affine`] (checked against it in debug builds): `h`
+    /// recomputed at every point, the line walked one point at a time.
+    #[cfg(debug_assertions)]
+    fn affine_two_pass(&self, line: &Line, closed: bool) -> AffinePiece {
         let (x, marks) = (&line.x, &line.marks);
         let n = x.len();
         let points_at_infinity: Vec<[f64; 4]> =
@@ -2938,6 +3265,119 @@ mod tests {
             }
         }
         assert!(checked >= 2000, "{checked}");
+    }
+
+    /// The certificate made once per evaluator ([`Evaluator::sure`]) implies the bound at
+    /// `|t|` ([`Evaluator::bound_of`]) that it stands for: every computed `√s` on `[−1, 1]`
+    /// is within `sure_root`, and a norm it passes passes the per-point test; beyond the range
+    /// of the shortcut it certifies nothing.
+    #[test]
+    fn certificate_made_once_implies_the_pointwise_bound() {
+        let mut rng = SplitMix(0x5a4e);
+        let (mut sure, mut total) = (0, 0);
+        for param in levin_params(0x5a4f, 8) {
+            let eval = Evaluator::new(&param).unwrap();
+            for _ in 0..400 {
+                let t = rng.int(-1 << 20, 1 << 20) as f64 / (1 << 20) as f64;
+                for rev in [false, true] {
+                    let (x, w, root, bound) = match eval.big_d {
+                        2 => {
+                            let (x, w, r) = eval.parts::<3, 1>(t, rev);
+                            (x, w, r, eval.bound_of::<3, 1>(t, rev, r))
+                        }
+                        3 => {
+                            let (x, w, r) = eval.parts::<4, 2>(t, rev);
+                            (x, w, r, eval.bound_of::<4, 2>(t, rev, r))
+                        }
+                        4 => {
+                            let (x, w, r) = eval.parts::<5, 3>(t, rev);
+                            (x, w, r, eval.bound_of::<5, 3>(t, rev, r))
+                        }
+                        _ => continue,
+                    };
+                    assert!(root <= eval.sure_root, "t = {t}");
+                    for sign in [1.0, -1.0] {
+                        let p: Lanes = std::array::from_fn(|i| x[i] + sign * root * w[i]);
+                        let norm = dot(&p, &p).sqrt();
+                        total += 1;
+                        if eval.sure(root, norm) {
+                            sure += 1;
+                            assert!(eval.gamma * bound <= 1e-10 * norm, "t = {t}");
+                        }
+                    }
+                }
+            }
+        }
+        assert!(sure > total / 2 && sure < total + 1, "{sure} of {total}");
+        let s = [1.0, 0.0, 0.0, 0.0, 1.0];
+        assert_eq!(
+            sure_bounds(1e-14, 1e301, 1.0, &s),
+            (f64::INFINITY, f64::INFINITY)
+        );
+        assert_eq!(
+            sure_bounds(1e-14, 0.0, 0.0, &[0.0; 5]),
+            (f64::INFINITY, f64::INFINITY)
+        );
+        assert!(sure_bounds(1e-14, 1.0, 1.0, &s).1.is_finite());
+        assert_eq!(NARROW, (2f64.powi(-800), 2f64.powi(800)));
+    }
+
+    /// A parameterization with coefficients beyond `2⁹⁰⁰` (not [`NARROW`], and beyond
+    /// [`in_float_range`]'s limit) is scaled into the floats' range first: the same points as
+    /// the parameterization it is a multiple of.
+    #[test]
+    fn wide_parameterizations_are_scaled_before_sampling() {
+        let mut rng = SplitMix(0x1de);
+        let mut checked = 0;
+        while checked < 3 {
+            let mut m = [[[0i64; 4]; 4]; 2];
+            for q in &mut m {
+                for i in 0..4 {
+                    for j in i..4 {
+                        q[i][j] = rng.int(-10, 10);
+                        q[j][i] = q[i][j];
+                    }
+                }
+            }
+            let (Ok(a), Ok(b)) = (Quadric::from_integers(m[0]), Quadric::from_integers(m[1]))
+            else {
+                continue;
+            };
+            let Ok(curve) = crate::param::parameterize(&a, &b) else {
+                continue;
+            };
+            if curve.pieces.is_empty()
+                || !(curve.components.iter())
+                    .any(|c| matches!(c.param, Some(ComponentParam::Levin { .. })))
+            {
+                continue;
+            }
+            let k = crate::param::curve::rational(RBig::from(IBig::ONE << 950));
+            let mut wide = curve.clone();
+            for c in &mut wide.components {
+                if let Some(ComponentParam::Levin { a, d, .. }) = &mut c.param {
+                    for v in a.iter_mut().chain(d.iter_mut()) {
+                        *v = v.map(|c| c.mul(&k));
+                    }
+                    let eval = Evaluator::new(c.param.as_ref().unwrap()).unwrap();
+                    assert!(!eval.narrow);
+                    assert!(in_float_range(c.param.as_ref().unwrap()).is_some());
+                }
+            }
+            let options = SampleOptions::default();
+            let (x, y) = (
+                sample(&curve, &options).unwrap(),
+                sample(&wide, &options).unwrap(),
+            );
+            assert_eq!(x.pieces.len(), y.pieces.len());
+            for (p, q) in x.pieces.iter().zip(&y.pieces) {
+                assert_eq!(p.points.len(), q.points.len());
+                for (u, v) in p.points.iter().zip(&q.points) {
+                    assert!(dot(u, v).abs() > 1.0 - 1e-12, "{u:?} {v:?}");
+                }
+            }
+            checked += 1;
+        }
     }
 
     /// The first grid index at or after an event, from the estimate, is the one a scan of
