@@ -205,6 +205,44 @@ impl AlgebraicReal {
         )
     }
 
+    /// The real roots of `s = A + B√δ` (`A = Σaᵢxⁱ`, `B = Σbᵢxⁱ`, `δ > 0` not a square,
+    /// degree 1 to 4, `s(0) ≠ 0`), each defined by the primitive norm `A² − δB²`, isolated in
+    /// floats with a proof ([`certified_real_roots_zsqrt`](crate::roots::certified_real_roots_zsqrt));
+    /// `None` if the certificate fails or the norm overflows `i128` (the caller then
+    /// isolates exactly). `Some` proves the norm square-free.
+    ///
+    /// ```
+    /// # use qsic_algebra::AlgebraicReal;
+    /// // s = x² − 3 + √2·x: the roots (−√2 ± √14)/2
+    /// let r = AlgebraicReal::certified_real_roots_zsqrt(&[-3, 0, 1], &[0, 1, 0], 2).unwrap();
+    /// assert_eq!(r.len(), 2);
+    /// let want = (14f64.sqrt() - 2f64.sqrt()) / 2.0;
+    /// assert!((r[1].to_f64() - want).abs() < 1e-12);
+    /// ```
+    pub fn certified_real_roots_zsqrt(
+        a: &[i64],
+        b: &[i64],
+        delta: i64,
+    ) -> Option<Vec<AlgebraicReal>> {
+        let norm = norm_i128(a, b, delta)?;
+        let roots = crate::roots::certified_real_roots_zsqrt(a, b, delta)?;
+        if roots.is_empty() {
+            return Some(Vec::new());
+        }
+        let poly = primitive_i128(&norm);
+        Some(
+            roots
+                .into_iter()
+                .map(|r| AlgebraicReal {
+                    poly: poly.clone(),
+                    refined: Arc::new(Mutex::new(Refinement::new(r.narrow))),
+                    interval: r.interval,
+                    enclosure: Some((r.center, r.radius)),
+                })
+                .collect(),
+        )
+    }
+
     /// The root of the square-free `poly` in `interval`, if the interval isolates one: an
     /// exact rational that is a root, or an open interval at whose ends `poly` has opposite
     /// nonzero signs (so exactly one root when `interval` comes from isolating a multiple
@@ -710,6 +748,62 @@ impl fmt::Display for AlgebraicReal {
         match &self.interval {
             RootInterval::Exact(v) => write!(f, "{v}"),
             RootInterval::Open(lo, hi) => write!(f, "root of {} in ({lo}, {hi})", self.poly),
+        }
+    }
+}
+
+/// The coefficients `Σ_{i+j=k} (aᵢaⱼ − δ·bᵢbⱼ)` of `A² − δB²` in checked `i128`.
+fn norm_i128(a: &[i64], b: &[i64], delta: i64) -> Option<[i128; 9]> {
+    let n = a.len();
+    if n > 5 || b.len() != n {
+        return None;
+    }
+    let mut out = [0i128; 9];
+    for i in 0..n {
+        for j in 0..n {
+            // products of two i64 fit an i128; the sums are checked
+            let aa = i128::from(a[i]) * i128::from(a[j]);
+            let bb = i128::from(b[i]) * i128::from(b[j]);
+            let t = aa.checked_sub(bb.checked_mul(i128::from(delta))?)?;
+            out[i + j] = out[i + j].checked_add(t)?;
+        }
+    }
+    // keep every |cᵢ| below 2¹²⁷ (so that the content fits an i128)
+    (!out.contains(&i128::MIN)).then_some(out)
+}
+
+/// The primitive integer polynomial of positive leading coefficient proportional to `c`
+/// (not zero), the content by a binary gcd in machine integers.
+fn primitive_i128(c: &[i128]) -> Poly {
+    let len = c.iter().rposition(|v| *v != 0).map_or(0, |i| i + 1);
+    let c = &c[..len];
+    let mut g = 0u128;
+    for v in c.iter().rev() {
+        g = gcd_u128(g, v.unsigned_abs());
+        if g == 1 {
+            break;
+        }
+    }
+    let g = if c[len - 1] < 0 { -(g as i128) } else { g as i128 };
+    // |g| ≤ |c_n| < 2¹²⁷ fits; the quotients are exact
+    Poly::new(c.iter().map(|v| IBig::from(v / g)).collect())
+}
+
+/// `gcd(a, b)` by Stein's binary algorithm.
+fn gcd_u128(a: u128, b: u128) -> u128 {
+    if a == 0 || b == 0 {
+        return a | b;
+    }
+    let shift = (a | b).trailing_zeros();
+    let (mut a, mut b) = (a >> a.trailing_zeros(), b);
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
         }
     }
 }

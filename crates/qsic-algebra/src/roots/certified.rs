@@ -571,6 +571,150 @@ pub fn certified_real_roots_enclosed(p: &Poly) -> Option<Vec<CertifiedRoot>> {
     Some(out)
 }
 
+/// The binary exponent `⌊log₂|x|⌋` of a normal float `x`.
+fn exponent(x: f64) -> i64 {
+    ((x.to_bits() >> 52) & 0x7ff) as i64 - 1023
+}
+
+/// `s(x)` and `s̄(x)` for `s = A + B√δ`: the floats `aᵢ ± √δ·bᵢ` and bounds of their errors
+/// (module docs of [`certified_real_roots_zsqrt`]).
+fn conjugate_floats(a: &[i64], b: &[i64], delta: i64) -> ([f64; 5], [f64; 5], [f64; 5], usize) {
+    let r = (delta as f64).sqrt();
+    let (mut c, mut cbar, mut err) = ([0.0; 5], [0.0; 5], [0.0; 5]);
+    for i in 0..a.len() {
+        let af = a[i] as f64;
+        let p = r * b[i] as f64;
+        c[i] = af + p;
+        cbar[i] = af - p;
+        err[i] = (af.abs() + 4.0 * p.abs() + c[i].abs().max(cbar[i].abs())) * U * (1.0 + SLACK);
+    }
+    (c, cbar, err, a.len() - 1)
+}
+
+/// `c·2^(k·i − t)` with `t` making the largest `|cᵢ|` just below 1, and the errors alike;
+/// `None` if a nonzero value would leave the normal range (far from any input here).
+fn scaled_floats(c: &[f64], err: &[f64], k: i64) -> Option<Scaled> {
+    let top = c
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| **v != 0.0)
+        .map(|(i, v)| exponent(*v) + k * i as i64)
+        .max()?
+        + 1;
+    let mut sc = Vec::with_capacity(c.len());
+    let mut se = Vec::with_capacity(c.len());
+    for (i, (&v, &e)) in c.iter().zip(err).enumerate() {
+        let x = k * i as i64 - top;
+        if !(-1000..=1000).contains(&x) {
+            return None;
+        }
+        let (v, e) = (v * pow2(x), e * pow2(x));
+        // exact unless subnormal: refuse those (an error bound must not round down)
+        if (v != 0.0 && v.abs() < pow2(-1000)) || (e != 0.0 && e < pow2(-1000)) {
+            return None;
+        }
+        sc.push(v);
+        se.push(e);
+    }
+    Some(Scaled { c: sc, err: se, k })
+}
+
+/// The real roots of `s = A + B√δ ∈ ℤ[√δ][x]` (`A = Σaᵢxⁱ`, `B = Σbᵢxⁱ`, `δ > 0` not a
+/// square, degree `n = 1…4`, `s(0) ≠ 0`) isolated among the real roots of the norm
+/// `N = s·s̄ = A² − δB²`, in floats with a proof; `None` if the certificate fails (`N` not
+/// square-free, roots too close for `f64`) or the input is outside the stated range.
+///
+/// # Certificate
+/// The coefficients `aᵢ ± √δ·bᵢ` of `s` and of `s̄` are rounded to floats: `aᵢ`, `bᵢ`, `δ`
+/// each with a relative error `u`, `√δ` then within `1.5u`, the product `p = fl(√δ·bᵢ)`
+/// within `3.5u|p|` of the exact one (to first order) and the sum within `u` of itself, so
+/// each coefficient lies within `(|aᵢ| + 4|p| + |cᵢ|)·u·(1 + 2⁻⁴⁰)` of its float. The disks of
+/// the module docs are then computed for `s` and for `s̄` (degree `n` each, from these
+/// coefficients with their errors): when the disks of each are pairwise disjoint, each holds
+/// exactly one root of its polynomial, and when moreover no disk of `s` meets one of `s̄`,
+/// the `2n` disks hold one root of `N` each, so `N` is square-free and a real disk of `s`
+/// holds a real root of `s` isolated from every other root of `N`. No root of `s` is
+/// rational: `s(ζ) = A(ζ) + B(ζ)√δ = 0` with `√δ ∉ ℚ` and `ζ ∈ ℚ` gives `A(ζ) = B(ζ) = 0`,
+/// a common root of `s` and `s̄`. So every interval is open.
+///
+/// The roots come sorted; the intervals meet the postconditions of
+/// [`isolate_real_roots`](super::isolate_real_roots) for the roots of `N`.
+///
+/// ```
+/// # use qsic_algebra::{RBig, roots::certified_real_roots_zsqrt};
+/// // s = x² − √2: the roots ±2^(1/4); s̄ = x² + √2 has none
+/// let r = certified_real_roots_zsqrt(&[0, 0, 1], &[-1, 0, 0], 2).unwrap();
+/// assert_eq!(r.len(), 2);
+/// assert!((r[1].center - 2f64.powf(0.25)).abs() <= r[1].radius);
+/// assert!(r[0].interval.hi() < &RBig::ZERO && r[1].interval.lo() > &RBig::ZERO);
+/// ```
+pub fn certified_real_roots_zsqrt(a: &[i64], b: &[i64], delta: i64) -> Option<Vec<CertifiedRoot>> {
+    let n = a.len().checked_sub(1)?;
+    if !(1..=4).contains(&n) || b.len() != a.len() || delta <= 1 {
+        return None;
+    }
+    // δ not a square (√δ is exact in f64 near an integer square: 64-bit δ has a root < 2³²)
+    let root = (delta as f64).sqrt().round() as i64;
+    if root.checked_mul(root) == Some(delta) {
+        return None;
+    }
+    if (a[0], b[0]) == (0, 0) || (a[n], b[n]) == (0, 0) {
+        return None;
+    }
+    let (c, cbar, err, _) = conjugate_floats(a, b, delta);
+    if [c[0], c[n], cbar[0], cbar[n]].contains(&0.0) {
+        return None;
+    }
+    // x = 2ᵏy with 2ᵏ the geometric mean of the sizes of the roots of N
+    let k = (exponent(c[0]) + exponent(cbar[0]) - exponent(c[n]) - exponent(cbar[n]))
+        .div_euclid(2 * n as i64);
+    let sp = scaled_floats(&c[..=n], &err[..=n], k)?;
+    let sq = scaled_floats(&cbar[..=n], &err[..=n], k)?;
+    let (zp, rp) = certified_disks(&sp)?;
+    let (zq, rq) = certified_disks(&sq)?;
+    for (zi, ri) in zp.iter().zip(&rp) {
+        for (zj, rj) in zq.iter().zip(&rq) {
+            if distance_lo(*zi, *zj) <= (ri + rj) * (1.0 + SLACK) {
+                return None;
+            }
+        }
+    }
+    // the real disks of s with their gaps to every other disk and to 0, by centre
+    let mut real = [(0.0f64, 0.0f64, 0.0f64); 4];
+    let mut m = 0;
+    for i in 0..n {
+        if zp[i].im != 0.0 {
+            continue;
+        }
+        let others = zp
+            .iter()
+            .zip(&rp)
+            .enumerate()
+            .filter(|&(j, _)| j != i)
+            .map(|(_, d)| d)
+            .chain(zq.iter().zip(&rq));
+        let gap = others
+            .map(|(zj, rj)| (distance_lo(zp[i], *zj) - rj) * (1.0 - SLACK))
+            .fold(f64::INFINITY, f64::min)
+            .min(zp[i].re.abs());
+        real[m] = (zp[i].re, rp[i], gap);
+        m += 1;
+    }
+    // disjoint intervals around the centres: their order is that of the centres
+    real[..m].sort_by(|x, y| x.0.total_cmp(&y.0));
+    let mut out = Vec::with_capacity(m);
+    for &(c, ri, gap) in &real[..m] {
+        let open = |wide| {
+            let (lo, hi, e) = interval_in_units(c, ri, gap, wide)?;
+            Some(RootInterval::Open(dyadic(lo, e + k), dyadic(hi, e + k)))
+        };
+        let interval = open(true)?;
+        let narrow = open(false)?;
+        out.push(enclosed(interval, narrow, c, ri, k));
+    }
+    Some(out)
+}
+
 /// What the disk says of a real root's rationality.
 enum Rationality {
     Irrational,

@@ -1160,8 +1160,14 @@ fn sample_between(a: &RootInterval, b: &RootInterval) -> RBig {
 /// times a power of `u`) changes.
 fn nonzero_roots(
     s: &Poly<Quadratic>,
+    integral: Option<(&[zsqrt::Zq], &IBig)>,
     sign_at: &dyn Fn(&RBig) -> Sign,
 ) -> (Vec<AlgebraicReal>, bool) {
+    // s over ℤ[√δ] in machine integers: the certificate on s and s̄ apart (degree 4 each,
+    // no root finding on the norm, and the roots of s known without signs)
+    if let Some(roots) = integral.and_then(|(z, delta)| machine_roots(z, delta)) {
+        return (roots, true);
+    }
     let norm = norm_of(s);
     // the certified float isolation proves the norm square-free when it answers
     // (then each root of s·s̄ is a simple root of exactly one of s, s̄)
@@ -1173,6 +1179,24 @@ fn nonzero_roots(
         return (roots, true);
     }
     exact_roots_by_norm(s, &norm, sign_at)
+}
+
+/// The real roots of `s = A + B√δ` (integral, `s(0) ≠ 0`) by
+/// [`AlgebraicReal::certified_real_roots_zsqrt`] when its coefficients and `δ` fit an
+/// `i64`; `None` if they do not or the certificate fails. `Some` proves the norm, hence
+/// `s`, square-free.
+fn machine_roots(z: &[zsqrt::Zq], delta: &IBig) -> Option<Vec<AlgebraicReal>> {
+    let len = z.iter().rposition(|c| !c.is_zero())? + 1;
+    if len > 5 {
+        return None;
+    }
+    let (mut a, mut b) = ([0i64; 5], [0i64; 5]);
+    for (i, c) in z[..len].iter().enumerate() {
+        a[i] = i64::try_from(&c.a).ok()?;
+        b[i] = i64::try_from(&c.b).ok()?;
+    }
+    let delta = i64::try_from(delta).ok()?;
+    AlgebraicReal::certified_real_roots_zsqrt(&a[..len], &b[..len], delta)
 }
 
 /// The real roots of `s` over ℚ(√δ) from the exact isolation of its norm `s·s̄` (any `s`
@@ -1252,10 +1276,11 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
                 .iter()
                 .take_while(|c| c.as_rational().is_some_and(|v| v.is_zero()))
                 .count();
+            let z = integral.as_deref().map(|z| (&z[k.min(z.len())..], &delta));
             let (mut roots, squarefree) = if k > 0 {
-                nonzero_roots(&s.shift_down(k), &sign_at)
+                nonzero_roots(&s.shift_down(k), z, &sign_at)
             } else {
-                nonzero_roots(s, &sign_at)
+                nonzero_roots(s, z, &sign_at)
             };
             if k > 0 {
                 let at = roots.partition_point(|r| r.interval().hi() <= &RBig::ZERO);
