@@ -212,24 +212,25 @@ impl AlgebraicReal {
     /// isolates exactly). `Some` proves the norm square-free.
     ///
     /// ```
-    /// # use qsic_algebra::AlgebraicReal;
+    /// # use qsic_algebra::{AlgebraicReal, IBig};
     /// // s = x² − 3 + √2·x: the roots (−√2 ± √14)/2
-    /// let r = AlgebraicReal::certified_real_roots_zsqrt(&[-3, 0, 1], &[0, 1, 0], 2).unwrap();
+    /// let ([a0, a2], [zero, one]) = ([IBig::from(-3), IBig::ONE], [IBig::ZERO, IBig::ONE]);
+    /// let (a, b) = ([&a0, &zero, &a2], [&zero, &one, &zero]);
+    /// let r = AlgebraicReal::certified_real_roots_zsqrt(&a, &b, &IBig::from(2)).unwrap();
     /// assert_eq!(r.len(), 2);
     /// let want = (14f64.sqrt() - 2f64.sqrt()) / 2.0;
     /// assert!((r[1].to_f64() - want).abs() < 1e-12);
     /// ```
     pub fn certified_real_roots_zsqrt(
-        a: &[i64],
-        b: &[i64],
-        delta: i64,
+        a: &[&IBig],
+        b: &[&IBig],
+        delta: &IBig,
     ) -> Option<Vec<AlgebraicReal>> {
-        let norm = norm_i128(a, b, delta)?;
         let roots = crate::roots::certified_real_roots_zsqrt(a, b, delta)?;
         if roots.is_empty() {
             return Some(Vec::new());
         }
-        let poly = primitive_i128(&norm);
+        let poly = norm_zsqrt(a, b, delta);
         Some(
             roots
                 .into_iter()
@@ -752,12 +753,44 @@ impl fmt::Display for AlgebraicReal {
     }
 }
 
+/// The primitive norm `A² − δB²` of positive leading coefficient (not zero: `δ` is not a
+/// square), in machine integers when they suffice.
+fn norm_zsqrt(a: &[&IBig], b: &[&IBig], delta: &IBig) -> Poly {
+    let small = |v: &[&IBig]| -> Option<[i64; 5]> {
+        let mut out = [0i64; 5];
+        for (o, x) in out.iter_mut().zip(v) {
+            *o = i64::try_from(*x).ok()?;
+        }
+        Some(out)
+    };
+    let n = a.len();
+    if let (Some(a), Some(b), Ok(d)) = (small(a), small(b), i64::try_from(delta)) {
+        if let Some(c) = norm_i128(&a[..n], &b[..n], d) {
+            return primitive_i128(&c[..2 * n - 1]);
+        }
+    }
+    let mut c = vec![IBig::ZERO; 2 * n - 1];
+    for i in 0..n {
+        let (sa, sb) = (a[i] * a[i], b[i] * b[i]);
+        c[2 * i] += sa - sb * delta;
+        for j in i + 1..n {
+            let t = a[i] * a[j] - b[i] * b[j] * delta;
+            c[i + j] += t << 1;
+        }
+    }
+    let p = Poly::new(c);
+    // the content taken from the leading coefficient down, usually 1 after two steps
+    let g = p.content();
+    match (g.is_one(), p.leading() > IBig::ZERO) {
+        (true, true) => p,
+        (true, false) => -&p,
+        _ => p.primitive_part(),
+    }
+}
+
 /// The coefficients `Σ_{i+j=k} (aᵢaⱼ − δ·bᵢbⱼ)` of `A² − δB²` in checked `i128`.
 fn norm_i128(a: &[i64], b: &[i64], delta: i64) -> Option<[i128; 9]> {
     let n = a.len();
-    if n > 5 || b.len() != n {
-        return None;
-    }
     let mut out = [0i128; 9];
     for i in 0..n {
         for j in 0..n {

@@ -242,8 +242,12 @@ fn eval_with_derivative(c: &[f64], z: Complex) -> (Complex, Complex, f64) {
 /// Aberth–Ehrlich sweeps (Gauss–Seidel: each update used at once) until every correction
 /// is at the rounding level; `None` on a value that is not finite.
 fn aberth(c: &[f64]) -> Option<Vec<Complex>> {
+    aberth_from(c, initial(c))
+}
+
+/// [`aberth`] from the approximations `z` (distinct, `deg c` of them).
+fn aberth_from(c: &[f64], mut z: Vec<Complex>) -> Option<Vec<Complex>> {
     let n = c.len() - 1;
-    let mut z = initial(c);
     let mut done = vec![false; n];
     for _ in 0..MAX_SWEEPS {
         let mut all = true;
@@ -339,7 +343,11 @@ fn distance_lo(a: Complex, b: Complex) -> f64 {
 /// The certified disks of the scaled polynomial: centres, radii, real centres exactly on
 /// the axis; `None` if the certificate fails.
 fn certified_disks(s: &Scaled) -> Option<(Vec<Complex>, Vec<f64>)> {
-    let mut z = aberth(&s.c)?;
+    certified_disks_from(s, aberth(&s.c)?)
+}
+
+/// [`certified_disks`] at the approximations `z`.
+fn certified_disks_from(s: &Scaled, mut z: Vec<Complex>) -> Option<(Vec<Complex>, Vec<f64>)> {
     if z.iter().any(|v| v.abs().is_nan() || v.abs() >= 1e150) {
         return None;
     }
@@ -576,19 +584,102 @@ fn exponent(x: f64) -> i64 {
     ((x.to_bits() >> 52) & 0x7ff) as i64 - 1023
 }
 
-/// `s(x)` and `s̄(x)` for `s = A + B√δ`: the floats `aᵢ ± √δ·bᵢ` and bounds of their errors
-/// (module docs of [`certified_real_roots_zsqrt`]).
-fn conjugate_floats(a: &[i64], b: &[i64], delta: i64) -> ([f64; 5], [f64; 5], [f64; 5], usize) {
-    let r = (delta as f64).sqrt();
+/// The coefficients of `s` and of `s̄` for `s = A + B√δ`: the floats `aᵢ ± √δ·bᵢ` and a
+/// common bound of their errors (docs of [`certified_real_roots_zsqrt`]).
+fn conjugate_floats(a: &[&IBig], b: &[&IBig], delta: &IBig) -> ([f64; 5], [f64; 5], [f64; 5]) {
+    let r = delta.to_f64().value().sqrt();
     let (mut c, mut cbar, mut err) = ([0.0; 5], [0.0; 5], [0.0; 5]);
     for i in 0..a.len() {
-        let af = a[i] as f64;
-        let p = r * b[i] as f64;
+        let af = a[i].to_f64().value();
+        let p = r * b[i].to_f64().value();
         c[i] = af + p;
         cbar[i] = af - p;
-        err[i] = (af.abs() + 4.0 * p.abs() + c[i].abs().max(cbar[i].abs())) * U * (1.0 + SLACK);
+        err[i] =
+            (2.0 * af.abs() + 6.0 * p.abs() + c[i].abs().max(cbar[i].abs())) * U * (1.0 + SLACK);
     }
-    (c, cbar, err, a.len() - 1)
+    (c, cbar, err)
+}
+
+/// Approximations of the roots of the quartic `c` (`c₄ ≠ 0`) by Ferrari's formulas in
+/// floats (the certificate does not rely on them); `None` on a value that is not finite.
+/// For `x = y − b/4` the monic quartic is `y⁴ + py² + qy + r`; with `m > 0` a root of the
+/// resolvent `8m³ + 8pm² + (2p² − 8r)m − q²` (negative at 0) and `w = √(2m)` it factors as
+/// `(y² − wy + p/2 + m + q/(2w))(y² + wy + p/2 + m − q/(2w))`.
+fn ferrari(c: &[f64]) -> Option<Vec<Complex>> {
+    let (b, cc, d, e) = (c[3] / c[4], c[2] / c[4], c[1] / c[4], c[0] / c[4]);
+    let b2 = b * b;
+    let p = cc - 0.375 * b2;
+    let q = d - 0.5 * b * cc + 0.125 * b2 * b;
+    let r = e - 0.25 * b * d + b2 * cc / 16.0 - 3.0 * b2 * b2 / 256.0;
+    // the largest root of the resolvent, by Newton's method from a Cauchy bound above it
+    let (k2, k1, k0) = (p, (2.0 * p * p - 8.0 * r) / 8.0, -q * q / 8.0);
+    let mut m = 1.0 + k2.abs().max(k1.abs()).max(k0.abs());
+    for _ in 0..200 {
+        let f = ((m + k2) * m + k1) * m + k0;
+        let df = (3.0 * m + 2.0 * k2) * m + k1;
+        let next = m - f / df;
+        if !(next < m) || !next.is_finite() {
+            break;
+        }
+        m = next;
+    }
+    let mut z = Vec::with_capacity(4);
+    let shift = -0.25 * b;
+    let mut quadratic = |lin: f64, con: f64| {
+        // y² + lin·y + con
+        let disc = 0.25 * lin * lin - con;
+        let h = -0.5 * lin + shift;
+        if disc >= 0.0 {
+            let t = disc.sqrt();
+            z.push(Complex { re: h + t, im: 0.0 });
+            z.push(Complex { re: h - t, im: 0.0 });
+        } else {
+            let t = (-disc).sqrt();
+            z.push(Complex { re: h, im: t });
+            z.push(Complex { re: h, im: -t });
+        }
+    };
+    if m > 0.0 && m.is_finite() {
+        let w = (2.0 * m).sqrt();
+        quadratic(-w, 0.5 * p + m + q / (2.0 * w));
+        quadratic(w, 0.5 * p + m - q / (2.0 * w));
+    } else {
+        // q = 0: a quadratic in y²
+        let disc = p * p - 4.0 * r;
+        if disc < 0.0 {
+            return None;
+        }
+        let t = disc.sqrt();
+        for y2 in [(-p + t) / 2.0, (-p - t) / 2.0] {
+            quadratic(0.0, -y2);
+        }
+    }
+    // distinct approximations (Aberth's corrections divide by their differences)
+    for i in 0..4 {
+        for j in 0..i {
+            if z[i] == z[j] {
+                let nudge = 1e-6 * (1.0 + z[i].abs());
+                z[i].im += nudge * (1 + i) as f64;
+            }
+        }
+    }
+    z.iter().all(|v| v.is_finite()).then_some(z)
+}
+
+/// Whether `d ≥ 0` is a perfect square (in floats when `d < 2⁵²`: then `√d` rounds to
+/// within `1/4` of an integer root).
+fn is_square(d: &IBig) -> bool {
+    match u64::try_from(d) {
+        Ok(v) if v < 1 << 52 => {
+            let r = (v as f64).sqrt().round() as u64;
+            r * r == v
+        }
+        _ => {
+            use dashu_int::ops::SquareRoot;
+            let r = d.unsigned_abs().sqrt();
+            IBig::from(&r * &r) == *d
+        }
+    }
 }
 
 /// `c·2^(k·i − t)` with `t` making the largest `|cᵢ|` just below 1, and the errors alike;
@@ -641,27 +732,32 @@ fn scaled_floats(c: &[f64], err: &[f64], k: i64) -> Option<Scaled> {
 /// [`isolate_real_roots`](super::isolate_real_roots) for the roots of `N`.
 ///
 /// ```
-/// # use qsic_algebra::{RBig, roots::certified_real_roots_zsqrt};
+/// # use qsic_algebra::{IBig, RBig, roots::certified_real_roots_zsqrt};
 /// // s = x² − √2: the roots ±2^(1/4); s̄ = x² + √2 has none
-/// let r = certified_real_roots_zsqrt(&[0, 0, 1], &[-1, 0, 0], 2).unwrap();
+/// let (zero, one) = (IBig::ZERO, IBig::ONE);
+/// let (a, b) = ([&zero, &zero, &one], [&-&one, &zero, &zero]);
+/// let r = certified_real_roots_zsqrt(&a, &b, &IBig::from(2)).unwrap();
 /// assert_eq!(r.len(), 2);
 /// assert!((r[1].center - 2f64.powf(0.25)).abs() <= r[1].radius);
 /// assert!(r[0].interval.hi() < &RBig::ZERO && r[1].interval.lo() > &RBig::ZERO);
 /// ```
-pub fn certified_real_roots_zsqrt(a: &[i64], b: &[i64], delta: i64) -> Option<Vec<CertifiedRoot>> {
+pub fn certified_real_roots_zsqrt(
+    a: &[&IBig],
+    b: &[&IBig],
+    delta: &IBig,
+) -> Option<Vec<CertifiedRoot>> {
     let n = a.len().checked_sub(1)?;
-    if !(1..=4).contains(&n) || b.len() != a.len() || delta <= 1 {
+    if !(1..=4).contains(&n) || b.len() != a.len() || delta <= &IBig::ONE {
         return None;
     }
-    // δ not a square (√δ is exact in f64 near an integer square: 64-bit δ has a root < 2³²)
-    let root = (delta as f64).sqrt().round() as i64;
-    if root.checked_mul(root) == Some(delta) {
+    if is_square(delta) {
         return None;
     }
-    if (a[0], b[0]) == (0, 0) || (a[n], b[n]) == (0, 0) {
+    let zero = |i: usize| a[i].is_zero() && b[i].is_zero();
+    if zero(0) || zero(n) {
         return None;
     }
-    let (c, cbar, err, _) = conjugate_floats(a, b, delta);
+    let (c, cbar, err) = conjugate_floats(a, b, delta);
     if [c[0], c[n], cbar[0], cbar[n]].contains(&0.0) {
         return None;
     }
@@ -670,8 +766,12 @@ pub fn certified_real_roots_zsqrt(a: &[i64], b: &[i64], delta: i64) -> Option<Ve
         .div_euclid(2 * n as i64);
     let sp = scaled_floats(&c[..=n], &err[..=n], k)?;
     let sq = scaled_floats(&cbar[..=n], &err[..=n], k)?;
-    let (zp, rp) = certified_disks(&sp)?;
-    let (zq, rq) = certified_disks(&sq)?;
+    let seeds = |sc: &Scaled| match n {
+        4 => ferrari(&sc.c).map_or_else(|| aberth(&sc.c), |z| aberth_from(&sc.c, z)),
+        _ => aberth(&sc.c),
+    };
+    let (zp, rp) = certified_disks_from(&sp, seeds(&sp)?)?;
+    let (zq, rq) = certified_disks_from(&sq, seeds(&sq)?)?;
     for (zi, ri) in zp.iter().zip(&rp) {
         for (zj, rj) in zq.iter().zip(&rq) {
             if distance_lo(*zi, *zj) <= (ri + rj) * (1.0 + SLACK) {

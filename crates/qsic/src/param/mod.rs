@@ -1181,21 +1181,17 @@ fn nonzero_roots(
     exact_roots_by_norm(s, &norm, sign_at)
 }
 
-/// The real roots of `s = A + B√δ` (integral, `s(0) ≠ 0`) by
-/// [`AlgebraicReal::certified_real_roots_zsqrt`] when its coefficients and `δ` fit an
-/// `i64`; `None` if they do not or the certificate fails. `Some` proves the norm, hence
+/// The real roots of `s = A + B√δ` (integral, `s(0) ≠ 0`, degree at most 4) by
+/// [`AlgebraicReal::certified_real_roots_zsqrt`]; `None` if the certificate fails. `Some` proves the norm, hence
 /// `s`, square-free.
 fn machine_roots(z: &[zsqrt::Zq], delta: &IBig) -> Option<Vec<AlgebraicReal>> {
     let len = z.iter().rposition(|c| !c.is_zero())? + 1;
     if len > 5 {
         return None;
     }
-    let (mut a, mut b) = ([0i64; 5], [0i64; 5]);
-    for (i, c) in z[..len].iter().enumerate() {
-        a[i] = i64::try_from(&c.a).ok()?;
-        b[i] = i64::try_from(&c.b).ok()?;
-    }
-    let delta = i64::try_from(delta).ok()?;
+    let zero = IBig::ZERO;
+    let a: [&IBig; 5] = std::array::from_fn(|i| z.get(i).map_or(&zero, |c| &c.a));
+    let b: [&IBig; 5] = std::array::from_fn(|i| z.get(i).map_or(&zero, |c| &c.b));
     AlgebraicReal::certified_real_roots_zsqrt(&a[..len], &b[..len], delta)
 }
 
