@@ -230,12 +230,19 @@ impl AlgebraicReal {
         if roots.is_empty() {
             return Some(Vec::new());
         }
-        let poly = norm_zsqrt(a, b, delta);
+        let mut poly = Some(norm_zsqrt(a, b, delta));
+        let m = roots.len();
         Some(
             roots
                 .into_iter()
-                .map(|r| AlgebraicReal {
-                    poly: poly.clone(),
+                .enumerate()
+                .map(|(i, r)| AlgebraicReal {
+                    // the last root takes the norm, the others a copy
+                    poly: if i + 1 == m {
+                        poly.take().unwrap_or_default()
+                    } else {
+                        poly.clone().unwrap_or_default()
+                    },
                     refined: Arc::new(Mutex::new(Refinement::new(r.narrow))),
                     interval: r.interval,
                     enclosure: Some((r.center, r.radius)),
@@ -769,6 +776,9 @@ fn norm_zsqrt(a: &[&IBig], b: &[&IBig], delta: &IBig) -> Poly {
             return primitive_i128(&c[..2 * n - 1]);
         }
     }
+    if let Some(p) = norm_wide(a, b, delta) {
+        return p;
+    }
     let mut c = vec![IBig::ZERO; 2 * n - 1];
     for i in 0..n {
         let (sa, sb) = (a[i] * a[i], b[i] * b[i]);
@@ -786,6 +796,162 @@ fn norm_zsqrt(a: &[&IBig], b: &[&IBig], delta: &IBig) -> Poly {
         (true, false) => -&p,
         _ => p.primitive_part(),
     }
+}
+
+/// A signed 256-bit integer in two's complement, little-endian words (wrapping arithmetic:
+/// the callers bound the values).
+type Wide = [u64; 4];
+
+/// `x + y` modulo `2²⁵⁶`.
+fn wide_add(x: Wide, y: Wide) -> Wide {
+    let mut out = [0u64; 4];
+    let mut carry = false;
+    for i in 0..4 {
+        let (s1, c1) = x[i].overflowing_add(y[i]);
+        let (s2, c2) = s1.overflowing_add(u64::from(carry));
+        out[i] = s2;
+        carry = c1 || c2;
+    }
+    out
+}
+
+/// `−x` modulo `2²⁵⁶`.
+fn wide_neg(x: Wide) -> Wide {
+    wide_add([!x[0], !x[1], !x[2], !x[3]], [1, 0, 0, 0])
+}
+
+/// `x·y` for `x, y < 2¹²⁸` (exact, below `2²⁵⁶`).
+fn wide_mul(x: u128, y: u128) -> Wide {
+    let (x0, x1) = (x as u64 as u128, x >> 64);
+    let (y0, y1) = (y as u64 as u128, y >> 64);
+    let lo = x0 * y0;
+    let (m1, m2) = (x0 * y1, x1 * y0);
+    let hi = x1 * y1;
+    let mut out = [lo as u64, (lo >> 64) as u64, hi as u64, (hi >> 64) as u64];
+    for m in [m1, m2] {
+        out = wide_add(out, [0, m as u64, (m >> 64) as u64, 0]);
+    }
+    out
+}
+
+/// `x·d` for `x·d < 2²⁵⁶` (the caller's bound).
+fn wide_mul_small(x: Wide, d: u64) -> Wide {
+    let mut out = [0u64; 4];
+    let mut carry = 0u128;
+    for i in 0..4 {
+        let t = u128::from(x[i]) * u128::from(d) + carry;
+        out[i] = t as u64;
+        carry = t >> 64;
+    }
+    out
+}
+
+/// The integer `x` as an [`IBig`].
+fn wide_to_ibig(x: Wide) -> IBig {
+    let negative = x[3] >> 63 == 1;
+    let m = if negative { wide_neg(x) } else { x };
+    let mut bytes = [0u8; 32];
+    for (i, w) in m.iter().enumerate() {
+        bytes[8 * i..8 * i + 8].copy_from_slice(&w.to_le_bytes());
+    }
+    let v = IBig::from(dashu_int::UBig::from_le_bytes(&bytes));
+    if negative {
+        -v
+    } else {
+        v
+    }
+}
+
+/// The primitive norm of [`norm_zsqrt`] in 256-bit integers: `s` divided by the gcd of its
+/// coefficients (in `u128`) first, then `Σ (aᵢaⱼ − δ·bᵢbⱼ)` when `|aᵢ| < 2ᵅ`, `|bᵢ| < 2ᵝ`
+/// and `δ < 2^d ≤ 2⁶²` with `2α + 5 ≤ 255` and `2β + d + 5 ≤ 255`: each sum has at most 5
+/// products of each kind, so every partial sum stays below `2²⁵⁴`. `None`
+/// outside that range.
+fn norm_wide(a: &[&IBig], b: &[&IBig], delta: &IBig) -> Option<Poly> {
+    let n = a.len();
+    let d = u64::try_from(delta).ok().filter(|&d| d < 1 << 62)?;
+    let mut sa = [(false, 0u128); 5];
+    let mut sb = [(false, 0u128); 5];
+    let mut g = 0u128;
+    for i in 0..n {
+        let x = i128::try_from(a[i]).ok()?;
+        let y = i128::try_from(b[i]).ok()?;
+        sa[i] = (x < 0, x.unsigned_abs());
+        sb[i] = (y < 0, y.unsigned_abs());
+        g = gcd_u128(gcd_u128(g, sa[i].1), sb[i].1);
+    }
+    if g == 0 {
+        return None;
+    }
+    let bits = |v: &[(bool, u128)]| v.iter().map(|x| 128 - (x.1 / g).leading_zeros()).max();
+    let (ba, bb) = (bits(&sa[..n])?, bits(&sb[..n])?);
+    if 2 * ba + 5 > 255 || 2 * bb + (64 - d.leading_zeros()) + 5 > 255 {
+        return None;
+    }
+    let mut c = [[0u64; 4]; 9];
+    for i in 0..n {
+        for j in i..n {
+            let twice = if i == j { 1 } else { 2 };
+            let pa = wide_mul_small(wide_mul(sa[i].1 / g, sa[j].1 / g), twice);
+            let pb = wide_mul_small(wide_mul(sb[i].1 / g, sb[j].1 / g), twice * d);
+            let pa = if sa[i].0 != sa[j].0 { wide_neg(pa) } else { pa };
+            let pb = if sb[i].0 == sb[j].0 { wide_neg(pb) } else { pb };
+            c[i + j] = wide_add(wide_add(c[i + j], pa), pb);
+        }
+    }
+    Some(primitive_wide(&c[..2 * n - 1]))
+}
+
+/// `x mod m` for a non-negative `x` and `m > 0`.
+fn wide_rem(x: Wide, m: u64) -> u64 {
+    let mut r = 0u128;
+    for &w in x.iter().rev() {
+        r = ((r << 64) | u128::from(w)) % u128::from(m);
+    }
+    r as u64
+}
+
+/// `x / m` for a non-negative `x` that `m > 0` divides.
+fn wide_div(x: Wide, m: u64) -> Wide {
+    let mut out = [0u64; 4];
+    let mut r = 0u128;
+    for i in (0..4).rev() {
+        let t = (r << 64) | u128::from(x[i]);
+        out[i] = (t / u128::from(m)) as u64;
+        r = t % u128::from(m);
+    }
+    out
+}
+
+/// The primitive integer polynomial of positive leading coefficient proportional to `c`
+/// (not zero, `|cᵢ| < 2²⁵⁵`): the content is the gcd of the outer coefficients (in big
+/// integers) and then, when it fits a `u64`, of the residues of the others (in words).
+fn primitive_wide(c: &[Wide]) -> Poly {
+    let len = c.iter().rposition(|v| *v != [0; 4]).map_or(0, |i| i + 1);
+    let c = &c[..len];
+    let negative = |w: &Wide| w[3] >> 63 == 1;
+    let abs = |w: Wide| if negative(&w) { wide_neg(w) } else { w };
+    let first = c.iter().position(|v| *v != [0; 4]).unwrap_or(0);
+    let g = crate::int_gcd(&wide_to_ibig(c[len - 1]), &wide_to_ibig(c[first]));
+    let Ok(mut g) = u64::try_from(&g) else {
+        return Poly::new(c.iter().map(|&w| wide_to_ibig(w)).collect()).primitive_part();
+    };
+    for &w in c {
+        if g == 1 {
+            break;
+        }
+        g = gcd_u128(u128::from(g), u128::from(wide_rem(abs(w), g))) as u64;
+    }
+    let flip = negative(&c[len - 1]);
+    Poly::new(
+        c.iter()
+            .map(|&w| {
+                let q = wide_div(abs(w), g);
+                let q = if negative(&w) != flip { wide_neg(q) } else { q };
+                wide_to_ibig(q)
+            })
+            .collect(),
+    )
 }
 
 /// The coefficients `Σ_{i+j=k} (aᵢaⱼ − δ·bᵢbⱼ)` of `A² − δB²` in checked `i128`.
@@ -822,8 +988,13 @@ fn primitive_i128(c: &[i128]) -> Poly {
     Poly::new(c.iter().map(|v| IBig::from(v / g)).collect())
 }
 
-/// `gcd(a, b)` by Stein's binary algorithm.
+/// `gcd(a, b)`: one Euclidean step (the larger modulo the smaller, which is often much
+/// smaller here), then Stein's binary algorithm.
 fn gcd_u128(a: u128, b: u128) -> u128 {
+    if a == 0 || b == 0 {
+        return a | b;
+    }
+    let (a, b) = if a < b { (a, b % a) } else { (a % b, b) };
     if a == 0 || b == 0 {
         return a | b;
     }

@@ -666,6 +666,57 @@ fn ferrari(c: &[f64]) -> Option<Vec<Complex>> {
     z.iter().all(|v| v.is_finite()).then_some(z)
 }
 
+/// A few Newton steps on each approximation of a root of `c` (real ones in real arithmetic,
+/// the second of a conjugate pair mirrored from the first), stopping when the correction is
+/// at the rounding level.
+fn polish(c: &[f64], mut z: Vec<Complex>) -> Vec<Complex> {
+    const STEPS: usize = 3;
+    let mut i = 0;
+    while i < z.len() {
+        if z[i].im == 0.0 {
+            let mut x = z[i].re;
+            for _ in 0..STEPS {
+                let (mut v, mut dv) = (0.0, 0.0);
+                for &ck in c.iter().rev() {
+                    dv = dv * x + v;
+                    v = v * x + ck;
+                }
+                let corr = v / dv;
+                if !corr.is_finite() {
+                    break;
+                }
+                x -= corr;
+                if corr.abs() <= 4.0 * U * x.abs() {
+                    break;
+                }
+            }
+            z[i].re = x;
+            i += 1;
+            continue;
+        }
+        let mut w = z[i];
+        for _ in 0..STEPS {
+            let (v, dv, _) = eval_with_derivative(c, w);
+            let corr = v.div(dv);
+            if !corr.is_finite() {
+                break;
+            }
+            w = w.sub(corr);
+            if corr.norm_sqr() <= 16.0 * U * U * w.norm_sqr() {
+                break;
+            }
+        }
+        let pair = i + 1 < z.len() && z[i + 1] == Complex { re: z[i].re, im: -z[i].im };
+        z[i] = w;
+        if pair {
+            z[i + 1] = Complex { re: w.re, im: -w.im };
+            i += 1;
+        }
+        i += 1;
+    }
+    z
+}
+
 /// Whether `d ≥ 0` is a perfect square (in floats when `d < 2⁵²`: then `√d` rounds to
 /// within `1/4` of an integer root).
 fn is_square(d: &IBig) -> bool {
@@ -766,12 +817,19 @@ pub fn certified_real_roots_zsqrt(
         .div_euclid(2 * n as i64);
     let sp = scaled_floats(&c[..=n], &err[..=n], k)?;
     let sq = scaled_floats(&cbar[..=n], &err[..=n], k)?;
-    let seeds = |sc: &Scaled| match n {
-        4 => ferrari(&sc.c).map_or_else(|| aberth(&sc.c), |z| aberth_from(&sc.c, z)),
-        _ => aberth(&sc.c),
+    // Ferrari's approximations polished by Newton's method, else (or if the certificate
+    // fails there) Aberth's iteration from the Newton polygon
+    let disks = |sc: &Scaled| {
+        let polished = match n {
+            4 => ferrari(&sc.c).map(|z| polish(&sc.c, z)),
+            _ => None,
+        };
+        polished
+            .and_then(|z| certified_disks_from(sc, z))
+            .or_else(|| certified_disks(sc))
     };
-    let (zp, rp) = certified_disks_from(&sp, seeds(&sp)?)?;
-    let (zq, rq) = certified_disks_from(&sq, seeds(&sq)?)?;
+    let (zp, rp) = disks(&sp)?;
+    let (zq, rq) = disks(&sq)?;
     for (zi, ri) in zp.iter().zip(&rp) {
         for (zj, rj) in zq.iter().zip(&rq) {
             if distance_lo(*zi, *zj) <= (ri + rj) * (1.0 + SLACK) {
@@ -809,7 +867,7 @@ pub fn certified_real_roots_zsqrt(
             Some(RootInterval::Open(dyadic(lo, e + k), dyadic(hi, e + k)))
         };
         let interval = open(true)?;
-        let narrow = open(false)?;
+        let narrow = interval.clone();
         out.push(enclosed(interval, narrow, c, ri, k));
     }
     Some(out)

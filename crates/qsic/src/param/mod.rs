@@ -1224,6 +1224,31 @@ fn exact_roots_by_norm(
     (roots, squarefree)
 }
 
+/// The sign of `a + b√δ` (`δ > 0` not a square): from floats when the rounding cannot
+/// change it (`a`, `b`, `δ` rounded with a relative error `u`, `√δ` then within `1.5u`,
+/// the product within `u` more and the sum within `u`: below `2u|a| + 4.5u|b√δ|` to first
+/// order, and the bound taken is `4u|a| + 20u|b√δ|`), else by `a² − δb²` exactly.
+fn zq_sign(c: &zsqrt::Zq, delta: &IBig) -> Sign {
+    let (sa, sb) = (Sign::of(&c.a), Sign::of(&c.b));
+    if sb == Sign::Zero || sa == sb || sa == Sign::Zero {
+        return if sb == Sign::Zero { sa } else { sb };
+    }
+    let (a, p) = (
+        c.a.to_f64().value(),
+        delta.to_f64().value().sqrt() * c.b.to_f64().value(),
+    );
+    let bound = 2.0 * (a.abs() + 5.0 * p.abs()) * f64::EPSILON;
+    if let Some(sg) = qsic_algebra::filter::certified_sign(a + p, bound) {
+        return sg;
+    }
+    // opposite signs: |a| vs |b|√δ, never equal
+    if &c.a * &c.a > &c.b * &c.b * delta {
+        sa
+    } else {
+        sb
+    }
+}
+
 /// The real roots of `s` (see [`DiscriminantRoots`]).
 fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
     let rational: Option<Vec<RBig>> = s
@@ -1239,18 +1264,22 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
         .map(|c| c.radicand().clone())
         .unwrap_or(IBig::ZERO);
     let integral = zsqrt::zpoly(s, &delta);
-    // floats of the coefficients and of √δ for the certified float signs
-    let floats = integral.as_ref().map(|z| {
-        let f = |v: &IBig| v.to_f64().value();
-        let a: Vec<f64> = z.iter().map(|c| f(&c.a)).collect();
-        let b: Vec<f64> = z.iter().map(|c| f(&c.b)).collect();
-        (a, b, f(&delta).sqrt())
-    });
-    let sign_at = |x: &RBig| match (&integral, &floats) {
-        (Some(z), Some((a, b, r))) => exact_f64(x)
-            .and_then(|xf| certified_sign_zsqrt(a, b, *r, xf))
-            .unwrap_or_else(|| zsqrt::sign_at(z, x, &delta)),
-        _ => sign(&s.eval(&q(x))),
+    // floats of the coefficients and of √δ for the certified float signs (made when a
+    // sign is first asked for)
+    let floats = std::cell::OnceCell::new();
+    let sign_at = |x: &RBig| match &integral {
+        Some(z) => {
+            let (a, b, r) = floats.get_or_init(|| {
+                let f = |v: &IBig| v.to_f64().value();
+                let a: Vec<f64> = z.iter().map(|c| f(&c.a)).collect();
+                let b: Vec<f64> = z.iter().map(|c| f(&c.b)).collect();
+                (a, b, f(&delta).sqrt())
+            });
+            exact_f64(x)
+                .and_then(|xf| certified_sign_zsqrt(a, b, *r, xf))
+                .unwrap_or_else(|| zsqrt::sign_at(z, x, &delta))
+        }
+        None => sign(&s.eval(&q(x))),
     };
     let (roots, squarefree) = match rational {
         Some(c) => {
@@ -1297,10 +1326,24 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
         }
         _ => samples.push(RBig::ZERO),
     }
+    // a square-free s changes sign at each of its real roots, and has the sign of its
+    // leading coefficient beyond the last: no evaluation
+    let lead = match (squarefree, &integral, s.coeffs().last()) {
+        (true, Some(z), _) => z.iter().rev().find(|c| !c.is_zero()).map(|c| zq_sign(c, &delta)),
+        (true, None, Some(c)) => Some(sign(c)),
+        _ => None,
+    };
+    let count = samples.len();
     let arcs = samples
         .into_iter()
-        .map(|x| {
-            let sg = sign_at(&x);
+        .enumerate()
+        .map(|(i, x)| {
+            let sg = match lead {
+                // count − 1 − i roots lie beyond the i-th sample
+                Some(l) if (count - 1 - i) % 2 == 0 => l,
+                Some(l) => -l,
+                None => sign_at(&x),
+            };
             (x, sg)
         })
         .collect();
