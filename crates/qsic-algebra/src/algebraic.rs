@@ -983,7 +983,11 @@ fn primitive_i128(c: &[i128]) -> Poly {
             break;
         }
     }
-    let g = if c[len - 1] < 0 { -(g as i128) } else { g as i128 };
+    let g = if c[len - 1] < 0 {
+        -(g as i128)
+    } else {
+        g as i128
+    };
     // |g| ≤ |c_n| < 2¹²⁷ fits; the quotients are exact
     Poly::new(c.iter().map(|v| IBig::from(v / g)).collect())
 }
@@ -1267,5 +1271,83 @@ mod tests {
                 assert_eq!(r.cmp(o), i.cmp(&j));
             }
         }
+    }
+
+    /// The norms in machine words (`i128`, 256-bit) against big integers, for coefficients of
+    /// 3 to 126 bits and `δ` up to 2⁶¹ (the ranges where each applies and beyond), and the
+    /// roots of `s = A + B√δ` as valid numbers of that norm, equal to the exact ones.
+    #[test]
+    fn zsqrt_norms_and_roots_agree_with_big_integers() {
+        let mut rng = crate::testing::SplitMix(808);
+        let (mut roots_seen, mut wide_seen) = (0, 0);
+        for t in 0..300 {
+            let bits = [3, 30, 62, 90, 126][t % 5];
+            let rand = |rng: &mut crate::testing::SplitMix, bits: usize| {
+                let mut v = IBig::ZERO;
+                for _ in 0..bits.div_ceil(32) {
+                    v = (v << 32) + IBig::from(rng.next_u64() >> 32);
+                }
+                let v = v >> (bits.div_ceil(32) * 32 - bits);
+                // a common factor now and then (the content of s)
+                let v = if t % 3 == 0 { v * IBig::from(12) } else { v };
+                if rng.int(0, 1) == 0 {
+                    -v
+                } else {
+                    v
+                }
+            };
+            let n = rng.int(1, 4) as usize;
+            let a: Vec<IBig> = (0..=n).map(|_| rand(&mut rng, bits)).collect();
+            let b: Vec<IBig> = (0..=n).map(|_| rand(&mut rng, bits)).collect();
+            let delta = IBig::from(rng.int(2, 1 << 40) * 2 + 1) << [0, 20][t % 2];
+            if (a[0].is_zero() && b[0].is_zero()) || (a[n].is_zero() && b[n].is_zero()) {
+                continue;
+            }
+            let (pa, pb) = (Poly::new(a.clone()), Poly::new(b.clone()));
+            let want =
+                (&(&pa * &pa) - &(&(&pb * &pb) * &Poly::constant(delta.clone()))).primitive_part();
+            let ra: Vec<&IBig> = a.iter().collect();
+            let rb: Vec<&IBig> = b.iter().collect();
+            assert_eq!(norm_zsqrt(&ra, &rb, &delta), want, "{pa} {pb} {delta}");
+            if let Some(w) = norm_wide(&ra, &rb, &delta) {
+                assert_eq!(w, want, "{pa} {pb} {delta}");
+                wide_seen += 1;
+            }
+            if let Some(roots) = AlgebraicReal::certified_real_roots_zsqrt(&ra, &rb, &delta) {
+                let exact: Vec<AlgebraicReal> = AlgebraicReal::real_roots_of(&want)
+                    .into_iter()
+                    .filter(|r| {
+                        let iv = r.interval();
+                        let s = |x: &RBig| {
+                            let (va, vb) = (pa.eval_rational(x), pb.eval_rational(x));
+                            let t = &va * &va - &vb * &vb * RBig::from(delta.clone());
+                            // the sign of va + vb√δ
+                            match (Sign::of_rational(&va), Sign::of_rational(&vb)) {
+                                (sa, Sign::Zero) => sa,
+                                (Sign::Zero, sb) => sb,
+                                (sa, sb) if sa == sb => sa,
+                                (sa, sb) => {
+                                    if t > RBig::ZERO {
+                                        sa
+                                    } else {
+                                        sb
+                                    }
+                                }
+                            }
+                        };
+                        s(iv.lo()) != s(iv.hi())
+                    })
+                    .collect();
+                assert_eq!(roots, exact, "{pa} {pb} {delta}");
+                for r in &roots {
+                    assert!(r.is_valid() && r.poly() == &want, "{r:?}");
+                }
+                roots_seen += roots.len();
+            }
+        }
+        assert!(
+            roots_seen > 100 && wide_seen > 150,
+            "{roots_seen} {wide_seen}"
+        );
     }
 }

@@ -668,13 +668,15 @@ fn ferrari(c: &[f64]) -> Option<Vec<Complex>> {
 
 /// A few Newton steps on each approximation of a root of `c` (real ones in real arithmetic,
 /// the second of a conjugate pair mirrored from the first), stopping when the correction is
-/// at the rounding level.
-fn polish(c: &[f64], mut z: Vec<Complex>) -> Vec<Complex> {
+/// at the rounding level; `false` if some approximation has not got there (then Aberth's
+/// iteration takes over).
+fn polish(c: &[f64], z: &mut [Complex]) -> bool {
     const STEPS: usize = 3;
     let mut i = 0;
     while i < z.len() {
         if z[i].im == 0.0 {
             let mut x = z[i].re;
+            let mut converged = false;
             for _ in 0..STEPS {
                 let (mut v, mut dv) = (0.0, 0.0);
                 for &ck in c.iter().rev() {
@@ -687,14 +689,19 @@ fn polish(c: &[f64], mut z: Vec<Complex>) -> Vec<Complex> {
                 }
                 x -= corr;
                 if corr.abs() <= 4.0 * U * x.abs() {
+                    converged = true;
                     break;
                 }
+            }
+            if !converged {
+                return false;
             }
             z[i].re = x;
             i += 1;
             continue;
         }
         let mut w = z[i];
+        let mut converged = false;
         for _ in 0..STEPS {
             let (v, dv, _) = eval_with_derivative(c, w);
             let corr = v.div(dv);
@@ -703,18 +710,30 @@ fn polish(c: &[f64], mut z: Vec<Complex>) -> Vec<Complex> {
             }
             w = w.sub(corr);
             if corr.norm_sqr() <= 16.0 * U * U * w.norm_sqr() {
+                converged = true;
                 break;
             }
         }
-        let pair = i + 1 < z.len() && z[i + 1] == Complex { re: z[i].re, im: -z[i].im };
+        if !converged {
+            return false;
+        }
+        let pair = i + 1 < z.len()
+            && z[i + 1]
+                == Complex {
+                    re: z[i].re,
+                    im: -z[i].im,
+                };
         z[i] = w;
         if pair {
-            z[i + 1] = Complex { re: w.re, im: -w.im };
+            z[i + 1] = Complex {
+                re: w.re,
+                im: -w.im,
+            };
             i += 1;
         }
         i += 1;
     }
-    z
+    true
 }
 
 /// Whether `d ≥ 0` is a perfect square (in floats when `d < 2⁵²`: then `√d` rounds to
@@ -821,7 +840,10 @@ pub fn certified_real_roots_zsqrt(
     // fails there) Aberth's iteration from the Newton polygon
     let disks = |sc: &Scaled| {
         let polished = match n {
-            4 => ferrari(&sc.c).map(|z| polish(&sc.c, z)),
+            4 => ferrari(&sc.c).and_then(|mut z| match polish(&sc.c, &mut z) {
+                true => Some(z),
+                false => aberth_from(&sc.c, z),
+            }),
             _ => None,
         };
         polished
@@ -1179,5 +1201,159 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The exact sign of `A(x) + √δ·B(x)` at a rational `x` (`δ` not a square).
+    fn sign_zsqrt(a: &Poly, b: &Poly, delta: &IBig, x: &RBig) -> Sign {
+        let eval = |p: &Poly| {
+            p.coeffs()
+                .iter()
+                .rev()
+                .fold(RBig::ZERO, |acc, c| acc * x + RBig::from(c.clone()))
+        };
+        let (va, vb) = (eval(a), eval(b));
+        let (sa, sb) = (Sign::of_rational(&va), Sign::of_rational(&vb));
+        if sb == Sign::Zero || sa == sb || sa == Sign::Zero {
+            return if sb == Sign::Zero { sa } else { sb };
+        }
+        if &va * &va > &vb * &vb * RBig::from(delta.clone()) {
+            sa
+        } else {
+            sb
+        }
+    }
+
+    /// A random `s = A + B√δ` of degree 4: random coefficients of a few, 60 or 110 bits,
+    /// or crafted hard ones — a rational root (a root of `s̄` too), a factor `(x − r)²`
+    /// over ℤ[√δ], two roots `2⁻⁴⁰` apart, coefficients of very different sizes.
+    fn random_s(rng: &mut SplitMix, family: u64) -> (Poly, Poly, IBig) {
+        let squares = [4, 9, 16, 25, 49];
+        let delta = loop {
+            let d = rng.int(2, 5000);
+            if !squares.contains(&d) && ((d as f64).sqrt() as i64).pow(2) != d {
+                break IBig::from(d);
+            }
+        };
+        let lin = |c: i64, l: i64| Poly::from_i64s(&[c, l]);
+        let (a, b) = match family % 6 {
+            0..=2 => {
+                let bits = [6, 60, 110][(family % 6) as usize];
+                let a = Poly::new((0..5).map(|_| big(rng, bits)).collect());
+                let b = Poly::new((0..5).map(|_| big(rng, bits)).collect());
+                (a, b)
+            }
+            3 => {
+                // (x − r)·(A₁ + B₁√δ): r is a root of s and of s̄
+                let r = rng.int(-20, 20);
+                let a1 = Poly::new((0..4).map(|_| big(rng, 20)).collect());
+                let b1 = Poly::new((0..4).map(|_| big(rng, 20)).collect());
+                (&lin(-r, 1) * &a1, &lin(-r, 1) * &b1)
+            }
+            4 => {
+                // (x − r)²·(c + √δ·(x² − e)) or two roots 2⁻⁴⁰ apart times the same
+                let m = rng.int(1, 1 << 30);
+                let (p, q) = if rng.int(0, 1) == 0 {
+                    (lin(-m, 1 << 20), lin(-m, 1 << 20))
+                } else {
+                    (
+                        lin(-m, 1 << 20),
+                        Poly::new(vec![
+                            IBig::from(-m) * IBig::from(1 << 20) - 1,
+                            IBig::ONE << 40,
+                        ]),
+                    )
+                };
+                let pq = &p * &q;
+                let c = big(rng, 8);
+                let e = IBig::from(rng.int(1, 100));
+                (
+                    &pq * &Poly::new(vec![c, IBig::ZERO, IBig::ZERO]),
+                    &pq * &Poly::new(vec![-e, IBig::ZERO, IBig::ONE]),
+                )
+            }
+            _ => {
+                // huge and tiny coefficients together
+                let a = Poly::new((0..5).map(|i| big(rng, [3, 120, 5, 90, 2][i])).collect());
+                let b = Poly::new((0..5).map(|i| big(rng, [100, 4, 70, 3, 126][i])).collect());
+                (a, b)
+            }
+        };
+        (a, b, delta)
+    }
+
+    /// The fast isolation of the real roots of `s = A + B√δ` against the exact one (Descartes
+    /// on the square-free part of the norm `A² − δB²`, the roots of `s` picked by exact signs):
+    /// the same roots, each interval isolating its root among the roots of the norm, the float
+    /// enclosure holding it; and the certificate fails where it must (a root shared with `s̄`,
+    /// a multiple root).
+    #[test]
+    fn zsqrt_roots_agree_with_the_exact_isolation() {
+        let mut rng = SplitMix(4242);
+        let mut answered = [0usize; 6];
+        for t in 0..600u64 {
+            let family = t % 6;
+            let (a, b, delta) = random_s(&mut rng, family);
+            let norm = &(&a * &a) - &(&(&b * &b) * &Poly::constant(delta.clone()));
+            let n = a.degree().max(b.degree()).unwrap();
+            let (ca, cb): (Vec<IBig>, Vec<IBig>) =
+                (0..=n).map(|i| (a.coeff(i), b.coeff(i))).unzip();
+            let ra: Vec<&IBig> = ca.iter().collect();
+            let rb: Vec<&IBig> = cb.iter().collect();
+            let Some(cert) = certified_real_roots_zsqrt(&ra, &rb, &delta) else {
+                continue;
+            };
+            answered[family as usize] += 1;
+            // Some proves the norm square-free (so s too, with no root shared with s̄)
+            assert_eq!(
+                norm.squarefree_part().degree(),
+                norm.degree(),
+                "{a} {b} {delta}"
+            );
+            let exact: Vec<RootInterval> = isolate_squarefree_real_roots_descartes(&norm)
+                .into_iter()
+                .filter(|iv| match iv {
+                    RootInterval::Exact(v) => sign_zsqrt(&a, &b, &delta, v) == Sign::Zero,
+                    RootInterval::Open(lo, hi) => {
+                        sign_zsqrt(&a, &b, &delta, lo) != sign_zsqrt(&a, &b, &delta, hi)
+                    }
+                })
+                .collect();
+            assert_eq!(
+                cert.len(),
+                exact.len(),
+                "{a} {b} {delta}: {cert:?} vs {exact:?}"
+            );
+            let sturm = SturmSequence::new(&norm);
+            for c in &cert {
+                let RootInterval::Open(lo, hi) = &c.interval else {
+                    panic!("a rational root of {a} + {b}√{delta}: {c:?}");
+                };
+                assert!(lo < hi && (lo >= &RBig::ZERO || hi <= &RBig::ZERO), "{c:?}");
+                assert_eq!(sturm.count_roots_in(lo, hi), 1, "{c:?}");
+                let s = |x: &RBig| sign_zsqrt(&a, &b, &delta, x);
+                assert_eq!(s(lo) * s(hi), Sign::Negative, "{c:?}");
+                assert!(c.radius.is_finite(), "{c:?}");
+                let (m, r) = (
+                    RBig::try_from(c.center).unwrap(),
+                    RBig::try_from(c.radius).unwrap(),
+                );
+                assert_ne!(s(&(&m - &r)) * s(&(&m + &r)), Sign::Positive, "{c:?}");
+                assert!(
+                    c.radius <= 1e-12 * c.center.abs(),
+                    "a loose enclosure {c:?}"
+                );
+            }
+            for w in cert.windows(2) {
+                assert!(w[0].interval.hi() <= w[1].interval.lo(), "{w:?}");
+            }
+        }
+        // generic inputs are answered, crafted multiple or shared roots never
+        assert!(
+            answered[0] >= 90 && answered[1] >= 90 && answered[2] >= 90,
+            "{answered:?}"
+        );
+        assert_eq!(answered[3], 0, "{answered:?}");
+        assert!(answered[5] >= 50, "{answered:?}");
+        assert_eq!(answered[4], 0, "{answered:?}");
     }
 }

@@ -1329,7 +1329,11 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
     // a square-free s changes sign at each of its real roots, and has the sign of its
     // leading coefficient beyond the last: no evaluation
     let lead = match (squarefree, &integral, s.coeffs().last()) {
-        (true, Some(z), _) => z.iter().rev().find(|c| !c.is_zero()).map(|c| zq_sign(c, &delta)),
+        (true, Some(z), _) => z
+            .iter()
+            .rev()
+            .find(|c| !c.is_zero())
+            .map(|c| zq_sign(c, &delta)),
         (true, None, Some(c)) => Some(sign(c)),
         _ => None,
     };
@@ -1461,6 +1465,7 @@ mod tests {
         let mut rng = qsic_algebra::testing::SplitMix(77);
         let mut checked = [0usize; 5];
         let mut routes = [0usize; 2];
+        let mut fast = [0usize; 2];
         for i in 0..400u64 {
             let s = random_s(&mut rng, i);
             if s.degree().unwrap_or(0) == 0 {
@@ -1500,6 +1505,15 @@ mod tests {
                 false => norm_of(&s1),
             };
             routes[usize::from(AlgebraicReal::certified_real_roots_of(&p).is_some())] += 1;
+            // and the certificate on s and s̄ apart (over ℤ[√δ], not over ℚ)
+            let delta = s1
+                .coeffs()
+                .iter()
+                .find(|c| c.as_rational().is_none())
+                .map(|c| c.radicand().clone());
+            if let Some(z) = delta.as_ref().and_then(|d| zsqrt::zpoly(&s1, d)) {
+                fast[usize::from(machine_roots(&z, delta.as_ref().unwrap()).is_some())] += 1;
+            }
             let d = discriminant_roots(&s);
             assert_eq!(d.roots, roots, "roots of {s}");
             assert_eq!(d.squarefree, squarefree, "square-free {s}");
@@ -1523,6 +1537,7 @@ mod tests {
         assert!(checked.iter().all(|&c| c > 50), "{checked:?}");
         // both routes: the certificate and its failure (double roots, huge ranges)
         assert!(routes[0] > 20 && routes[1] > 100, "{routes:?}");
+        assert!(fast[0] > 20 && fast[1] > 100, "{fast:?}");
     }
 
     /// The pairs of cases 1–4: random ones (entries up to `bound`) and the corpus lines.
