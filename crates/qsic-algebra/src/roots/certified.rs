@@ -611,17 +611,30 @@ fn ferrari(c: &[f64]) -> Option<Vec<Complex>> {
     let p = cc - 0.375 * b2;
     let q = d - 0.5 * b * cc + 0.125 * b2 * b;
     let r = e - 0.25 * b * d + b2 * cc / 16.0 - 3.0 * b2 * b2 / 256.0;
-    // the largest root of the resolvent, by Newton's method from a Cauchy bound above it
+    // a positive root of the resolvent (negative at 0, positive at the Cauchy bound): Newton's
+    // method kept inside a shrinking bracket, bisecting when a step leaves it
     let (k2, k1, k0) = (p, (2.0 * p * p - 8.0 * r) / 8.0, -q * q / 8.0);
-    let mut m = 1.0 + k2.abs().max(k1.abs()).max(k0.abs());
-    for _ in 0..200 {
+    let (mut lo, mut hi) = (0.0, 1.0 + k2.abs().max(k1.abs()).max(k0.abs()));
+    let mut m = hi;
+    for _ in 0..100 {
         let f = ((m + k2) * m + k1) * m + k0;
+        if f > 0.0 {
+            hi = m;
+        } else {
+            lo = m;
+        }
         let df = (3.0 * m + 2.0 * k2) * m + k1;
-        let next = m - f / df;
-        if !(next < m) || !next.is_finite() {
+        let newton = m - f / df;
+        let next = if newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+        let step = (next - m).abs();
+        m = next;
+        if step <= 1e-15 * m || !(hi > lo) {
             break;
         }
-        m = next;
     }
     let mut z = Vec::with_capacity(4);
     let shift = -0.25 * b;
@@ -671,17 +684,24 @@ fn ferrari(c: &[f64]) -> Option<Vec<Complex>> {
 /// at the rounding level; `false` if some approximation has not got there (then Aberth's
 /// iteration takes over).
 fn polish(c: &[f64], z: &mut [Complex]) -> bool {
-    const STEPS: usize = 3;
+    const STEPS: usize = 4;
+    let n = (c.len() - 1) as f64;
     let mut i = 0;
     while i < z.len() {
         if z[i].im == 0.0 {
             let mut x = z[i].re;
             let mut converged = false;
             for _ in 0..STEPS {
-                let (mut v, mut dv) = (0.0, 0.0);
+                let (mut v, mut dv, mut mag) = (0.0f64, 0.0f64, 0.0f64);
                 for &ck in c.iter().rev() {
                     dv = dv * x + v;
                     v = v * x + ck;
+                    mag = mag * x.abs() + ck.abs();
+                }
+                // at the rounding level of the value: x is as good as floats get
+                if v.abs() <= 4.0 * n * U * mag {
+                    converged = true;
+                    break;
                 }
                 let corr = v / dv;
                 if !corr.is_finite() {
@@ -703,7 +723,12 @@ fn polish(c: &[f64], z: &mut [Complex]) -> bool {
         let mut w = z[i];
         let mut converged = false;
         for _ in 0..STEPS {
-            let (v, dv, _) = eval_with_derivative(c, w);
+            let (v, dv, mag) = eval_with_derivative(c, w);
+            let tol = 4.0 * n * U * mag;
+            if v.norm_sqr() <= tol * tol {
+                converged = true;
+                break;
+            }
             let corr = v.div(dv);
             if !corr.is_finite() {
                 break;
