@@ -632,7 +632,7 @@ fn ferrari(c: &[f64]) -> Option<Vec<Complex>> {
         };
         let step = (next - m).abs();
         m = next;
-        if step <= 1e-15 * m || !(hi > lo) {
+        if step <= 1e-15 * m || hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
             break;
         }
     }
