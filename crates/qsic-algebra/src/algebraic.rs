@@ -205,6 +205,52 @@ impl AlgebraicReal {
         )
     }
 
+    /// The real roots of `s = A + B√δ` (`A = Σaᵢxⁱ`, `B = Σbᵢxⁱ`, `δ > 0` not a square,
+    /// degree 1 to 4, `s(0) ≠ 0`), each defined by the primitive norm `A² − δB²`, isolated in
+    /// floats with a proof ([`certified_real_roots_zsqrt`](crate::roots::certified_real_roots_zsqrt));
+    /// `None` if the certificate fails or the norm overflows `i128` (the caller then
+    /// isolates exactly). `Some` proves the norm square-free.
+    ///
+    /// ```
+    /// # use qsic_algebra::{AlgebraicReal, IBig};
+    /// // s = x² − 3 + √2·x: the roots (−√2 ± √14)/2
+    /// let ([a0, a2], [zero, one]) = ([IBig::from(-3), IBig::ONE], [IBig::ZERO, IBig::ONE]);
+    /// let (a, b) = ([&a0, &zero, &a2], [&zero, &one, &zero]);
+    /// let r = AlgebraicReal::certified_real_roots_zsqrt(&a, &b, &IBig::from(2)).unwrap();
+    /// assert_eq!(r.len(), 2);
+    /// let want = (14f64.sqrt() - 2f64.sqrt()) / 2.0;
+    /// assert!((r[1].to_f64() - want).abs() < 1e-12);
+    /// ```
+    pub fn certified_real_roots_zsqrt(
+        a: &[&IBig],
+        b: &[&IBig],
+        delta: &IBig,
+    ) -> Option<Vec<AlgebraicReal>> {
+        let roots = crate::roots::certified_real_roots_zsqrt(a, b, delta)?;
+        if roots.is_empty() {
+            return Some(Vec::new());
+        }
+        let mut poly = Some(norm_zsqrt(a, b, delta));
+        let m = roots.len();
+        Some(
+            roots
+                .into_iter()
+                .enumerate()
+                .map(|(i, r)| AlgebraicReal {
+                    // the last root takes the norm, the others a copy
+                    poly: if i + 1 == m {
+                        poly.take().unwrap_or_default()
+                    } else {
+                        poly.clone().unwrap_or_default()
+                    },
+                    refined: Arc::new(Mutex::new(Refinement::new(r.narrow))),
+                    interval: r.interval,
+                    enclosure: Some((r.center, r.radius)),
+                })
+                .collect(),
+        )
+    }
+
     /// The root of the square-free `poly` in `interval`, if the interval isolates one: an
     /// exact rational that is a root, or an open interval at whose ends `poly` has opposite
     /// nonzero signs (so exactly one root when `interval` comes from isolating a multiple
@@ -714,6 +760,262 @@ impl fmt::Display for AlgebraicReal {
     }
 }
 
+/// The primitive norm `A² − δB²` of positive leading coefficient (not zero: `δ` is not a
+/// square), in machine integers when they suffice.
+fn norm_zsqrt(a: &[&IBig], b: &[&IBig], delta: &IBig) -> Poly {
+    let small = |v: &[&IBig]| -> Option<[i64; 5]> {
+        let mut out = [0i64; 5];
+        for (o, x) in out.iter_mut().zip(v) {
+            *o = i64::try_from(*x).ok()?;
+        }
+        Some(out)
+    };
+    let n = a.len();
+    if let (Some(a), Some(b), Ok(d)) = (small(a), small(b), i64::try_from(delta)) {
+        if let Some(c) = norm_i128(&a[..n], &b[..n], d) {
+            return primitive_i128(&c[..2 * n - 1]);
+        }
+    }
+    if let Some(p) = norm_wide(a, b, delta) {
+        return p;
+    }
+    let mut c = vec![IBig::ZERO; 2 * n - 1];
+    for i in 0..n {
+        let (sa, sb) = (a[i] * a[i], b[i] * b[i]);
+        c[2 * i] += sa - sb * delta;
+        for j in i + 1..n {
+            let t = a[i] * a[j] - b[i] * b[j] * delta;
+            c[i + j] += t << 1;
+        }
+    }
+    let p = Poly::new(c);
+    // the content taken from the leading coefficient down, usually 1 after two steps
+    let g = p.content();
+    match (g.is_one(), p.leading() > IBig::ZERO) {
+        (true, true) => p,
+        (true, false) => -&p,
+        _ => p.primitive_part(),
+    }
+}
+
+/// A signed 256-bit integer in two's complement, little-endian words (wrapping arithmetic:
+/// the callers bound the values).
+type Wide = [u64; 4];
+
+/// `x + y` modulo `2²⁵⁶`.
+fn wide_add(x: Wide, y: Wide) -> Wide {
+    let mut out = [0u64; 4];
+    let mut carry = false;
+    for i in 0..4 {
+        let (s1, c1) = x[i].overflowing_add(y[i]);
+        let (s2, c2) = s1.overflowing_add(u64::from(carry));
+        out[i] = s2;
+        carry = c1 || c2;
+    }
+    out
+}
+
+/// `−x` modulo `2²⁵⁶`.
+fn wide_neg(x: Wide) -> Wide {
+    wide_add([!x[0], !x[1], !x[2], !x[3]], [1, 0, 0, 0])
+}
+
+/// `x·y` for `x, y < 2¹²⁸` (exact, below `2²⁵⁶`).
+fn wide_mul(x: u128, y: u128) -> Wide {
+    let (x0, x1) = (x as u64 as u128, x >> 64);
+    let (y0, y1) = (y as u64 as u128, y >> 64);
+    let lo = x0 * y0;
+    let (m1, m2) = (x0 * y1, x1 * y0);
+    let hi = x1 * y1;
+    let mut out = [lo as u64, (lo >> 64) as u64, hi as u64, (hi >> 64) as u64];
+    for m in [m1, m2] {
+        out = wide_add(out, [0, m as u64, (m >> 64) as u64, 0]);
+    }
+    out
+}
+
+/// `x·d` for `x·d < 2²⁵⁶` (the caller's bound).
+fn wide_mul_small(x: Wide, d: u64) -> Wide {
+    let mut out = [0u64; 4];
+    let mut carry = 0u128;
+    for i in 0..4 {
+        let t = u128::from(x[i]) * u128::from(d) + carry;
+        out[i] = t as u64;
+        carry = t >> 64;
+    }
+    out
+}
+
+/// The integer `x` as an [`IBig`].
+fn wide_to_ibig(x: Wide) -> IBig {
+    let negative = x[3] >> 63 == 1;
+    let m = if negative { wide_neg(x) } else { x };
+    let mut bytes = [0u8; 32];
+    for (i, w) in m.iter().enumerate() {
+        bytes[8 * i..8 * i + 8].copy_from_slice(&w.to_le_bytes());
+    }
+    let v = IBig::from(dashu_int::UBig::from_le_bytes(&bytes));
+    if negative {
+        -v
+    } else {
+        v
+    }
+}
+
+/// The primitive norm of [`norm_zsqrt`] in 256-bit integers: `s` divided by the gcd of its
+/// coefficients (in `u128`) first, then `Σ (aᵢaⱼ − δ·bᵢbⱼ)` when `|aᵢ| < 2ᵅ`, `|bᵢ| < 2ᵝ`
+/// and `δ < 2^d ≤ 2⁶²` with `2α + 5 ≤ 255` and `2β + d + 5 ≤ 255`: each sum has at most 5
+/// products of each kind, so every partial sum stays below `2²⁵⁴`. `None`
+/// outside that range.
+fn norm_wide(a: &[&IBig], b: &[&IBig], delta: &IBig) -> Option<Poly> {
+    let n = a.len();
+    let d = u64::try_from(delta).ok().filter(|&d| d < 1 << 62)?;
+    let mut sa = [(false, 0u128); 5];
+    let mut sb = [(false, 0u128); 5];
+    let mut g = 0u128;
+    for i in 0..n {
+        let x = i128::try_from(a[i]).ok()?;
+        let y = i128::try_from(b[i]).ok()?;
+        sa[i] = (x < 0, x.unsigned_abs());
+        sb[i] = (y < 0, y.unsigned_abs());
+        g = gcd_u128(gcd_u128(g, sa[i].1), sb[i].1);
+    }
+    if g == 0 {
+        return None;
+    }
+    let bits = |v: &[(bool, u128)]| v.iter().map(|x| 128 - (x.1 / g).leading_zeros()).max();
+    let (ba, bb) = (bits(&sa[..n])?, bits(&sb[..n])?);
+    if 2 * ba + 5 > 255 || 2 * bb + (64 - d.leading_zeros()) + 5 > 255 {
+        return None;
+    }
+    let mut c = [[0u64; 4]; 9];
+    for i in 0..n {
+        for j in i..n {
+            let twice = if i == j { 1 } else { 2 };
+            let pa = wide_mul_small(wide_mul(sa[i].1 / g, sa[j].1 / g), twice);
+            let pb = wide_mul_small(wide_mul(sb[i].1 / g, sb[j].1 / g), twice * d);
+            let pa = if sa[i].0 != sa[j].0 { wide_neg(pa) } else { pa };
+            let pb = if sb[i].0 == sb[j].0 { wide_neg(pb) } else { pb };
+            c[i + j] = wide_add(wide_add(c[i + j], pa), pb);
+        }
+    }
+    Some(primitive_wide(&c[..2 * n - 1]))
+}
+
+/// `x mod m` for a non-negative `x` and `m > 0`.
+fn wide_rem(x: Wide, m: u64) -> u64 {
+    let mut r = 0u128;
+    for &w in x.iter().rev() {
+        r = ((r << 64) | u128::from(w)) % u128::from(m);
+    }
+    r as u64
+}
+
+/// `x / m` for a non-negative `x` that `m > 0` divides.
+fn wide_div(x: Wide, m: u64) -> Wide {
+    let mut out = [0u64; 4];
+    let mut r = 0u128;
+    for i in (0..4).rev() {
+        let t = (r << 64) | u128::from(x[i]);
+        out[i] = (t / u128::from(m)) as u64;
+        r = t % u128::from(m);
+    }
+    out
+}
+
+/// The primitive integer polynomial of positive leading coefficient proportional to `c`
+/// (not zero, `|cᵢ| < 2²⁵⁵`): the content is the gcd of the outer coefficients (in big
+/// integers) and then, when it fits a `u64`, of the residues of the others (in words).
+fn primitive_wide(c: &[Wide]) -> Poly {
+    let len = c.iter().rposition(|v| *v != [0; 4]).map_or(0, |i| i + 1);
+    let c = &c[..len];
+    let negative = |w: &Wide| w[3] >> 63 == 1;
+    let abs = |w: Wide| if negative(&w) { wide_neg(w) } else { w };
+    let first = c.iter().position(|v| *v != [0; 4]).unwrap_or(0);
+    let g = crate::int_gcd(&wide_to_ibig(c[len - 1]), &wide_to_ibig(c[first]));
+    let Ok(mut g) = u64::try_from(&g) else {
+        return Poly::new(c.iter().map(|&w| wide_to_ibig(w)).collect()).primitive_part();
+    };
+    for &w in c {
+        if g == 1 {
+            break;
+        }
+        g = gcd_u128(u128::from(g), u128::from(wide_rem(abs(w), g))) as u64;
+    }
+    let flip = negative(&c[len - 1]);
+    Poly::new(
+        c.iter()
+            .map(|&w| {
+                let q = wide_div(abs(w), g);
+                let q = if negative(&w) != flip { wide_neg(q) } else { q };
+                wide_to_ibig(q)
+            })
+            .collect(),
+    )
+}
+
+/// The coefficients `Σ_{i+j=k} (aᵢaⱼ − δ·bᵢbⱼ)` of `A² − δB²` in checked `i128`.
+fn norm_i128(a: &[i64], b: &[i64], delta: i64) -> Option<[i128; 9]> {
+    let n = a.len();
+    let mut out = [0i128; 9];
+    for i in 0..n {
+        for j in 0..n {
+            // products of two i64 fit an i128; the sums are checked
+            let aa = i128::from(a[i]) * i128::from(a[j]);
+            let bb = i128::from(b[i]) * i128::from(b[j]);
+            let t = aa.checked_sub(bb.checked_mul(i128::from(delta))?)?;
+            out[i + j] = out[i + j].checked_add(t)?;
+        }
+    }
+    // keep every |cᵢ| below 2¹²⁷ (so that the content fits an i128)
+    (!out.contains(&i128::MIN)).then_some(out)
+}
+
+/// The primitive integer polynomial of positive leading coefficient proportional to `c`
+/// (not zero), the content by a binary gcd in machine integers.
+fn primitive_i128(c: &[i128]) -> Poly {
+    let len = c.iter().rposition(|v| *v != 0).map_or(0, |i| i + 1);
+    let c = &c[..len];
+    let mut g = 0u128;
+    for v in c.iter().rev() {
+        g = gcd_u128(g, v.unsigned_abs());
+        if g == 1 {
+            break;
+        }
+    }
+    let g = if c[len - 1] < 0 {
+        -(g as i128)
+    } else {
+        g as i128
+    };
+    // |g| ≤ |c_n| < 2¹²⁷ fits; the quotients are exact
+    Poly::new(c.iter().map(|v| IBig::from(v / g)).collect())
+}
+
+/// `gcd(a, b)`: one Euclidean step (the larger modulo the smaller, which is often much
+/// smaller here), then Stein's binary algorithm.
+fn gcd_u128(a: u128, b: u128) -> u128 {
+    if a == 0 || b == 0 {
+        return a | b;
+    }
+    let (a, b) = if a < b { (a, b % a) } else { (a % b, b) };
+    if a == 0 || b == 0 {
+        return a | b;
+    }
+    let shift = (a | b).trailing_zeros();
+    let (mut a, mut b) = (a >> a.trailing_zeros(), b);
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
 
@@ -969,5 +1271,83 @@ mod tests {
                 assert_eq!(r.cmp(o), i.cmp(&j));
             }
         }
+    }
+
+    /// The norms in machine words (`i128`, 256-bit) against big integers, for coefficients of
+    /// 3 to 126 bits and `δ` up to 2⁶¹ (the ranges where each applies and beyond), and the
+    /// roots of `s = A + B√δ` as valid numbers of that norm, equal to the exact ones.
+    #[test]
+    fn zsqrt_norms_and_roots_agree_with_big_integers() {
+        let mut rng = crate::testing::SplitMix(808);
+        let (mut roots_seen, mut wide_seen) = (0, 0);
+        for t in 0..300 {
+            let bits = [3, 30, 62, 90, 126][t % 5];
+            let rand = |rng: &mut crate::testing::SplitMix, bits: usize| {
+                let mut v = IBig::ZERO;
+                for _ in 0..bits.div_ceil(32) {
+                    v = (v << 32) + IBig::from(rng.next_u64() >> 32);
+                }
+                let v = v >> (bits.div_ceil(32) * 32 - bits);
+                // a common factor now and then (the content of s)
+                let v = if t % 3 == 0 { v * IBig::from(12) } else { v };
+                if rng.int(0, 1) == 0 {
+                    -v
+                } else {
+                    v
+                }
+            };
+            let n = rng.int(1, 4) as usize;
+            let a: Vec<IBig> = (0..=n).map(|_| rand(&mut rng, bits)).collect();
+            let b: Vec<IBig> = (0..=n).map(|_| rand(&mut rng, bits)).collect();
+            let delta = IBig::from(rng.int(2, 1 << 40) * 2 + 1) << [0, 20][t % 2];
+            if (a[0].is_zero() && b[0].is_zero()) || (a[n].is_zero() && b[n].is_zero()) {
+                continue;
+            }
+            let (pa, pb) = (Poly::new(a.clone()), Poly::new(b.clone()));
+            let want =
+                (&(&pa * &pa) - &(&(&pb * &pb) * &Poly::constant(delta.clone()))).primitive_part();
+            let ra: Vec<&IBig> = a.iter().collect();
+            let rb: Vec<&IBig> = b.iter().collect();
+            assert_eq!(norm_zsqrt(&ra, &rb, &delta), want, "{pa} {pb} {delta}");
+            if let Some(w) = norm_wide(&ra, &rb, &delta) {
+                assert_eq!(w, want, "{pa} {pb} {delta}");
+                wide_seen += 1;
+            }
+            if let Some(roots) = AlgebraicReal::certified_real_roots_zsqrt(&ra, &rb, &delta) {
+                let exact: Vec<AlgebraicReal> = AlgebraicReal::real_roots_of(&want)
+                    .into_iter()
+                    .filter(|r| {
+                        let iv = r.interval();
+                        let s = |x: &RBig| {
+                            let (va, vb) = (pa.eval_rational(x), pb.eval_rational(x));
+                            let t = &va * &va - &vb * &vb * RBig::from(delta.clone());
+                            // the sign of va + vb√δ
+                            match (Sign::of_rational(&va), Sign::of_rational(&vb)) {
+                                (sa, Sign::Zero) => sa,
+                                (Sign::Zero, sb) => sb,
+                                (sa, sb) if sa == sb => sa,
+                                (sa, sb) => {
+                                    if t > RBig::ZERO {
+                                        sa
+                                    } else {
+                                        sb
+                                    }
+                                }
+                            }
+                        };
+                        s(iv.lo()) != s(iv.hi())
+                    })
+                    .collect();
+                assert_eq!(roots, exact, "{pa} {pb} {delta}");
+                for r in &roots {
+                    assert!(r.is_valid() && r.poly() == &want, "{r:?}");
+                }
+                roots_seen += roots.len();
+            }
+        }
+        assert!(
+            roots_seen > 100 && wide_seen > 150,
+            "{roots_seen} {wide_seen}"
+        );
     }
 }

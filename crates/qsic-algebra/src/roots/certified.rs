@@ -242,8 +242,12 @@ fn eval_with_derivative(c: &[f64], z: Complex) -> (Complex, Complex, f64) {
 /// Aberth–Ehrlich sweeps (Gauss–Seidel: each update used at once) until every correction
 /// is at the rounding level; `None` on a value that is not finite.
 fn aberth(c: &[f64]) -> Option<Vec<Complex>> {
+    aberth_from(c, initial(c))
+}
+
+/// [`aberth`] from the approximations `z` (distinct, `deg c` of them).
+fn aberth_from(c: &[f64], mut z: Vec<Complex>) -> Option<Vec<Complex>> {
     let n = c.len() - 1;
-    let mut z = initial(c);
     let mut done = vec![false; n];
     for _ in 0..MAX_SWEEPS {
         let mut all = true;
@@ -339,7 +343,11 @@ fn distance_lo(a: Complex, b: Complex) -> f64 {
 /// The certified disks of the scaled polynomial: centres, radii, real centres exactly on
 /// the axis; `None` if the certificate fails.
 fn certified_disks(s: &Scaled) -> Option<(Vec<Complex>, Vec<f64>)> {
-    let mut z = aberth(&s.c)?;
+    certified_disks_from(s, aberth(&s.c)?)
+}
+
+/// [`certified_disks`] at the approximations `z`.
+fn certified_disks_from(s: &Scaled, mut z: Vec<Complex>) -> Option<(Vec<Complex>, Vec<f64>)> {
     if z.iter().any(|v| v.abs().is_nan() || v.abs() >= 1e150) {
         return None;
     }
@@ -568,6 +576,349 @@ pub fn certified_real_roots_enclosed(p: &Poly) -> Option<Vec<CertifiedRoot>> {
         out.push(enclosed(interval, narrow, c, ri, s.k));
     }
     out.sort_by(|a, b| a.interval.lo().cmp(b.interval.lo()));
+    Some(out)
+}
+
+/// The binary exponent `⌊log₂|x|⌋` of a normal float `x`.
+fn exponent(x: f64) -> i64 {
+    ((x.to_bits() >> 52) & 0x7ff) as i64 - 1023
+}
+
+/// The coefficients of `s` and of `s̄` for `s = A + B√δ`: the floats `aᵢ ± √δ·bᵢ` and a
+/// common bound of their errors (docs of [`certified_real_roots_zsqrt`]).
+fn conjugate_floats(a: &[&IBig], b: &[&IBig], delta: &IBig) -> ([f64; 5], [f64; 5], [f64; 5]) {
+    let r = delta.to_f64().value().sqrt();
+    let (mut c, mut cbar, mut err) = ([0.0; 5], [0.0; 5], [0.0; 5]);
+    for i in 0..a.len() {
+        let af = a[i].to_f64().value();
+        let p = r * b[i].to_f64().value();
+        c[i] = af + p;
+        cbar[i] = af - p;
+        err[i] =
+            (2.0 * af.abs() + 6.0 * p.abs() + c[i].abs().max(cbar[i].abs())) * U * (1.0 + SLACK);
+    }
+    (c, cbar, err)
+}
+
+/// Approximations of the roots of the quartic `c` (`c₄ ≠ 0`) by Ferrari's formulas in
+/// floats (the certificate does not rely on them); `None` on a value that is not finite.
+/// For `x = y − b/4` the monic quartic is `y⁴ + py² + qy + r`; with `m > 0` a root of the
+/// resolvent `8m³ + 8pm² + (2p² − 8r)m − q²` (negative at 0) and `w = √(2m)` it factors as
+/// `(y² − wy + p/2 + m + q/(2w))(y² + wy + p/2 + m − q/(2w))`.
+fn ferrari(c: &[f64]) -> Option<Vec<Complex>> {
+    let (b, cc, d, e) = (c[3] / c[4], c[2] / c[4], c[1] / c[4], c[0] / c[4]);
+    let b2 = b * b;
+    let p = cc - 0.375 * b2;
+    let q = d - 0.5 * b * cc + 0.125 * b2 * b;
+    let r = e - 0.25 * b * d + b2 * cc / 16.0 - 3.0 * b2 * b2 / 256.0;
+    // a positive root of the resolvent (negative at 0, positive at the Cauchy bound): Newton's
+    // method kept inside a shrinking bracket, bisecting when a step leaves it
+    let (k2, k1, k0) = (p, (2.0 * p * p - 8.0 * r) / 8.0, -q * q / 8.0);
+    let (mut lo, mut hi) = (0.0, 1.0 + k2.abs().max(k1.abs()).max(k0.abs()));
+    let mut m = hi;
+    for _ in 0..100 {
+        let f = ((m + k2) * m + k1) * m + k0;
+        if f > 0.0 {
+            hi = m;
+        } else {
+            lo = m;
+        }
+        let df = (3.0 * m + 2.0 * k2) * m + k1;
+        let newton = m - f / df;
+        let next = if newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+        let step = (next - m).abs();
+        m = next;
+        if step <= 1e-15 * m || hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
+            break;
+        }
+    }
+    let mut z = Vec::with_capacity(4);
+    let shift = -0.25 * b;
+    let mut quadratic = |lin: f64, con: f64| {
+        // y² + lin·y + con
+        let disc = 0.25 * lin * lin - con;
+        let h = -0.5 * lin + shift;
+        if disc >= 0.0 {
+            let t = disc.sqrt();
+            z.push(Complex { re: h + t, im: 0.0 });
+            z.push(Complex { re: h - t, im: 0.0 });
+        } else {
+            let t = (-disc).sqrt();
+            z.push(Complex { re: h, im: t });
+            z.push(Complex { re: h, im: -t });
+        }
+    };
+    if m > 0.0 && m.is_finite() {
+        let w = (2.0 * m).sqrt();
+        quadratic(-w, 0.5 * p + m + q / (2.0 * w));
+        quadratic(w, 0.5 * p + m - q / (2.0 * w));
+    } else {
+        // q = 0: a quadratic in y²
+        let disc = p * p - 4.0 * r;
+        if disc < 0.0 {
+            return None;
+        }
+        let t = disc.sqrt();
+        for y2 in [(-p + t) / 2.0, (-p - t) / 2.0] {
+            quadratic(0.0, -y2);
+        }
+    }
+    // distinct approximations (Aberth's corrections divide by their differences)
+    for i in 0..4 {
+        for j in 0..i {
+            if z[i] == z[j] {
+                let nudge = 1e-6 * (1.0 + z[i].abs());
+                z[i].im += nudge * (1 + i) as f64;
+            }
+        }
+    }
+    z.iter().all(|v| v.is_finite()).then_some(z)
+}
+
+/// A few Newton steps on each approximation of a root of `c` (real ones in real arithmetic,
+/// the second of a conjugate pair mirrored from the first), stopping when the correction is
+/// at the rounding level; `false` if some approximation has not got there (then Aberth's
+/// iteration takes over).
+fn polish(c: &[f64], z: &mut [Complex]) -> bool {
+    const STEPS: usize = 4;
+    let n = (c.len() - 1) as f64;
+    let mut i = 0;
+    while i < z.len() {
+        if z[i].im == 0.0 {
+            let mut x = z[i].re;
+            let mut converged = false;
+            for _ in 0..STEPS {
+                let (mut v, mut dv, mut mag) = (0.0f64, 0.0f64, 0.0f64);
+                for &ck in c.iter().rev() {
+                    dv = dv * x + v;
+                    v = v * x + ck;
+                    mag = mag * x.abs() + ck.abs();
+                }
+                // at the rounding level of the value: x is as good as floats get
+                if v.abs() <= 4.0 * n * U * mag {
+                    converged = true;
+                    break;
+                }
+                let corr = v / dv;
+                if !corr.is_finite() {
+                    break;
+                }
+                x -= corr;
+                if corr.abs() <= 4.0 * U * x.abs() {
+                    converged = true;
+                    break;
+                }
+            }
+            if !converged {
+                return false;
+            }
+            z[i].re = x;
+            i += 1;
+            continue;
+        }
+        let mut w = z[i];
+        let mut converged = false;
+        for _ in 0..STEPS {
+            let (v, dv, mag) = eval_with_derivative(c, w);
+            let tol = 4.0 * n * U * mag;
+            if v.norm_sqr() <= tol * tol {
+                converged = true;
+                break;
+            }
+            let corr = v.div(dv);
+            if !corr.is_finite() {
+                break;
+            }
+            w = w.sub(corr);
+            if corr.norm_sqr() <= 16.0 * U * U * w.norm_sqr() {
+                converged = true;
+                break;
+            }
+        }
+        if !converged {
+            return false;
+        }
+        let pair = i + 1 < z.len()
+            && z[i + 1]
+                == Complex {
+                    re: z[i].re,
+                    im: -z[i].im,
+                };
+        z[i] = w;
+        if pair {
+            z[i + 1] = Complex {
+                re: w.re,
+                im: -w.im,
+            };
+            i += 1;
+        }
+        i += 1;
+    }
+    true
+}
+
+/// Whether `d ≥ 0` is a perfect square (in floats when `d < 2⁵²`: then `√d` rounds to
+/// within `1/4` of an integer root).
+fn is_square(d: &IBig) -> bool {
+    match u64::try_from(d) {
+        Ok(v) if v < 1 << 52 => {
+            let r = (v as f64).sqrt().round() as u64;
+            r * r == v
+        }
+        _ => {
+            use dashu_int::ops::SquareRoot;
+            let r = d.unsigned_abs().sqrt();
+            IBig::from(&r * &r) == *d
+        }
+    }
+}
+
+/// `c·2^(k·i − t)` with `t` making the largest `|cᵢ|` just below 1, and the errors alike;
+/// `None` if a nonzero value would leave the normal range (far from any input here).
+fn scaled_floats(c: &[f64], err: &[f64], k: i64) -> Option<Scaled> {
+    let top = c
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| **v != 0.0)
+        .map(|(i, v)| exponent(*v) + k * i as i64)
+        .max()?
+        + 1;
+    let mut sc = Vec::with_capacity(c.len());
+    let mut se = Vec::with_capacity(c.len());
+    for (i, (&v, &e)) in c.iter().zip(err).enumerate() {
+        let x = k * i as i64 - top;
+        if !(-1000..=1000).contains(&x) {
+            return None;
+        }
+        let (v, e) = (v * pow2(x), e * pow2(x));
+        // exact unless subnormal: refuse those (an error bound must not round down)
+        if (v != 0.0 && v.abs() < pow2(-1000)) || (e != 0.0 && e < pow2(-1000)) {
+            return None;
+        }
+        sc.push(v);
+        se.push(e);
+    }
+    Some(Scaled { c: sc, err: se, k })
+}
+
+/// The real roots of `s = A + B√δ ∈ ℤ[√δ][x]` (`A = Σaᵢxⁱ`, `B = Σbᵢxⁱ`, `δ > 0` not a
+/// square, degree `n = 1…4`, `s(0) ≠ 0`) isolated among the real roots of the norm
+/// `N = s·s̄ = A² − δB²`, in floats with a proof; `None` if the certificate fails (`N` not
+/// square-free, roots too close for `f64`) or the input is outside the stated range.
+///
+/// # Certificate
+/// The coefficients `aᵢ ± √δ·bᵢ` of `s` and of `s̄` are rounded to floats: `aᵢ`, `bᵢ`, `δ`
+/// each with a relative error `u`, `√δ` then within `1.5u`, the product `p = fl(√δ·bᵢ)`
+/// within `3.5u|p|` of the exact one (to first order) and the sum within `u` of itself, so
+/// each coefficient lies within `(|aᵢ| + 4|p| + |cᵢ|)·u·(1 + 2⁻⁴⁰)` of its float. The disks of
+/// the module docs are then computed for `s` and for `s̄` (degree `n` each, from these
+/// coefficients with their errors): when the disks of each are pairwise disjoint, each holds
+/// exactly one root of its polynomial, and when moreover no disk of `s` meets one of `s̄`,
+/// the `2n` disks hold one root of `N` each, so `N` is square-free and a real disk of `s`
+/// holds a real root of `s` isolated from every other root of `N`. No root of `s` is
+/// rational: `s(ζ) = A(ζ) + B(ζ)√δ = 0` with `√δ ∉ ℚ` and `ζ ∈ ℚ` gives `A(ζ) = B(ζ) = 0`,
+/// a common root of `s` and `s̄`. So every interval is open.
+///
+/// The roots come sorted; the intervals meet the postconditions of
+/// [`isolate_real_roots`](super::isolate_real_roots) for the roots of `N`. Each
+/// [`CertifiedRoot::narrow`] is the isolating interval itself (its dyadic ends cost; the
+/// enclosure already gives the root to about 53 bits).
+///
+/// ```
+/// # use qsic_algebra::{IBig, RBig, roots::certified_real_roots_zsqrt};
+/// // s = x² − √2: the roots ±2^(1/4); s̄ = x² + √2 has none
+/// let (zero, one) = (IBig::ZERO, IBig::ONE);
+/// let (a, b) = ([&zero, &zero, &one], [&-&one, &zero, &zero]);
+/// let r = certified_real_roots_zsqrt(&a, &b, &IBig::from(2)).unwrap();
+/// assert_eq!(r.len(), 2);
+/// assert!((r[1].center - 2f64.powf(0.25)).abs() <= r[1].radius);
+/// assert!(r[0].interval.hi() < &RBig::ZERO && r[1].interval.lo() > &RBig::ZERO);
+/// ```
+pub fn certified_real_roots_zsqrt(
+    a: &[&IBig],
+    b: &[&IBig],
+    delta: &IBig,
+) -> Option<Vec<CertifiedRoot>> {
+    let n = a.len().checked_sub(1)?;
+    if !(1..=4).contains(&n) || b.len() != a.len() || delta <= &IBig::ONE {
+        return None;
+    }
+    if is_square(delta) {
+        return None;
+    }
+    let zero = |i: usize| a[i].is_zero() && b[i].is_zero();
+    if zero(0) || zero(n) {
+        return None;
+    }
+    let (c, cbar, err) = conjugate_floats(a, b, delta);
+    if [c[0], c[n], cbar[0], cbar[n]].contains(&0.0) {
+        return None;
+    }
+    // x = 2ᵏy with 2ᵏ the geometric mean of the sizes of the roots of N
+    let k = (exponent(c[0]) + exponent(cbar[0]) - exponent(c[n]) - exponent(cbar[n]))
+        .div_euclid(2 * n as i64);
+    let sp = scaled_floats(&c[..=n], &err[..=n], k)?;
+    let sq = scaled_floats(&cbar[..=n], &err[..=n], k)?;
+    // Ferrari's approximations polished by Newton's method, else (or if the certificate
+    // fails there) Aberth's iteration from the Newton polygon
+    let disks = |sc: &Scaled| {
+        let polished = match n {
+            4 => ferrari(&sc.c).and_then(|mut z| match polish(&sc.c, &mut z) {
+                true => Some(z),
+                false => aberth_from(&sc.c, z),
+            }),
+            _ => None,
+        };
+        polished
+            .and_then(|z| certified_disks_from(sc, z))
+            .or_else(|| certified_disks(sc))
+    };
+    let (zp, rp) = disks(&sp)?;
+    let (zq, rq) = disks(&sq)?;
+    for (zi, ri) in zp.iter().zip(&rp) {
+        for (zj, rj) in zq.iter().zip(&rq) {
+            if distance_lo(*zi, *zj) <= (ri + rj) * (1.0 + SLACK) {
+                return None;
+            }
+        }
+    }
+    // the real disks of s with their gaps to every other disk and to 0, by centre
+    let mut real = [(0.0f64, 0.0f64, 0.0f64); 4];
+    let mut m = 0;
+    for i in 0..n {
+        if zp[i].im != 0.0 {
+            continue;
+        }
+        let others = zp
+            .iter()
+            .zip(&rp)
+            .enumerate()
+            .filter(|&(j, _)| j != i)
+            .map(|(_, d)| d)
+            .chain(zq.iter().zip(&rq));
+        let gap = others
+            .map(|(zj, rj)| (distance_lo(zp[i], *zj) - rj) * (1.0 - SLACK))
+            .fold(f64::INFINITY, f64::min)
+            .min(zp[i].re.abs());
+        real[m] = (zp[i].re, rp[i], gap);
+        m += 1;
+    }
+    // disjoint intervals around the centres: their order is that of the centres
+    real[..m].sort_by(|x, y| x.0.total_cmp(&y.0));
+    let mut out = Vec::with_capacity(m);
+    for &(c, ri, gap) in &real[..m] {
+        let open = |wide| {
+            let (lo, hi, e) = interval_in_units(c, ri, gap, wide)?;
+            Some(RootInterval::Open(dyadic(lo, e + k), dyadic(hi, e + k)))
+        };
+        let interval = open(true)?;
+        let narrow = interval.clone();
+        out.push(enclosed(interval, narrow, c, ri, k));
+    }
     Some(out)
 }
 
@@ -877,5 +1228,159 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The exact sign of `A(x) + √δ·B(x)` at a rational `x` (`δ` not a square).
+    fn sign_zsqrt(a: &Poly, b: &Poly, delta: &IBig, x: &RBig) -> Sign {
+        let eval = |p: &Poly| {
+            p.coeffs()
+                .iter()
+                .rev()
+                .fold(RBig::ZERO, |acc, c| acc * x + RBig::from(c.clone()))
+        };
+        let (va, vb) = (eval(a), eval(b));
+        let (sa, sb) = (Sign::of_rational(&va), Sign::of_rational(&vb));
+        if sb == Sign::Zero || sa == sb || sa == Sign::Zero {
+            return if sb == Sign::Zero { sa } else { sb };
+        }
+        if &va * &va > &vb * &vb * RBig::from(delta.clone()) {
+            sa
+        } else {
+            sb
+        }
+    }
+
+    /// A random `s = A + B√δ` of degree 4: random coefficients of a few, 60 or 110 bits,
+    /// or crafted hard ones — a rational root (a root of `s̄` too), a factor `(x − r)²`
+    /// over ℤ[√δ], two roots `2⁻⁴⁰` apart, coefficients of very different sizes.
+    fn random_s(rng: &mut SplitMix, family: u64) -> (Poly, Poly, IBig) {
+        let squares = [4, 9, 16, 25, 49];
+        let delta = loop {
+            let d = rng.int(2, 5000);
+            if !squares.contains(&d) && ((d as f64).sqrt() as i64).pow(2) != d {
+                break IBig::from(d);
+            }
+        };
+        let lin = |c: i64, l: i64| Poly::from_i64s(&[c, l]);
+        let (a, b) = match family % 6 {
+            0..=2 => {
+                let bits = [6, 60, 110][(family % 6) as usize];
+                let a = Poly::new((0..5).map(|_| big(rng, bits)).collect());
+                let b = Poly::new((0..5).map(|_| big(rng, bits)).collect());
+                (a, b)
+            }
+            3 => {
+                // (x − r)·(A₁ + B₁√δ): r is a root of s and of s̄
+                let r = rng.int(-20, 20);
+                let a1 = Poly::new((0..4).map(|_| big(rng, 20)).collect());
+                let b1 = Poly::new((0..4).map(|_| big(rng, 20)).collect());
+                (&lin(-r, 1) * &a1, &lin(-r, 1) * &b1)
+            }
+            4 => {
+                // (x − r)²·(c + √δ·(x² − e)) or two roots 2⁻⁴⁰ apart times the same
+                let m = rng.int(1, 1 << 30);
+                let (p, q) = if rng.int(0, 1) == 0 {
+                    (lin(-m, 1 << 20), lin(-m, 1 << 20))
+                } else {
+                    (
+                        lin(-m, 1 << 20),
+                        Poly::new(vec![
+                            IBig::from(-m) * IBig::from(1 << 20) - 1,
+                            IBig::ONE << 40,
+                        ]),
+                    )
+                };
+                let pq = &p * &q;
+                let c = big(rng, 8);
+                let e = IBig::from(rng.int(1, 100));
+                (
+                    &pq * &Poly::new(vec![c, IBig::ZERO, IBig::ZERO]),
+                    &pq * &Poly::new(vec![-e, IBig::ZERO, IBig::ONE]),
+                )
+            }
+            _ => {
+                // huge and tiny coefficients together
+                let a = Poly::new((0..5).map(|i| big(rng, [3, 120, 5, 90, 2][i])).collect());
+                let b = Poly::new((0..5).map(|i| big(rng, [100, 4, 70, 3, 126][i])).collect());
+                (a, b)
+            }
+        };
+        (a, b, delta)
+    }
+
+    /// The fast isolation of the real roots of `s = A + B√δ` against the exact one (Descartes
+    /// on the square-free part of the norm `A² − δB²`, the roots of `s` picked by exact signs):
+    /// the same roots, each interval isolating its root among the roots of the norm, the float
+    /// enclosure holding it; and the certificate fails where it must (a root shared with `s̄`,
+    /// a multiple root).
+    #[test]
+    fn zsqrt_roots_agree_with_the_exact_isolation() {
+        let mut rng = SplitMix(4242);
+        let mut answered = [0usize; 6];
+        for t in 0..600u64 {
+            let family = t % 6;
+            let (a, b, delta) = random_s(&mut rng, family);
+            let norm = &(&a * &a) - &(&(&b * &b) * &Poly::constant(delta.clone()));
+            let n = a.degree().max(b.degree()).unwrap();
+            let (ca, cb): (Vec<IBig>, Vec<IBig>) =
+                (0..=n).map(|i| (a.coeff(i), b.coeff(i))).unzip();
+            let ra: Vec<&IBig> = ca.iter().collect();
+            let rb: Vec<&IBig> = cb.iter().collect();
+            let Some(cert) = certified_real_roots_zsqrt(&ra, &rb, &delta) else {
+                continue;
+            };
+            answered[family as usize] += 1;
+            // Some proves the norm square-free (so s too, with no root shared with s̄)
+            assert_eq!(
+                norm.squarefree_part().degree(),
+                norm.degree(),
+                "{a} {b} {delta}"
+            );
+            let exact: Vec<RootInterval> = isolate_squarefree_real_roots_descartes(&norm)
+                .into_iter()
+                .filter(|iv| match iv {
+                    RootInterval::Exact(v) => sign_zsqrt(&a, &b, &delta, v) == Sign::Zero,
+                    RootInterval::Open(lo, hi) => {
+                        sign_zsqrt(&a, &b, &delta, lo) != sign_zsqrt(&a, &b, &delta, hi)
+                    }
+                })
+                .collect();
+            assert_eq!(
+                cert.len(),
+                exact.len(),
+                "{a} {b} {delta}: {cert:?} vs {exact:?}"
+            );
+            let sturm = SturmSequence::new(&norm);
+            for c in &cert {
+                let RootInterval::Open(lo, hi) = &c.interval else {
+                    panic!("a rational root of {a} + {b}√{delta}: {c:?}");
+                };
+                assert!(lo < hi && (lo >= &RBig::ZERO || hi <= &RBig::ZERO), "{c:?}");
+                assert_eq!(sturm.count_roots_in(lo, hi), 1, "{c:?}");
+                let s = |x: &RBig| sign_zsqrt(&a, &b, &delta, x);
+                assert_eq!(s(lo) * s(hi), Sign::Negative, "{c:?}");
+                assert!(c.radius.is_finite(), "{c:?}");
+                let (m, r) = (
+                    RBig::try_from(c.center).unwrap(),
+                    RBig::try_from(c.radius).unwrap(),
+                );
+                assert_ne!(s(&(&m - &r)) * s(&(&m + &r)), Sign::Positive, "{c:?}");
+                assert!(
+                    c.radius <= 1e-12 * c.center.abs(),
+                    "a loose enclosure {c:?}"
+                );
+            }
+            for w in cert.windows(2) {
+                assert!(w[0].interval.hi() <= w[1].interval.lo(), "{w:?}");
+            }
+        }
+        // generic inputs are answered, crafted multiple or shared roots never
+        assert!(
+            answered[0] >= 90 && answered[1] >= 90 && answered[2] >= 90,
+            "{answered:?}"
+        );
+        assert_eq!(answered[3], 0, "{answered:?}");
+        assert!(answered[5] >= 50, "{answered:?}");
+        assert_eq!(answered[4], 0, "{answered:?}");
     }
 }

@@ -1316,8 +1316,14 @@ fn sample_between(a: &RootInterval, b: &RootInterval) -> RBig {
 /// times a power of `u`) changes.
 fn nonzero_roots(
     s: &Poly<Quadratic>,
+    integral: Option<(&[zsqrt::Zq], &IBig)>,
     sign_at: &dyn Fn(&RBig) -> Sign,
 ) -> (Vec<AlgebraicReal>, bool) {
+    // s over ℤ[√δ] in machine integers: the certificate on s and s̄ apart (degree 4 each,
+    // no root finding on the norm, and the roots of s known without signs)
+    if let Some(roots) = integral.and_then(|(z, delta)| machine_roots(z, delta)) {
+        return (roots, true);
+    }
     let norm = norm_of(s);
     // the certified float isolation proves the norm square-free when it answers
     // (then each root of s·s̄ is a simple root of exactly one of s, s̄)
@@ -1329,6 +1335,20 @@ fn nonzero_roots(
         return (roots, true);
     }
     exact_roots_by_norm(s, &norm, sign_at)
+}
+
+/// The real roots of `s = A + B√δ` (integral, `s(0) ≠ 0`, degree at most 4) by
+/// [`AlgebraicReal::certified_real_roots_zsqrt`]; `None` if the certificate fails. `Some` proves the norm, hence
+/// `s`, square-free.
+fn machine_roots(z: &[zsqrt::Zq], delta: &IBig) -> Option<Vec<AlgebraicReal>> {
+    let len = z.iter().rposition(|c| !c.is_zero())? + 1;
+    if len > 5 {
+        return None;
+    }
+    let zero = IBig::ZERO;
+    let a: [&IBig; 5] = std::array::from_fn(|i| z.get(i).map_or(&zero, |c| &c.a));
+    let b: [&IBig; 5] = std::array::from_fn(|i| z.get(i).map_or(&zero, |c| &c.b));
+    AlgebraicReal::certified_real_roots_zsqrt(&a[..len], &b[..len], delta)
 }
 
 /// The real roots of `s` over ℚ(√δ) from the exact isolation of its norm `s·s̄` (any `s`
@@ -1360,6 +1380,31 @@ fn exact_roots_by_norm(
     (roots, squarefree)
 }
 
+/// The sign of `a + b√δ` (`δ > 0` not a square): from floats when the rounding cannot
+/// change it (`a`, `b`, `δ` rounded with a relative error `u`, `√δ` then within `1.5u`,
+/// the product within `u` more and the sum within `u`: below `2u|a| + 4.5u|b√δ|` to first
+/// order, and the bound taken is `4u|a| + 20u|b√δ|`), else by `a² − δb²` exactly.
+fn zq_sign(c: &zsqrt::Zq, delta: &IBig) -> Sign {
+    let (sa, sb) = (Sign::of(&c.a), Sign::of(&c.b));
+    if sb == Sign::Zero || sa == sb || sa == Sign::Zero {
+        return if sb == Sign::Zero { sa } else { sb };
+    }
+    let (a, p) = (
+        c.a.to_f64().value(),
+        delta.to_f64().value().sqrt() * c.b.to_f64().value(),
+    );
+    let bound = 2.0 * (a.abs() + 5.0 * p.abs()) * f64::EPSILON;
+    if let Some(sg) = qsic_algebra::filter::certified_sign(a + p, bound) {
+        return sg;
+    }
+    // opposite signs: |a| vs |b|√δ, never equal
+    if &c.a * &c.a > &c.b * &c.b * delta {
+        sa
+    } else {
+        sb
+    }
+}
+
 /// The real roots of `s` (see [`DiscriminantRoots`]).
 fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
     let rational: Option<Vec<RBig>> = s
@@ -1375,18 +1420,22 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
         .map(|c| c.radicand().clone())
         .unwrap_or(IBig::ZERO);
     let integral = zsqrt::zpoly(s, &delta);
-    // floats of the coefficients and of √δ for the certified float signs
-    let floats = integral.as_ref().map(|z| {
-        let f = |v: &IBig| v.to_f64().value();
-        let a: Vec<f64> = z.iter().map(|c| f(&c.a)).collect();
-        let b: Vec<f64> = z.iter().map(|c| f(&c.b)).collect();
-        (a, b, f(&delta).sqrt())
-    });
-    let sign_at = |x: &RBig| match (&integral, &floats) {
-        (Some(z), Some((a, b, r))) => exact_f64(x)
-            .and_then(|xf| certified_sign_zsqrt(a, b, *r, xf))
-            .unwrap_or_else(|| zsqrt::sign_at(z, x, &delta)),
-        _ => sign(&s.eval(&q(x))),
+    // floats of the coefficients and of √δ for the certified float signs (made when a
+    // sign is first asked for)
+    let floats = std::cell::OnceCell::new();
+    let sign_at = |x: &RBig| match &integral {
+        Some(z) => {
+            let (a, b, r) = floats.get_or_init(|| {
+                let f = |v: &IBig| v.to_f64().value();
+                let a: Vec<f64> = z.iter().map(|c| f(&c.a)).collect();
+                let b: Vec<f64> = z.iter().map(|c| f(&c.b)).collect();
+                (a, b, f(&delta).sqrt())
+            });
+            exact_f64(x)
+                .and_then(|xf| certified_sign_zsqrt(a, b, *r, xf))
+                .unwrap_or_else(|| zsqrt::sign_at(z, x, &delta))
+        }
+        None => sign(&s.eval(&q(x))),
     };
     let (roots, squarefree) = match rational {
         Some(c) => {
@@ -1408,10 +1457,11 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
                 .iter()
                 .take_while(|c| c.as_rational().is_some_and(|v| v.is_zero()))
                 .count();
+            let z = integral.as_deref().map(|z| (&z[k.min(z.len())..], &delta));
             let (mut roots, squarefree) = if k > 0 {
-                nonzero_roots(&s.shift_down(k), &sign_at)
+                nonzero_roots(&s.shift_down(k), z, &sign_at)
             } else {
-                nonzero_roots(s, &sign_at)
+                nonzero_roots(s, z, &sign_at)
             };
             if k > 0 {
                 let at = roots.partition_point(|r| r.interval().hi() <= &RBig::ZERO);
@@ -1432,10 +1482,28 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
         }
         _ => samples.push(RBig::ZERO),
     }
+    // a square-free s changes sign at each of its real roots, and has the sign of its
+    // leading coefficient beyond the last: no evaluation
+    let lead = match (squarefree, &integral, s.coeffs().last()) {
+        (true, Some(z), _) => z
+            .iter()
+            .rev()
+            .find(|c| !c.is_zero())
+            .map(|c| zq_sign(c, &delta)),
+        (true, None, Some(c)) => Some(sign(c)),
+        _ => None,
+    };
+    let count = samples.len();
     let arcs = samples
         .into_iter()
-        .map(|x| {
-            let sg = sign_at(&x);
+        .enumerate()
+        .map(|(i, x)| {
+            let sg = match lead {
+                // count − 1 − i roots lie beyond the i-th sample
+                Some(l) if (count - 1 - i) % 2 == 0 => l,
+                Some(l) => -l,
+                None => sign_at(&x),
+            };
             (x, sg)
         })
         .collect();
@@ -1553,6 +1621,7 @@ mod tests {
         let mut rng = qsic_algebra::testing::SplitMix(77);
         let mut checked = [0usize; 5];
         let mut routes = [0usize; 2];
+        let mut fast = [0usize; 2];
         for i in 0..400u64 {
             let s = random_s(&mut rng, i);
             if s.degree().unwrap_or(0) == 0 {
@@ -1592,6 +1661,15 @@ mod tests {
                 false => norm_of(&s1),
             };
             routes[usize::from(AlgebraicReal::certified_real_roots_of(&p).is_some())] += 1;
+            // and the certificate on s and s̄ apart (over ℤ[√δ], not over ℚ)
+            let delta = s1
+                .coeffs()
+                .iter()
+                .find(|c| c.as_rational().is_none())
+                .map(|c| c.radicand().clone());
+            if let Some(z) = delta.as_ref().and_then(|d| zsqrt::zpoly(&s1, d)) {
+                fast[usize::from(machine_roots(&z, delta.as_ref().unwrap()).is_some())] += 1;
+            }
             let d = discriminant_roots(&s);
             assert_eq!(d.roots, roots, "roots of {s}");
             assert_eq!(d.squarefree, squarefree, "square-free {s}");
@@ -1615,6 +1693,7 @@ mod tests {
         assert!(checked.iter().all(|&c| c > 50), "{checked:?}");
         // both routes: the certificate and its failure (double roots, huge ranges)
         assert!(routes[0] > 20 && routes[1] > 100, "{routes:?}");
+        assert!(fast[0] > 20 && fast[1] > 100, "{fast:?}");
     }
 
     /// The pairs of cases 1–4: random ones (entries up to `bound`) and the corpus lines.
