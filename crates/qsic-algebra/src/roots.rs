@@ -42,8 +42,8 @@ pub mod certified;
 mod simplest;
 
 pub use certified::{
-    certified_real_roots, certified_real_roots_enclosed, certified_real_roots_zsqrt, CertifiedRoot,
-    MAX_CERTIFIED_DEGREE,
+    certified_real_roots, certified_real_roots_enclosed, certified_real_roots_zsqrt,
+    quartic_roots_f64, CertifiedRoot, MAX_CERTIFIED_DEGREE,
 };
 pub use simplest::{between_roots, floor_of_root, simplest_rational_in, Bound};
 

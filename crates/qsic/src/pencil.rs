@@ -18,7 +18,9 @@
 use crate::quadric::Quadric;
 use qsic_algebra::matrix::{Inertia, MatrixPencil, SymMatrix4};
 use qsic_algebra::poly::binary::BinaryForm;
-use qsic_algebra::roots::{between_roots, floor_of_root, simplest_between, Bound, RootInterval};
+use qsic_algebra::roots::{
+    between_roots, floor_of_root, quartic_roots_f64, simplest_between, Bound, RootInterval,
+};
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Sign};
 use std::cmp::Ordering;
 
@@ -429,75 +431,16 @@ fn dyadic_between_f64(lo: f64, hi: f64) -> Option<(i128, u32)> {
     None
 }
 
-/// Float approximations of the real roots of the polynomial with coefficients `c` (from
-/// degree 0, `c[4] ≠ 0`), increasing: Aberth's iteration on the four complex roots, the ones
-/// with a negligible imaginary part kept. Not certified, and not meant to be: callers check
-/// what they build from it exactly.
+/// Float approximations of the real roots of the quartic with coefficients `c` (from degree
+/// 0, `c[4] ≠ 0`), increasing ([`quartic_roots_f64`], the ones with a negligible imaginary
+/// part). None for a root at 0 (`c[0] = 0`): the caller's samples then meet a root and it
+/// falls back to the pencil analysis, which sees the rational root (a cone). Not certified,
+/// and not meant to be: callers check what they build from it exactly.
 fn real_roots_f64(c: &[f64; 5]) -> Vec<f64> {
-    #[derive(Clone, Copy)]
-    struct Z(f64, f64);
-    let mul = |a: Z, b: Z| Z(a.0 * b.0 - a.1 * b.1, a.0 * b.1 + a.1 * b.0);
-    let div = |a: Z, b: Z| {
-        let n = b.0 * b.0 + b.1 * b.1;
-        Z((a.0 * b.0 + a.1 * b.1) / n, (a.1 * b.0 - a.0 * b.1) / n)
-    };
-    let m: [f64; 4] = std::array::from_fn(|i| c[i] / c[4]);
-    // the starting circle: the roots' geometric mean in size, `|c₀/c₄|^¼`, else (a root at
-    // 0) twice Fujiwara's bound on them
-    let radius = if m[0] != 0.0 {
-        m[0].abs().powf(0.25)
-    } else {
-        (1..4)
-            .map(|i| m[i].abs().powf(1.0 / (4 - i) as f64))
-            .fold(0.0f64, f64::max)
-            * 2.0
-    };
-    if !radius.is_finite() || radius == 0.0 {
-        return Vec::new();
-    }
-    // at angles 0.4 + kπ/2 (off the axes, where symmetric polynomials have roots)
-    let (c, s) = (
-        0.921_060_994_002_885_1 * radius,
-        0.389_418_342_308_650_5 * radius,
-    );
-    let mut z = [Z(c, s), Z(-s, c), Z(-c, -s), Z(s, -c)];
-    for _ in 0..80 {
-        let mut moved = 0.0f64;
-        for i in 0..4 {
-            let x = z[i];
-            // p and p′ by Horner (monic)
-            let (mut p, mut dp) = (Z(1.0, 0.0), Z(0.0, 0.0));
-            for &ci in m.iter().rev() {
-                dp = Z(mul(dp, x).0 + p.0, mul(dp, x).1 + p.1);
-                p = Z(mul(p, x).0 + ci, mul(p, x).1);
-            }
-            if p.0 == 0.0 && p.1 == 0.0 {
-                continue;
-            }
-            let ratio = div(p, dp);
-            let mut sum = Z(0.0, 0.0);
-            for (j, y) in z.iter().enumerate() {
-                if j != i {
-                    let r = div(Z(1.0, 0.0), Z(x.0 - y.0, x.1 - y.1));
-                    sum = Z(sum.0 + r.0, sum.1 + r.1);
-                }
-            }
-            let den = Z(1.0 - mul(ratio, sum).0, -mul(ratio, sum).1);
-            let w = div(ratio, den);
-            if w.0.is_finite() && w.1.is_finite() {
-                z[i] = Z(x.0 - w.0, x.1 - w.1);
-                moved = moved.max((w.0 * w.0 + w.1 * w.1) / (x.0 * x.0 + x.1 * x.1).max(1e-300));
-            }
-        }
-        // relative steps (squared) at the rounding level: converged (a few steps after the
-        // quadratic phase begins)
-        if moved < 1e-26 {
-            break;
-        }
-    }
-    let mut real: Vec<f64> = z
+    let roots = quartic_roots_f64(c).unwrap_or_default();
+    let mut real: Vec<f64> = roots
         .iter()
-        .filter(|r| r.1.abs() <= 1e-9 * r.0.abs().max(1e-300) && r.0.is_finite())
+        .filter(|r| r.1.abs() <= 1e-9 * r.0.abs() && r.0.is_finite())
         .map(|r| r.0)
         .collect();
     real.sort_by(f64::total_cmp);

@@ -600,6 +600,59 @@ fn conjugate_floats(a: &[&IBig], b: &[&IBig], delta: &IBig) -> ([f64; 5], [f64; 
     (c, cbar, err)
 }
 
+/// Float approximations `(re, im)` of the four complex roots of the quartic with
+/// coefficients `c` (from degree 0, `c₄ ≠ 0`, `c₀ ≠ 0`), not certified: `x = 2ᵏy` with `2ᵏ` about
+/// the roots' geometric mean in size, Ferrari's formulas polished by Newton's method, else
+/// Aberth's iteration; `None` on a value that is not finite. For callers that check exactly
+/// what they build from the roots.
+///
+/// ```
+/// # use qsic_algebra::roots::quartic_roots_f64;
+/// // (x² − 2)(x² + 9)
+/// let z = quartic_roots_f64(&[-18.0, 0.0, 7.0, 0.0, 1.0]).unwrap();
+/// let mut real: Vec<f64> = z.iter().filter(|r| r.1 == 0.0).map(|r| r.0).collect();
+/// real.sort_by(f64::total_cmp);
+/// assert!((real[1] - 2f64.sqrt()).abs() < 1e-15 && (real[0] + real[1]).abs() < 1e-15);
+/// assert!(z.iter().any(|r| (r.1.abs() - 3.0).abs() < 1e-14));
+/// ```
+pub fn quartic_roots_f64(c: &[f64; 5]) -> Option<Vec<(f64, f64)>> {
+    if c[4] == 0.0 || c[0] == 0.0 || !c.iter().all(|v| v.is_finite()) {
+        return None;
+    }
+    let k = (exponent(c[0]) - exponent(c[4])).div_euclid(4);
+    // cᵢ·2^(k·i): exact scalings by powers of two (None if one leaves the float range)
+    let scaled: Vec<f64> = (0..5)
+        .map(|i| c[i] * 2f64.powi((k * i as i64) as i32))
+        .collect();
+    if !scaled
+        .iter()
+        .all(|v| v.is_finite() && (*v == 0.0 || v.abs() > f64::MIN_POSITIVE))
+    {
+        return None;
+    }
+    // plausible: every value at a small multiple of its rounding level, and the sum of the
+    // roots −c₃/c₄ (two approximations of one root would leave another root out)
+    let plausible = |z: &Vec<Complex>| {
+        let values = z.iter().all(|&w| {
+            let (v, _, mag) = eval_with_derivative(&scaled, w);
+            v.abs() <= 64.0 * U * mag
+        });
+        let sum = z.iter().fold(Complex::ZERO, |acc, &w| acc.add(w));
+        let size: f64 = z.iter().map(|w| w.abs()).sum();
+        let want = -scaled[3] / scaled[4];
+        values && sum.im.abs() <= 1e-9 * size && (sum.re - want).abs() <= 1e-9 * size
+    };
+    let z = ferrari(&scaled)
+        .and_then(|mut z| match polish(&scaled, &mut z) {
+            true => Some(z),
+            false => aberth_from(&scaled, z),
+        })
+        .filter(plausible)
+        .or_else(|| aberth(&scaled).filter(plausible))?;
+    let unit = 2f64.powi(k as i32);
+    Some(z.iter().map(|w| (w.re * unit, w.im * unit)).collect())
+}
+
 /// Approximations of the roots of the quartic `c` (`c₄ ≠ 0`) by Ferrari's formulas in
 /// floats (the certificate does not rely on them); `None` on a value that is not finite.
 /// For `x = y − b/4` the monic quartic is `y⁴ + py² + qy + r`; with `m > 0` a root of the
