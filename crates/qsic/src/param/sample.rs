@@ -3477,7 +3477,7 @@ mod tests {
         let (mut x, mut y) = (IBig::from(3), IBig::from(2));
         let mut conv = Converter::default();
         for _ in 0..40 {
-            for den in [1, 3] {
+            for den in [1, 3, 4] {
                 let c = k.element(&Poly::new(vec![
                     RBig::from_parts_signed(x.clone(), den.into()),
                     RBig::from_parts_signed(-y.clone(), den.into()),
