@@ -1564,7 +1564,8 @@ impl<'a> Evaluator<'a> {
                         .iter()
                         .rev()
                         .fold(0.0, |v: f64, k| v * x.abs() + k.abs());
-                    let err = 16.0 * 2f64.powi(-104) * size / f(x).1.abs();
+                    // the derivative in floats (as `f` gives it), without `s` in double-double
+                    let err = 16.0 * 2f64.powi(-104) * size / float(x).1.abs();
                     if err.is_finite() && err <= x.abs() * 2f64.powi(-42) {
                         return Some(x);
                     }
@@ -1585,7 +1586,7 @@ impl<'a> Evaluator<'a> {
                 .iter()
                 .rev()
                 .fold(0.0, |v: f64, k| v * x.abs() + k.abs());
-            let err = 16.0 * 2f64.powi(-104) * size / f(x).1.abs();
+            let err = 16.0 * 2f64.powi(-104) * size / float(x).1.abs();
             (err.is_finite() && err <= x.abs() * 2f64.powi(-42)).then_some(x)
         };
         let (mut a, mut b) = (lo, hi);
