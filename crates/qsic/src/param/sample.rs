@@ -18,8 +18,9 @@
 //! double-double) inside the root's isolating interval (one simple root there), by
 //! [`AlgebraicReal::to_f64`] where that does not bracket it or the root is ill-conditioned. Coefficients go to floats
 //! once, through double-double: over ℚ(√δ) `c₀ + c₁√δ` is summed where the terms agree in
-//! sign, else computed as `(c₀² − c₁²δ)/(c₀ − c₁√δ)` with the integer norm exact, so that
-//! no cancellation costs precision (the same double-doubles serve the retries). `s` is
+//! sign or cancel by fewer than 6 bits, else computed as `(c₀² − c₁²δ)/(c₀ − c₁√δ)` with the
+//! integer norm exact, so that no cancellation costs more than 6 of the ~104 bits (the same
+//! double-doubles serve the retries). `s` is
 //! clamped at 0, which moves
 //! a point off the curve by `O(|s|)` only, because `aᵀMd ≡ 0` cancels the first-order error
 //! of `√s`. An evaluation whose rounding bound exceeds `10⁻¹⁰·‖X‖` (a sheet passing through
@@ -560,13 +561,15 @@ impl Converter {
     /// double-double is not finite or not available.
     fn convert(&mut self, c: &Number) -> Result<Converted, Error> {
         let num = c.numerator();
-        // `v/1 = v` for a normalized double-double: the division left out
-        let over_den = |v: Dd| {
-            if *c.denominator() == IBig::ONE {
-                v
-            } else {
-                v.div(int_dd(c.denominator()))
+        // `v/1 = v` for a normalized double-double: the division left out; by a power of two
+        // `2ᵏ` (one word), a product by `2⁻ᵏ`, exact away from the subnormals
+        let over_den = |v: Dd| match c.denominator().as_sign_words().1 {
+            [1] => v,
+            [w] if w.is_power_of_two() && (v.0 == 0.0 || v.0.abs() >= 1e-250) => {
+                let scale = 1.0 / (*w as f64);
+                Dd(v.0 * scale, v.1 * scale)
             }
+            _ => v.div(int_dd(c.denominator())),
         };
         let dd = if num.is_constant() {
             let n = num.coeffs().first().map_or(Dd::default(), int_dd);
@@ -587,9 +590,10 @@ impl Converter {
     }
 }
 
-/// `c₀ + c₁α` with `α = ±√δ` given in double-double: the sum where the terms agree in sign,
-/// else `(c₀² − c₁²δ)/(c₀ − c₁α)` with the integer norm exact, so that no cancellation
-/// costs precision. `None` for a representative of higher degree.
+/// `c₀ + c₁α` with `α = ±√δ` given in double-double: the sum where the terms agree in sign
+/// or cancel by fewer than 6 bits, else `(c₀² − c₁²δ)/(c₀ − c₁α)` with the integer norm
+/// exact, so that cancellation costs at most 6 bits of about 104. `None` for a
+/// representative of higher degree.
 fn sqrt_field_value(num: &Poly, root: Dd, delta: &IBig) -> Option<Dd> {
     let (c0, c1) = match num.coeffs() {
         [c0] => (c0, &IBig::ZERO),
@@ -597,8 +601,15 @@ fn sqrt_field_value(num: &Poly, root: Dd, delta: &IBig) -> Option<Dd> {
         _ => return None,
     };
     let (t0, t1) = (int_dd(c0), int_dd(c1).mul(root));
-    if t0.0 == 0.0 || t1.0 == 0.0 || (t0.0 > 0.0) == (t1.0 > 0.0) {
-        return Some(t0.add(t1));
+    // the sum loses at most `log₂(max/|sum|)` bits, under 6 of its ~104 when the terms agree
+    // in sign or the sum keeps at least `2⁻⁶` of the larger
+    let sum = t0.add(t1);
+    if t0.0 == 0.0
+        || t1.0 == 0.0
+        || (t0.0 > 0.0) == (t1.0 > 0.0)
+        || sum.0.abs() >= t0.0.abs().max(t1.0.abs()) * (1.0 / 64.0)
+    {
+        return Some(sum);
     }
     // the norm in machine integers where it fits, else in big integers
     let small = || -> Option<i128> {
@@ -824,15 +835,21 @@ fn integral_f64_to_ibig(x: f64) -> IBig {
 
 /// An integer in double-double (exact below `2¹⁰⁶` in magnitude, rounded beyond).
 fn int_dd(v: &IBig) -> Dd {
-    if let Ok(small) = i64::try_from(v) {
-        // |v| < 2⁶² keeps `hi as i64` in range; the rest is then exact
-        if small.unsigned_abs() < 1 << 62 {
-            let hi = small as f64;
-            return Dd(hi, (small - hi as i64) as f64);
+    // the magnitude from its words where it fits in 127 bits (the usual case, no conversion
+    // through the big-integer routines)
+    let (sign, words) = v.as_sign_words();
+    let bits = dashu_int::Word::BITS;
+    if words.len() as u32 * bits <= 128 {
+        let m = (words.iter().rev()).fold(0u128, |m, w| (m << (bits % 128)) | u128::from(*w));
+        let neg = sign == dashu_int::Sign::Negative;
+        if m < 1 << 53 {
+            let x = (m as u64) as f64;
+            return Dd(if neg { -x } else { x }, 0.0);
         }
-    }
-    if let Ok(small) = i128::try_from(v) {
-        return i128_dd(small);
+        if m < 1 << 127 {
+            let m = m as i128;
+            return i128_dd(if neg { -m } else { m });
+        }
     }
     // beyond 2¹²⁷: the leading 120 bits (the rest is below the double-double's precision)
     let e = {
@@ -1547,7 +1564,8 @@ impl<'a> Evaluator<'a> {
                         .iter()
                         .rev()
                         .fold(0.0, |v: f64, k| v * x.abs() + k.abs());
-                    let err = 16.0 * 2f64.powi(-104) * size / f(x).1.abs();
+                    // the derivative in floats (as `f` gives it), without `s` in double-double
+                    let err = 16.0 * 2f64.powi(-104) * size / float(x).1.abs();
                     if err.is_finite() && err <= x.abs() * 2f64.powi(-42) {
                         return Some(x);
                     }
@@ -1568,7 +1586,7 @@ impl<'a> Evaluator<'a> {
                 .iter()
                 .rev()
                 .fold(0.0, |v: f64, k| v * x.abs() + k.abs());
-            let err = 16.0 * 2f64.powi(-104) * size / f(x).1.abs();
+            let err = 16.0 * 2f64.powi(-104) * size / float(x).1.abs();
             (err.is_finite() && err <= x.abs() * 2f64.powi(-42)).then_some(x)
         };
         let (mut a, mut b) = (lo, hi);
@@ -3460,7 +3478,7 @@ mod tests {
         let (mut x, mut y) = (IBig::from(3), IBig::from(2));
         let mut conv = Converter::default();
         for _ in 0..40 {
-            for den in [1, 3] {
+            for den in [1, 3, 4] {
                 let c = k.element(&Poly::new(vec![
                     RBig::from_parts_signed(x.clone(), den.into()),
                     RBig::from_parts_signed(-y.clone(), den.into()),
