@@ -369,14 +369,64 @@ pub(crate) fn reduce_ruling(b: &mut [ZPoly; 4], d: &mut [ZPoly; 4]) -> bool {
         for (i, p) in v.iter_mut().enumerate() {
             *p = (0..2)
                 .map(|j| Zq {
-                    a: IBig::from(t[w][j][2 * i]),
-                    b: IBig::from(t[w][j][2 * i + 1]),
+                    a: big_int(t[w][j][2 * i]),
+                    b: big_int(t[w][j][2 * i + 1]),
                 })
                 .collect();
             trim(p);
         }
     }
     true
+}
+
+/// [`reduce_ruling`] straight from the ruling over ℚ(√δ) (`δ = 0` over ℚ): the integers
+/// read into machine words without the [`Zq`] in between. `None` when a coefficient is not
+/// integral, has another radicand or leaves `i128`, a coordinate has degree above 1, or the
+/// reduction overflows (the caller then takes [`zvector`] and [`reduce_ruling`], which
+/// decide those cases).
+pub(crate) fn reduced_ruling(
+    b: &[Poly<Quadratic>; 4],
+    d: &[Poly<Quadratic>; 4],
+    delta: &IBig,
+) -> Option<([ZPoly; 4], [ZPoly; 4])> {
+    let int = |v: &RBig| -> Option<i128> {
+        if *v.denominator() != dashu_int::UBig::ONE {
+            return None;
+        }
+        match i64::try_from(v.numerator()) {
+            Ok(x) => Some(i128::from(x)),
+            Err(_) => i128::try_from(v.numerator()).ok(),
+        }
+    };
+    let mut t = [[[0i128; 8]; 2]; 2];
+    for (w, v) in [b, d].into_iter().enumerate() {
+        for (i, p) in v.iter().enumerate() {
+            if p.coeffs().len() > 2 {
+                return None;
+            }
+            for (j, c) in p.coeffs().iter().enumerate() {
+                if c.as_rational().is_none() && c.radicand() != delta {
+                    return None;
+                }
+                t[w][j][2 * i] = int(c.rational_part())?;
+                t[w][j][2 * i + 1] = int(c.radical_part())?;
+            }
+        }
+    }
+    reduce_array(&mut t)?;
+    let out = |w: usize| -> [ZPoly; 4] {
+        std::array::from_fn(|i| {
+            let mut p: ZPoly = (0..2)
+                .map(|j| Zq {
+                    a: big_int(t[w][j][2 * i]),
+                    b: big_int(t[w][j][2 * i + 1]),
+                })
+                .collect();
+            trim(&mut p);
+            p
+        })
+    };
+    Some((out(0), out(1)))
 }
 
 /// The rounds of [`reduce_ruling`] on `t[w][j]`; `None` on overflow (`t` is then partly
@@ -474,6 +524,15 @@ fn reduce_array(t: &mut [[[i128; 8]; 2]; 2]) -> Option<()> {
     Some(())
 }
 
+/// `v` as a big integer: from `i64` when it fits (the common case, cheaper than the
+/// conversion of an `i128`).
+fn big_int(v: i128) -> IBig {
+    match i64::try_from(v) {
+        Ok(x) => IBig::from(x),
+        Err(_) => IBig::from(v),
+    }
+}
+
 /// The bit length of the largest `|v|` of `x`.
 fn bits16(x: &[i128; 16]) -> u32 {
     bit_len_u(x.iter().fold(0u128, |acc, v| acc | v.unsigned_abs()))
@@ -561,8 +620,8 @@ impl Zi {
 
     fn big(self) -> Zq {
         Zq {
-            a: IBig::from(self.a),
-            b: IBig::from(self.b),
+            a: big_int(self.a),
+            b: big_int(self.b),
         }
     }
 
@@ -1076,7 +1135,14 @@ mod tests {
             let mut d: [ZPoly; 4] = std::array::from_fn(|i| mix(&mb[i], &md[i], mv[2], mv[3]));
             assert!(on_surface(&b, &d));
             let before = size(&b, &d);
+            // the direct route from the ruling over ℚ gives the same reduced ruling
+            let (pb, pd): ([Poly<Quadratic>; 4], [Poly<Quadratic>; 4]) = (
+                std::array::from_fn(|i| to_poly(&b[i], &IBig::ZERO)),
+                std::array::from_fn(|i| to_poly(&d[i], &IBig::ZERO)),
+            );
+            let direct = reduced_ruling(&pb, &pd, &IBig::ZERO).expect("small and integral");
             assert!(reduce_ruling(&mut b, &mut d));
+            assert_eq!(direct, (b.clone(), d.clone()));
             assert!(on_surface(&b, &d), "{b:?} {d:?}");
             assert!(
                 size(&b, &d) <= 4 && size(&b, &d) < before,
