@@ -437,12 +437,26 @@ fn integral_levin(
     ruling: &RuledParameterization,
     kind: SurfaceKind,
 ) -> Result<Option<IntegralLevin>, Error> {
-    let Some((delta, mut b, mut d)) = integral_ruling(ruling) else {
-        return Ok(None);
+    // the common case: the reduced ruling straight from the rational one
+    let direct = match (kind, &ruling.delta) {
+        (SurfaceKind::DoublyRuled, delta) => {
+            let delta = delta.clone().unwrap_or(IBig::ZERO);
+            zsqrt::reduced_ruling(&ruling.b, &ruling.d, &delta).map(|(b, d)| (delta, b, d))
+        }
+        _ => None,
     };
-    if kind == SurfaceKind::DoublyRuled {
-        zsqrt::reduce_ruling(&mut b, &mut d);
-    }
+    let (delta, mut b, mut d) = match direct {
+        Some(ruling) => ruling,
+        None => {
+            let Some((delta, mut b, mut d)) = integral_ruling(ruling) else {
+                return Ok(None);
+            };
+            if kind == SurfaceKind::DoublyRuled {
+                zsqrt::reduce_ruling(&mut b, &mut d);
+            }
+            (delta, b, d)
+        }
+    };
     // in machine integers when everything fits, else in big integers
     let (mut s, mut a, mut alt) = zsqrt::levin_small(qm, &b, &d, &delta)
         .unwrap_or_else(|| zsqrt::levin_big(qm, &b, &d, &delta));

@@ -808,16 +808,17 @@ impl<T: RulingInt> Zs<T> {
             b: self.b.mul(k)?,
         })
     }
-    fn to_quadratic(&self, delta: &IBig) -> Quadratic {
+    /// `a + b√δ` with `root = √δ` ([`Quadratic::sqrt`], irrational): no square test.
+    fn to_quadratic_in(&self, root: &Quadratic) -> Quadratic {
         if self.b.is_zero() {
             return Quadratic::rational(RBig::from(self.a.to_ibig()));
         }
-        Quadratic::new(
+        assert!(root.as_rational().is_none(), "δ is not a square");
+        Quadratic::in_field_of(
             RBig::from(self.a.to_ibig()),
             RBig::from(self.b.to_ibig()),
-            delta.clone(),
+            root,
         )
-        .expect("δ is not a square")
     }
 }
 
@@ -1056,9 +1057,14 @@ fn ruling_through<T: RulingInt>(
     divide_by(bz.as_flattened_mut(), &g);
     let g = content(dz.as_flattened());
     divide_by(dz.as_flattened_mut(), &g);
-    let delta_big = d_t.to_ibig();
+    // one square test for all the coefficients (`δ` is not a square when irrational)
+    let root = if irrational {
+        Quadratic::sqrt(&d_t.to_ibig())
+    } else {
+        Quadratic::zero()
+    };
     let to_poly = |v: &[Zs<T>]| -> Poly<Quadratic> {
-        Poly::new(v.iter().map(|x| x.to_quadratic(&delta_big)).collect())
+        Poly::new(v.iter().map(|x| x.to_quadratic_in(&root)).collect())
     };
     let b: PolyVector = std::array::from_fn(|i| to_poly(&bz[i]));
     let d: PolyVector = std::array::from_fn(|i| to_poly(&dz[i]));

@@ -369,8 +369,8 @@ pub(crate) fn reduce_ruling(b: &mut [ZPoly; 4], d: &mut [ZPoly; 4]) -> bool {
         for (i, p) in v.iter_mut().enumerate() {
             *p = (0..2)
                 .map(|j| Zq {
-                    a: IBig::from(t[w][j][2 * i]),
-                    b: IBig::from(t[w][j][2 * i + 1]),
+                    a: big_int(t[w][j][2 * i]),
+                    b: big_int(t[w][j][2 * i + 1]),
                 })
                 .collect();
             trim(p);
@@ -379,8 +379,63 @@ pub(crate) fn reduce_ruling(b: &mut [ZPoly; 4], d: &mut [ZPoly; 4]) -> bool {
     true
 }
 
+/// [`reduce_ruling`] straight from the ruling over ℚ(√δ) (`δ = 0` over ℚ): the integers
+/// read into machine words without the [`Zq`] in between. `None` when a coefficient is not
+/// integral, has another radicand or leaves `i128`, a coordinate has degree above 1, or the
+/// reduction overflows (the caller then takes [`zvector`] and [`reduce_ruling`], which
+/// decide those cases).
+pub(crate) fn reduced_ruling(
+    b: &[Poly<Quadratic>; 4],
+    d: &[Poly<Quadratic>; 4],
+    delta: &IBig,
+) -> Option<([ZPoly; 4], [ZPoly; 4])> {
+    let int = |v: &RBig| -> Option<i128> {
+        if *v.denominator() != dashu_int::UBig::ONE {
+            return None;
+        }
+        match i64::try_from(v.numerator()) {
+            Ok(x) => Some(i128::from(x)),
+            Err(_) => i128::try_from(v.numerator()).ok(),
+        }
+    };
+    let mut t = [[[0i128; 8]; 2]; 2];
+    for (w, v) in [b, d].into_iter().enumerate() {
+        for (i, p) in v.iter().enumerate() {
+            if p.coeffs().len() > 2 {
+                return None;
+            }
+            for (j, c) in p.coeffs().iter().enumerate() {
+                if c.as_rational().is_none() && c.radicand() != delta {
+                    return None;
+                }
+                t[w][j][2 * i] = int(c.rational_part())?;
+                t[w][j][2 * i + 1] = int(c.radical_part())?;
+            }
+        }
+    }
+    reduce_array(&mut t)?;
+    let out = |w: usize| -> [ZPoly; 4] {
+        std::array::from_fn(|i| {
+            let mut p: ZPoly = (0..2)
+                .map(|j| Zq {
+                    a: big_int(t[w][j][2 * i]),
+                    b: big_int(t[w][j][2 * i + 1]),
+                })
+                .collect();
+            trim(&mut p);
+            p
+        })
+    };
+    Some((out(0), out(1)))
+}
+
 /// The rounds of [`reduce_ruling`] on `t[w][j]`; `None` on overflow (`t` is then partly
 /// changed, by valid changes only).
+///
+/// Each Lagrange step `x ← x − k·y` keeps the floats of the two vectors beside the integers:
+/// updated in floats when every number involved is below `2⁵³` (then the float update is
+/// exact, the same floats as a conversion), else converted again; the integer update goes
+/// without overflow checks when the bit lengths exclude overflow.
 fn reduce_array(t: &mut [[[i128; 8]; 2]; 2]) -> Option<()> {
     // the two halves of a mode: (w, j) cells
     let cells = |mode: usize, k: usize| -> [(usize, usize); 2] {
@@ -390,87 +445,159 @@ fn reduce_array(t: &mut [[[i128; 8]; 2]; 2]) -> Option<()> {
             [(0, k), (1, k)]
         }
     };
-    // binary gcd: shifts and subtractions, no 128-bit division
-    let gcd = |mut x: u128, mut y: u128| {
-        if x == 0 || y == 0 {
-            return x | y;
-        }
-        let shift = (x | y).trailing_zeros();
-        x >>= x.trailing_zeros();
-        loop {
-            y >>= y.trailing_zeros();
-            if x > y {
-                (x, y) = (y, x);
-            }
-            y -= x;
-            if y == 0 {
-                return x << shift;
-            }
-        }
-    };
     for _round in 0..2 {
         let mut changed = false;
         for mode in 0..2 {
-            for k in 0..2 {
-                let c = cells(mode, k);
-                let g = c.iter().flat_map(|&(w, j)| t[w][j]).fold(0u128, |g, v| {
-                    if g == 1 {
-                        1
-                    } else {
-                        gcd(g, v.unsigned_abs())
-                    }
-                });
+            // the two halves as 16-vectors
+            let mut v: [[i128; 16]; 2] = [[0; 16]; 2];
+            for (k, half) in v.iter_mut().enumerate() {
+                for (h, (w, j)) in cells(mode, k).into_iter().enumerate() {
+                    half[8 * h..8 * h + 8].copy_from_slice(&t[w][j]);
+                }
+                let g = content16(half);
                 if g > 1 {
                     changed = true;
-                    let g = i128::try_from(g).ok()?;
-                    for (w, j) in c {
-                        for v in &mut t[w][j] {
-                            *v /= g;
-                        }
-                    }
+                    divide16(half, g)?;
                 }
             }
+            let mut f = [to_f64_16(&v[0]), to_f64_16(&v[1])];
+            let mut bits = [bits16(&v[0]), bits16(&v[1])];
             for _ in 0..8 {
-                let f = |k: usize| -> [f64; 16] {
-                    let c = cells(mode, k);
-                    std::array::from_fn(|n| {
-                        let v = t[c[n / 8].0][c[n / 8].1][n % 8];
-                        // one instruction when it fits i64, else the two halves (the
-                        // library call of `v as f64` costs more; `k` needs an approximation)
-                        let small = v as i64;
-                        if i128::from(small) == v {
-                            small as f64
-                        } else {
-                            ((v >> 64) as i64 as f64) * 18_446_744_073_709_551_616.0
-                                + (v as u64 as f64)
-                        }
-                    })
-                };
-                let (x, y) = (f(0), f(1));
                 let dot = |p: &[f64; 16], q: &[f64; 16]| -> f64 {
                     p.iter().zip(q).map(|(a, b)| a * b).sum()
                 };
-                let (nx, ny) = (dot(&x, &x), dot(&y, &y));
+                let (nx, ny) = (dot(&f[0], &f[0]), dot(&f[1], &f[1]));
                 let (small, big, nsmall) = if nx <= ny { (0, 1, nx) } else { (1, 0, ny) };
-                let k = (dot(&x, &y) / nsmall).round();
-                if !(k.is_finite() && k != 0.0 && k.abs() < 1e30) {
+                let kf = (dot(&f[0], &f[1]) / nsmall).round();
+                if !(kf.is_finite() && kf != 0.0 && kf.abs() < 1e30) {
                     break;
                 }
-                let k = k as i128;
+                let k = kf as i128;
                 changed = true;
-                let (sc, bc) = (cells(mode, small), cells(mode, big));
-                for h in 0..2 {
-                    let ((ws, js), (wb, jb)) = (sc[h], bc[h]);
-                    for n in 0..8 {
-                        let v = k.checked_mul(t[ws][js][n])?;
-                        t[wb][jb][n] = t[wb][jb][n].checked_sub(v)?;
+                let bk = bit_len(k);
+                let (bs, bb) = (bits[small], bits[big]);
+                let (ys, yb) = if small == 0 {
+                    let [a, b] = &mut v;
+                    (&*a, b)
+                } else {
+                    let [a, b] = &mut v;
+                    (&*b, a)
+                };
+                if bk + bs <= 125 && bb <= 125 {
+                    // |k·y| < 2¹²⁵ and |x| < 2¹²⁵: no overflow
+                    for (x, y) in yb.iter_mut().zip(ys) {
+                        *x -= k * y;
                     }
+                } else {
+                    for (x, y) in yb.iter_mut().zip(ys) {
+                        *x = x.checked_sub(k.checked_mul(*y)?)?;
+                    }
+                }
+                let nb = bits16(yb);
+                if bk + bs <= 52 && bb <= 52 && nb <= 53 {
+                    // every float exact: the same as converting again
+                    let (fs, fb) = if small == 0 {
+                        let [a, b] = &mut f;
+                        (&*a, b)
+                    } else {
+                        let [a, b] = &mut f;
+                        (&*b, a)
+                    };
+                    for (x, y) in fb.iter_mut().zip(fs) {
+                        *x -= kf * y;
+                    }
+                } else {
+                    f[big] = to_f64_16(yb);
+                }
+                bits[big] = nb;
+            }
+            for (k, half) in v.iter().enumerate() {
+                for (h, (w, j)) in cells(mode, k).into_iter().enumerate() {
+                    t[w][j].copy_from_slice(&half[8 * h..8 * h + 8]);
                 }
             }
         }
         if !changed {
             break;
         }
+    }
+    Some(())
+}
+
+/// `v` as a big integer: from `i64` when it fits (the common case, cheaper than the
+/// conversion of an `i128`).
+fn big_int(v: i128) -> IBig {
+    match i64::try_from(v) {
+        Ok(x) => IBig::from(x),
+        Err(_) => IBig::from(v),
+    }
+}
+
+/// The bit length of the largest `|v|` of `x`.
+fn bits16(x: &[i128; 16]) -> u32 {
+    bit_len_u(x.iter().fold(0u128, |acc, v| acc | v.unsigned_abs()))
+}
+
+fn bit_len_u(v: u128) -> u32 {
+    128 - v.leading_zeros()
+}
+
+/// `x` in floats: one instruction for a value of `i64`, else the two halves (the library
+/// call of `v as f64` costs more; the floats only choose a multiplier).
+fn to_f64_16(x: &[i128; 16]) -> [f64; 16] {
+    x.map(|v| {
+        let small = v as i64;
+        if i128::from(small) == v {
+            small as f64
+        } else {
+            ((v >> 64) as i64 as f64) * 18_446_744_073_709_551_616.0 + (v as u64 as f64)
+        }
+    })
+}
+
+/// The gcd of the `|v|` of `x` (0 for all zeros): Euclid in `u64` while the numbers fit
+/// (the common case), else in `u128`; stops at 1.
+fn content16(x: &[i128; 16]) -> u128 {
+    let mut g = 0u128;
+    for v in x {
+        let mut y = v.unsigned_abs();
+        if y == 0 {
+            continue;
+        }
+        if g == 0 {
+            g = y;
+            continue;
+        }
+        if let (Ok(mut a), Ok(mut b)) = (u64::try_from(g), u64::try_from(y)) {
+            while b != 0 {
+                (a, b) = (b, a % b);
+            }
+            g = u128::from(a);
+        } else {
+            while y != 0 {
+                (g, y) = (y, g % y);
+            }
+        }
+        if g == 1 {
+            return 1;
+        }
+    }
+    g
+}
+
+/// `x / g` for a common divisor `g > 1` of `x`; `None` if `g` leaves `i128`.
+fn divide16(x: &mut [i128; 16], g: u128) -> Option<()> {
+    if bits16(x) <= 63 {
+        // g divides a nonzero entry below 2⁶³
+        let g = g as i64;
+        for v in x.iter_mut() {
+            *v = i128::from(*v as i64 / g);
+        }
+        return Some(());
+    }
+    let g = i128::try_from(g).ok()?;
+    for v in x.iter_mut() {
+        *v /= g;
     }
     Some(())
 }
@@ -493,8 +620,8 @@ impl Zi {
 
     fn big(self) -> Zq {
         Zq {
-            a: IBig::from(self.a),
-            b: IBig::from(self.b),
+            a: big_int(self.a),
+            b: big_int(self.b),
         }
     }
 
@@ -781,6 +908,142 @@ mod tests {
             .collect()
     }
 
+    /// The reduction as it was before the floats were kept beside the integers: every step
+    /// converts both vectors again and checks every operation (the reference below).
+    fn reduce_array_reference(t: &mut [[[i128; 8]; 2]; 2]) -> Option<()> {
+        // the two halves of a mode: (w, j) cells
+        let cells = |mode: usize, k: usize| -> [(usize, usize); 2] {
+            if mode == 0 {
+                [(k, 0), (k, 1)]
+            } else {
+                [(0, k), (1, k)]
+            }
+        };
+        // binary gcd: shifts and subtractions, no 128-bit division
+        let gcd = |mut x: u128, mut y: u128| {
+            if x == 0 || y == 0 {
+                return x | y;
+            }
+            let shift = (x | y).trailing_zeros();
+            x >>= x.trailing_zeros();
+            loop {
+                y >>= y.trailing_zeros();
+                if x > y {
+                    (x, y) = (y, x);
+                }
+                y -= x;
+                if y == 0 {
+                    return x << shift;
+                }
+            }
+        };
+        for _round in 0..2 {
+            let mut changed = false;
+            for mode in 0..2 {
+                for k in 0..2 {
+                    let c = cells(mode, k);
+                    let g = c.iter().flat_map(|&(w, j)| t[w][j]).fold(0u128, |g, v| {
+                        if g == 1 {
+                            1
+                        } else {
+                            gcd(g, v.unsigned_abs())
+                        }
+                    });
+                    if g > 1 {
+                        changed = true;
+                        let g = i128::try_from(g).ok()?;
+                        for (w, j) in c {
+                            for v in &mut t[w][j] {
+                                *v /= g;
+                            }
+                        }
+                    }
+                }
+                for _ in 0..8 {
+                    let f = |k: usize| -> [f64; 16] {
+                        let c = cells(mode, k);
+                        std::array::from_fn(|n| {
+                            let v = t[c[n / 8].0][c[n / 8].1][n % 8];
+                            // one instruction when it fits i64, else the two halves (the
+                            // library call of `v as f64` costs more; `k` needs an approximation)
+                            let small = v as i64;
+                            if i128::from(small) == v {
+                                small as f64
+                            } else {
+                                ((v >> 64) as i64 as f64) * 18_446_744_073_709_551_616.0
+                                    + (v as u64 as f64)
+                            }
+                        })
+                    };
+                    let (x, y) = (f(0), f(1));
+                    let dot = |p: &[f64; 16], q: &[f64; 16]| -> f64 {
+                        p.iter().zip(q).map(|(a, b)| a * b).sum()
+                    };
+                    let (nx, ny) = (dot(&x, &x), dot(&y, &y));
+                    let (small, big, nsmall) = if nx <= ny { (0, 1, nx) } else { (1, 0, ny) };
+                    let k = (dot(&x, &y) / nsmall).round();
+                    if !(k.is_finite() && k != 0.0 && k.abs() < 1e30) {
+                        break;
+                    }
+                    let k = k as i128;
+                    changed = true;
+                    let (sc, bc) = (cells(mode, small), cells(mode, big));
+                    for h in 0..2 {
+                        let ((ws, js), (wb, jb)) = (sc[h], bc[h]);
+                        for n in 0..8 {
+                            let v = k.checked_mul(t[ws][js][n])?;
+                            t[wb][jb][n] = t[wb][jb][n].checked_sub(v)?;
+                        }
+                    }
+                }
+            }
+            if !changed {
+                break;
+            }
+        }
+        Some(())
+    }
+
+    /// [`reduce_array`] takes the same steps as the reference on random arrays of small,
+    /// mixed, large and overflowing numbers (same results, same overflows).
+    #[test]
+    fn reduce_array_equals_the_reference() {
+        let mut rng = SplitMix(71);
+        // (reduced, changed, overflowed): every kind of outcome occurs (overflow rarely: a
+        // step overflows only when |k·y| does while |x − k·y| may not)
+        let mut seen = [0; 3];
+        for case in 0..400 {
+            let bits = [20, 40, 60, 90, 125][case % 5];
+            let mut t = [[[0i128; 8]; 2]; 2];
+            // a common factor in some cases, and a near-dependent pair of rows
+            let g = i128::from(rng.int(1, 30));
+            for w in 0..2 {
+                for j in 0..2 {
+                    for n in 0..8 {
+                        // |v| < 2^bits
+                        let v = i128::from(rng.int(-999, 999)) << rng.int(0, bits - 10) as u32;
+                        t[w][j][n] = if bits > 100 { v } else { v * g };
+                    }
+                }
+            }
+            let k = i128::from(rng.int(-50, 50));
+            for n in 0..8 {
+                t[1][1][n] = (t[1][1][n] / 4).saturating_add(k.saturating_mul(t[0][1][n] / 4));
+            }
+            let (mut x, mut y) = (t, t);
+            let (rx, ry) = (reduce_array(&mut x), reduce_array_reference(&mut y));
+            assert_eq!(rx.is_some(), ry.is_some(), "{t:?}");
+            if rx.is_some() {
+                assert_eq!(x, y, "{t:?}");
+                seen[0] += 1;
+                seen[1] += usize::from(x != t);
+            } else {
+                seen[2] += 1;
+            }
+        }
+        assert!(seen[0] > 10 && seen[1] > 10 && seen[2] > 0, "{seen:?}");
+    }
+
     /// A ruling bloated by changes of `u` and `v` (and a common factor) comes back small,
     /// and stays a ruling of the same surface: `bᵀSb`, `bᵀSd`, `dᵀSd` vanish identically.
     #[test]
@@ -872,7 +1135,14 @@ mod tests {
             let mut d: [ZPoly; 4] = std::array::from_fn(|i| mix(&mb[i], &md[i], mv[2], mv[3]));
             assert!(on_surface(&b, &d));
             let before = size(&b, &d);
+            // the direct route from the ruling over ℚ gives the same reduced ruling
+            let (pb, pd): ([Poly<Quadratic>; 4], [Poly<Quadratic>; 4]) = (
+                std::array::from_fn(|i| to_poly(&b[i], &IBig::ZERO)),
+                std::array::from_fn(|i| to_poly(&d[i], &IBig::ZERO)),
+            );
+            let direct = reduced_ruling(&pb, &pd, &IBig::ZERO).expect("small and integral");
             assert!(reduce_ruling(&mut b, &mut d));
+            assert_eq!(direct, (b.clone(), d.clone()));
             assert!(on_surface(&b, &d), "{b:?} {d:?}");
             assert!(
                 size(&b, &d) <= 4 && size(&b, &d) < before,
