@@ -2204,6 +2204,38 @@ fn run_of(
 type OtherSheet = ((u64, u64, usize), Sheet, Vec<[f64; 4]>);
 
 /// Samples the pieces of one component.
+/// The order in which the affine view visits a polyline: from its first mark on a closed one
+/// (`first`; `count` steps, the first point visited again at the end), else from point 0;
+/// `special`, ascending, the steps where a mark is met or the loop wraps round to point 0 —
+/// between them runs of plain points.
+struct AffineSteps {
+    first: usize,
+    count: usize,
+    special: Vec<usize>,
+}
+
+impl AffineSteps {
+    fn new(line: &Line, closed: bool) -> AffineSteps {
+        let n = line.x.len();
+        let (first, count) = match line.marks.first() {
+            Some(m) if closed => (m.0, n + 1),
+            _ => (0, n),
+        };
+        let mut special: Vec<usize> = line.marks.iter().map(|m| m.0 - first).collect();
+        if closed && !line.marks.is_empty() {
+            special.push(n);
+            special.push(n - first);
+        }
+        special.sort_unstable();
+        special.dedup();
+        AffineSteps {
+            first,
+            count,
+            special,
+        }
+    }
+}
+
 struct Sampler<'a> {
     eval: Evaluator<'a>,
     crossings: Crossings,
@@ -2865,10 +2897,11 @@ impl Sampler<'_> {
             marks.iter().filter(|m| m.1).map(|m| x[m.0]).collect();
         let first_cut = marks.first().map(|m| m.0);
         let mut branches = Vec::new();
-        let (first, count) = match first_cut {
-            Some(k) if closed => (k, n + 1),
-            _ => (0, n),
-        };
+        let AffineSteps {
+            first,
+            count,
+            special,
+        } = AffineSteps::new(line, closed);
         let mut current: Vec<[f64; 3]> = Vec::with_capacity(count);
         // the line is oriented, but a loop may come back reversed at its start: `sign`
         // orients along the walk from there on; `prev_h` is h of the previous point so
@@ -2877,16 +2910,6 @@ impl Sampler<'_> {
         let mut prev_h: Option<f64> = None;
         // `current` holds only the singular point it restarts from
         let mut restarted = false;
-        // the steps `j` where a mark is met or the loop wraps round to point 0, ascending:
-        // between them a run of plain points
-        let cut = closed && first_cut.is_some();
-        let mut special: Vec<usize> = marks.iter().map(|m| m.0 - first).collect();
-        if cut {
-            special.push(n);
-            special.push(n - first);
-        }
-        special.sort_unstable();
-        special.dedup();
         // the next mark in the order of the walk, the next special step
         let (mut mi, mut si) = (0, 0);
         let mut j = 0;
@@ -3032,10 +3055,11 @@ impl Sampler<'_> {
             marks.iter().filter(|m| m.1).map(|m| x[m.0]).collect();
         let first_cut = marks.first().map(|m| m.0);
         let mut branches = Vec::new();
-        let (first, count) = match first_cut {
-            Some(k) if closed => (k, n + 1),
-            _ => (0, n),
-        };
+        let AffineSteps {
+            first,
+            count,
+            special,
+        } = AffineSteps::new(line, closed);
         let mut current: Vec<[f64; 3]> = Vec::with_capacity(count);
         // the line is oriented, but a loop may come back reversed at its start: `sign`
         // orients along the walk from there on; `prev_h` is h of the previous point so
@@ -3044,16 +3068,6 @@ impl Sampler<'_> {
         let mut prev_h: Option<f64> = None;
         // `current` holds only the singular point it restarts from
         let mut restarted = false;
-        // the steps `j` where a mark is met or the loop wraps round to point 0, ascending:
-        // between them a run of plain points
-        let cut = closed && first_cut.is_some();
-        let mut special: Vec<usize> = marks.iter().map(|m| m.0 - first).collect();
-        if cut {
-            special.push(n);
-            special.push(n - first);
-        }
-        special.sort_unstable();
-        special.dedup();
         // the next mark in the order of the walk, the next special step
         let (mut mi, mut si) = (0, 0);
         let mut j = 0;
