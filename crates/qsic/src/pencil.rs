@@ -91,13 +91,11 @@ impl PencilData {
 }
 
 /// `[E₁(λ), …, E₄(λ)]`, the sums of the principal minors of each order of `λA − B`, from
-/// their values at `λ = 0, 1, −1, 2` and their leading coefficients `E_k(A)` (`λ = ∞`):
-/// `q = E_k − E_k(A)·λᵏ` has degree ≤ 3, `q = a₀ + a₁λ + a₂λ² + a₃λ³` with `a₀ = q(0)`,
-/// `a₂ = (q(1) + q(−1))/2 − a₀`, `t = a₁ + a₃ = (q(1) − q(−1))/2`,
-/// `a₃ = (q(2) − a₀ − 4a₂ − 2t)/6`, `a₁ = t − a₃` (exact divisions: the `aᵢ` are integers).
-/// Five 4×4 principal-minor evaluations instead of every minor of the pencil.
+/// their values at `λ = ∞, 0, 1, −1, 2` by the shared interpolation
+/// (`linalg::pencil::principal_minor_sums_of_members`): in `i128` when every entry is below
+/// `2²²` ([`minor_sums_i128`]), else over `IBig`. Five 4×4 principal-minor evaluations instead
+/// of every minor of the pencil.
 pub(crate) fn principal_minor_sums_of_pencil(a: &[[IBig; 4]; 4], b: &[[IBig; 4]; 4]) -> [Poly; 4] {
-    use qsic_algebra::linalg::minors::principal_minor_sums;
     let small = |m: &[[IBig; 4]; 4]| -> Option<[[i64; 4]; 4]> {
         let mut out = [[0i64; 4]; 4];
         for i in 0..4 {
@@ -113,32 +111,18 @@ pub(crate) fn principal_minor_sums_of_pencil(a: &[[IBig; 4]; 4], b: &[[IBig; 4];
     {
         return e.map(|c| Poly::new(c.iter().map(|&v| IBig::from(v)).collect()));
     }
-    let at = |l: i64| -> [IBig; 4] {
-        let l = IBig::from(l);
-        let m: [[IBig; 4]; 4] =
-            std::array::from_fn(|i| std::array::from_fn(|j| &l * &a[i][j] - &b[i][j]));
-        principal_minor_sums(&m)
+    let member = |l: i64, k: i64| -> [[IBig; 4]; 4] {
+        let (l, k) = (IBig::from(l), IBig::from(k));
+        std::array::from_fn(|i| std::array::from_fn(|j| &l * &a[i][j] - &k * &b[i][j]))
     };
-    let lead = principal_minor_sums(a);
-    let (v0, v1, vm1, v2) = (at(0), at(1), at(-1), at(2));
-    std::array::from_fn(|k| {
-        let deg = k + 1;
-        let c = &lead[k];
-        // q(λ) = E_k(λ) − c·λ^deg at the four nodes
-        let pow = |l: i64| IBig::from(l).pow(deg);
-        let q0 = v0[k].clone();
-        let q1 = &v1[k] - c * pow(1);
-        let qm1 = &vm1[k] - c * pow(-1);
-        let q2 = &v2[k] - c * pow(2);
-        let a0 = q0;
-        let a2 = (&q1 + &qm1) / IBig::from(2) - &a0;
-        let t = (&q1 - &qm1) / IBig::from(2);
-        let a3 = (&q2 - &a0 - IBig::from(4) * &a2 - IBig::from(2) * &t) / IBig::from(6);
-        let a1 = &t - &a3;
-        let mut coeffs = vec![a0, a1, a2, a3, IBig::ZERO];
-        coeffs[deg] += c;
-        Poly::new(coeffs)
-    })
+    qsic_algebra::linalg::pencil::principal_minor_sums_of_members([
+        &member(1, 0),
+        &member(0, 1),
+        &member(1, 1),
+        &member(-1, 1),
+        &member(2, 1),
+    ])
+    .map(|c| Poly::new(c.to_vec()))
 }
 
 /// `E₁(λ), …, E₄(λ)` of `λA − B` in `i128` (coefficients from degree 0), `None` unless every
