@@ -456,8 +456,9 @@ pub(crate) fn parameterize_doubly_ruled(
             .collect(),
     };
     let sm = to_quadratic(s);
+    let class = det_class(s);
     for p in points {
-        if let Some(r) = doubly_ruled_through(&sm, p)? {
+        if let Some(r) = doubly_ruled_through(&sm, p, class.as_ref())? {
             return Ok(Some(r));
         }
     }
@@ -536,9 +537,28 @@ fn section(s: &[[RBig; 4]; 4], basis: &[[RBig; 4]; 3]) -> [[RBig; 3]; 3] {
     })
 }
 
+/// An integer of the square class of `det S` (`n·d` for `det S = n/d`, without its
+/// square factors where [`squarefree_part`] finds them); `None` when `det S ≤ 0`. The
+/// lines of `S` through a rational point are defined over ℚ(√det S).
+fn det_class(s: &[[RBig; 4]; 4]) -> Option<IBig> {
+    let det = minors::det(s);
+    let nd = det.numerator() * IBig::from(det.denominator().clone());
+    if nd <= IBig::ZERO {
+        return None;
+    }
+    Some(squarefree_part(&nd).unwrap_or(nd))
+}
+
 /// The ruling of `S` through the point `p` of `S` (see [`parameterize_doubly_ruled`]);
-/// `Ok(None)` when the lines through `p` need a biquadratic field.
-fn doubly_ruled_through(sm: &Mat4, p: Vec4) -> Result<Option<RuledParameterization>, Error> {
+/// `Ok(None)` when the lines through `p` need a biquadratic field. `class` ([`det_class`])
+/// gives the field of the lines through a rational point: the discriminant of the tangent
+/// plane's binary form is `det S` times a rational square, often a huge one (the point's
+/// size), which no factoring removes.
+fn doubly_ruled_through(
+    sm: &Mat4,
+    p: Vec4,
+    class: Option<&IBig>,
+) -> Result<Option<RuledParameterization>, Error> {
     let p = primitive(&p);
     let delta0 = radicand_of(&p);
     let r = mat_vec(sm, &p);
@@ -579,7 +599,11 @@ fn doubly_ruled_through(sm: &Mat4, p: Vec4) -> Result<Option<RuledParameterizati
                 "no real lines through a point of an inertia (2, 2) member".into(),
             ));
         }
-        let Some(root) = sqrt_in_field(&disc, delta0.as_ref()) else {
+        let root = match (&delta0, class) {
+            (None, Some(c)) => sqrt_in_field(&disc, Some(c)),
+            _ => None,
+        };
+        let Some(root) = root.or_else(|| sqrt_in_field(&disc, delta0.as_ref())) else {
             return Ok(None);
         };
         (
@@ -1334,6 +1358,36 @@ mod tests {
         assert!(poly_form(&sm, &r.b, &r.d).is_zero());
         assert!(poly_form(&sm, &r.d, &r.d).is_zero());
         assert!(r.d.iter().any(|x| !x.is_constant()), "d(u) moves");
+    }
+
+    /// A member with no small rational point (a large one from a plane section): the
+    /// discriminant at that point is `det S` times the square of a 70-digit number, and the
+    /// field must still be ℚ(√det S), δ the square-free part of `det S`
+    /// (7·127·859·3628852029232861; `det S = 2⁴·δ`), not δ times that square.
+    #[test]
+    fn lines_through_a_large_rational_point_stay_in_the_field_of_det() {
+        let a = [
+            [61110, 367290, 25830, 2772],
+            [367290, 73150, -77220, -94248],
+            [25830, -77220, -135135, -2970],
+            [2772, -94248, -2970, 173250],
+        ];
+        let b = [
+            [2160, 560, 3360, 5390],
+            [560, 420, -4284, 2100],
+            [3360, -4284, -7770, -2695],
+            [5390, 2100, -2695, -3990],
+        ];
+        let s: [[RBig; 4]; 4] =
+            std::array::from_fn(|i| std::array::from_fn(|j| rat(2 * a[i][j] - b[i][j])));
+        let det = minors::det(&s);
+        let r = parameterize_doubly_ruled(&s)
+            .unwrap()
+            .expect("a parameterization");
+        assert_ruled(&s, &r);
+        let want = IBig::from(7 * 127 * 859 * 3628852029232861i128);
+        assert_eq!(r.delta, Some(want.clone()));
+        assert_eq!(det, RBig::from(IBig::from(16) * want));
     }
 
     #[test]
