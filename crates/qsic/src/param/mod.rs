@@ -1070,7 +1070,6 @@ fn choose_surface_full(
             SurfaceKind::Cone => parameterize_cone(&matrix)?,
         };
         let Some(ruling) = ruling else { continue };
-        let size = |s: &ParameterizationSurface| s.ruling.delta.as_ref().map(|d| d.clone() * d);
         let candidate = ParameterizationSurface {
             lambda,
             matrix,
@@ -1079,8 +1078,8 @@ fn choose_surface_full(
         };
         let better = match &best {
             None => true,
-            Some(old) => match (size(old), size(&candidate)) {
-                (Some(o), Some(n)) => n < o,
+            Some(old) => match (&old.ruling.delta, &candidate.ruling.delta) {
+                (Some(_), Some(_)) => ruling_height(&candidate.ruling) < ruling_height(&old.ruling),
                 (Some(_), None) => true,
                 _ => false,
             },
@@ -1100,6 +1099,22 @@ fn choose_surface_full(
             "the rulings need a biquadratic field (not yet)".into()
         })
     })
+}
+
+/// The size of a ruling over ℚ(√δ) in bits: half the bits of `δ` plus the largest bit
+/// length of a numerator or denominator of its coefficients' parts — about `log₂` of the
+/// largest coefficient, which the Levin forms and the output grow with (a small `δ` with a
+/// huge ruling, from a large point, is worse than a slightly larger `δ` with a small one).
+fn ruling_height(r: &RuledParameterization) -> usize {
+    use dashu_int::ops::BitTest;
+    let delta = r.delta.as_ref().map_or(0, |d| d.bit_len().div_ceil(2));
+    let bits = |v: &RBig| v.numerator().bit_len().max(v.denominator().bit_len());
+    let coefficients = r.b.iter().chain(&r.d).flat_map(|p| p.coeffs());
+    delta
+        + coefficients
+            .map(|c| bits(c.rational_part()).max(bits(c.radical_part())))
+            .max()
+            .unwrap_or(0)
 }
 
 /// More doubly ruled candidates: [`more_samples`] of each (2, 2) arc.
