@@ -1549,6 +1549,32 @@ mod tests {
     use super::*;
     use qsic_algebra::Ring;
 
+    /// Half the bits of `δ` plus the largest numerator or denominator of a coefficient's
+    /// parts, over `b` and `d` alike: a larger coefficient anywhere raises it.
+    #[test]
+    fn ruling_height_counts_the_radicand_and_the_largest_coefficient() {
+        let r = |v: i64| RBig::from(v);
+        let quad = |a: RBig, b: RBig| Quadratic::new(a, b, IBig::from(15)).unwrap();
+        let line = |c0: Quadratic, c1: Quadratic| Poly::new(vec![c0, c1]);
+        let one = || quad(r(1), r(0));
+        let mut ruling = RuledParameterization {
+            b: std::array::from_fn(|_| line(one(), one())),
+            d: std::array::from_fn(|_| line(one(), quad(r(3), r(1)))),
+            delta: Some(IBig::from(15)),
+        };
+        // δ = 15: 4 bits, half 2; the largest part 3: 2 bits
+        assert_eq!(ruling_height(&ruling), 2 + 2);
+        // a radical part 1/1000 in d: the denominator's 10 bits
+        ruling.d[2] = line(
+            quad(r(1), RBig::from_parts_signed(IBig::ONE, IBig::from(1000))),
+            one(),
+        );
+        assert_eq!(ruling_height(&ruling), 2 + 10);
+        // a rational part 2²⁰ in b
+        ruling.b[3] = line(quad(r(1 << 20), r(0)), one());
+        assert_eq!(ruling_height(&ruling), 2 + 21);
+    }
+
     fn rq(v: i64) -> Quadratic {
         Quadratic::rational(RBig::from(v))
     }
