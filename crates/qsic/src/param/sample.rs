@@ -284,6 +284,7 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
                         chart: &chart,
                         tolerance: options.tolerance,
                         approx: &approx,
+                        ends: RefCell::new(Vec::new()),
                         other_sheet: RefCell::new(None),
                     });
                 }
@@ -838,6 +839,20 @@ fn int_dd(v: &IBig) -> Dd {
     // the magnitude from its words where it fits in 127 bits (the usual case, no conversion
     // through the big-integer routines)
     let (sign, words) = v.as_sign_words();
+    // one word below 2⁵³ (the usual coefficient): exact in one float
+    if let [w] = words {
+        if *w < 1 << 53 {
+            let x = *w as f64;
+            return Dd(
+                if sign == dashu_int::Sign::Negative {
+                    -x
+                } else {
+                    x
+                },
+                0.0,
+            );
+        }
+    }
     let bits = dashu_int::Word::BITS;
     if words.len() as u32 * bits <= 128 {
         let m = (words.iter().rev()).fold(0u128, |m, w| (m << (bits % 128)) | u128::from(*w));
@@ -1744,7 +1759,10 @@ fn projective(u: f64) -> (f64, f64) {
     }
 }
 
-fn span(range: &ParamRange, approx: &dyn Fn(&AlgebraicReal) -> f64) -> Result<ArcSpan, Error> {
+fn span<'r>(
+    range: &'r ParamRange,
+    approx: &dyn Fn(&'r AlgebraicReal) -> f64,
+) -> Result<ArcSpan, Error> {
     let whole = ArcSpan {
         theta: (-FRAC_PI_2, FRAC_PI_2),
         ends: ((-1.0, 0.0), (1.0, 0.0)),
@@ -2062,6 +2080,8 @@ struct Line {
     chart: ChartForm,
     /// `(index, at infinity, singular)`, ascending, at most one per index, never both false.
     marks: Vec<(usize, bool, bool)>,
+    /// The work list of [`Walk`], kept between the arcs (empty).
+    stack: Vec<(Sample, u32)>,
 }
 
 impl Line {
@@ -2168,7 +2188,7 @@ fn run_of(
 ) -> (usize, [f64; 4], f64) {
     let cos = MAX_ANGLE.cos();
     let (mut px, mut hp) = (walk.prev.x, walk.h_prev);
-    let (unknown, flip) = (walk.unknown, walk.flip);
+    let (unknown, orient) = (walk.unknown, if walk.flip { -1.0 } else { 1.0 });
     // `h` written to a buffer on the stack, appended a chunk at a time
     let mut buf = [0.0; 64];
     let mut taken = 0;
@@ -2186,7 +2206,8 @@ fn run_of(
             if unknown && (hp * hq).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 break;
             }
-            *h = if flip { -hq } else { hq };
+            // `±1·hq` is `±hq` exactly
+            *h = hq * orient;
             hp = hq;
             px = *x;
             m += 1;
@@ -2245,12 +2266,15 @@ struct Sampler<'a> {
     chart: &'a Chart,
     tolerance: Option<f64>,
     approx: &'a Approximations,
+    /// The floats of the arc ends met ([`Sampler::end_value`]), by the end's address in
+    /// the curve first (the arcs of an oval share their ends), else by value.
+    ends: RefCell<Vec<(&'a AlgebraicReal, f64)>>,
     /// The grid of the other sheet made with the last one of Levin's form: `(t₀, step, n)`
     /// as bits, the sheet and its points ([`Evaluator::grid_both`]).
     other_sheet: RefCell<Option<OtherSheet>>,
 }
 
-impl Sampler<'_> {
+impl<'a> Sampler<'a> {
     /// The grid of `sheet` on `θₖ = t₀ + k·step` ([`Evaluator::grid`]): on Levin's form both
     /// sheets at once, the other kept for an arc over the same range.
     fn grid(&self, t0: f64, step: f64, n: usize, sheet: Sheet, out: &mut Vec<[f64; 4]>) {
@@ -2281,7 +2305,21 @@ impl Sampler<'_> {
     /// `s` inside the isolating interval of `r` (one simple root of `s` there);
     /// [`AlgebraicReal::to_f64`] (once per call) where that does not bracket it or is
     /// ill-conditioned.
-    fn end_value(&self, r: &AlgebraicReal) -> f64 {
+    fn end_value(&self, r: &'a AlgebraicReal) -> f64 {
+        // the two sheets of an oval share their ends: each found once
+        let known = self.ends.borrow().iter().find_map(|(q, v)| {
+            (std::ptr::eq(*q, r) || q.poly() == r.poly() && q.interval() == r.interval())
+                .then_some(*v)
+        });
+        known.unwrap_or_else(|| {
+            let v = self.end_value_uncached(r);
+            self.ends.borrow_mut().push((r, v));
+            v
+        })
+    }
+
+    /// [`Sampler::end_value`] computed.
+    fn end_value_uncached(&self, r: &AlgebraicReal) -> f64 {
         if let (true, qsic_algebra::roots::RootInterval::Open(lo, hi)) =
             (self.eval.levin, r.interval())
         {
@@ -2493,7 +2531,7 @@ impl Sampler<'_> {
     /// nudged), the marks joined.
     fn arc_into(
         &self,
-        arc: &Arc,
+        arc: &'a Arc,
         n: usize,
         budget: &mut usize,
         line: &mut Line,
@@ -2531,7 +2569,7 @@ impl Sampler<'_> {
         let mut walk = Walk {
             prev: first,
             h_prev: self.chart.value(&first.x),
-            stack: Vec::new(),
+            stack: std::mem::take(&mut line.stack),
             unknown: matches!(self.crossings, Crossings::Unknown),
             flip,
         };
@@ -2579,6 +2617,7 @@ impl Sampler<'_> {
         for e in &events[ei..] {
             self.walk_to(&mut walk, *e, sheet, budget, line)?;
         }
+        line.stack = walk.stack;
         if arc.reversed {
             let x = &line.x;
             if start > 0 && x.len() > start + 1 && joins(&x[start - 1], &x[x.len() - 1]) {
@@ -2628,8 +2667,8 @@ impl Sampler<'_> {
             Some((j, c)) => run_of(xs, walk, &mut line.h, |x| c * x[j & 3]),
             None => run_of(xs, walk, &mut line.h, |x| dot(&form.h, x)),
         };
-        let flip = walk.flip;
         let xs = &xs[..taken];
+        let flip = walk.flip;
         line.x
             .extend(xs.iter().map(|x| if flip { x.map(|v| -v) } else { *x }));
         if taken > 0 {
@@ -2765,7 +2804,7 @@ impl Sampler<'_> {
     fn piece(
         &self,
         component: usize,
-        arcs: &[Arc],
+        arcs: &'a [Arc],
         closed: bool,
         points: usize,
         budget: &mut usize,
@@ -2776,6 +2815,7 @@ impl Sampler<'_> {
             h: Vec::with_capacity(arcs.len() * (n + n / 8 + 8)),
             chart: self.chart.form,
             marks: Vec::new(),
+            stack: Vec::new(),
         };
         for arc in arcs {
             self.arc_into(arc, n, budget, &mut line)?;
@@ -2934,6 +2974,14 @@ impl Sampler<'_> {
                         // `hx ≠ 0` with the sign of `hp > 0`: `±sign·h > 0` (false for NaN,
                         // left to the point-by-point step)
                         let s = if hp > 0.0 { sign } else { -sign };
+                        // four at a time (`&` tests all four, no branch each), then one
+                        while let Some(q) = hs.get(i..i + 4) {
+                            let pos = |v: f64| s * v > 0.0;
+                            if !(pos(q[0]) & pos(q[1]) & pos(q[2]) & pos(q[3])) {
+                                break;
+                            }
+                            i += 4;
+                        }
                         while i < len && s * hs[i] > 0.0 {
                             i += 1;
                         }
@@ -3583,5 +3631,197 @@ mod tests {
             }
         }
         assert!(checked > 2000 && unrolled > 0, "{checked} {unrolled}");
+    }
+
+    /// Curves of random generic pairs with a real piece on a Levin component: the curve and
+    /// the component's index.
+    fn levin_curves(seed: u64, count: usize) -> Vec<(Curve, usize)> {
+        let mut rng = SplitMix(seed);
+        let mut out = Vec::new();
+        while out.len() < count {
+            let mut m = [[[0i64; 4]; 4]; 2];
+            for q in &mut m {
+                for i in 0..4 {
+                    for j in i..4 {
+                        let c = rng.int(-10, 10);
+                        q[i][j] = if i == j { 2 * c } else { c };
+                        q[j][i] = q[i][j];
+                    }
+                }
+            }
+            let (Ok(a), Ok(b)) = (Quadric::from_integers(m[0]), Quadric::from_integers(m[1]))
+            else {
+                continue;
+            };
+            let Ok(curve) = crate::param::parameterize(&a, &b) else {
+                continue;
+            };
+            let levin = curve.pieces.iter().find_map(|p| match p {
+                RealPiece::Curve { component, .. } => matches!(
+                    curve.components[*component].param,
+                    Some(ComponentParam::Levin { .. })
+                )
+                .then_some(*component),
+                RealPiece::Point { .. } => None,
+            });
+            if let Some(k) = levin {
+                out.push((curve, k));
+            }
+        }
+        out
+    }
+
+    /// A sampler of `param` with no exact events (crossings located along the walk).
+    fn test_sampler<'a>(
+        param: &'a ComponentParam,
+        chart: &'a Chart,
+        approx: &'a Approximations,
+    ) -> Sampler<'a> {
+        Sampler {
+            eval: Evaluator::new(param).unwrap(),
+            crossings: Crossings::Unknown,
+            singular: Vec::new(),
+            chart,
+            tolerance: None,
+            approx,
+            ends: RefCell::new(Vec::new()),
+            other_sheet: RefCell::new(None),
+        }
+    }
+
+    /// The arc ends kept by [`Sampler::end_value`] are the ends found afresh, bit for bit,
+    /// and an end shared by two arcs (the two sheets of an oval) is found once.
+    #[test]
+    fn arc_ends_found_once_are_the_ends_found_afresh() {
+        let (mut shared, mut checked) = (0, 0);
+        let chart = SampleOptions::default().chart().unwrap();
+        for (curve, k) in levin_curves(0xe4d5, 12) {
+            let param = curve.components[k].param.as_ref().unwrap();
+            let approx = Approximations::default();
+            let sampler = test_sampler(param, &chart, &approx);
+            let mut ends: Vec<&AlgebraicReal> = Vec::new();
+            for piece in &curve.pieces {
+                let RealPiece::Curve {
+                    component, arcs, ..
+                } = piece
+                else {
+                    continue;
+                };
+                if *component != k {
+                    continue;
+                }
+                for arc in arcs {
+                    let ParamRange::Between(lo, hi) = &arc.range else {
+                        continue;
+                    };
+                    for r in [lo, hi].into_iter().filter_map(|v| match v {
+                        ParamValue::Finite(r) => Some(r),
+                        ParamValue::Infinity => None,
+                    }) {
+                        let kept = sampler.end_value(r);
+                        let fresh = sampler.end_value_uncached(r);
+                        assert_eq!(kept.to_bits(), fresh.to_bits(), "{r:?}");
+                        // the end itself
+                        let exact = r.to_f64();
+                        assert!((kept - exact).abs() <= 1e-9 * (1.0 + exact.abs()), "{r:?}");
+                        if ends
+                            .iter()
+                            .any(|q| q.poly() == r.poly() && q.interval() == r.interval())
+                        {
+                            shared += 1;
+                        } else {
+                            ends.push(r);
+                        }
+                        checked += 1;
+                    }
+                }
+            }
+            assert_eq!(
+                sampler.ends.borrow().len(),
+                ends.len(),
+                "one search per end"
+            );
+        }
+        assert!(checked >= 24 && shared >= 12, "{checked} {shared}");
+    }
+
+    /// The affine view cut in runs of one sign of `h` ([`Sampler::affine`], four points a
+    /// step) is the point-by-point reference on random polylines: runs of either sign,
+    /// zeros of either sign, tiny values, marks at infinity and singular, open and closed.
+    #[cfg(debug_assertions)]
+    #[test]
+    fn affine_view_in_runs_matches_point_by_point() {
+        let mut rng = SplitMix(0xaff1);
+        let param = &levin_params(0xaff2, 1)[0];
+        let approx = Approximations::default();
+        for chart in [
+            SampleOptions::default(),
+            SampleOptions {
+                chart: [1, 0, -2, 1].map(RBig::from),
+                ..SampleOptions::default()
+            },
+        ] {
+            let chart = chart.chart().unwrap();
+            let sampler = test_sampler(param, &chart, &approx);
+            let mut cuts = 0;
+            for _ in 0..400 {
+                let len = rng.int(1, 40) as usize;
+                let mut line = Line {
+                    chart: chart.form,
+                    ..Line::default()
+                };
+                let mut sign = 1.0;
+                for k in 0..len {
+                    if rng.int(0, 9) == 0 {
+                        sign = -sign;
+                    }
+                    let mut x = [0.0; 4].map(|_| rng.int(-1000, 1000) as f64 / 1000.0);
+                    x[3] = sign * (rng.int(1, 1000) as f64 / 1000.0);
+                    match rng.int(0, 40) {
+                        0 => x = x.map(|_| 0.0),
+                        1 => x[3] = -0.0,
+                        2 => x[3] = sign * 1e-300,
+                        _ => {}
+                    }
+                    let (inf, sing) = (rng.int(0, 15) == 0, rng.int(0, 15) == 0);
+                    line.push(&Sample {
+                        theta: k as f64,
+                        x,
+                        at_infinity: inf,
+                        singular: sing,
+                    });
+                }
+                let closed = rng.int(0, 1) == 0;
+                let got = sampler.affine(&line, closed);
+                cuts += got.branches.len();
+                assert_eq!(got, sampler.affine_two_pass(&line, closed), "{:?}", line.x);
+            }
+            assert!(cuts > 800, "{cuts}");
+        }
+    }
+
+    /// One-word integers around the double's 53 bits (the fast path of [`int_dd`]) and
+    /// beyond it split exactly: `hi + lo = v`.
+    #[test]
+    fn one_word_integers_split_exactly() {
+        let two = |e: u32| 1u64 << e;
+        for w in [
+            0,
+            1,
+            2,
+            two(52) - 1,
+            two(53) - 1,
+            two(53),
+            two(53) + 1,
+            two(63),
+            u64::MAX,
+        ] {
+            for neg in [false, true] {
+                let v = if neg { -IBig::from(w) } else { IBig::from(w) };
+                let d = int_dd(&v);
+                assert_eq!(integral_f64_to_ibig(d.0) + integral_f64_to_ibig(d.1), v);
+                assert!(d.1.abs() <= d.0.abs() * f64::EPSILON, "{v}: {d:?}");
+            }
+        }
     }
 }
