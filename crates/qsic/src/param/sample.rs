@@ -1303,32 +1303,39 @@ impl<'a> Evaluator<'a> {
         plus.resize(n.saturating_sub(1), [0.0; 4]);
         minus.clear();
         minus.resize(n.saturating_sub(1), [0.0; 4]);
-        let out = plus.iter_mut().zip(minus.iter_mut());
-        for ((pu, mu), (t, rev)) in out.zip(grid_parameters(t0, step, n)) {
-            let (a, w, root) = self.parts::<NA, ND>(t, rev);
-            // the same operations as `values` on either sheet
-            let (mut p, mut m) = (a, a);
-            for i in 0..4 {
-                p[i] += root * w[i];
-                m[i] += -root * w[i];
+        // the parameters of `grid_parameters`: a chunk of `RESYNC` from each exact one
+        let (sh, ch) = step.sin_cos();
+        let chunks = plus.chunks_mut(RESYNC).zip(minus.chunks_mut(RESYNC));
+        for (c, (pc, mc)) in chunks.enumerate() {
+            let mut u = (t0 + step * ((c * RESYNC + 1) as f64)).sin_cos();
+            for (pu, mu) in pc.iter_mut().zip(mc.iter_mut()) {
+                let (t, rev) = reduced_parameter(u);
+                u = (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh);
+                let (a, w, root) = self.parts::<NA, ND>(t, rev);
+                // the same operations as `values` on either sheet
+                let (mut p, mut m) = (a, a);
+                for i in 0..4 {
+                    p[i] += root * w[i];
+                    m[i] += -root * w[i];
+                }
+                let (np, nm) = (dot(&p, &p).sqrt(), dot(&m, &m).sqrt());
+                if self.sure(root, np) && nm >= self.sure_norm {
+                    *pu = p.map(|v| v / np);
+                    *mu = m.map(|v| v / nm);
+                    continue;
+                }
+                // `unit_of` on either sheet, the bound at `|t|` shared where it is needed
+                let lhs = self.gamma * self.majorant(t, rev, root);
+                let ok = |norm: f64| {
+                    self.sure(root, norm) || norm.is_finite() && norm > 0.0 && lhs <= 1e-10 * norm
+                };
+                let (p_ok, m_ok) = (ok(np), ok(nm));
+                (*pu, *mu) = if p_ok && m_ok {
+                    (p.map(|v| v / np), m.map(|v| v / nm))
+                } else {
+                    self.certify_both::<NA, ND>(t, rev, root, (p, np, p_ok), (m, nm, m_ok))
+                };
             }
-            let (np, nm) = (dot(&p, &p).sqrt(), dot(&m, &m).sqrt());
-            if self.sure(root, np) && nm >= self.sure_norm {
-                *pu = p.map(|v| v / np);
-                *mu = m.map(|v| v / nm);
-                continue;
-            }
-            // `unit_of` on either sheet, the bound at `|t|` shared where it is needed
-            let lhs = self.gamma * self.majorant(t, rev, root);
-            let ok = |norm: f64| {
-                self.sure(root, norm) || norm.is_finite() && norm > 0.0 && lhs <= 1e-10 * norm
-            };
-            let (p_ok, m_ok) = (ok(np), ok(nm));
-            (*pu, *mu) = if p_ok && m_ok {
-                (p.map(|v| v / np), m.map(|v| v / nm))
-            } else {
-                self.certify_both::<NA, ND>(t, rev, root, (p, np, p_ok), (m, nm, m_ok))
-            };
         }
     }
 
