@@ -1805,6 +1805,31 @@ fn span<'r>(
     })
 }
 
+/// A float on the side of `q` given by `up` (`> q` for `up`, `< q` otherwise; `q` itself
+/// when it is zero), from the quotient of the floats of its numerator and denominator (each
+/// rounded to nearest, the quotient too: within `1.5` ulps) moved by `8ε·|v|` (at least four
+/// ulps); NaN where a float is not finite or below the normal range (no such float is known
+/// cheaply). Cheaper than the correctly rounded [`RBig::to_f64`].
+fn inner_f64(q: &RBig, up: bool) -> f64 {
+    let (n, d) = (
+        q.numerator().to_f64().value(),
+        q.denominator().to_f64().value(),
+    );
+    if n == 0.0 && q.numerator().is_zero() {
+        return 0.0;
+    }
+    let v = n / d;
+    if !(v.is_finite() && v.abs() >= f64::MIN_POSITIVE * 1e10) {
+        return f64::NAN;
+    }
+    let m = v.abs() * (8.0 * f64::EPSILON);
+    if up {
+        v + m
+    } else {
+        v - m
+    }
+}
+
 /// The exact coefficients of a component whose coefficients are all rational.
 enum ExactParam {
     Rational {
@@ -2384,10 +2409,10 @@ impl<'a> Sampler<'a> {
         if let (true, qsic_algebra::roots::RootInterval::Open(lo, hi)) =
             (self.eval.levin, r.interval())
         {
-            if let Some(v) = self
-                .eval
-                .root_of_s(lo.to_f64().value(), hi.to_f64().value())
-            {
+            // floats inside the isolating interval (one root of `s` there): a bracket
+            // `root_of_s` checks, empty where the interval is below the floats' resolution
+            let (l, h) = (inner_f64(lo, true), inner_f64(hi, false));
+            if let Some(v) = self.eval.root_of_s(l, h) {
                 return v;
             }
         }
@@ -3941,5 +3966,50 @@ mod tests {
         }
         // runs taken whole, stopped by `h`, stopped by an angle
         assert!(stops.iter().all(|&c| c > 200), "{stops:?}");
+    }
+
+    /// [`inner_f64`] lies strictly on its side of the rational (checked exactly), on random
+    /// rationals of all sizes, and an interval narrower than its margin gives an empty
+    /// bracket, on which [`Evaluator::root_of_s`] declines (the caller falls back to the
+    /// exact approximation).
+    #[test]
+    fn inner_floats_stay_inside_their_interval() {
+        let mut rng = SplitMix(0x1a2b);
+        for bits in [1u32, 20, 52, 53, 60, 120, 300, 900] {
+            for _ in 0..50 {
+                let num = (IBig::from(rng.next_u64()) << bits as usize) >> 64;
+                let den = (IBig::from(rng.next_u64() | 1) << (bits / 2) as usize) >> 64;
+                let den = if den.is_zero() { IBig::ONE } else { den };
+                let q = RBig::from_parts_signed(if rng.int(0, 1) == 0 { -num } else { num }, den);
+                for up in [false, true] {
+                    let f = inner_f64(&q, up);
+                    if q.is_zero() {
+                        assert_eq!(f, 0.0);
+                        continue;
+                    }
+                    let exact = RBig::try_from(f).expect("finite");
+                    assert_eq!(exact > q, up, "{q} {f}");
+                    assert!(((f - q.to_f64().value()) / f).abs() < 1e-14);
+                }
+            }
+        }
+        // beyond the floats: NaN, no bracket
+        let huge = RBig::from(IBig::ONE << 2000);
+        assert!(inner_f64(&huge, true).is_nan());
+        assert!(inner_f64(&(RBig::ONE / huge), false).is_nan());
+        // an interval narrower than the margins: the bracket is empty and declined
+        let param = &levin_params(0x1a2c, 1)[0];
+        let eval = Evaluator::new(param).unwrap();
+        let lo = RBig::from_parts_signed(
+            IBig::from(1_000_000_000_000_001i64),
+            IBig::from(1_000_000_000_000_000i64),
+        );
+        let hi = RBig::from_parts_signed(
+            IBig::from(1_000_000_000_000_002i64),
+            IBig::from(1_000_000_000_000_000i64),
+        );
+        let (l, h) = (inner_f64(&lo, true), inner_f64(&hi, false));
+        assert!(l > h);
+        assert_eq!(eval.root_of_s(l, h), None);
     }
 }
