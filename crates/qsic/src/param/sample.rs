@@ -98,7 +98,7 @@ impl SampleOptions {
             .iter()
             .rposition(|c| *c != RBig::ZERO)
             .ok_or_else(|| Error::InvalidShape("the chart plane is zero".into()))?;
-        let h = self.chart.clone().map(|c| c.to_f64().value());
+        let h: [f64; 4] = std::array::from_fn(|i| self.chart[i].to_f64().value());
         Ok(Chart {
             exact: self.chart.clone(),
             form: ChartForm::new(h),
@@ -2487,7 +2487,10 @@ impl<'a> Sampler<'a> {
         if far || swung {
             return Ok(Some(m));
         }
-        let tol = self.tolerance.unwrap_or(f64::INFINITY);
+        // no chord can exceed an infinite tolerance
+        let Some(tol) = self.tolerance else {
+            return Ok(None);
+        };
         let (Some(a), Some(b), Some(c)) = (
             self.chart.affine(&p.x),
             self.chart.affine(&q.x),
@@ -3318,8 +3321,8 @@ fn too_many_points() -> Error {
 
 /// Distance from `c` to the segment `ab`.
 fn chord_deviation(a: &[f64; 3], b: &[f64; 3], c: &[f64; 3]) -> f64 {
-    let ab: Vec<f64> = (0..3).map(|i| b[i] - a[i]).collect();
-    let ac: Vec<f64> = (0..3).map(|i| c[i] - a[i]).collect();
+    let ab: [f64; 3] = std::array::from_fn(|i| b[i] - a[i]);
+    let ac: [f64; 3] = std::array::from_fn(|i| c[i] - a[i]);
     let len2: f64 = ab.iter().map(|v| v * v).sum();
     let t = if len2 > 0.0 {
         (ab.iter().zip(&ac).map(|(x, y)| x * y).sum::<f64>() / len2).clamp(0.0, 1.0)
