@@ -2259,7 +2259,7 @@ fn run_of(
         }
         while let Some(x) = xs.get(j) {
             let hq = value(x);
-            if !(hp * hq > 0.0) {
+            if (hp * hq).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 break;
             }
             hp = hq;
