@@ -98,7 +98,7 @@ impl SampleOptions {
             .iter()
             .rposition(|c| *c != RBig::ZERO)
             .ok_or_else(|| Error::InvalidShape("the chart plane is zero".into()))?;
-        let h = self.chart.clone().map(|c| c.to_f64().value());
+        let h: [f64; 4] = std::array::from_fn(|i| self.chart[i].to_f64().value());
         Ok(Chart {
             exact: self.chart.clone(),
             form: ChartForm::new(h),
@@ -284,6 +284,7 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
                         chart: &chart,
                         tolerance: options.tolerance,
                         approx: &approx,
+                        ends: RefCell::new(Vec::new()),
                         other_sheet: RefCell::new(None),
                     });
                 }
@@ -838,6 +839,20 @@ fn int_dd(v: &IBig) -> Dd {
     // the magnitude from its words where it fits in 127 bits (the usual case, no conversion
     // through the big-integer routines)
     let (sign, words) = v.as_sign_words();
+    // one word below 2⁵³ (the usual coefficient): exact in one float
+    if let [w] = words {
+        if *w < 1 << 53 {
+            let x = *w as f64;
+            return Dd(
+                if sign == dashu_int::Sign::Negative {
+                    -x
+                } else {
+                    x
+                },
+                0.0,
+            );
+        }
+    }
     let bits = dashu_int::Word::BITS;
     if words.len() as u32 * bits <= 128 {
         let m = (words.iter().rev()).fold(0u128, |m, w| (m << (bits % 128)) | u128::from(*w));
@@ -1288,32 +1303,39 @@ impl<'a> Evaluator<'a> {
         plus.resize(n.saturating_sub(1), [0.0; 4]);
         minus.clear();
         minus.resize(n.saturating_sub(1), [0.0; 4]);
-        let out = plus.iter_mut().zip(minus.iter_mut());
-        for ((pu, mu), (t, rev)) in out.zip(grid_parameters(t0, step, n)) {
-            let (a, w, root) = self.parts::<NA, ND>(t, rev);
-            // the same operations as `values` on either sheet
-            let (mut p, mut m) = (a, a);
-            for i in 0..4 {
-                p[i] += root * w[i];
-                m[i] += -root * w[i];
+        // the parameters of `grid_parameters`: a chunk of `RESYNC` from each exact one
+        let (sh, ch) = step.sin_cos();
+        let chunks = plus.chunks_mut(RESYNC).zip(minus.chunks_mut(RESYNC));
+        for (c, (pc, mc)) in chunks.enumerate() {
+            let mut u = (t0 + step * ((c * RESYNC + 1) as f64)).sin_cos();
+            for (pu, mu) in pc.iter_mut().zip(mc.iter_mut()) {
+                let (t, rev) = reduced_parameter(u);
+                u = (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh);
+                let (a, w, root) = self.parts::<NA, ND>(t, rev);
+                // the same operations as `values` on either sheet
+                let (mut p, mut m) = (a, a);
+                for i in 0..4 {
+                    p[i] += root * w[i];
+                    m[i] += -root * w[i];
+                }
+                let (np, nm) = (dot(&p, &p).sqrt(), dot(&m, &m).sqrt());
+                if self.sure(root, np) && nm >= self.sure_norm {
+                    *pu = p.map(|v| v / np);
+                    *mu = m.map(|v| v / nm);
+                    continue;
+                }
+                // `unit_of` on either sheet, the bound at `|t|` shared where it is needed
+                let lhs = self.gamma * self.majorant(t, rev, root);
+                let ok = |norm: f64| {
+                    self.sure(root, norm) || norm.is_finite() && norm > 0.0 && lhs <= 1e-10 * norm
+                };
+                let (p_ok, m_ok) = (ok(np), ok(nm));
+                (*pu, *mu) = if p_ok && m_ok {
+                    (p.map(|v| v / np), m.map(|v| v / nm))
+                } else {
+                    self.certify_both::<NA, ND>(t, rev, root, (p, np, p_ok), (m, nm, m_ok))
+                };
             }
-            let (np, nm) = (dot(&p, &p).sqrt(), dot(&m, &m).sqrt());
-            if self.sure(root, np) && nm >= self.sure_norm {
-                *pu = p.map(|v| v / np);
-                *mu = m.map(|v| v / nm);
-                continue;
-            }
-            // `unit_of` on either sheet, the bound at `|t|` shared where it is needed
-            let lhs = self.gamma * self.majorant(t, rev, root);
-            let ok = |norm: f64| {
-                self.sure(root, norm) || norm.is_finite() && norm > 0.0 && lhs <= 1e-10 * norm
-            };
-            let (p_ok, m_ok) = (ok(np), ok(nm));
-            (*pu, *mu) = if p_ok && m_ok {
-                (p.map(|v| v / np), m.map(|v| v / nm))
-            } else {
-                self.certify_both::<NA, ND>(t, rev, root, (p, np, p_ok), (m, nm, m_ok))
-            };
         }
     }
 
@@ -1744,7 +1766,10 @@ fn projective(u: f64) -> (f64, f64) {
     }
 }
 
-fn span(range: &ParamRange, approx: &dyn Fn(&AlgebraicReal) -> f64) -> Result<ArcSpan, Error> {
+fn span<'r>(
+    range: &'r ParamRange,
+    approx: &dyn Fn(&'r AlgebraicReal) -> f64,
+) -> Result<ArcSpan, Error> {
     let whole = ArcSpan {
         theta: (-FRAC_PI_2, FRAC_PI_2),
         ends: ((-1.0, 0.0), (1.0, 0.0)),
@@ -1778,6 +1803,31 @@ fn span(range: &ParamRange, approx: &dyn Fn(&AlgebraicReal) -> f64) -> Result<Ar
             }
         }
     })
+}
+
+/// A float on the side of `q` given by `up` (`> q` for `up`, `< q` otherwise; `q` itself
+/// when it is zero), from the quotient of the floats of its numerator and denominator (each
+/// rounded to nearest, the quotient too: within `1.5` ulps) moved by `8ε·|v|` (at least four
+/// ulps); NaN where a float is not finite or below the normal range (no such float is known
+/// cheaply). Cheaper than the correctly rounded [`RBig::to_f64`].
+fn inner_f64(q: &RBig, up: bool) -> f64 {
+    let (n, d) = (
+        q.numerator().to_f64().value(),
+        q.denominator().to_f64().value(),
+    );
+    if n == 0.0 && q.numerator().is_zero() {
+        return 0.0;
+    }
+    let v = n / d;
+    if !(v.is_finite() && v.abs() >= f64::MIN_POSITIVE * 1e10) {
+        return f64::NAN;
+    }
+    let m = v.abs() * (8.0 * f64::EPSILON);
+    if up {
+        v + m
+    } else {
+        v - m
+    }
 }
 
 /// The exact coefficients of a component whose coefficients are all rational.
@@ -2062,6 +2112,8 @@ struct Line {
     chart: ChartForm,
     /// `(index, at infinity, singular)`, ascending, at most one per index, never both false.
     marks: Vec<(usize, bool, bool)>,
+    /// The work list of [`Walk`], kept between the arcs (empty).
+    stack: Vec<(Sample, u32)>,
 }
 
 impl Line {
@@ -2158,7 +2210,9 @@ fn push_oriented(line: &mut Line, mut s: Sample) -> bool {
 /// The loop of [`Sampler::fast_run`] over the grid points `xs` with `h = value(x)`: how many
 /// are taken (each within [`MAX_ANGLE`] of the last and, where the crossings are not known,
 /// with `h` of the same sign, nonzero), their `h` oriented pushed to `hs`; the last point
-/// taken and its `h` (`walk`'s where none is).
+/// taken and its `h` (`walk`'s where none is). In three passes over the run, four points a
+/// step where they can be: the angles, the signs of `h`, then `h` stored — the decisions of
+/// [`run_of_reference`], point by point, in fewer instructions.
 #[inline(always)]
 fn run_of(
     xs: &[[f64; 4]],
@@ -2167,35 +2221,88 @@ fn run_of(
     value: impl Fn(&[f64; 4]) -> f64,
 ) -> (usize, [f64; 4], f64) {
     let cos = MAX_ANGLE.cos();
-    let (mut px, mut hp) = (walk.prev.x, walk.h_prev);
-    let (unknown, flip) = (walk.unknown, walk.flip);
-    // `h` written to a buffer on the stack, appended a chunk at a time
-    let mut buf = [0.0; 64];
-    let mut taken = 0;
-    'chunks: for chunk in xs.chunks(buf.len()) {
-        let mut m = 0;
-        for (x, h) in chunk.iter().zip(&mut buf) {
-            // `d ≥ cos > 0`: no change of orientation (false for NaN, a failed point)
-            let d = dot(&px, x);
-            if d.partial_cmp(&cos).is_none_or(|o| o.is_lt()) {
+    // `d ≥ cos > 0`: no change of orientation (false for NaN, a failed point)
+    let near = |a: &[f64; 4], b: &[f64; 4]| dot(a, b) >= cos;
+    // the angles: the first point too far from the one before it
+    let mut k = 0;
+    if xs.first().is_some_and(|x| near(&walk.prev.x, x)) {
+        k = 1;
+        while let Some(w) = xs.get(k - 1..k + 4) {
+            // `&` tests all four: no branch each
+            if !(near(&w[0], &w[1]) & near(&w[1], &w[2]) & near(&w[2], &w[3]) & near(&w[3], &w[4]))
+            {
                 break;
             }
+            k += 4;
+        }
+        while k < xs.len() && near(&xs[k - 1], &xs[k]) {
+            k += 1;
+        }
+    }
+    let mut hp = walk.h_prev;
+    // h at zero or a sign change (or a product below the floats, or `hq = 0`: left to
+    // `accept` too, which takes such a point as this loop would)
+    let taken = if walk.unknown {
+        let xs = &xs[..k];
+        let mut j = 0;
+        while let Some(q) = xs.get(j..j + 4) {
+            let h = [value(&q[0]), value(&q[1]), value(&q[2]), value(&q[3])];
+            if !((hp * h[0] > 0.0)
+                & (h[0] * h[1] > 0.0)
+                & (h[1] * h[2] > 0.0)
+                & (h[2] * h[3] > 0.0))
+            {
+                break;
+            }
+            hp = h[3];
+            j += 4;
+        }
+        while let Some(x) = xs.get(j) {
             let hq = value(x);
-            // h at zero or a sign change (or a product below the floats, or `hq = 0`: left to
-            // `accept` too, which takes such a point as this loop would)
-            if unknown && (hp * hq).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+            if (hp * hq).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 break;
             }
-            *h = if flip { -hq } else { hq };
             hp = hq;
-            px = *x;
-            m += 1;
+            j += 1;
         }
-        hs.extend_from_slice(&buf[..m]);
-        taken += m;
-        if m < chunk.len() {
-            break 'chunks;
+        j
+    } else {
+        k
+    };
+    let xs = &xs[..taken];
+    // `±1·h` is `±h` exactly (every `h` here is finite)
+    let orient = if walk.flip { -1.0 } else { 1.0 };
+    hs.extend(xs.iter().map(|x| value(x) * orient));
+    match xs.last() {
+        Some(x) => (taken, *x, if walk.unknown { hp } else { value(x) }),
+        None => (0, walk.prev.x, walk.h_prev),
+    }
+}
+
+/// [`run_of`] one point at a time (the reference of the tests).
+#[cfg(test)]
+fn run_of_reference(
+    xs: &[[f64; 4]],
+    walk: &Walk,
+    hs: &mut Vec<f64>,
+    value: impl Fn(&[f64; 4]) -> f64,
+) -> (usize, [f64; 4], f64) {
+    let cos = MAX_ANGLE.cos();
+    let (mut px, mut hp) = (walk.prev.x, walk.h_prev);
+    let mut taken = 0;
+    for x in xs {
+        let d = dot(&px, x);
+        if d.partial_cmp(&cos).is_none_or(|o| o.is_lt()) {
+            break;
         }
+        let hq = value(x);
+        if walk.unknown && (hp * hq).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+            break;
+        }
+        hs.push(if walk.flip { -hq } else { hq });
+        hp = hq;
+        px = *x;
+        taken += 1;
     }
     (taken, px, hp)
 }
@@ -2245,12 +2352,15 @@ struct Sampler<'a> {
     chart: &'a Chart,
     tolerance: Option<f64>,
     approx: &'a Approximations,
+    /// The floats of the arc ends met ([`Sampler::end_value`]), by the end's address in
+    /// the curve first (the arcs of an oval share their ends), else by value.
+    ends: RefCell<Vec<(&'a AlgebraicReal, f64)>>,
     /// The grid of the other sheet made with the last one of Levin's form: `(t₀, step, n)`
     /// as bits, the sheet and its points ([`Evaluator::grid_both`]).
     other_sheet: RefCell<Option<OtherSheet>>,
 }
 
-impl Sampler<'_> {
+impl<'a> Sampler<'a> {
     /// The grid of `sheet` on `θₖ = t₀ + k·step` ([`Evaluator::grid`]): on Levin's form both
     /// sheets at once, the other kept for an arc over the same range.
     fn grid(&self, t0: f64, step: f64, n: usize, sheet: Sheet, out: &mut Vec<[f64; 4]>) {
@@ -2281,14 +2391,28 @@ impl Sampler<'_> {
     /// `s` inside the isolating interval of `r` (one simple root of `s` there);
     /// [`AlgebraicReal::to_f64`] (once per call) where that does not bracket it or is
     /// ill-conditioned.
-    fn end_value(&self, r: &AlgebraicReal) -> f64 {
+    fn end_value(&self, r: &'a AlgebraicReal) -> f64 {
+        // the two sheets of an oval share their ends: each found once
+        let known = self.ends.borrow().iter().find_map(|(q, v)| {
+            (std::ptr::eq(*q, r) || q.poly() == r.poly() && q.interval() == r.interval())
+                .then_some(*v)
+        });
+        known.unwrap_or_else(|| {
+            let v = self.end_value_uncached(r);
+            self.ends.borrow_mut().push((r, v));
+            v
+        })
+    }
+
+    /// [`Sampler::end_value`] computed.
+    fn end_value_uncached(&self, r: &AlgebraicReal) -> f64 {
         if let (true, qsic_algebra::roots::RootInterval::Open(lo, hi)) =
             (self.eval.levin, r.interval())
         {
-            if let Some(v) = self
-                .eval
-                .root_of_s(lo.to_f64().value(), hi.to_f64().value())
-            {
+            // floats inside the isolating interval (one root of `s` there): a bracket
+            // `root_of_s` checks, empty where the interval is below the floats' resolution
+            let (l, h) = (inner_f64(lo, true), inner_f64(hi, false));
+            if let Some(v) = self.eval.root_of_s(l, h) {
                 return v;
             }
         }
@@ -2363,7 +2487,10 @@ impl Sampler<'_> {
         if far || swung {
             return Ok(Some(m));
         }
-        let tol = self.tolerance.unwrap_or(f64::INFINITY);
+        // no chord can exceed an infinite tolerance
+        let Some(tol) = self.tolerance else {
+            return Ok(None);
+        };
         let (Some(a), Some(b), Some(c)) = (
             self.chart.affine(&p.x),
             self.chart.affine(&q.x),
@@ -2493,7 +2620,7 @@ impl Sampler<'_> {
     /// nudged), the marks joined.
     fn arc_into(
         &self,
-        arc: &Arc,
+        arc: &'a Arc,
         n: usize,
         budget: &mut usize,
         line: &mut Line,
@@ -2531,7 +2658,7 @@ impl Sampler<'_> {
         let mut walk = Walk {
             prev: first,
             h_prev: self.chart.value(&first.x),
-            stack: Vec::new(),
+            stack: std::mem::take(&mut line.stack),
             unknown: matches!(self.crossings, Crossings::Unknown),
             flip,
         };
@@ -2579,6 +2706,7 @@ impl Sampler<'_> {
         for e in &events[ei..] {
             self.walk_to(&mut walk, *e, sheet, budget, line)?;
         }
+        line.stack = walk.stack;
         if arc.reversed {
             let x = &line.x;
             if start > 0 && x.len() > start + 1 && joins(&x[start - 1], &x[x.len() - 1]) {
@@ -2628,8 +2756,8 @@ impl Sampler<'_> {
             Some((j, c)) => run_of(xs, walk, &mut line.h, |x| c * x[j & 3]),
             None => run_of(xs, walk, &mut line.h, |x| dot(&form.h, x)),
         };
-        let flip = walk.flip;
         let xs = &xs[..taken];
+        let flip = walk.flip;
         line.x
             .extend(xs.iter().map(|x| if flip { x.map(|v| -v) } else { *x }));
         if taken > 0 {
@@ -2765,7 +2893,7 @@ impl Sampler<'_> {
     fn piece(
         &self,
         component: usize,
-        arcs: &[Arc],
+        arcs: &'a [Arc],
         closed: bool,
         points: usize,
         budget: &mut usize,
@@ -2776,6 +2904,7 @@ impl Sampler<'_> {
             h: Vec::with_capacity(arcs.len() * (n + n / 8 + 8)),
             chart: self.chart.form,
             marks: Vec::new(),
+            stack: Vec::new(),
         };
         for arc in arcs {
             self.arc_into(arc, n, budget, &mut line)?;
@@ -2934,6 +3063,14 @@ impl Sampler<'_> {
                         // `hx ≠ 0` with the sign of `hp > 0`: `±sign·h > 0` (false for NaN,
                         // left to the point-by-point step)
                         let s = if hp > 0.0 { sign } else { -sign };
+                        // four at a time (`&` tests all four, no branch each), then one
+                        while let Some(q) = hs.get(i..i + 4) {
+                            let pos = |v: f64| s * v > 0.0;
+                            if !(pos(q[0]) & pos(q[1]) & pos(q[2]) & pos(q[3])) {
+                                break;
+                            }
+                            i += 4;
+                        }
                         while i < len && s * hs[i] > 0.0 {
                             i += 1;
                         }
@@ -3184,8 +3321,8 @@ fn too_many_points() -> Error {
 
 /// Distance from `c` to the segment `ab`.
 fn chord_deviation(a: &[f64; 3], b: &[f64; 3], c: &[f64; 3]) -> f64 {
-    let ab: Vec<f64> = (0..3).map(|i| b[i] - a[i]).collect();
-    let ac: Vec<f64> = (0..3).map(|i| c[i] - a[i]).collect();
+    let ab: [f64; 3] = std::array::from_fn(|i| b[i] - a[i]);
+    let ac: [f64; 3] = std::array::from_fn(|i| c[i] - a[i]);
     let len2: f64 = ab.iter().map(|v| v * v).sum();
     let t = if len2 > 0.0 {
         (ab.iter().zip(&ac).map(|(x, y)| x * y).sum::<f64>() / len2).clamp(0.0, 1.0)
@@ -3583,5 +3720,299 @@ mod tests {
             }
         }
         assert!(checked > 2000 && unrolled > 0, "{checked} {unrolled}");
+    }
+
+    /// Curves of random generic pairs with a real piece on a Levin component: the curve and
+    /// the component's index.
+    fn levin_curves(seed: u64, count: usize) -> Vec<(Curve, usize)> {
+        let mut rng = SplitMix(seed);
+        let mut out = Vec::new();
+        while out.len() < count {
+            let mut m = [[[0i64; 4]; 4]; 2];
+            for q in &mut m {
+                for i in 0..4 {
+                    for j in i..4 {
+                        let c = rng.int(-10, 10);
+                        q[i][j] = if i == j { 2 * c } else { c };
+                        q[j][i] = q[i][j];
+                    }
+                }
+            }
+            let (Ok(a), Ok(b)) = (Quadric::from_integers(m[0]), Quadric::from_integers(m[1]))
+            else {
+                continue;
+            };
+            let Ok(curve) = crate::param::parameterize(&a, &b) else {
+                continue;
+            };
+            let levin = curve.pieces.iter().find_map(|p| match p {
+                RealPiece::Curve { component, .. } => matches!(
+                    curve.components[*component].param,
+                    Some(ComponentParam::Levin { .. })
+                )
+                .then_some(*component),
+                RealPiece::Point { .. } => None,
+            });
+            if let Some(k) = levin {
+                out.push((curve, k));
+            }
+        }
+        out
+    }
+
+    /// A sampler of `param` with no exact events (crossings located along the walk).
+    fn test_sampler<'a>(
+        param: &'a ComponentParam,
+        chart: &'a Chart,
+        approx: &'a Approximations,
+    ) -> Sampler<'a> {
+        Sampler {
+            eval: Evaluator::new(param).unwrap(),
+            crossings: Crossings::Unknown,
+            singular: Vec::new(),
+            chart,
+            tolerance: None,
+            approx,
+            ends: RefCell::new(Vec::new()),
+            other_sheet: RefCell::new(None),
+        }
+    }
+
+    /// The arc ends kept by [`Sampler::end_value`] are the ends found afresh, bit for bit,
+    /// and an end shared by two arcs (the two sheets of an oval) is found once.
+    #[test]
+    fn arc_ends_found_once_are_the_ends_found_afresh() {
+        let (mut shared, mut checked) = (0, 0);
+        let chart = SampleOptions::default().chart().unwrap();
+        for (curve, k) in levin_curves(0xe4d5, 12) {
+            let param = curve.components[k].param.as_ref().unwrap();
+            let approx = Approximations::default();
+            let sampler = test_sampler(param, &chart, &approx);
+            let mut ends: Vec<&AlgebraicReal> = Vec::new();
+            for piece in &curve.pieces {
+                let RealPiece::Curve {
+                    component, arcs, ..
+                } = piece
+                else {
+                    continue;
+                };
+                if *component != k {
+                    continue;
+                }
+                for arc in arcs {
+                    let ParamRange::Between(lo, hi) = &arc.range else {
+                        continue;
+                    };
+                    for r in [lo, hi].into_iter().filter_map(|v| match v {
+                        ParamValue::Finite(r) => Some(r),
+                        ParamValue::Infinity => None,
+                    }) {
+                        let kept = sampler.end_value(r);
+                        let fresh = sampler.end_value_uncached(r);
+                        assert_eq!(kept.to_bits(), fresh.to_bits(), "{r:?}");
+                        // the end itself
+                        let exact = r.to_f64();
+                        assert!((kept - exact).abs() <= 1e-9 * (1.0 + exact.abs()), "{r:?}");
+                        if ends
+                            .iter()
+                            .any(|q| q.poly() == r.poly() && q.interval() == r.interval())
+                        {
+                            shared += 1;
+                        } else {
+                            ends.push(r);
+                        }
+                        checked += 1;
+                    }
+                }
+            }
+            assert_eq!(
+                sampler.ends.borrow().len(),
+                ends.len(),
+                "one search per end"
+            );
+        }
+        assert!(checked >= 24 && shared >= 12, "{checked} {shared}");
+    }
+
+    /// The affine view cut in runs of one sign of `h` ([`Sampler::affine`], four points a
+    /// step) is the point-by-point reference on random polylines: runs of either sign,
+    /// zeros of either sign, tiny values, marks at infinity and singular, open and closed.
+    #[cfg(debug_assertions)]
+    #[test]
+    fn affine_view_in_runs_matches_point_by_point() {
+        let mut rng = SplitMix(0xaff1);
+        let param = &levin_params(0xaff2, 1)[0];
+        let approx = Approximations::default();
+        for chart in [
+            SampleOptions::default(),
+            SampleOptions {
+                chart: [1, 0, -2, 1].map(RBig::from),
+                ..SampleOptions::default()
+            },
+        ] {
+            let chart = chart.chart().unwrap();
+            let sampler = test_sampler(param, &chart, &approx);
+            let mut cuts = 0;
+            for _ in 0..400 {
+                let len = rng.int(1, 40) as usize;
+                let mut line = Line {
+                    chart: chart.form,
+                    ..Line::default()
+                };
+                let mut sign = 1.0;
+                for k in 0..len {
+                    if rng.int(0, 9) == 0 {
+                        sign = -sign;
+                    }
+                    let mut x = [0.0; 4].map(|_| rng.int(-1000, 1000) as f64 / 1000.0);
+                    x[3] = sign * (rng.int(1, 1000) as f64 / 1000.0);
+                    match rng.int(0, 40) {
+                        0 => x = x.map(|_| 0.0),
+                        1 => x[3] = -0.0,
+                        2 => x[3] = sign * 1e-300,
+                        _ => {}
+                    }
+                    let (inf, sing) = (rng.int(0, 15) == 0, rng.int(0, 15) == 0);
+                    line.push(&Sample {
+                        theta: k as f64,
+                        x,
+                        at_infinity: inf,
+                        singular: sing,
+                    });
+                }
+                let closed = rng.int(0, 1) == 0;
+                let got = sampler.affine(&line, closed);
+                cuts += got.branches.len();
+                assert_eq!(got, sampler.affine_two_pass(&line, closed), "{:?}", line.x);
+            }
+            assert!(cuts > 800, "{cuts}");
+        }
+    }
+
+    /// One-word integers around the double's 53 bits (the fast path of [`int_dd`]) and
+    /// beyond it split exactly: `hi + lo = v`.
+    #[test]
+    fn one_word_integers_split_exactly() {
+        let two = |e: u32| 1u64 << e;
+        for w in [
+            0,
+            1,
+            2,
+            two(52) - 1,
+            two(53) - 1,
+            two(53),
+            two(53) + 1,
+            two(63),
+            u64::MAX,
+        ] {
+            for neg in [false, true] {
+                let v = if neg { -IBig::from(w) } else { IBig::from(w) };
+                let d = int_dd(&v);
+                assert_eq!(integral_f64_to_ibig(d.0) + integral_f64_to_ibig(d.1), v);
+                assert!(d.1.abs() <= d.0.abs() * f64::EPSILON, "{v}: {d:?}");
+            }
+        }
+    }
+
+    /// The walk's run in passes ([`run_of`]) takes the points, `h` and end point of the
+    /// reference point by point, on random runs: small steps, jumps, antipodal flips, NaN,
+    /// sign changes and zeros of `h`, crossings known or not, either orientation.
+    #[test]
+    fn run_in_passes_matches_point_by_point() {
+        let mut rng = SplitMix(0x2a2a);
+        let mut stops = [0usize; 3];
+        for _ in 0..3000 {
+            let len = rng.int(0, 30) as usize;
+            let mut x = [1.0, 0.1, -0.2, 0.3];
+            let mut xs = Vec::with_capacity(len);
+            for _ in 0..len {
+                let step = match rng.int(0, 60) {
+                    0 => 1.0,
+                    _ => 0.04,
+                };
+                for v in &mut x {
+                    *v += step * rng.int(-1000, 1000) as f64 / 1000.0;
+                }
+                let mut y = unit(x).unwrap_or([1.0, 0.0, 0.0, 0.0]);
+                match rng.int(0, 80) {
+                    0 => y = y.map(|v| -v),
+                    1 => y[0] = f64::NAN,
+                    2 => y[3] = 0.0,
+                    _ => {}
+                }
+                xs.push(y);
+            }
+            let walk = Walk {
+                prev: Sample::new(0.0, unit([1.0, 0.1, -0.2, 0.3]).unwrap()),
+                h_prev: [0.3, -0.3, 0.0][rng.int(0, 2) as usize],
+                stack: Vec::new(),
+                unknown: rng.int(0, 3) > 0,
+                flip: rng.int(0, 1) == 0,
+            };
+            let h = [rng.int(-3, 3) as f64, 0.0, rng.int(-3, 3) as f64, 1.0];
+            let value = |x: &[f64; 4]| dot(&h, x);
+            let (mut got_h, mut want_h) = (vec![7.0], vec![7.0]);
+            let got = run_of(&xs, &walk, &mut got_h, value);
+            let want = run_of_reference(&xs, &walk, &mut want_h, value);
+            assert_eq!(got.0, want.0, "{xs:?}");
+            assert_eq!(got.1.map(f64::to_bits), want.1.map(f64::to_bits));
+            assert_eq!(got.2.to_bits(), want.2.to_bits());
+            assert_eq!(
+                got_h.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+                want_h.iter().map(|v| v.to_bits()).collect::<Vec<_>>()
+            );
+            stops[match () {
+                _ if got.0 == len => 0,
+                _ if dot(&got.1, &xs[got.0]) >= MAX_ANGLE.cos() => 1,
+                _ => 2,
+            }] += 1;
+        }
+        // runs taken whole, stopped by `h`, stopped by an angle
+        assert!(stops.iter().all(|&c| c > 200), "{stops:?}");
+    }
+
+    /// [`inner_f64`] lies strictly on its side of the rational (checked exactly), on random
+    /// rationals of all sizes, and an interval narrower than its margin gives an empty
+    /// bracket, on which [`Evaluator::root_of_s`] declines (the caller falls back to the
+    /// exact approximation).
+    #[test]
+    fn inner_floats_stay_inside_their_interval() {
+        let mut rng = SplitMix(0x1a2b);
+        for bits in [1u32, 20, 52, 53, 60, 120, 300, 900] {
+            for _ in 0..50 {
+                let num = (IBig::from(rng.next_u64()) << bits as usize) >> 64;
+                let den = (IBig::from(rng.next_u64() | 1) << (bits / 2) as usize) >> 64;
+                let den = if den.is_zero() { IBig::ONE } else { den };
+                let q = RBig::from_parts_signed(if rng.int(0, 1) == 0 { -num } else { num }, den);
+                for up in [false, true] {
+                    let f = inner_f64(&q, up);
+                    if q.is_zero() {
+                        assert_eq!(f, 0.0);
+                        continue;
+                    }
+                    let exact = RBig::try_from(f).expect("finite");
+                    assert_eq!(exact > q, up, "{q} {f}");
+                    assert!(((f - q.to_f64().value()) / f).abs() < 1e-14);
+                }
+            }
+        }
+        // beyond the floats: NaN, no bracket
+        let huge = RBig::from(IBig::ONE << 2000);
+        assert!(inner_f64(&huge, true).is_nan());
+        assert!(inner_f64(&(RBig::ONE / huge), false).is_nan());
+        // an interval narrower than the margins: the bracket is empty and declined
+        let param = &levin_params(0x1a2c, 1)[0];
+        let eval = Evaluator::new(param).unwrap();
+        let lo = RBig::from_parts_signed(
+            IBig::from(1_000_000_000_000_001i64),
+            IBig::from(1_000_000_000_000_000i64),
+        );
+        let hi = RBig::from_parts_signed(
+            IBig::from(1_000_000_000_000_002i64),
+            IBig::from(1_000_000_000_000_000i64),
+        );
+        let (l, h) = (inner_f64(&lo, true), inner_f64(&hi, false));
+        assert!(l > h);
+        assert_eq!(eval.root_of_s(l, h), None);
     }
 }
