@@ -1421,11 +1421,15 @@ fn zq_sign(c: &zsqrt::Zq, delta: &IBig) -> Sign {
 
 /// The real roots of `s` (see [`DiscriminantRoots`]).
 fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
-    let rational: Option<Vec<RBig>> = s
-        .coeffs()
-        .iter()
-        .map(|c| c.as_rational().cloned())
-        .collect();
+    // (collected only when every coefficient is rational: no clones on the common path)
+    let rational: Option<Vec<RBig>> = if s.coeffs().iter().all(|c| c.as_rational().is_some()) {
+        s.coeffs()
+            .iter()
+            .map(|c| c.as_rational().cloned())
+            .collect()
+    } else {
+        None
+    };
     // the exact sign of s at a rational: in integers when s is integral over ℤ[√δ]
     let delta = s
         .coeffs()
@@ -1487,12 +1491,12 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
     let mut samples = Vec::new();
     match (roots.first(), roots.last()) {
         (Some(first), Some(last)) => {
-            samples.push(RBig::from(first.interval().lo().floor()) - RBig::ONE);
+            samples.push(RBig::from(first.interval().lo().floor() - IBig::ONE));
             // the stated intervals come from one isolation of the norm: disjoint, short ends
             for w in roots.windows(2) {
                 samples.push(sample_between(w[0].interval(), w[1].interval()));
             }
-            samples.push(RBig::from(last.interval().hi().ceil()) + RBig::ONE);
+            samples.push(RBig::from(last.interval().hi().ceil() + IBig::ONE));
         }
         _ => samples.push(RBig::ZERO),
     }
