@@ -33,7 +33,7 @@ use dashu_int::IBig;
 use dashu_ratio::RBig;
 use std::cmp::Ordering;
 use std::fmt;
-use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
+use std::sync::{Arc, Mutex, MutexGuard, OnceLock, PoisonError};
 
 /// A real algebraic number `α`.
 ///
@@ -43,14 +43,44 @@ use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 /// interval, whose ends are not roots.
 #[derive(Clone)]
 pub struct AlgebraicReal {
-    /// Shared by the roots isolated together (one allocation for all of them).
-    poly: Arc<Poly>,
+    /// The defining polynomial, shared by the roots isolated together (one allocation for
+    /// all of them), made on first use when it is a norm.
+    poly: Arc<Defining>,
     interval: RootInterval,
     /// The narrowest interval known, shared by clones (module docs).
     refined: Arc<Mutex<Refinement>>,
     /// A float `c` and a rigorous bound `r` with `|α − c| ≤ r`, when the number was isolated
     /// by the certified float path (a cache for [`AlgebraicReal::to_f64`]).
     enclosure: Option<(f64, f64)>,
+}
+
+/// The defining polynomial of [`AlgebraicReal`], or what makes it on first use: the roots of
+/// `s = A + B√δ` ([`AlgebraicReal::certified_real_roots_zsqrt`]) are isolated without their
+/// norm `A² − δB²`, which many callers never read.
+struct Defining {
+    poly: OnceLock<Poly>,
+    /// `A`, `B` (coefficients from degree 0, `len` of them) and `δ` of the norm not made yet.
+    norm: Option<([IBig; 5], [IBig; 5], usize, IBig)>,
+}
+
+impl Defining {
+    fn made(poly: Poly) -> Defining {
+        Defining {
+            poly: OnceLock::from(poly),
+            norm: None,
+        }
+    }
+
+    fn get(&self) -> &Poly {
+        self.poly.get_or_init(|| match &self.norm {
+            Some((a, b, len, delta)) => {
+                let (a, b): (Vec<&IBig>, Vec<&IBig>) =
+                    (a[..*len].iter().collect(), b[..*len].iter().collect());
+                norm_zsqrt(&a, &b, delta)
+            }
+            None => Poly::zero(),
+        })
+    }
 }
 
 /// An isolating interval and the state of its quadratic refinement (see [`refine_step`]).
@@ -98,10 +128,10 @@ impl Refinement {
 
 impl AlgebraicReal {
     fn with_interval(poly: Poly, interval: RootInterval) -> AlgebraicReal {
-        AlgebraicReal::with_shared(Arc::new(poly), interval)
+        AlgebraicReal::with_shared(Arc::new(Defining::made(poly)), interval)
     }
 
-    fn with_shared(poly: Arc<Poly>, interval: RootInterval) -> AlgebraicReal {
+    fn with_shared(poly: Arc<Defining>, interval: RootInterval) -> AlgebraicReal {
         AlgebraicReal {
             poly,
             refined: Arc::new(Mutex::new(Refinement::new(interval.clone()))),
@@ -124,7 +154,7 @@ impl AlgebraicReal {
             return vec![AlgebraicReal::from_rational(v)];
         }
         let intervals = isolate_squarefree_real_roots(&sf);
-        let sf = Arc::new(sf);
+        let sf = Arc::new(Defining::made(sf));
         intervals
             .into_iter()
             .map(|iv| match iv {
@@ -184,7 +214,7 @@ impl AlgebraicReal {
             g = crate::int_gcd(&g, c);
         }
         let lead_positive = p.leading() > IBig::ZERO;
-        let sf = Arc::new(if !g.is_one() {
+        let sf = Arc::new(Defining::made(if !g.is_one() {
             // g is the content (the loop ran through every coefficient)
             let g = if lead_positive { g } else { -g };
             Poly::new(coeffs.iter().map(|c| c / &g).collect())
@@ -192,7 +222,7 @@ impl AlgebraicReal {
             p.clone()
         } else {
             -p
-        });
+        }));
         Some(
             roots
                 .into_iter()
@@ -213,13 +243,14 @@ impl AlgebraicReal {
     }
 
     /// The real roots of `s = A + B√δ` (`A = Σaᵢxⁱ`, `B = Σbᵢxⁱ`, `δ > 0` not a square,
-    /// degree 1 to 4, `s(0) ≠ 0`), each defined by the primitive norm `A² − δB²`, isolated in
+    /// degree 1 to 4, `s(0) ≠ 0`), each defined by the primitive norm `A² − δB²` (one for all
+    /// of them, made when [`Self::poly`] or a refinement first needs it), isolated in
     /// floats with a proof ([`certified_real_roots_zsqrt`](crate::roots::certified_real_roots_zsqrt));
-    /// `None` if the certificate fails or the norm overflows `i128` (the caller then
-    /// isolates exactly). `Some` proves the norm square-free.
+    /// `None` if the certificate fails (the caller then isolates exactly). `Some` proves the
+    /// norm square-free.
     ///
     /// ```
-    /// # use qsic_algebra::{AlgebraicReal, IBig};
+    /// # use qsic_algebra::{AlgebraicReal, IBig, Poly};
     /// // s = x² − 3 + √2·x: the roots (−√2 ± √14)/2
     /// let ([a0, a2], [zero, one]) = ([IBig::from(-3), IBig::ONE], [IBig::ZERO, IBig::ONE]);
     /// let (a, b) = ([&a0, &zero, &a2], [&zero, &one, &zero]);
@@ -227,6 +258,7 @@ impl AlgebraicReal {
     /// assert_eq!(r.len(), 2);
     /// let want = (14f64.sqrt() - 2f64.sqrt()) / 2.0;
     /// assert!((r[1].to_f64() - want).abs() < 1e-12);
+    /// assert_eq!(r[0].poly(), &Poly::from_i64s(&[9, 0, -8, 0, 1])); // (x² − 3)² − 2x²
     /// ```
     pub fn certified_real_roots_zsqrt(
         a: &[&IBig],
@@ -237,8 +269,14 @@ impl AlgebraicReal {
         if roots.is_empty() {
             return Some(Vec::new());
         }
-        // one norm for all the roots
-        let poly = Arc::new(norm_zsqrt(a, b, delta));
+        // one norm for all the roots, made when first read
+        let len = a.len();
+        let take =
+            |v: &[&IBig]| std::array::from_fn(|i| v.get(i).map_or(IBig::ZERO, |&x| x.clone()));
+        let poly = Arc::new(Defining {
+            poly: OnceLock::new(),
+            norm: Some((take(a), take(b), len, delta.clone())),
+        });
         Some(
             roots
                 .into_iter()
@@ -270,18 +308,18 @@ impl AlgebraicReal {
     /// The same number defined by `factor`, a primitive factor of [`Self::poly`] of which
     /// it is a root, isolated by the refined interval (a fresh refinement state).
     pub(crate) fn with_factor(&self, factor: &Poly) -> AlgebraicReal {
-        debug_assert!(self.poly.div_exact(factor).is_some() && self.is_root_of_divisor(factor));
+        debug_assert!(self.poly().div_exact(factor).is_some() && self.is_root_of_divisor(factor));
         AlgebraicReal::with_interval(factor.clone(), self.snapshot().interval)
     }
 
     /// Checks the invariant (used in `debug_assert!`).
     pub fn is_valid(&self) -> bool {
         let valid = |iv: &RootInterval| match iv {
-            RootInterval::Exact(v) => self.poly.sign_at(v).is_zero(),
+            RootInterval::Exact(v) => self.poly().sign_at(v).is_zero(),
             RootInterval::Open(lo, hi) => {
                 lo < hi
-                    && self.poly.is_squarefree()
-                    && self.poly.sign_at(lo) * self.poly.sign_at(hi) == Sign::Negative
+                    && self.poly().is_squarefree()
+                    && self.poly().sign_at(lo) * self.poly().sign_at(hi) == Sign::Negative
             }
         };
         valid(&self.interval) && valid(&self.snapshot().interval)
@@ -289,7 +327,7 @@ impl AlgebraicReal {
 
     /// The defining square-free polynomial (for a rational, `q·x − p`).
     pub fn poly(&self) -> &Poly {
-        &self.poly
+        self.poly.get()
     }
 
     /// The stated isolating interval (the one made with, or narrowed by [`Self::refine`]
@@ -333,7 +371,7 @@ impl AlgebraicReal {
             return r.interval;
         }
         while !r.is_within(width) {
-            r.step(&self.poly);
+            r.step(self.poly());
         }
         let iv = r.interval.clone();
         self.store(r);
@@ -345,7 +383,7 @@ impl AlgebraicReal {
     /// are). Starts from the shared refinement state.
     pub fn refine(&mut self) {
         let mut r = self.snapshot();
-        r.step(&self.poly);
+        r.step(self.poly());
         self.interval = r.interval.clone();
         self.store(r);
     }
@@ -377,7 +415,7 @@ impl AlgebraicReal {
             return s;
         }
         if let RootInterval::Open(lo, hi) = &r.interval {
-            let g = self.poly.gcd(q);
+            let g = self.poly().gcd(q);
             if g.degree().unwrap_or(0) > 0 && g.sign_at(lo) * g.sign_at(hi) == Sign::Negative {
                 return Sign::Zero;
             }
@@ -404,7 +442,7 @@ impl AlgebraicReal {
     /// Refines `r` until it decides the sign of `q` (nonzero at `α`), and stores it.
     fn refine_until_signed(&self, mut r: Refinement, q: &Poly) -> Sign {
         let s = loop {
-            r.step(&self.poly);
+            r.step(self.poly());
             if let Some(s) = r.sign_of(q) {
                 break s;
             }
@@ -437,7 +475,7 @@ impl AlgebraicReal {
         match self.snapshot().interval {
             RootInterval::Exact(v) => q.sign_at(&v),
             RootInterval::Open(lo, hi) => {
-                match crate::poly::sturm::tarski_query_in(&self.poly, q, &lo, &hi) {
+                match crate::poly::sturm::tarski_query_in(self.poly(), q, &lo, &hi) {
                     0 => Sign::Zero,
                     t if t > 0 => Sign::Positive,
                     _ => Sign::Negative,
@@ -476,7 +514,7 @@ impl AlgebraicReal {
         }
         if let RootInterval::Open(lo, hi) = &self.snapshot().interval {
             let (l, h) = (lo.to_f64().value(), hi.to_f64().value());
-            if let Some(x) = newton_in(&self.poly, l, h) {
+            if let Some(x) = newton_in(self.poly(), l, h) {
                 return x;
             }
         }
@@ -497,14 +535,14 @@ impl AlgebraicReal {
             if ahi == blo && a_exact != b_exact {
                 // a point strictly inside the open interval next to the exact value
                 if !a_exact {
-                    a.step(&self.poly);
+                    a.step(self.poly());
                 } else {
-                    b.step(&other.poly);
+                    b.step(other.poly());
                 }
                 continue;
             }
-            a.step(&self.poly);
-            b.step(&other.poly);
+            a.step(self.poly());
+            b.step(other.poly());
         };
         self.store(a);
         other.store(b);
@@ -722,7 +760,7 @@ impl Ord for AlgebraicReal {
         if let Some(v) = b.interval.as_exact() {
             return self.cmp(&AlgebraicReal::from_rational(v.clone()));
         }
-        if equal_open(&self.poly, &a.interval, &other.poly, &b.interval) {
+        if equal_open(self.poly(), &a.interval, other.poly(), &b.interval) {
             return Ordering::Equal;
         }
         // different numbers: refinement separates them; only the wider interval is refined,
@@ -734,9 +772,9 @@ impl Ord for AlgebraicReal {
                 break o;
             }
             if width(&a.interval) >= width(&b.interval) {
-                a.step(&self.poly);
+                a.step(self.poly());
             } else {
-                b.step(&other.poly);
+                b.step(other.poly());
             }
         };
         self.store(a);
@@ -756,7 +794,7 @@ impl fmt::Display for AlgebraicReal {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match &self.interval {
             RootInterval::Exact(v) => write!(f, "{v}"),
-            RootInterval::Open(lo, hi) => write!(f, "root of {} in ({lo}, {hi})", self.poly),
+            RootInterval::Open(lo, hi) => write!(f, "root of {} in ({lo}, {hi})", self.poly()),
         }
     }
 }
@@ -1501,6 +1539,8 @@ mod tests {
                 assert_eq!(roots, exact, "{pa} {pb} {delta}");
                 for r in &roots {
                     assert!(r.is_valid() && r.poly() == &want, "{r:?}");
+                    // one norm, made once, for all the roots of one s
+                    assert!(std::ptr::eq(r.poly(), roots[0].poly()));
                 }
                 roots_seen += roots.len();
             }

@@ -160,10 +160,16 @@ fn minor_sums_i128(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> Option<[[i128; 5]; 4
         e[0][0] -= i128::from(b[i][i]);
         e[0][1] += i128::from(a[i][i]);
     }
-    let mut add = |k: usize, sign: i128, x: &[i64], y: &[i64]| {
+    // e[k] ± x·y (products of two i64: one widening multiplication each)
+    let mut add = |k: usize, plus: bool, x: &[i64], y: &[i64]| {
         for (i, &xi) in x.iter().enumerate() {
             for (j, &yj) in y.iter().enumerate() {
-                e[k][i + j] += sign * i128::from(xi) * i128::from(yj);
+                let p = i128::from(xi) * i128::from(yj);
+                if plus {
+                    e[k][i + j] += p;
+                } else {
+                    e[k][i + j] -= p;
+                }
             }
         }
     };
@@ -179,20 +185,19 @@ fn minor_sums_i128(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> Option<[[i128; 5]; 4
     // {0,2,3} and {1,2,3} along their first
     for (row, pairs) in [(2, [3, 1, 0]), (3, [4, 2, 0])] {
         let cols = [PAIRS[pairs[2]][0], PAIRS[pairs[2]][1], row];
-        for (t, sign) in [(0, 1), (1, -1), (2, 1)] {
-            add(2, sign, &m(row, cols[t]), &top[pairs[t]]);
+        for t in 0..3 {
+            add(2, t != 1, &m(row, cols[t]), &top[pairs[t]]);
         }
     }
     for (row, pairs) in [(0, [5, 2, 1]), (1, [5, 4, 3])] {
         let cols = [row, PAIRS[pairs[0]][0], PAIRS[pairs[0]][1]];
-        for (t, sign) in [(0, 1), (1, -1), (2, 1)] {
-            add(2, sign, &m(row, cols[t]), &bottom[pairs[t]]);
+        for t in 0..3 {
+            add(2, t != 1, &m(row, cols[t]), &bottom[pairs[t]]);
         }
     }
     // Laplace along rows {0, 1}: the sign of columns {c₀, c₁} is (−1)^(1 + c₀ + c₁)
     for (p, c) in PAIRS.iter().enumerate() {
-        let sign = if (c[0] + c[1]) % 2 == 1 { 1 } else { -1 };
-        add(3, sign, &top[p], &bottom[5 - p]);
+        add(3, (c[0] + c[1]) % 2 == 1, &top[p], &bottom[5 - p]);
     }
     for q in &e2 {
         for (i, &v) in q.iter().enumerate() {
@@ -337,12 +342,22 @@ fn small_parts(x: &RBig) -> Option<(i128, i128)> {
 /// most `Σ|cᵢ|·max(|n|, |d|)^m` in magnitude: below `2¹²⁶` the plain operations are exact,
 /// else each is checked.
 fn sign_homogeneous(c: &[i128], n: i128, d: i128) -> Option<Sign> {
-    let (last, rest) = c.split_last()?;
+    sign_homogeneous_with(c, sum_bits(c), n, d)
+}
+
+/// The bit length of `Σ|cᵢ|` (saturating at `2¹²⁸ − 1`).
+fn sum_bits(c: &[i128]) -> u32 {
     let sum = c
         .iter()
         .fold(0u128, |acc, v| acc.saturating_add(v.unsigned_abs()));
+    128 - sum.leading_zeros()
+}
+
+/// [`sign_homogeneous`] with `sum_bits(c)` given (made once per polynomial).
+fn sign_homogeneous_with(c: &[i128], sum_bits: u32, n: i128, d: i128) -> Option<Sign> {
+    let (last, rest) = c.split_last()?;
     let base = n.unsigned_abs().max(d.unsigned_abs());
-    let bits = (128 - sum.leading_zeros()) + rest.len() as u32 * (128 - base.leading_zeros());
+    let bits = sum_bits + rest.len() as u32 * (128 - base.leading_zeros());
     let mut acc = *last;
     let mut dpow = 1i128;
     if bits <= 126 {
@@ -443,13 +458,14 @@ pub(crate) fn quick_arc_samples(a: &Quadric, b: &Quadric) -> Option<Vec<(RBig, I
     // else the floats were too coarse here and the caller takes the analysis
     let mut last = Sign::Zero;
     let mut out = Vec::with_capacity(count + 1);
+    let bits: [u32; 4] = std::array::from_fn(|k| sum_bits(&e[k][..k + 2]));
     for &(n, k) in &samples[..=count] {
         let d = 1i128.checked_shl(k)?;
         let signs: [Sign; 4] = [
-            sign_homogeneous(&e[0][..2], n, d)?,
-            sign_homogeneous(&e[1][..3], n, d)?,
-            sign_homogeneous(&e[2][..4], n, d)?,
-            sign_homogeneous(&e[3][..5], n, d)?,
+            sign_homogeneous_with(&e[0][..2], bits[0], n, d)?,
+            sign_homogeneous_with(&e[1][..3], bits[1], n, d)?,
+            sign_homogeneous_with(&e[2][..4], bits[2], n, d)?,
+            sign_homogeneous_with(&e[3][..5], bits[3], n, d)?,
         ];
         if signs[3] == Sign::Zero || signs[3] == last {
             return None;
@@ -458,6 +474,7 @@ pub(crate) fn quick_arc_samples(a: &Quadric, b: &Quadric) -> Option<Vec<(RBig, I
         // n/2ᵏ with n odd when k > 0 (the rule's least k): in lowest terms; through a float
         // (exact below 2⁵³, which reduces by trailing zeros only) when it fits
         let x = match i64::try_from(n) {
+            Ok(v) if k == 0 => RBig::from(v),
             Ok(v) if v.unsigned_abs() < 1 << 53 && k <= 1000 => {
                 RBig::try_from(v as f64 / 2f64.powi(k as i32)).ok()?
             }

@@ -693,8 +693,14 @@ pub fn quartic_roots_f64(c: &[f64; 5]) -> Option<[(f64, f64); 4]> {
     // roots −c₃/c₄ (two approximations of one root would leave another root out)
     let plausible = |z: &[Complex; 4]| {
         let values = z.iter().all(|&w| {
-            let (v, _, mag) = eval_with_derivative(&scaled, w);
-            v.abs() <= 64.0 * U * mag
+            // p(w) by Horner's rule and Σ|cₖ||w|ᵏ, compared squared (no square roots)
+            let (aw, mut v, mut mag) = (w.abs(), Complex::ZERO, 0.0);
+            for &ck in scaled.iter().rev() {
+                v = v.mul(w).add(Complex { re: ck, im: 0.0 });
+                mag = mag * aw + ck.abs();
+            }
+            let tol = 64.0 * U * mag;
+            v.norm_sqr() <= tol * tol
         });
         let sum = z.iter().fold(Complex::ZERO, |acc, &w| acc.add(w));
         let size: f64 = z.iter().map(|w| w.abs()).sum();
@@ -1035,14 +1041,13 @@ pub fn certified_real_roots_zsqrt(
     Some(out)
 }
 
-/// The certificate of [`certified_real_roots_zsqrt`]: the real disks of `s` as (centre,
-/// radius, gap to every other disk and to 0) in the variable `y = x/2ᵏ`, sorted by centre,
-/// their number and `k`.
-fn zsqrt_real_disks(
-    a: &[&IBig],
-    b: &[&IBig],
-    delta: &IBig,
-) -> Option<([(f64, f64, f64); 4], usize, i64)> {
+/// A real disk of `s`: centre, radius, and a lower bound on its gap to every other disk and
+/// to 0.
+type RealDisk = (f64, f64, f64);
+
+/// The certificate of [`certified_real_roots_zsqrt`]: the real disks of `s` in the variable
+/// `y = x/2ᵏ`, sorted by centre, their number and `k`.
+fn zsqrt_real_disks(a: &[&IBig], b: &[&IBig], delta: &IBig) -> Option<([RealDisk; 4], usize, i64)> {
     let n = a.len().checked_sub(1)?;
     if !(1..=4).contains(&n) || b.len() != a.len() || delta <= &IBig::ONE {
         return None;
