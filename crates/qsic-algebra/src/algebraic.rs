@@ -33,7 +33,7 @@ use dashu_int::IBig;
 use dashu_ratio::RBig;
 use std::cmp::Ordering;
 use std::fmt;
-use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
+use std::sync::{Arc, Mutex, MutexGuard, OnceLock, PoisonError};
 
 /// A real algebraic number `α`.
 ///
@@ -43,13 +43,44 @@ use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 /// interval, whose ends are not roots.
 #[derive(Clone)]
 pub struct AlgebraicReal {
-    poly: Poly,
+    /// The defining polynomial, shared by the roots isolated together (one allocation for
+    /// all of them), made on first use when it is a norm.
+    poly: Arc<Defining>,
     interval: RootInterval,
     /// The narrowest interval known, shared by clones (module docs).
     refined: Arc<Mutex<Refinement>>,
     /// A float `c` and a rigorous bound `r` with `|α − c| ≤ r`, when the number was isolated
     /// by the certified float path (a cache for [`AlgebraicReal::to_f64`]).
     enclosure: Option<(f64, f64)>,
+}
+
+/// The defining polynomial of [`AlgebraicReal`], or what makes it on first use: the roots of
+/// `s = A + B√δ` ([`AlgebraicReal::certified_real_roots_zsqrt`]) are isolated without their
+/// norm `A² − δB²`, which many callers never read.
+struct Defining {
+    poly: OnceLock<Poly>,
+    /// `A`, `B` (coefficients from degree 0, `len` of them) and `δ` of the norm not made yet.
+    norm: Option<([IBig; 5], [IBig; 5], usize, IBig)>,
+}
+
+impl Defining {
+    fn made(poly: Poly) -> Defining {
+        Defining {
+            poly: OnceLock::from(poly),
+            norm: None,
+        }
+    }
+
+    fn get(&self) -> &Poly {
+        self.poly.get_or_init(|| match &self.norm {
+            Some((a, b, len, delta)) => {
+                let (a, b): (Vec<&IBig>, Vec<&IBig>) =
+                    (a[..*len].iter().collect(), b[..*len].iter().collect());
+                norm_zsqrt(&a, &b, delta)
+            }
+            None => Poly::zero(),
+        })
+    }
 }
 
 /// An isolating interval and the state of its quadratic refinement (see [`refine_step`]).
@@ -97,6 +128,10 @@ impl Refinement {
 
 impl AlgebraicReal {
     fn with_interval(poly: Poly, interval: RootInterval) -> AlgebraicReal {
+        AlgebraicReal::with_shared(Arc::new(Defining::made(poly)), interval)
+    }
+
+    fn with_shared(poly: Arc<Defining>, interval: RootInterval) -> AlgebraicReal {
         AlgebraicReal {
             poly,
             refined: Arc::new(Mutex::new(Refinement::new(interval.clone()))),
@@ -118,11 +153,13 @@ impl AlgebraicReal {
             let v = RBig::from_parts_signed(-sf.coeff(0), sf.coeff(1));
             return vec![AlgebraicReal::from_rational(v)];
         }
-        isolate_squarefree_real_roots(&sf)
+        let intervals = isolate_squarefree_real_roots(&sf);
+        let sf = Arc::new(Defining::made(sf));
+        intervals
             .into_iter()
             .map(|iv| match iv {
                 RootInterval::Exact(v) => AlgebraicReal::from_rational(v),
-                iv => AlgebraicReal::with_interval(sf.clone(), iv),
+                iv => AlgebraicReal::with_shared(Arc::clone(&sf), iv),
             })
             .collect()
     }
@@ -177,7 +214,7 @@ impl AlgebraicReal {
             g = crate::int_gcd(&g, c);
         }
         let lead_positive = p.leading() > IBig::ZERO;
-        let sf = if !g.is_one() {
+        let sf = Arc::new(Defining::made(if !g.is_one() {
             // g is the content (the loop ran through every coefficient)
             let g = if lead_positive { g } else { -g };
             Poly::new(coeffs.iter().map(|c| c / &g).collect())
@@ -185,7 +222,7 @@ impl AlgebraicReal {
             p.clone()
         } else {
             -p
-        };
+        }));
         Some(
             roots
                 .into_iter()
@@ -194,7 +231,7 @@ impl AlgebraicReal {
                     iv => {
                         // the narrow interval starts the shared refinement state
                         AlgebraicReal {
-                            poly: sf.clone(),
+                            poly: Arc::clone(&sf),
                             refined: Arc::new(Mutex::new(Refinement::new(r.narrow))),
                             interval: iv,
                             enclosure: Some((r.center, r.radius)),
@@ -206,13 +243,14 @@ impl AlgebraicReal {
     }
 
     /// The real roots of `s = A + B√δ` (`A = Σaᵢxⁱ`, `B = Σbᵢxⁱ`, `δ > 0` not a square,
-    /// degree 1 to 4, `s(0) ≠ 0`), each defined by the primitive norm `A² − δB²`, isolated in
+    /// degree 1 to 4, `s(0) ≠ 0`), each defined by the primitive norm `A² − δB²` (one for all
+    /// of them, made when [`Self::poly`] or a refinement first needs it), isolated in
     /// floats with a proof ([`certified_real_roots_zsqrt`](crate::roots::certified_real_roots_zsqrt));
-    /// `None` if the certificate fails or the norm overflows `i128` (the caller then
-    /// isolates exactly). `Some` proves the norm square-free.
+    /// `None` if the certificate fails (the caller then isolates exactly). `Some` proves the
+    /// norm square-free.
     ///
     /// ```
-    /// # use qsic_algebra::{AlgebraicReal, IBig};
+    /// # use qsic_algebra::{AlgebraicReal, IBig, Poly};
     /// // s = x² − 3 + √2·x: the roots (−√2 ± √14)/2
     /// let ([a0, a2], [zero, one]) = ([IBig::from(-3), IBig::ONE], [IBig::ZERO, IBig::ONE]);
     /// let (a, b) = ([&a0, &zero, &a2], [&zero, &one, &zero]);
@@ -220,6 +258,7 @@ impl AlgebraicReal {
     /// assert_eq!(r.len(), 2);
     /// let want = (14f64.sqrt() - 2f64.sqrt()) / 2.0;
     /// assert!((r[1].to_f64() - want).abs() < 1e-12);
+    /// assert_eq!(r[0].poly(), &Poly::from_i64s(&[9, 0, -8, 0, 1])); // (x² − 3)² − 2x²
     /// ```
     pub fn certified_real_roots_zsqrt(
         a: &[&IBig],
@@ -230,19 +269,19 @@ impl AlgebraicReal {
         if roots.is_empty() {
             return Some(Vec::new());
         }
-        let mut poly = Some(norm_zsqrt(a, b, delta));
-        let m = roots.len();
+        // one norm for all the roots, made when first read
+        let len = a.len();
+        let take =
+            |v: &[&IBig]| std::array::from_fn(|i| v.get(i).map_or(IBig::ZERO, |&x| x.clone()));
+        let poly = Arc::new(Defining {
+            poly: OnceLock::new(),
+            norm: Some((take(a), take(b), len, delta.clone())),
+        });
         Some(
             roots
                 .into_iter()
-                .enumerate()
-                .map(|(i, r)| AlgebraicReal {
-                    // the last root takes the norm, the others a copy
-                    poly: if i + 1 == m {
-                        poly.take().unwrap_or_default()
-                    } else {
-                        poly.clone().unwrap_or_default()
-                    },
+                .map(|r| AlgebraicReal {
+                    poly: Arc::clone(&poly),
                     refined: Arc::new(Mutex::new(Refinement::new(r.narrow))),
                     interval: r.interval,
                     enclosure: Some((r.center, r.radius)),
@@ -269,18 +308,18 @@ impl AlgebraicReal {
     /// The same number defined by `factor`, a primitive factor of [`Self::poly`] of which
     /// it is a root, isolated by the refined interval (a fresh refinement state).
     pub(crate) fn with_factor(&self, factor: &Poly) -> AlgebraicReal {
-        debug_assert!(self.poly.div_exact(factor).is_some() && self.is_root_of_divisor(factor));
+        debug_assert!(self.poly().div_exact(factor).is_some() && self.is_root_of_divisor(factor));
         AlgebraicReal::with_interval(factor.clone(), self.snapshot().interval)
     }
 
     /// Checks the invariant (used in `debug_assert!`).
     pub fn is_valid(&self) -> bool {
         let valid = |iv: &RootInterval| match iv {
-            RootInterval::Exact(v) => self.poly.sign_at(v).is_zero(),
+            RootInterval::Exact(v) => self.poly().sign_at(v).is_zero(),
             RootInterval::Open(lo, hi) => {
                 lo < hi
-                    && self.poly.is_squarefree()
-                    && self.poly.sign_at(lo) * self.poly.sign_at(hi) == Sign::Negative
+                    && self.poly().is_squarefree()
+                    && self.poly().sign_at(lo) * self.poly().sign_at(hi) == Sign::Negative
             }
         };
         valid(&self.interval) && valid(&self.snapshot().interval)
@@ -288,7 +327,7 @@ impl AlgebraicReal {
 
     /// The defining square-free polynomial (for a rational, `q·x − p`).
     pub fn poly(&self) -> &Poly {
-        &self.poly
+        self.poly.get()
     }
 
     /// The stated isolating interval (the one made with, or narrowed by [`Self::refine`]
@@ -332,7 +371,7 @@ impl AlgebraicReal {
             return r.interval;
         }
         while !r.is_within(width) {
-            r.step(&self.poly);
+            r.step(self.poly());
         }
         let iv = r.interval.clone();
         self.store(r);
@@ -344,7 +383,7 @@ impl AlgebraicReal {
     /// are). Starts from the shared refinement state.
     pub fn refine(&mut self) {
         let mut r = self.snapshot();
-        r.step(&self.poly);
+        r.step(self.poly());
         self.interval = r.interval.clone();
         self.store(r);
     }
@@ -376,7 +415,7 @@ impl AlgebraicReal {
             return s;
         }
         if let RootInterval::Open(lo, hi) = &r.interval {
-            let g = self.poly.gcd(q);
+            let g = self.poly().gcd(q);
             if g.degree().unwrap_or(0) > 0 && g.sign_at(lo) * g.sign_at(hi) == Sign::Negative {
                 return Sign::Zero;
             }
@@ -403,7 +442,7 @@ impl AlgebraicReal {
     /// Refines `r` until it decides the sign of `q` (nonzero at `α`), and stores it.
     fn refine_until_signed(&self, mut r: Refinement, q: &Poly) -> Sign {
         let s = loop {
-            r.step(&self.poly);
+            r.step(self.poly());
             if let Some(s) = r.sign_of(q) {
                 break s;
             }
@@ -436,7 +475,7 @@ impl AlgebraicReal {
         match self.snapshot().interval {
             RootInterval::Exact(v) => q.sign_at(&v),
             RootInterval::Open(lo, hi) => {
-                match crate::poly::sturm::tarski_query_in(&self.poly, q, &lo, &hi) {
+                match crate::poly::sturm::tarski_query_in(self.poly(), q, &lo, &hi) {
                     0 => Sign::Zero,
                     t if t > 0 => Sign::Positive,
                     _ => Sign::Negative,
@@ -475,7 +514,7 @@ impl AlgebraicReal {
         }
         if let RootInterval::Open(lo, hi) = &self.snapshot().interval {
             let (l, h) = (lo.to_f64().value(), hi.to_f64().value());
-            if let Some(x) = newton_in(&self.poly, l, h) {
+            if let Some(x) = newton_in(self.poly(), l, h) {
                 return x;
             }
         }
@@ -496,14 +535,14 @@ impl AlgebraicReal {
             if ahi == blo && a_exact != b_exact {
                 // a point strictly inside the open interval next to the exact value
                 if !a_exact {
-                    a.step(&self.poly);
+                    a.step(self.poly());
                 } else {
-                    b.step(&other.poly);
+                    b.step(other.poly());
                 }
                 continue;
             }
-            a.step(&self.poly);
-            b.step(&other.poly);
+            a.step(self.poly());
+            b.step(other.poly());
         };
         self.store(a);
         other.store(b);
@@ -721,7 +760,7 @@ impl Ord for AlgebraicReal {
         if let Some(v) = b.interval.as_exact() {
             return self.cmp(&AlgebraicReal::from_rational(v.clone()));
         }
-        if equal_open(&self.poly, &a.interval, &other.poly, &b.interval) {
+        if equal_open(self.poly(), &a.interval, other.poly(), &b.interval) {
             return Ordering::Equal;
         }
         // different numbers: refinement separates them; only the wider interval is refined,
@@ -733,9 +772,9 @@ impl Ord for AlgebraicReal {
                 break o;
             }
             if width(&a.interval) >= width(&b.interval) {
-                a.step(&self.poly);
+                a.step(self.poly());
             } else {
-                b.step(&other.poly);
+                b.step(other.poly());
             }
         };
         self.store(a);
@@ -755,7 +794,7 @@ impl fmt::Display for AlgebraicReal {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match &self.interval {
             RootInterval::Exact(v) => write!(f, "{v}"),
-            RootInterval::Open(lo, hi) => write!(f, "root of {} in ({lo}, {hi})", self.poly),
+            RootInterval::Open(lo, hi) => write!(f, "root of {} in ({lo}, {hi})", self.poly()),
         }
     }
 }
@@ -846,15 +885,15 @@ fn wide_mul_small(x: Wide, d: u64) -> Wide {
     out
 }
 
-/// The integer `x` as an [`IBig`].
+/// The integer `x` as an [`IBig`] (from its words: no byte copies).
 fn wide_to_ibig(x: Wide) -> IBig {
     let negative = x[3] >> 63 == 1;
     let m = if negative { wide_neg(x) } else { x };
-    let mut bytes = [0u8; 32];
-    for (i, w) in m.iter().enumerate() {
-        bytes[8 * i..8 * i + 8].copy_from_slice(&w.to_le_bytes());
-    }
-    let v = IBig::from(dashu_int::UBig::from_le_bytes(&bytes));
+    let v = if m[2] == 0 && m[3] == 0 {
+        IBig::from(u128::from(m[0]) | (u128::from(m[1]) << 64))
+    } else {
+        IBig::from(dashu_int::UBig::from_words(&m))
+    };
     if negative {
         -v
     } else {
@@ -878,12 +917,19 @@ fn norm_wide(a: &[&IBig], b: &[&IBig], delta: &IBig) -> Option<Poly> {
         let y = i128::try_from(b[i]).ok()?;
         sa[i] = (x < 0, x.unsigned_abs());
         sb[i] = (y < 0, y.unsigned_abs());
-        g = gcd_u128(gcd_u128(g, sa[i].1), sb[i].1);
+        if g != 1 {
+            g = gcd_u128(gcd_u128(g, sa[i].1), sb[i].1);
+        }
     }
     if g == 0 {
         return None;
     }
-    let bits = |v: &[(bool, u128)]| v.iter().map(|x| 128 - (x.1 / g).leading_zeros()).max();
+    if g != 1 {
+        for v in sa[..n].iter_mut().chain(&mut sb[..n]) {
+            v.1 /= g;
+        }
+    }
+    let bits = |v: &[(bool, u128)]| v.iter().map(|x| 128 - x.1.leading_zeros()).max();
     let (ba, bb) = (bits(&sa[..n])?, bits(&sb[..n])?);
     if 2 * ba + 5 > 255 || 2 * bb + (64 - d.leading_zeros()) + 5 > 255 {
         return None;
@@ -892,14 +938,29 @@ fn norm_wide(a: &[&IBig], b: &[&IBig], delta: &IBig) -> Option<Poly> {
     for i in 0..n {
         for j in i..n {
             let twice = if i == j { 1 } else { 2 };
-            let pa = wide_mul_small(wide_mul(sa[i].1 / g, sa[j].1 / g), twice);
-            let pb = wide_mul_small(wide_mul(sb[i].1 / g, sb[j].1 / g), twice * d);
+            let pa = wide_mul_small(wide_mul(sa[i].1, sa[j].1), twice);
+            let pb = wide_mul_small(wide_mul(sb[i].1, sb[j].1), twice * d);
             let pa = if sa[i].0 != sa[j].0 { wide_neg(pa) } else { pa };
             let pb = if sb[i].0 == sb[j].0 { wide_neg(pb) } else { pb };
             c[i + j] = wide_add(wide_add(c[i + j], pa), pb);
         }
     }
     Some(primitive_wide(&c[..2 * n - 1]))
+}
+
+/// `x / 2ˢ` for `x` divisible by `2ˢ`, `s < 256` (arithmetic shift: the sign stays).
+fn wide_shr(x: Wide, s: u32) -> Wide {
+    let fill = if x[3] >> 63 == 1 { u64::MAX } else { 0 };
+    let (words, bits) = ((s / 64) as usize, s % 64);
+    let word = |i: usize| if i < 4 { x[i] } else { fill };
+    std::array::from_fn(|i| {
+        let lo = word(i + words);
+        if bits == 0 {
+            lo
+        } else {
+            (lo >> bits) | (word(i + words + 1) << (64 - bits))
+        }
+    })
 }
 
 /// `x mod m` for a non-negative `x` and `m > 0`.
@@ -924,16 +985,69 @@ fn wide_div(x: Wide, m: u64) -> Wide {
 }
 
 /// The primitive integer polynomial of positive leading coefficient proportional to `c`
-/// (not zero, `|cᵢ| < 2²⁵⁵`): the content is the gcd of the outer coefficients (in big
-/// integers) and then, when it fits a `u64`, of the residues of the others (in words).
+/// (not zero, `|cᵢ| < 2²⁵⁵`): the common power of two by shifts; the rest of the content is
+/// the gcd of the two coefficients least in magnitude (in `u128` when they fit, else in big
+/// integers) and then, when it fits a `u64`, of the residues of the others (in words); no
+/// division when it is 1 (the common case).
 fn primitive_wide(c: &[Wide]) -> Poly {
     let len = c.iter().rposition(|v| *v != [0; 4]).map_or(0, |i| i + 1);
-    let c = &c[..len];
     let negative = |w: &Wide| w[3] >> 63 == 1;
     let abs = |w: Wide| if negative(&w) { wide_neg(w) } else { w };
-    let first = c.iter().position(|v| *v != [0; 4]).unwrap_or(0);
-    let g = crate::int_gcd(&wide_to_ibig(c[len - 1]), &wide_to_ibig(c[first]));
-    let Ok(mut g) = u64::try_from(&g) else {
+    // the common power of two apart (shifts, no gcd)
+    let zeros = |w: &Wide| {
+        let i = w.iter().position(|&x| x != 0).unwrap_or(3);
+        64 * i as u32 + w[i].trailing_zeros()
+    };
+    let shift = c[..len]
+        .iter()
+        .filter(|w| **w != [0; 4])
+        .map(zeros)
+        .min()
+        .unwrap_or(0);
+    let mut shifted = [[0u64; 4]; 9];
+    let c = if shift == 0 {
+        &c[..len]
+    } else {
+        for (o, w) in shifted.iter_mut().zip(&c[..len]) {
+            *o = wide_shr(*w, shift);
+        }
+        &shifted[..len]
+    };
+    // the two nonzero magnitudes least by their top words (ties: any)
+    let key = |w: &Wide| {
+        let m = abs(*w);
+        (m[3], m[2], m[1], m[0])
+    };
+    let mut least = [usize::MAX; 2];
+    for (i, w) in c.iter().enumerate() {
+        if *w == [0; 4] {
+            continue;
+        }
+        if least[0] == usize::MAX || key(w) < key(&c[least[0]]) {
+            least = [i, least[0]];
+        } else if least[1] == usize::MAX || key(w) < key(&c[least[1]]) {
+            least[1] = i;
+        }
+    }
+    let fits = |m: &Wide| m[2] == 0 && m[3] == 0;
+    let to_u128 = |m: &Wide| u128::from(m[0]) | (u128::from(m[1]) << 64);
+    let g = match least {
+        [i, usize::MAX] => abs(c[i]),
+        [i, j] => {
+            let (x, y) = (abs(c[i]), abs(c[j]));
+            if fits(&x) && fits(&y) {
+                let g = gcd_u128(to_u128(&x), to_u128(&y));
+                [g as u64, (g >> 64) as u64, 0, 0]
+            } else {
+                let g = crate::int_gcd(&wide_to_ibig(x), &wide_to_ibig(y));
+                match u128::try_from(&g) {
+                    Ok(g) => [g as u64, (g >> 64) as u64, 0, 0],
+                    Err(_) => [0; 4],
+                }
+            }
+        }
+    };
+    let Some(mut g) = (g[1] == 0 && g[2] == 0 && g[3] == 0 && g[0] != 0).then_some(g[0]) else {
         return Poly::new(c.iter().map(|&w| wide_to_ibig(w)).collect()).primitive_part();
     };
     for &w in c {
@@ -946,8 +1060,20 @@ fn primitive_wide(c: &[Wide]) -> Poly {
     Poly::new(
         c.iter()
             .map(|&w| {
-                let q = wide_div(abs(w), g);
-                let q = if negative(&w) != flip { wide_neg(q) } else { q };
+                let q = if g == 1 {
+                    if flip {
+                        wide_neg(w)
+                    } else {
+                        w
+                    }
+                } else {
+                    let q = wide_div(abs(w), g);
+                    if negative(&w) != flip {
+                        wide_neg(q)
+                    } else {
+                        q
+                    }
+                };
                 wide_to_ibig(q)
             })
             .collect(),
@@ -989,7 +1115,17 @@ fn primitive_i128(c: &[i128]) -> Poly {
         g as i128
     };
     // |g| ≤ |c_n| < 2¹²⁷ fits; the quotients are exact
-    Poly::new(c.iter().map(|v| IBig::from(v / g)).collect())
+    Poly::new(
+        c.iter()
+            .map(|&v| {
+                IBig::from(match g {
+                    1 => v,
+                    -1 => -v,
+                    _ => v / g,
+                })
+            })
+            .collect(),
+    )
 }
 
 /// `gcd(a, b)`: one Euclidean step (the larger modulo the smaller, which is often much
@@ -1276,6 +1412,68 @@ mod tests {
     /// The norms in machine words (`i128`, 256-bit) against big integers, for coefficients of
     /// 3 to 126 bits and `δ` up to 2⁶¹ (the ranges where each applies and beyond), and the
     /// roots of `s = A + B√δ` as valid numbers of that norm, equal to the exact ones.
+    /// `v` (below `2²⁵⁵` in magnitude) in two's complement words.
+    fn to_wide(v: &IBig) -> Wide {
+        let m = dashu_int::UBig::try_from(if v < &IBig::ZERO { -v } else { v.clone() }).unwrap();
+        let mut w = [0u64; 4];
+        w[..m.as_words().len()].copy_from_slice(m.as_words());
+        if v < &IBig::ZERO {
+            wide_neg(w)
+        } else {
+            w
+        }
+    }
+
+    /// The primitive part in words equals the big-integer one: contents 1, a power of two
+    /// (the shifts), small odd ones (the residues in words), one beyond `u64` (big integers),
+    /// least coefficients inside and outside `u128`, zero coefficients, both signs.
+    #[test]
+    fn primitive_wide_equals_the_big_primitive_part() {
+        let mut rng = crate::testing::SplitMix(4711);
+        let mut routes = [0usize; 4];
+        for t in 0..400 {
+            let bits = [20, 100, 127, 140, 180][t % 5];
+            let len = rng.int(2, 9) as usize;
+            let mut c: Vec<IBig> = (0..len)
+                .map(|i| {
+                    if i + 1 < len && rng.int(0, 4) == 0 {
+                        return IBig::ZERO;
+                    }
+                    let mut v = IBig::from(rng.next_u64() | 1);
+                    while v.bit_len() < bits {
+                        v = (v << 64) + IBig::from(rng.next_u64());
+                    }
+                    let shift = v.bit_len() - rng.int(1, bits as i64) as usize;
+                    let v = v >> shift;
+                    let v = if v.is_zero() { IBig::ONE } else { v };
+                    if rng.int(0, 1) == 0 {
+                        -v
+                    } else {
+                        v
+                    }
+                })
+                .collect();
+            let route = (t / 5) % 4;
+            let factor = match route {
+                0 => IBig::ONE,
+                1 => IBig::ONE << rng.int(1, 60) as usize,
+                2 => IBig::from(rng.int(1, 1 << 20) * 2 + 1),
+                _ => (IBig::ONE << 70) + IBig::from(rng.int(0, 1 << 30) * 2 + 1),
+            };
+            for v in &mut c {
+                *v *= &factor;
+            }
+            if c.iter().any(|v| v.bit_len() >= 254) {
+                continue;
+            }
+            routes[route] += 1;
+            let wide: Vec<Wide> = c.iter().map(to_wide).collect();
+            let want = Poly::new(c.clone()).primitive_part();
+            assert_eq!(primitive_wide(&wide), want, "{c:?}");
+        }
+        assert!(routes.iter().all(|&r| r >= 50), "{routes:?}");
+    }
+
     #[test]
     fn zsqrt_norms_and_roots_agree_with_big_integers() {
         let mut rng = crate::testing::SplitMix(808);
@@ -1341,6 +1539,8 @@ mod tests {
                 assert_eq!(roots, exact, "{pa} {pb} {delta}");
                 for r in &roots {
                     assert!(r.is_valid() && r.poly() == &want, "{r:?}");
+                    // one norm, made once, for all the roots of one s
+                    assert!(std::ptr::eq(r.poly(), roots[0].poly()));
                 }
                 roots_seen += roots.len();
             }

@@ -90,11 +90,11 @@ impl PencilData {
     }
 }
 
-/// `[E₁(λ), …, E₄(λ)]`, the sums of the principal minors of each order of `λA − B`, from
-/// their values at `λ = ∞, 0, 1, −1, 2` by the shared interpolation
-/// (`linalg::pencil::principal_minor_sums_of_members`): in `i128` when every entry is below
-/// `2²²` ([`minor_sums_i128`]), else over `IBig`. Five 4×4 principal-minor evaluations instead
-/// of every minor of the pencil.
+/// `[E₁(λ), …, E₄(λ)]`, the sums of the principal minors of each order of `λA − B`: in
+/// `i128` straight from the entries when every entry is below `2²²` ([`minor_sums_i128`]),
+/// else over `IBig` from their values at `λ = ∞, 0, 1, −1, 2` by the shared interpolation
+/// (`linalg::pencil::principal_minor_sums_of_members`). Either way not every minor of the
+/// pencil.
 pub(crate) fn principal_minor_sums_of_pencil(a: &[[IBig; 4]; 4], b: &[[IBig; 4]; 4]) -> [Poly; 4] {
     let small = |m: &[[IBig; 4]; 4]| -> Option<[[i64; 4]; 4]> {
         let mut out = [[0i64; 4]; 4];
@@ -126,11 +126,13 @@ pub(crate) fn principal_minor_sums_of_pencil(a: &[[IBig; 4]; 4], b: &[[IBig; 4];
 }
 
 /// `E₁(λ), …, E₄(λ)` of `λA − B` in `i128` (coefficients from degree 0), `None` unless every
-/// entry is below `2²²` in absolute value: then the members' entries at `|λ| ≤ 2` are below
-/// `2²⁴`, every minor below `24·2⁹⁶ < 2¹⁰¹`, and the interpolation's combinations of a few
-/// such values with factors up to 16 below `2¹¹⁰` (no overflow).
+/// entry is below `2²²` in absolute value. Straight from the entries `λaᵢⱼ − bᵢⱼ`: the 2×2
+/// minors of rows `{0, 1}` and `{2, 3}` and the four other principal ones as quadratics in
+/// `λ` (coefficients below `2⁴⁶`, in `i64`), the principal 3×3 minors by expanding along
+/// their one row outside such a pair (below `3·2⁶⁹`), the determinant by Laplace's expansion
+/// along rows `{0, 1}` (six products of two quadratics, below `2⁹⁸`): no overflow, no
+/// interpolation.
 fn minor_sums_i128(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> Option<[[i128; 5]; 4]> {
-    use qsic_algebra::linalg::pencil::principal_minor_sums_of_members;
     if a.iter()
         .chain(b)
         .flatten()
@@ -138,18 +140,71 @@ fn minor_sums_i128(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> Option<[[i128; 5]; 4
     {
         return None;
     }
-    let member = |l: i128, k: i128| -> [[i128; 4]; 4] {
-        std::array::from_fn(|i| {
-            std::array::from_fn(|j| l * i128::from(a[i][j]) - k * i128::from(b[i][j]))
-        })
+    // the entry (i, j) as [constant, λ]
+    let m = |i: usize, j: usize| [-b[i][j], a[i][j]];
+    let minor2 = |r: [usize; 2], c: [usize; 2]| -> [i64; 3] {
+        let (p, q, s, t) = (m(r[0], c[0]), m(r[1], c[1]), m(r[0], c[1]), m(r[1], c[0]));
+        [
+            p[0] * q[0] - s[0] * t[0],
+            p[0] * q[1] + p[1] * q[0] - s[0] * t[1] - s[1] * t[0],
+            p[1] * q[1] - s[1] * t[1],
+        ]
     };
-    Some(principal_minor_sums_of_members([
-        &member(1, 0),
-        &member(0, 1),
-        &member(1, 1),
-        &member(-1, 1),
-        &member(2, 1),
-    ]))
+    // column pairs in the order (0,1) (0,2) (0,3) (1,2) (1,3) (2,3): pair 5 − p is the
+    // complement of pair p
+    const PAIRS: [[usize; 2]; 6] = [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
+    let top: [[i64; 3]; 6] = PAIRS.map(|c| minor2([0, 1], c));
+    let bottom: [[i64; 3]; 6] = PAIRS.map(|c| minor2([2, 3], c));
+    let mut e = [[0i128; 5]; 4];
+    for i in 0..4 {
+        e[0][0] -= i128::from(b[i][i]);
+        e[0][1] += i128::from(a[i][i]);
+    }
+    // e[k] ± x·y (products of two i64: one widening multiplication each)
+    let mut add = |k: usize, plus: bool, x: &[i64], y: &[i64]| {
+        for (i, &xi) in x.iter().enumerate() {
+            for (j, &yj) in y.iter().enumerate() {
+                let p = i128::from(xi) * i128::from(yj);
+                if plus {
+                    e[k][i + j] += p;
+                } else {
+                    e[k][i + j] -= p;
+                }
+            }
+        }
+    };
+    let e2 = [
+        top[0],
+        bottom[5],
+        minor2([0, 2], [0, 2]),
+        minor2([0, 3], [0, 3]),
+        minor2([1, 2], [1, 2]),
+        minor2([1, 3], [1, 3]),
+    ];
+    // the principal 3×3 minors: rows/columns {0,1,2} and {0,1,3} along their last row,
+    // {0,2,3} and {1,2,3} along their first
+    for (row, pairs) in [(2, [3, 1, 0]), (3, [4, 2, 0])] {
+        let cols = [PAIRS[pairs[2]][0], PAIRS[pairs[2]][1], row];
+        for t in 0..3 {
+            add(2, t != 1, &m(row, cols[t]), &top[pairs[t]]);
+        }
+    }
+    for (row, pairs) in [(0, [5, 2, 1]), (1, [5, 4, 3])] {
+        let cols = [row, PAIRS[pairs[0]][0], PAIRS[pairs[0]][1]];
+        for t in 0..3 {
+            add(2, t != 1, &m(row, cols[t]), &bottom[pairs[t]]);
+        }
+    }
+    // Laplace along rows {0, 1}: the sign of columns {c₀, c₁} is (−1)^(1 + c₀ + c₁)
+    for (p, c) in PAIRS.iter().enumerate() {
+        add(3, (c[0] + c[1]) % 2 == 1, &top[p], &bottom[5 - p]);
+    }
+    for q in &e2 {
+        for (i, &v) in q.iter().enumerate() {
+            e[1][i] += i128::from(v);
+        }
+    }
+    Some(e)
 }
 
 /// `D_k`, the gcd of the `k×k` minors of `λA − μB` as binary forms of degree `k`, for
@@ -283,14 +338,38 @@ fn small_parts(x: &RBig) -> Option<(i128, i128)> {
 }
 
 /// The sign of `Σ cᵢ nⁱ d^(m−i)` (`m = c.len() − 1`, the sign of `p(n/d)` for `d > 0`),
-/// `None` on overflow.
+/// `None` on overflow. Every partial sum of Horner's scheme and every product in it is at
+/// most `Σ|cᵢ|·max(|n|, |d|)^m` in magnitude: below `2¹²⁶` the plain operations are exact,
+/// else each is checked.
 fn sign_homogeneous(c: &[i128], n: i128, d: i128) -> Option<Sign> {
+    sign_homogeneous_with(c, sum_bits(c), n, d)
+}
+
+/// The bit length of `Σ|cᵢ|` (saturating at `2¹²⁸ − 1`).
+fn sum_bits(c: &[i128]) -> u32 {
+    let sum = c
+        .iter()
+        .fold(0u128, |acc, v| acc.saturating_add(v.unsigned_abs()));
+    128 - sum.leading_zeros()
+}
+
+/// [`sign_homogeneous`] with `sum_bits(c)` given (made once per polynomial).
+fn sign_homogeneous_with(c: &[i128], sum_bits: u32, n: i128, d: i128) -> Option<Sign> {
     let (last, rest) = c.split_last()?;
+    let base = n.unsigned_abs().max(d.unsigned_abs());
+    let bits = sum_bits + rest.len() as u32 * (128 - base.leading_zeros());
     let mut acc = *last;
     let mut dpow = 1i128;
-    for &ci in rest.iter().rev() {
-        dpow = dpow.checked_mul(d)?;
-        acc = acc.checked_mul(n)?.checked_add(ci.checked_mul(dpow)?)?;
+    if bits <= 126 {
+        for &ci in rest.iter().rev() {
+            dpow = dpow.wrapping_mul(d);
+            acc = acc.wrapping_mul(n).wrapping_add(ci.wrapping_mul(dpow));
+        }
+    } else {
+        for &ci in rest.iter().rev() {
+            dpow = dpow.checked_mul(d)?;
+            acc = acc.checked_mul(n)?.checked_add(ci.checked_mul(dpow)?)?;
+        }
     }
     Some(Sign::of_i128(acc))
 }
@@ -364,40 +443,46 @@ pub(crate) fn quick_arc_samples(a: &Quadric, b: &Quadric) -> Option<Vec<(RBig, I
     if e[3][4] == 0 {
         return None;
     }
-    let roots = real_roots_f64(&e[3].map(|c| c as f64));
-    let mut samples: Vec<(i128, u32)> = Vec::with_capacity(roots.len() + 1);
+    let (roots, count) = real_roots_f64(&e[3].map(|c| c as f64));
+    let roots = &roots[..count];
+    let mut samples = [(0i128, 0u32); 5];
     let integer = |x: f64| (x.is_finite() && x.abs() < 1e30).then_some(x as i128);
-    match (roots.first(), roots.last()) {
-        (Some(&lo), Some(&hi)) => {
-            samples.push((integer(lo.floor())? - 1, 0));
-            for w in roots.windows(2) {
-                samples.push(dyadic_between_f64(w[0], w[1])?);
-            }
-            samples.push((integer(hi.ceil())? + 1, 0));
+    if let (Some(&lo), Some(&hi)) = (roots.first(), roots.last()) {
+        samples[0] = (integer(lo.floor())? - 1, 0);
+        for (i, w) in roots.windows(2).enumerate() {
+            samples[i + 1] = dyadic_between_f64(w[0], w[1])?;
         }
-        _ => samples.push((0, 0)),
+        samples[count] = (integer(hi.ceil())? + 1, 0);
     }
     // consecutive samples on either side of a root (f of opposite signs), none at a root;
     // else the floats were too coarse here and the caller takes the analysis
     let mut last = Sign::Zero;
-    samples
-        .into_iter()
-        .map(|(n, k)| {
-            let d = 1i128.checked_shl(k)?;
-            let signs: [Sign; 4] = [
-                sign_homogeneous(&e[0][..2], n, d)?,
-                sign_homogeneous(&e[1][..3], n, d)?,
-                sign_homogeneous(&e[2][..4], n, d)?,
-                sign_homogeneous(&e[3][..5], n, d)?,
-            ];
-            if signs[3] == Sign::Zero || signs[3] == last {
-                return None;
+    let mut out = Vec::with_capacity(count + 1);
+    let bits: [u32; 4] = std::array::from_fn(|k| sum_bits(&e[k][..k + 2]));
+    for &(n, k) in &samples[..=count] {
+        let d = 1i128.checked_shl(k)?;
+        let signs: [Sign; 4] = [
+            sign_homogeneous_with(&e[0][..2], bits[0], n, d)?,
+            sign_homogeneous_with(&e[1][..3], bits[1], n, d)?,
+            sign_homogeneous_with(&e[2][..4], bits[2], n, d)?,
+            sign_homogeneous_with(&e[3][..5], bits[3], n, d)?,
+        ];
+        if signs[3] == Sign::Zero || signs[3] == last {
+            return None;
+        }
+        last = signs[3];
+        // n/2ᵏ with n odd when k > 0 (the rule's least k): in lowest terms; through a float
+        // (exact below 2⁵³, which reduces by trailing zeros only) when it fits
+        let x = match i64::try_from(n) {
+            Ok(v) if k == 0 => RBig::from(v),
+            Ok(v) if v.unsigned_abs() < 1 << 53 && k <= 1000 => {
+                RBig::try_from(v as f64 / 2f64.powi(k as i32)).ok()?
             }
-            last = signs[3];
-            let x = RBig::from_parts_signed(IBig::from(n), IBig::ONE << k as usize);
-            Some((x, Inertia::from_minor_sum_signs(signs)))
-        })
-        .collect()
+            _ => RBig::from_parts_signed(IBig::from(n), IBig::ONE << k as usize),
+        };
+        out.push((x, Inertia::from_minor_sum_signs(signs)));
+    }
+    Some(out)
 }
 
 /// The rule of [`simplest_between`] on floats `lo < hi`: `⌊lo⌋ + 1` if it is below `hi`, else
@@ -420,15 +505,17 @@ fn dyadic_between_f64(lo: f64, hi: f64) -> Option<(i128, u32)> {
 /// part). None for a root at 0 (`c[0] = 0`): the caller's samples then meet a root and it
 /// falls back to the pencil analysis, which sees the rational root (a cone). Not certified,
 /// and not meant to be: callers check what they build from it exactly.
-fn real_roots_f64(c: &[f64; 5]) -> Vec<f64> {
-    let roots = quartic_roots_f64(c).unwrap_or_default();
-    let mut real: Vec<f64> = roots
-        .iter()
-        .filter(|r| r.1.abs() <= 1e-9 * r.0.abs() && r.0.is_finite())
-        .map(|r| r.0)
-        .collect();
-    real.sort_by(f64::total_cmp);
-    real
+fn real_roots_f64(c: &[f64; 5]) -> ([f64; 4], usize) {
+    let mut real = [0.0; 4];
+    let mut count = 0;
+    for r in quartic_roots_f64(c).into_iter().flatten() {
+        if r.1.abs() <= 1e-9 * r.0.abs() && r.0.is_finite() {
+            real[count] = r.0;
+            count += 1;
+        }
+    }
+    real[..count].sort_unstable_by(f64::total_cmp);
+    (real, count)
 }
 
 /// The samples of the arcs of the chart cut by the increasing finite real roots `α₁ < … <
@@ -705,6 +792,93 @@ mod tests {
                 assert_eq!(principal_minor_sums_of_pencil(&a, &b), want);
             }
         }
+    }
+
+    /// The direct `i128` sums equal the interpolation over big integers (another route) on
+    /// any 4×4 arrays (not only symmetric ones) with entries up to the bound `2²² − 1`, where
+    /// the products are largest (overflow is checked in test builds).
+    #[test]
+    fn direct_minor_sums_equal_the_interpolation_at_the_bound() {
+        use qsic_algebra::linalg::pencil::principal_minor_sums_of_members;
+        let mut rng = SplitMix(57);
+        let top = (1i64 << 22) - 1;
+        for t in 0..300 {
+            let mut entry = || match t % 3 {
+                0 => rng.int(-9, 9),
+                1 => [top, -top][rng.int(0, 1) as usize],
+                _ => rng.int(-top, top),
+            };
+            let a: [[i64; 4]; 4] = std::array::from_fn(|_| std::array::from_fn(|_| entry()));
+            let b: [[i64; 4]; 4] = std::array::from_fn(|_| std::array::from_fn(|_| entry()));
+            let member = |l: i64, k: i64| -> [[IBig; 4]; 4] {
+                std::array::from_fn(|i| {
+                    std::array::from_fn(|j| IBig::from(l * a[i][j]) - IBig::from(k * b[i][j]))
+                })
+            };
+            let want = principal_minor_sums_of_members([
+                &member(1, 0),
+                &member(0, 1),
+                &member(1, 1),
+                &member(-1, 1),
+                &member(2, 1),
+            ]);
+            let got = minor_sums_i128(&a, &b).expect("entries below 2²²");
+            for k in 0..4 {
+                for i in 0..5 {
+                    assert_eq!(
+                        IBig::from(got[k][i]),
+                        want[k][i],
+                        "E{} λ^{i}: {a:?} {b:?}",
+                        k + 1
+                    );
+                }
+            }
+        }
+        let mut big = [[0i64; 4]; 4];
+        big[1][2] = 1 << 22;
+        assert_eq!(minor_sums_i128(&big, &[[0; 4]; 4]), None);
+    }
+
+    /// The homogeneous sign in plain `i128` (small values) and checked `i128` (large ones)
+    /// equals the big-integer value's sign; `None` only past `i128`.
+    #[test]
+    fn homogeneous_signs_agree_with_big_integers() {
+        let mut rng = SplitMix(58);
+        let (mut plain, mut checked, mut overflow) = (0, 0, 0);
+        for t in 0..3000 {
+            let bits = [30, 40, 98][t % 3];
+            let m = rng.int(1, 4) as usize;
+            let c: Vec<i128> = (0..=m)
+                .map(|_| i128::from(rng.int(-1 << 30, 1 << 30)) << rng.int(0, bits - 30))
+                .collect();
+            let k = rng.int(0, 20) as u32;
+            let n = i128::from(rng.int(-1 << 20, 1 << 20)) >> rng.int(0, 20);
+            let d = 1i128 << k;
+            let exact = c.iter().enumerate().fold(IBig::ZERO, |acc, (i, &ci)| {
+                acc + IBig::from(ci) * IBig::from(n).pow(i) * IBig::from(d).pow(m - i)
+            });
+            let sum = c.iter().map(|v| v.unsigned_abs()).sum::<u128>();
+            let base = n.unsigned_abs().max(d.unsigned_abs());
+            let fast = (128 - sum.leading_zeros()) + m as u32 * (128 - base.leading_zeros()) <= 126;
+            match sign_homogeneous(&c, n, d) {
+                Some(s) => {
+                    assert_eq!(s, Sign::of(&exact), "{c:?} at {n}/{d}");
+                    if fast {
+                        plain += 1;
+                    } else {
+                        checked += 1;
+                    }
+                }
+                None => {
+                    assert!(!fast, "{c:?} at {n}/{d}: {exact}");
+                    overflow += 1;
+                }
+            }
+        }
+        assert!(
+            plain > 300 && checked > 50 && overflow > 10,
+            "{plain} {checked} {overflow}"
+        );
     }
 
     /// λA − B = diag(λ − 1, 2 − λ, λ, −λ): roots 0 (double, two 1×1 blocks), 1, 2.

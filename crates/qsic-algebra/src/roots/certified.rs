@@ -56,6 +56,8 @@ use dashu_ratio::RBig;
 
 /// The largest degree the certified path takes.
 pub const MAX_CERTIFIED_DEGREE: usize = 16;
+/// The most coefficients (fixed-size arrays: no allocation on the float path).
+const MAX_LEN: usize = MAX_CERTIFIED_DEGREE + 1;
 
 /// Unit roundoff of `f64`.
 const U: f64 = f64::EPSILON / 2.0;
@@ -129,9 +131,17 @@ impl Complex {
 /// `p(2ᵏy)` divided by a power of two, rounded to floats: `c[i]` within `err[i]` of the
 /// exact scaled coefficient.
 struct Scaled {
-    c: Vec<f64>,
-    err: Vec<f64>,
+    c: [f64; MAX_LEN],
+    err: [f64; MAX_LEN],
+    len: usize,
     k: i64,
+}
+
+impl Scaled {
+    /// The coefficients `c[..=n]`.
+    fn c(&self) -> &[f64] {
+        &self.c[..self.len]
+    }
 }
 
 /// `|a|` as `m·2ᵉ` to 64 bits (truncated) with `m < 2⁶⁴`, `m` rounded to a float and
@@ -167,64 +177,68 @@ fn scale(p: &Poly) -> Option<Scaled> {
         .filter(|(m, _)| *m != 0.0)
         .map(|&(_, e)| e + 64)
         .max()?;
-    let mut c = Vec::with_capacity(n + 1);
-    let mut err = Vec::with_capacity(n + 1);
-    for &(m, e) in &parts {
+    let (mut c, mut err) = ([0.0; MAX_LEN], [0.0; MAX_LEN]);
+    for (i, &(m, e)) in parts.iter().enumerate() {
         let ex = e - top; // cᵢ = m·2^ex, m < 2⁶⁴
         if m == 0.0 {
-            c.push(0.0);
-            err.push(0.0);
-        } else if ex + 64 < FLUSH_EXP {
-            c.push(0.0);
-            err.push(pow2(FLUSH_EXP));
+            continue;
+        }
+        if ex + 64 < FLUSH_EXP {
+            err[i] = pow2(FLUSH_EXP);
         } else {
             // m·2⁻⁶⁴ ∈ [2⁻⁶⁴, 1] is exact, and so is the normal product after it
             let v = m * pow2(-64) * pow2(ex + 64);
-            c.push(v);
-            err.push(2.0 * U * v.abs());
+            c[i] = v;
+            err[i] = 2.0 * U * v.abs();
         }
     }
-    (c[0] != 0.0 && c[n] != 0.0).then_some(Scaled { c, err, k })
+    (c[0] != 0.0 && c[n] != 0.0).then_some(Scaled {
+        c,
+        err,
+        len: n + 1,
+        k,
+    })
 }
 
 /// Initial approximations from the Newton polygon: on each edge `(i, j)` of the upper convex
-/// hull of `(i, log₂|cᵢ|)`, `j − i` points on the circle of radius `|cᵢ/cⱼ|^(1/(j−i))`.
-fn initial(c: &[f64]) -> Vec<Complex> {
+/// hull of `(i, log₂|cᵢ|)`, `j − i` points on the circle of radius `|cᵢ/cⱼ|^(1/(j−i))`,
+/// written to `z[..n]`.
+fn initial(c: &[f64], z: &mut [Complex]) {
     let n = c.len() - 1;
-    let pts: Vec<(usize, f64)> = c
-        .iter()
-        .enumerate()
-        .filter(|(_, v)| **v != 0.0)
-        .map(|(i, v)| (i, v.abs().log2()))
-        .collect();
-    let mut hull: Vec<(usize, f64)> = Vec::with_capacity(pts.len());
-    for &q in &pts {
-        while hull.len() >= 2 {
-            let (a, b) = (hull[hull.len() - 2], hull[hull.len() - 1]);
+    let mut hull = [(0usize, 0.0f64); MAX_LEN];
+    let mut h = 0;
+    for (i, v) in c.iter().enumerate() {
+        if *v == 0.0 {
+            continue;
+        }
+        let q = (i, v.abs().log2());
+        while h >= 2 {
+            let (a, b) = (hull[h - 2], hull[h - 1]);
             // drop b unless it lies strictly above the chord a–q
             let cross = (b.0 - a.0) as f64 * (q.1 - a.1) - (b.1 - a.1) * (q.0 - a.0) as f64;
             if cross >= 0.0 {
-                hull.pop();
+                h -= 1;
             } else {
                 break;
             }
         }
-        hull.push(q);
+        hull[h] = q;
+        h += 1;
     }
-    let mut z = Vec::with_capacity(n);
-    for w in hull.windows(2) {
+    let mut at = 0;
+    for w in hull[..h].windows(2) {
         let (i, j) = (w[0].0, w[1].0);
         let m = j - i;
         let rho = ((w[0].1 - w[1].1) / m as f64).exp2();
         for t in 0..m {
             let angle = std::f64::consts::TAU * (t as f64 / m as f64 + i as f64 / n as f64) + 0.4;
-            z.push(Complex {
+            z[at] = Complex {
                 re: rho * angle.cos(),
                 im: rho * angle.sin(),
-            });
+            };
+            at += 1;
         }
     }
-    z
 }
 
 /// `p(z)`, `p′(z)` by Horner's rule, and `Σ|cₖ||z|ᵏ`.
@@ -240,15 +254,17 @@ fn eval_with_derivative(c: &[f64], z: Complex) -> (Complex, Complex, f64) {
 }
 
 /// Aberth–Ehrlich sweeps (Gauss–Seidel: each update used at once) until every correction
-/// is at the rounding level; `None` on a value that is not finite.
-fn aberth(c: &[f64]) -> Option<Vec<Complex>> {
-    aberth_from(c, initial(c))
+/// is at the rounding level, from the Newton polygon's points, into `z[..n]`; `None` on a
+/// value that is not finite.
+fn aberth(c: &[f64], z: &mut [Complex]) -> Option<()> {
+    initial(c, z);
+    aberth_from(c, z)
 }
 
 /// [`aberth`] from the approximations `z` (distinct, `deg c` of them).
-fn aberth_from(c: &[f64], mut z: Vec<Complex>) -> Option<Vec<Complex>> {
+fn aberth_from(c: &[f64], z: &mut [Complex]) -> Option<()> {
     let n = c.len() - 1;
-    let mut done = vec![false; n];
+    let mut done = [false; MAX_CERTIFIED_DEGREE];
     for _ in 0..MAX_SWEEPS {
         let mut all = true;
         for i in 0..n {
@@ -294,15 +310,15 @@ fn aberth_from(c: &[f64], mut z: Vec<Complex>) -> Option<Vec<Complex>> {
             break;
         }
     }
-    Some(z)
+    Some(())
 }
 
 /// An upper bound of `|p(z)|`, `p` the exact scaled polynomial (module docs, Rounding).
 fn value_bound(s: &Scaled, z: Complex) -> f64 {
-    let n = s.c.len() - 1;
+    let n = s.len - 1;
     let az = z.abs();
     let (mut v, mut mag, mut abs_err) = (Complex::ZERO, 0.0, 0.0);
-    for (&ck, &ek) in s.c.iter().zip(&s.err).rev() {
+    for (&ck, &ek) in s.c[..s.len].iter().zip(&s.err[..s.len]).rev() {
         v = v.mul(z).add(Complex { re: ck, im: 0.0 });
         mag = mag * az + ck.abs();
         abs_err = abs_err * az + ek + pow2(-1022) * pow2(-38);
@@ -311,28 +327,52 @@ fn value_bound(s: &Scaled, z: Complex) -> f64 {
     (v.abs() + horner + abs_err) * (1.0 + SLACK)
 }
 
-/// Upper bounds of the radii `n|Wᵢ|` of the inclusion disks at `z` (module docs).
-fn radii(s: &Scaled, z: &[Complex]) -> Option<Vec<f64>> {
+/// Upper bounds of the radii `n|Wᵢ|` of the inclusion disks at `z` (module docs), into
+/// `r[..n]`.
+fn radii(s: &Scaled, z: &[Complex], r: &mut [f64]) -> Option<()> {
     let n = z.len();
     let lead = (s.c[n].abs() - s.err[n]) * (1.0 - SLACK);
-    let mut r = Vec::with_capacity(n);
     for i in 0..n {
-        let mut prod = lead;
+        // ∏|zᵢ − zⱼ| as the root of the product of the squares while every square and
+        // partial product is far from underflow and overflow, else factor by factor
+        let mut squares = 1.0;
         for j in 0..n {
             if j != i {
-                prod *= z[i].sub(z[j]).abs();
-                if prod.is_nan() || prod < f64::MIN_POSITIVE {
-                    return None;
+                let d = z[i].sub(z[j]).norm_sqr();
+                squares *= d;
+                if !(d > pow2(-900)
+                    && d < pow2(900)
+                    && squares > pow2(-1000)
+                    && squares < pow2(1000))
+                {
+                    squares = f64::NAN;
+                    break;
                 }
+            }
+        }
+        let mut prod = lead;
+        if squares.is_nan() {
+            for j in 0..n {
+                if j != i {
+                    prod *= z[i].sub(z[j]).abs();
+                    if prod.is_nan() || prod < f64::MIN_POSITIVE {
+                        return None;
+                    }
+                }
+            }
+        } else {
+            prod *= squares.sqrt();
+            if prod.is_nan() || prod < f64::MIN_POSITIVE {
+                return None;
             }
         }
         let ri = n as f64 * value_bound(s, z[i]) / (prod * (1.0 - SLACK)) * (1.0 + SLACK);
         if !ri.is_finite() {
             return None;
         }
-        r.push(ri);
+        r[i] = ri;
     }
-    Some(r)
+    Some(())
 }
 
 /// A lower bound of `|a − b|`.
@@ -340,27 +380,29 @@ fn distance_lo(a: Complex, b: Complex) -> f64 {
     a.sub(b).abs() * (1.0 - SLACK)
 }
 
-/// The certified disks of the scaled polynomial: centres, radii, real centres exactly on
-/// the axis; `None` if the certificate fails.
-fn certified_disks(s: &Scaled) -> Option<(Vec<Complex>, Vec<f64>)> {
-    certified_disks_from(s, aberth(&s.c)?)
+/// The certified disks of the scaled polynomial of degree `n`: centres `z[..n]`, radii
+/// `r[..n]`, real centres exactly on the axis; `None` if the certificate fails.
+fn certified_disks(s: &Scaled, z: &mut [Complex], r: &mut [f64]) -> Option<()> {
+    aberth(s.c(), z)?;
+    certified_disks_from(s, z, r)
 }
 
-/// [`certified_disks`] at the approximations `z`.
-fn certified_disks_from(s: &Scaled, mut z: Vec<Complex>) -> Option<(Vec<Complex>, Vec<f64>)> {
-    if z.iter().any(|v| v.abs().is_nan() || v.abs() >= 1e150) {
+/// [`certified_disks`] at the approximations `z` (as many as the degree).
+fn certified_disks_from(s: &Scaled, z: &mut [Complex], r: &mut [f64]) -> Option<()> {
+    // |z| < 10¹⁵⁰ (false on NaN)
+    if !z.iter().all(|v| v.norm_sqr() < 1e300) {
         return None;
     }
-    let mut r = radii(s, &z)?;
+    radii(s, z, r)?;
     let mut moved = false;
-    for (zi, &ri) in z.iter_mut().zip(&r) {
+    for (zi, &ri) in z.iter_mut().zip(r.iter()) {
         if zi.im != 0.0 && zi.im.abs() <= ri {
             zi.im = 0.0;
             moved = true;
         }
     }
     if moved {
-        r = radii(s, &z)?;
+        radii(s, z, r)?;
     }
     let n = z.len();
     for i in 0..n {
@@ -373,7 +415,7 @@ fn certified_disks_from(s: &Scaled, mut z: Vec<Complex>) -> Option<(Vec<Complex>
             }
         }
     }
-    Some((z, r))
+    Some(())
 }
 
 /// `j·2ᵉ` as a rational (`j` an integer below `2⁶³` in magnitude): the odd part of `j`
@@ -539,7 +581,12 @@ pub fn certified_real_roots_enclosed(p: &Poly) -> Option<Vec<CertifiedRoot>> {
         }]);
     }
     let s = scale(p)?;
-    let (z, r) = certified_disks(&s)?;
+    let (mut z, mut r) = (
+        [Complex::ZERO; MAX_CERTIFIED_DEGREE],
+        [0.0; MAX_CERTIFIED_DEGREE],
+    );
+    let (z, r) = (&mut z[..n], &mut r[..n]);
+    certified_disks(&s, z, r)?;
     let lc = p.leading();
     let small_lc = lc.bit_len() <= 64;
     let mut out = Vec::new();
@@ -584,14 +631,25 @@ fn exponent(x: f64) -> i64 {
     ((x.to_bits() >> 52) & 0x7ff) as i64 - 1023
 }
 
+/// `v` rounded to the nearest float (machine integers convert directly, correctly rounded).
+fn int_to_f64(v: &IBig) -> f64 {
+    if let Ok(x) = i64::try_from(v) {
+        return x as f64;
+    }
+    match i128::try_from(v) {
+        Ok(x) => x as f64,
+        Err(_) => v.to_f64().value(),
+    }
+}
+
 /// The coefficients of `s` and of `s̄` for `s = A + B√δ`: the floats `aᵢ ± √δ·bᵢ` and a
 /// common bound of their errors (docs of [`certified_real_roots_zsqrt`]).
 fn conjugate_floats(a: &[&IBig], b: &[&IBig], delta: &IBig) -> ([f64; 5], [f64; 5], [f64; 5]) {
-    let r = delta.to_f64().value().sqrt();
+    let r = int_to_f64(delta).sqrt();
     let (mut c, mut cbar, mut err) = ([0.0; 5], [0.0; 5], [0.0; 5]);
     for i in 0..a.len() {
-        let af = a[i].to_f64().value();
-        let p = r * b[i].to_f64().value();
+        let af = int_to_f64(a[i]);
+        let p = r * int_to_f64(b[i]);
         c[i] = af + p;
         cbar[i] = af - p;
         err[i] =
@@ -615,15 +673,16 @@ fn conjugate_floats(a: &[&IBig], b: &[&IBig], delta: &IBig) -> ([f64; 5], [f64; 
 /// assert!((real[1] - 2f64.sqrt()).abs() < 1e-15 && (real[0] + real[1]).abs() < 1e-15);
 /// assert!(z.iter().any(|r| (r.1.abs() - 3.0).abs() < 1e-14));
 /// ```
-pub fn quartic_roots_f64(c: &[f64; 5]) -> Option<Vec<(f64, f64)>> {
+pub fn quartic_roots_f64(c: &[f64; 5]) -> Option<[(f64, f64); 4]> {
     if c[4] == 0.0 || c[0] == 0.0 || !c.iter().all(|v| v.is_finite()) {
         return None;
     }
     let k = (exponent(c[0]) - exponent(c[4])).div_euclid(4);
+    if !(-200..=200).contains(&k) {
+        return None;
+    }
     // cᵢ·2^(k·i): exact scalings by powers of two (None if one leaves the float range)
-    let scaled: Vec<f64> = (0..5)
-        .map(|i| c[i] * 2f64.powi((k * i as i64) as i32))
-        .collect();
+    let scaled: [f64; 5] = std::array::from_fn(|i| c[i] * pow2(k * i as i64));
     if !scaled
         .iter()
         .all(|v| v.is_finite() && (*v == 0.0 || v.abs() > f64::MIN_POSITIVE))
@@ -632,92 +691,163 @@ pub fn quartic_roots_f64(c: &[f64; 5]) -> Option<Vec<(f64, f64)>> {
     }
     // plausible: every value at a small multiple of its rounding level, and the sum of the
     // roots −c₃/c₄ (two approximations of one root would leave another root out)
-    let plausible = |z: &Vec<Complex>| {
+    let plausible = |z: &[Complex; 4]| {
         let values = z.iter().all(|&w| {
-            let (v, _, mag) = eval_with_derivative(&scaled, w);
-            v.abs() <= 64.0 * U * mag
+            // p(w) by Horner's rule and Σ|cₖ||w|ᵏ, compared squared (no square roots)
+            let (aw, mut v, mut mag) = (w.abs(), Complex::ZERO, 0.0);
+            for &ck in scaled.iter().rev() {
+                v = v.mul(w).add(Complex { re: ck, im: 0.0 });
+                mag = mag * aw + ck.abs();
+            }
+            let tol = 64.0 * U * mag;
+            v.norm_sqr() <= tol * tol
         });
         let sum = z.iter().fold(Complex::ZERO, |acc, &w| acc.add(w));
         let size: f64 = z.iter().map(|w| w.abs()).sum();
         let want = -scaled[3] / scaled[4];
         values && sum.im.abs() <= 1e-9 * size && (sum.re - want).abs() <= 1e-9 * size
     };
-    let z = ferrari(&scaled)
-        .and_then(|mut z| match polish(&scaled, &mut z) {
-            true => Some(z),
-            false => aberth_from(&scaled, z),
-        })
-        .filter(plausible)
-        .or_else(|| aberth(&scaled).filter(plausible))?;
-    let unit = 2f64.powi(k as i32);
-    Some(z.iter().map(|w| (w.re * unit, w.im * unit)).collect())
+    let mut z = ferrari(&scaled)?;
+    if !polish(&scaled, &mut z) {
+        aberth_from(&scaled, &mut z)?;
+    }
+    if !plausible(&z) {
+        aberth(&scaled, &mut z)?;
+        if !plausible(&z) {
+            return None;
+        }
+    }
+    let unit = pow2(k);
+    Some(z.map(|w| (w.re * unit, w.im * unit)))
+}
+
+/// The largest real root of the monic cubic `m³ + a₂m² + a₁m + a₀` in floats (not
+/// certified): the trigonometric form when the depressed cubic `t³ + Pt + Q` has three real
+/// roots, else Cardano's (the cube root taken where nothing cancels), then two Newton steps.
+fn largest_cubic_root(a2: f64, a1: f64, a0: f64) -> f64 {
+    let shift = a2 / 3.0;
+    let p = a1 - a2 * shift;
+    let q = (2.0 * shift * shift - a1) * shift + a0;
+    let half = 0.5 * q;
+    let third = p / 3.0;
+    let disc = half * half + third * third * third;
+    let t = if disc > 0.0 {
+        // one real root: u³ = −Q/2 − sign(Q)√Δ, t = u − P/(3u)
+        let u = (-half - disc.sqrt().copysign(half)).cbrt();
+        if u == 0.0 {
+            0.0
+        } else {
+            u - third / u
+        }
+    } else {
+        // three real roots (P ≤ 0): t = 2√(−P/3)·cos(θ/3), the largest
+        let rho = (-third).sqrt();
+        let cos = if rho == 0.0 {
+            0.0
+        } else {
+            (-half / (rho * rho * rho)).clamp(-1.0, 1.0)
+        };
+        2.0 * rho * (cos.acos() / 3.0).cos()
+    };
+    let mut m = t - shift;
+    for _ in 0..2 {
+        let f = ((m + a2) * m + a1) * m + a0;
+        let df = (3.0 * m + 2.0 * a2) * m + a1;
+        let next = m - f / df;
+        if !next.is_finite() {
+            break;
+        }
+        m = next;
+    }
+    m
+}
+
+/// `√w` on the principal branch (real part ≥ 0), without cancellation.
+fn complex_sqrt(w: Complex) -> Complex {
+    let a = w.abs();
+    if a == 0.0 {
+        return Complex::ZERO;
+    }
+    if w.re >= 0.0 {
+        let re = (0.5 * (a + w.re)).sqrt();
+        Complex {
+            re,
+            im: w.im / (2.0 * re),
+        }
+    } else {
+        let im = (0.5 * (a - w.re)).sqrt().copysign(w.im);
+        Complex {
+            re: w.im / (2.0 * im),
+            im,
+        }
+    }
 }
 
 /// Approximations of the roots of the quartic `c` (`c₄ ≠ 0`) by Ferrari's formulas in
-/// floats (the certificate does not rely on them); `None` on a value that is not finite.
-/// For `x = y − b/4` the monic quartic is `y⁴ + py² + qy + r`; with `m > 0` a root of the
-/// resolvent `8m³ + 8pm² + (2p² − 8r)m − q²` (negative at 0) and `w = √(2m)` it factors as
-/// `(y² − wy + p/2 + m + q/(2w))(y² + wy + p/2 + m − q/(2w))`.
-fn ferrari(c: &[f64]) -> Option<Vec<Complex>> {
+/// floats (the certificate does not rely on them), each conjugate pair adjacent; `None` on a
+/// value that is not finite. For `x = y − b/4` the monic quartic is `y⁴ + py² + qy + r`; with
+/// `m > 0` a root of the resolvent `8m³ + 8pm² + (2p² − 8r)m − q²` (negative at 0 when
+/// `q ≠ 0`) and `w = √(2m)` it factors as `(y² − wy + p/2 + m + q/(2w))(y² + wy + p/2 + m −
+/// q/(2w))`. When `q = 0` (a biquadratic: the resolvent's root may be 0) `y² = Y` with `Y² +
+/// pY + r = 0`, real or a conjugate pair.
+fn ferrari(c: &[f64]) -> Option<[Complex; 4]> {
     let (b, cc, d, e) = (c[3] / c[4], c[2] / c[4], c[1] / c[4], c[0] / c[4]);
     let b2 = b * b;
     let p = cc - 0.375 * b2;
     let q = d - 0.5 * b * cc + 0.125 * b2 * b;
     let r = e - 0.25 * b * d + b2 * cc / 16.0 - 3.0 * b2 * b2 / 256.0;
-    // a positive root of the resolvent (negative at 0, positive at the Cauchy bound): Newton's
-    // method kept inside a shrinking bracket, bisecting when a step leaves it
-    let (k2, k1, k0) = (p, (2.0 * p * p - 8.0 * r) / 8.0, -q * q / 8.0);
-    let (mut lo, mut hi) = (0.0, 1.0 + k2.abs().max(k1.abs()).max(k0.abs()));
-    let mut m = hi;
-    for _ in 0..100 {
-        let f = ((m + k2) * m + k1) * m + k0;
-        if f > 0.0 {
-            hi = m;
-        } else {
-            lo = m;
-        }
-        let df = (3.0 * m + 2.0 * k2) * m + k1;
-        let newton = m - f / df;
-        let next = if newton > lo && newton < hi {
-            newton
-        } else {
-            0.5 * (lo + hi)
-        };
-        let step = (next - m).abs();
-        m = next;
-        if step <= 1e-15 * m || hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
-            break;
-        }
-    }
-    let mut z = Vec::with_capacity(4);
     let shift = -0.25 * b;
-    let mut quadratic = |lin: f64, con: f64| {
-        // y² + lin·y + con
+    let mut z = [Complex::ZERO; 4];
+    // y² + lin·y + con into z[at], z[at + 1]
+    let mut quadratic = |at: usize, lin: f64, con: f64| {
         let disc = 0.25 * lin * lin - con;
         let h = -0.5 * lin + shift;
-        if disc >= 0.0 {
-            let t = disc.sqrt();
-            z.push(Complex { re: h + t, im: 0.0 });
-            z.push(Complex { re: h - t, im: 0.0 });
+        let t = disc.abs().sqrt();
+        (z[at], z[at + 1]) = if disc >= 0.0 {
+            (
+                Complex { re: h + t, im: 0.0 },
+                Complex { re: h - t, im: 0.0 },
+            )
         } else {
-            let t = (-disc).sqrt();
-            z.push(Complex { re: h, im: t });
-            z.push(Complex { re: h, im: -t });
-        }
+            (Complex { re: h, im: t }, Complex { re: h, im: -t })
+        };
+    };
+    let m = if q == 0.0 {
+        0.0
+    } else {
+        largest_cubic_root(p, 0.25 * p * p - r, -0.125 * q * q)
     };
     if m > 0.0 && m.is_finite() {
         let w = (2.0 * m).sqrt();
-        quadratic(-w, 0.5 * p + m + q / (2.0 * w));
-        quadratic(w, 0.5 * p + m - q / (2.0 * w));
+        quadratic(0, -w, 0.5 * p + m + q / (2.0 * w));
+        quadratic(2, w, 0.5 * p + m - q / (2.0 * w));
     } else {
-        // q = 0: a quadratic in y²
+        // a biquadratic in y (q = 0, or lost to rounding): Y = y²
         let disc = p * p - 4.0 * r;
-        if disc < 0.0 {
-            return None;
-        }
-        let t = disc.sqrt();
-        for y2 in [(-p + t) / 2.0, (-p - t) / 2.0] {
-            quadratic(0.0, -y2);
+        if disc >= 0.0 {
+            // the larger Y first, the other as r over it (no cancellation)
+            let y1 = -0.5 * (p + disc.sqrt().copysign(p));
+            let y2 = if y1 == 0.0 { 0.0 } else { r / y1 };
+            quadratic(0, 0.0, -y1);
+            quadratic(2, 0.0, -y2);
+        } else {
+            let w = complex_sqrt(Complex {
+                re: -0.5 * p,
+                im: 0.5 * (-disc).sqrt(),
+            });
+            let conj = |v: Complex| Complex {
+                re: v.re,
+                im: -v.im,
+            };
+            let at = |v: Complex| Complex {
+                re: v.re + shift,
+                im: v.im,
+            };
+            let minus = Complex {
+                re: -w.re,
+                im: -w.im,
+            };
+            z = [at(w), at(conj(w)), at(minus), at(conj(minus))];
         }
     }
     // distinct approximations (Aberth's corrections divide by their differences)
@@ -840,8 +970,7 @@ fn scaled_floats(c: &[f64], err: &[f64], k: i64) -> Option<Scaled> {
         .map(|(i, v)| exponent(*v) + k * i as i64)
         .max()?
         + 1;
-    let mut sc = Vec::with_capacity(c.len());
-    let mut se = Vec::with_capacity(c.len());
+    let (mut sc, mut se) = ([0.0; MAX_LEN], [0.0; MAX_LEN]);
     for (i, (&v, &e)) in c.iter().zip(err).enumerate() {
         let x = k * i as i64 - top;
         if !(-1000..=1000).contains(&x) {
@@ -852,10 +981,15 @@ fn scaled_floats(c: &[f64], err: &[f64], k: i64) -> Option<Scaled> {
         if (v != 0.0 && v.abs() < pow2(-1000)) || (e != 0.0 && e < pow2(-1000)) {
             return None;
         }
-        sc.push(v);
-        se.push(e);
+        sc[i] = v;
+        se[i] = e;
     }
-    Some(Scaled { c: sc, err: se, k })
+    Some(Scaled {
+        c: sc,
+        err: se,
+        len: c.len(),
+        k,
+    })
 }
 
 /// The real roots of `s = A + B√δ ∈ ℤ[√δ][x]` (`A = Σaᵢxⁱ`, `B = Σbᵢxⁱ`, `δ > 0` not a
@@ -896,6 +1030,24 @@ pub fn certified_real_roots_zsqrt(
     b: &[&IBig],
     delta: &IBig,
 ) -> Option<Vec<CertifiedRoot>> {
+    let (real, m, k) = zsqrt_real_disks(a, b, delta)?;
+    let mut out = Vec::with_capacity(m);
+    // disjoint intervals around the centres: their order is that of the centres
+    for &(c, ri, gap) in &real[..m] {
+        let (lo, hi, e) = interval_in_units(c, ri, gap, true)?;
+        let interval = RootInterval::Open(dyadic(lo, e + k), dyadic(hi, e + k));
+        out.push(enclosed(interval.clone(), interval, c, ri, k));
+    }
+    Some(out)
+}
+
+/// A real disk of `s`: centre, radius, and a lower bound on its gap to every other disk and
+/// to 0.
+type RealDisk = (f64, f64, f64);
+
+/// The certificate of [`certified_real_roots_zsqrt`]: the real disks of `s` in the variable
+/// `y = x/2ᵏ`, sorted by centre, their number and `k`.
+fn zsqrt_real_disks(a: &[&IBig], b: &[&IBig], delta: &IBig) -> Option<([RealDisk; 4], usize, i64)> {
     let n = a.len().checked_sub(1)?;
     if !(1..=4).contains(&n) || b.len() != a.len() || delta <= &IBig::ONE {
         return None;
@@ -918,22 +1070,25 @@ pub fn certified_real_roots_zsqrt(
     let sq = scaled_floats(&cbar[..=n], &err[..=n], k)?;
     // Ferrari's approximations polished by Newton's method, else (or if the certificate
     // fails there) Aberth's iteration from the Newton polygon
-    let disks = |sc: &Scaled| {
-        let polished = match n {
-            4 => ferrari(&sc.c).and_then(|mut z| match polish(&sc.c, &mut z) {
-                true => Some(z),
-                false => aberth_from(&sc.c, z),
-            }),
-            _ => None,
-        };
-        polished
-            .and_then(|z| certified_disks_from(sc, z))
-            .or_else(|| certified_disks(sc))
+    let disks = |sc: &Scaled, z: &mut [Complex], r: &mut [f64]| -> Option<()> {
+        if n == 4 {
+            if let Some(f) = ferrari(sc.c()) {
+                z.copy_from_slice(&f);
+                let polished = polish(sc.c(), z) || aberth_from(sc.c(), z).is_some();
+                if polished && certified_disks_from(sc, z, r).is_some() {
+                    return Some(());
+                }
+            }
+        }
+        certified_disks(sc, z, r)
     };
-    let (zp, rp) = disks(&sp)?;
-    let (zq, rq) = disks(&sq)?;
-    for (zi, ri) in zp.iter().zip(&rp) {
-        for (zj, rj) in zq.iter().zip(&rq) {
+    let (mut zp, mut rp, mut zq, mut rq) =
+        ([Complex::ZERO; 4], [0.0; 4], [Complex::ZERO; 4], [0.0; 4]);
+    let (zp, rp, zq, rq) = (&mut zp[..n], &mut rp[..n], &mut zq[..n], &mut rq[..n]);
+    disks(&sp, zp, rp)?;
+    disks(&sq, zq, rq)?;
+    for (zi, ri) in zp.iter().zip(rp.iter()) {
+        for (zj, rj) in zq.iter().zip(rq.iter()) {
             if distance_lo(*zi, *zj) <= (ri + rj) * (1.0 + SLACK) {
                 return None;
             }
@@ -946,33 +1101,20 @@ pub fn certified_real_roots_zsqrt(
         if zp[i].im != 0.0 {
             continue;
         }
-        let others = zp
-            .iter()
-            .zip(&rp)
-            .enumerate()
-            .filter(|&(j, _)| j != i)
-            .map(|(_, d)| d)
-            .chain(zq.iter().zip(&rq));
-        let gap = others
-            .map(|(zj, rj)| (distance_lo(zp[i], *zj) - rj) * (1.0 - SLACK))
-            .fold(f64::INFINITY, f64::min)
-            .min(zp[i].re.abs());
+        let mut gap = zp[i].re.abs();
+        for (j, (zj, rj)) in zp.iter().zip(rp.iter()).enumerate() {
+            if j != i {
+                gap = gap.min((distance_lo(zp[i], *zj) - rj) * (1.0 - SLACK));
+            }
+        }
+        for (zj, rj) in zq.iter().zip(rq.iter()) {
+            gap = gap.min((distance_lo(zp[i], *zj) - rj) * (1.0 - SLACK));
+        }
         real[m] = (zp[i].re, rp[i], gap);
         m += 1;
     }
-    // disjoint intervals around the centres: their order is that of the centres
-    real[..m].sort_by(|x, y| x.0.total_cmp(&y.0));
-    let mut out = Vec::with_capacity(m);
-    for &(c, ri, gap) in &real[..m] {
-        let open = |wide| {
-            let (lo, hi, e) = interval_in_units(c, ri, gap, wide)?;
-            Some(RootInterval::Open(dyadic(lo, e + k), dyadic(hi, e + k)))
-        };
-        let interval = open(true)?;
-        let narrow = interval.clone();
-        out.push(enclosed(interval, narrow, c, ri, k));
-    }
-    Some(out)
+    real[..m].sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
+    Some((real, m, k))
 }
 
 /// What the disk says of a real root's rationality.
@@ -1209,6 +1351,63 @@ mod tests {
         }
     }
 
+    /// Ferrari's seeds are the roots, polished in a few Newton steps, on biquadratic quartics
+    /// `x⁴ + px² + r` (`q = 0`: the resolvent's only nonnegative root may be 0, where the
+    /// general factorization divides by `√(2m)`), whatever the signs of `p`, `r` and `p² − 4r`,
+    /// and on random general quartics; the roots are those of Aberth's iteration (another
+    /// route). Taking the general branch at `q = 0` gives seeds the polish cannot fix.
+    #[test]
+    fn ferrari_seeds_biquadratic_and_general_quartics() {
+        let mut rng = SplitMix(2024);
+        let mut biquadratic = [0usize; 3];
+        for t in 0..600 {
+            let v = |rng: &mut SplitMix| rng.int(-50, 50) as f64 / 8.0;
+            let c: [f64; 5] = if t % 2 == 0 {
+                [v(&mut rng), 0.0, v(&mut rng), 0.0, 1.0]
+            } else {
+                std::array::from_fn(|i| if i == 4 { 1.0 } else { v(&mut rng) })
+            };
+            if c[0] == 0.0 {
+                continue;
+            }
+            let mut z = ferrari(&c).expect("finite seeds");
+            // the roots are simple unless the discriminant vanishes: then skip
+            let mut reference = [Complex::ZERO; 4];
+            aberth(&c, &mut reference).expect("Aberth converges");
+            let close = |a: Complex, b: Complex| a.sub(b).abs() <= 1e-6 * (1.0 + b.abs());
+            let apart = |a: Complex, b: Complex| a.sub(b).abs() > 1e-2 * (1.0 + b.abs());
+            let simple = (0..4).all(|i| (0..i).all(|j| apart(reference[i], reference[j])));
+            if !simple {
+                continue;
+            }
+            assert!(polish(&c, &mut z), "{c:?}: seeds {z:?}");
+            for w in &z {
+                assert!(
+                    reference.iter().any(|r| close(*w, *r)),
+                    "{c:?}: {z:?} vs {reference:?}"
+                );
+            }
+            for r in &reference {
+                assert!(
+                    z.iter().any(|w| close(*w, *r)),
+                    "{c:?}: {z:?} vs {reference:?}"
+                );
+            }
+            if t % 2 == 0 {
+                let (p, r) = (c[2], c[0]);
+                biquadratic[if r < 0.0 {
+                    0
+                } else if p * p < 4.0 * r {
+                    1
+                } else {
+                    2
+                }] += 1;
+            }
+        }
+        // r < 0 (the resolvent's root 0), complex y², real y²
+        assert!(biquadratic.iter().all(|&k| k >= 30), "{biquadratic:?}");
+    }
+
     /// `c − r ≤ √d ≤ c + r`, exactly.
     fn holds_sqrt(c: f64, r: f64, d: i64) -> bool {
         let (c, r) = (RBig::try_from(c).unwrap(), RBig::try_from(r).unwrap());
@@ -1251,7 +1450,10 @@ mod tests {
                 }
             }
             let z: Vec<Complex> = roots.iter().map(|r| r.2).collect();
-            let Some(r) = radii(&s, &z) else { continue };
+            let mut r = vec![0.0; z.len()];
+            let Some(()) = radii(&s, &z, &mut r) else {
+                continue;
+            };
             let disjoint = (0..z.len()).all(|i| {
                 (i + 1..z.len()).all(|j| distance_lo(z[i], z[j]) > (r[i] + r[j]) * (1.0 + SLACK))
             });

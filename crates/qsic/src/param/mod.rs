@@ -1345,12 +1345,12 @@ fn sample_between(a: &RootInterval, b: &RootInterval) -> RBig {
 /// times a power of `u`) changes.
 fn nonzero_roots(
     s: &Poly<Quadratic>,
-    integral: Option<(&[zsqrt::Zq], &IBig)>,
+    delta: &IBig,
     sign_at: &dyn Fn(&RBig) -> Sign,
 ) -> (Vec<AlgebraicReal>, bool) {
-    // s over ℤ[√δ] in machine integers: the certificate on s and s̄ apart (degree 4 each,
-    // no root finding on the norm, and the roots of s known without signs)
-    if let Some(roots) = integral.and_then(|(z, delta)| machine_roots(z, delta)) {
+    // s over ℤ[√δ]: the certificate on s and s̄ apart (degree 4 each, no root finding on
+    // the norm, and the roots of s known without signs)
+    if let Some(roots) = machine_roots(s, delta) {
         return (roots, true);
     }
     let norm = norm_of(s);
@@ -1366,18 +1366,28 @@ fn nonzero_roots(
     exact_roots_by_norm(s, &norm, sign_at)
 }
 
-/// The real roots of `s = A + B√δ` (integral, `s(0) ≠ 0`, degree at most 4) by
-/// [`AlgebraicReal::certified_real_roots_zsqrt`]; `None` if the certificate fails. `Some` proves the norm, hence
-/// `s`, square-free.
-fn machine_roots(z: &[zsqrt::Zq], delta: &IBig) -> Option<Vec<AlgebraicReal>> {
-    let len = z.iter().rposition(|c| !c.is_zero())? + 1;
-    if len > 5 {
+/// The real roots of `s = A + B√δ` (`s(0) ≠ 0`, degree at most 4) by
+/// [`AlgebraicReal::certified_real_roots_zsqrt`] when `s` is integral over ℤ[√δ] (its
+/// integers read in place, not copied); `None` otherwise or if the certificate fails. `Some`
+/// proves the norm, hence `s`, square-free.
+fn machine_roots(s: &Poly<Quadratic>, delta: &IBig) -> Option<Vec<AlgebraicReal>> {
+    let c = s.coeffs();
+    if c.len() > 5 || delta.is_zero() {
         return None;
     }
     let zero = IBig::ZERO;
-    let a: [&IBig; 5] = std::array::from_fn(|i| z.get(i).map_or(&zero, |c| &c.a));
-    let b: [&IBig; 5] = std::array::from_fn(|i| z.get(i).map_or(&zero, |c| &c.b));
-    AlgebraicReal::certified_real_roots_zsqrt(&a[..len], &b[..len], delta)
+    let (mut a, mut b) = ([&zero; 5], [&zero; 5]);
+    for (i, x) in c.iter().enumerate() {
+        if x.as_rational().is_none() && x.radicand() != delta {
+            return None;
+        }
+        let (p, q) = (x.rational_part(), x.radical_part());
+        if !(p.denominator().is_one() && q.denominator().is_one()) {
+            return None;
+        }
+        (a[i], b[i]) = (p.numerator(), q.numerator());
+    }
+    AlgebraicReal::certified_real_roots_zsqrt(&a[..c.len()], &b[..c.len()], delta)
 }
 
 /// The real roots of `s` over ℚ(√δ) from the exact isolation of its norm `s·s̄` (any `s`
@@ -1436,11 +1446,15 @@ fn zq_sign(c: &zsqrt::Zq, delta: &IBig) -> Sign {
 
 /// The real roots of `s` (see [`DiscriminantRoots`]).
 fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
-    let rational: Option<Vec<RBig>> = s
-        .coeffs()
-        .iter()
-        .map(|c| c.as_rational().cloned())
-        .collect();
+    // (collected only when every coefficient is rational: no clones on the common path)
+    let rational: Option<Vec<RBig>> = if s.coeffs().iter().all(|c| c.as_rational().is_some()) {
+        s.coeffs()
+            .iter()
+            .map(|c| c.as_rational().cloned())
+            .collect()
+    } else {
+        None
+    };
     // the exact sign of s at a rational: in integers when s is integral over ℤ[√δ]
     let delta = s
         .coeffs()
@@ -1448,11 +1462,13 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
         .find(|c| c.as_rational().is_none())
         .map(|c| c.radicand().clone())
         .unwrap_or(IBig::ZERO);
-    let integral = zsqrt::zpoly(s, &delta);
+    // s over ℤ[√δ] (made when first needed: the certified roots read s in place)
+    let integral = std::cell::OnceCell::new();
+    let integral = || integral.get_or_init(|| zsqrt::zpoly(s, &delta));
     // floats of the coefficients and of √δ for the certified float signs (made when a
     // sign is first asked for)
     let floats = std::cell::OnceCell::new();
-    let sign_at = |x: &RBig| match &integral {
+    let sign_at = |x: &RBig| match integral() {
         Some(z) => {
             let (a, b, r) = floats.get_or_init(|| {
                 let f = |v: &IBig| v.to_f64().value();
@@ -1486,11 +1502,10 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
                 .iter()
                 .take_while(|c| c.as_rational().is_some_and(|v| v.is_zero()))
                 .count();
-            let z = integral.as_deref().map(|z| (&z[k.min(z.len())..], &delta));
             let (mut roots, squarefree) = if k > 0 {
-                nonzero_roots(&s.shift_down(k), z, &sign_at)
+                nonzero_roots(&s.shift_down(k), &delta, &sign_at)
             } else {
-                nonzero_roots(s, z, &sign_at)
+                nonzero_roots(s, &delta, &sign_at)
             };
             if k > 0 {
                 let at = roots.partition_point(|r| r.interval().hi() <= &RBig::ZERO);
@@ -1502,24 +1517,22 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
     let mut samples = Vec::new();
     match (roots.first(), roots.last()) {
         (Some(first), Some(last)) => {
-            samples.push(RBig::from(first.interval().lo().floor()) - RBig::ONE);
+            samples.push(RBig::from(first.interval().lo().floor() - IBig::ONE));
             // the stated intervals come from one isolation of the norm: disjoint, short ends
             for w in roots.windows(2) {
                 samples.push(sample_between(w[0].interval(), w[1].interval()));
             }
-            samples.push(RBig::from(last.interval().hi().ceil()) + RBig::ONE);
+            samples.push(RBig::from(last.interval().hi().ceil() + IBig::ONE));
         }
         _ => samples.push(RBig::ZERO),
     }
     // a square-free s changes sign at each of its real roots, and has the sign of its
     // leading coefficient beyond the last: no evaluation
-    let lead = match (squarefree, &integral, s.coeffs().last()) {
-        (true, Some(z), _) => z
-            .iter()
-            .rev()
-            .find(|c| !c.is_zero())
-            .map(|c| zq_sign(c, &delta)),
-        (true, None, Some(c)) => Some(sign(c)),
+    let lead = match (squarefree, s.coeffs().last()) {
+        (true, Some(c)) => Some(match zsqrt::Zq::from_quadratic(c, &delta) {
+            Some(z) => zq_sign(&z, &delta),
+            None => sign(c),
+        }),
         _ => None,
     };
     let count = samples.len();
@@ -1722,8 +1735,8 @@ mod tests {
                 .iter()
                 .find(|c| c.as_rational().is_none())
                 .map(|c| c.radicand().clone());
-            if let Some(z) = delta.as_ref().and_then(|d| zsqrt::zpoly(&s1, d)) {
-                fast[usize::from(machine_roots(&z, delta.as_ref().unwrap()).is_some())] += 1;
+            if let Some(d) = delta.as_ref().filter(|d| zsqrt::zpoly(&s1, d).is_some()) {
+                fast[usize::from(machine_roots(&s1, d).is_some())] += 1;
             }
             let d = discriminant_roots(&s);
             assert_eq!(d.roots, roots, "roots of {s}");
