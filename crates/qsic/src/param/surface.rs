@@ -1387,7 +1387,16 @@ mod tests {
         assert_ruled(&s, &r);
         let want = IBig::from(7 * 127 * 859 * 3628852029232861i128);
         assert_eq!(r.delta, Some(want.clone()));
-        assert_eq!(det, RBig::from(IBig::from(16) * want));
+        assert_eq!(det, RBig::from(IBig::from(16) * want.clone()));
+        // S/3: det S/81, a rational determinant of the same square class
+        let third = RBig::from_parts_signed(IBig::ONE, IBig::from(3));
+        let s3: [[RBig; 4]; 4] =
+            std::array::from_fn(|i| std::array::from_fn(|j| &s[i][j] * &third));
+        let r3 = parameterize_doubly_ruled(&s3)
+            .unwrap()
+            .expect("a parameterization");
+        assert_ruled(&s3, &r3);
+        assert_eq!(r3.delta, Some(want));
     }
 
     #[test]
