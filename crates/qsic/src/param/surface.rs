@@ -331,7 +331,7 @@ fn small_integer_matrix(s: &[[RBig; 4]; 4]) -> Option<[[i128; 4]; 4]> {
 }
 
 /// `⌊√n⌋` if `n ≥ 0` is a perfect square.
-fn exact_sqrt(n: i128) -> Option<i128> {
+pub(crate) fn exact_sqrt(n: i128) -> Option<i128> {
     if n < 0 {
         return None;
     }
