@@ -202,8 +202,13 @@ pub fn parameterize_smooth_quartic(
 #[derive(Clone)]
 struct SmoothQuartic {
     /// The surface; for [`Forms::Integral`] with the ruling as chosen (the forms hold the
-    /// reduced and balanced one).
+    /// reduced and balanced one), its `b` and `d` empty when the ruling was computed in
+    /// machine integers, and its matrix zero when `member` holds it (both filled by
+    /// [`Self::into_levin`]).
     surface: ParameterizationSurface,
+    /// `(d·S, d)` in machine integers when the surface's matrix `S` is left to
+    /// [`Self::into_levin`] ([`surface::small_member`]).
+    member: Option<([[i128; 4]; 4], i128)>,
     substituted: Substituted,
     discriminant: DiscriminantRoots,
     forms: Forms,
@@ -248,10 +253,14 @@ impl SmoothQuartic {
         let s = self.exact_s();
         let SmoothQuartic {
             mut surface,
+            member,
             substituted,
             discriminant,
             forms,
         } = self;
+        if let Some((m, den)) = member {
+            surface.matrix = surface::member_from_small(&m, den);
+        }
         let a = match forms {
             Forms::Integral(f) => {
                 let (db, dd) = ruling_degrees(surface.kind);
@@ -308,7 +317,11 @@ fn smooth_quartic(
     } else {
         None
     };
-    let Chosen { mut surface, fixed } = match quick {
+    let Chosen {
+        mut surface,
+        fixed,
+        member,
+    } = match quick {
         Some(chosen) => chosen,
         None => {
             let analysis = analyze_pencil(a, b)
@@ -343,6 +356,7 @@ fn smooth_quartic(
         let discriminant = discriminant_roots(&zsqrt::to_poly(&fast.s, &fast.delta));
         return Ok(SmoothQuartic {
             surface,
+            member,
             substituted,
             discriminant,
             forms: Forms::Integral(fast),
@@ -393,8 +407,12 @@ fn smooth_quartic(
     let (bv, dv) = (&surface.ruling.b, &surface.ruling.d);
     let av: PolyVector = std::array::from_fn(|i| &(&c2 * &bv[i]) - &(&c1 * &dv[i]));
     let discriminant = discriminant_roots(&s);
+    if let Some((m, den)) = member {
+        surface.matrix = surface::member_from_small(&m, den);
+    }
     Ok(SmoothQuartic {
         surface,
+        member: None,
         substituted,
         discriminant,
         forms: Forms::Rational { a: av, s },
@@ -746,6 +764,7 @@ fn levin_curve(
         substituted,
         discriminant: dr,
         forms,
+        ..
     } = quartic;
     let field = surface.ruling.delta.as_ref().map(curve::sqrt_field);
     let (a, d, s, alternate) = match forms {
@@ -985,16 +1004,20 @@ fn choose_surface(
         None => choose_surface_full(a, b, analysis).map(|surface| Chosen {
             surface,
             fixed: None,
+            member: None,
         }),
     }
 }
 
 /// A chosen parameterization surface; with its ruling in machine integers when it was
 /// computed there ([`zsqrt::ruling_fixed`]), and then the surface's `b` and `d` left empty
-/// (only its `δ` set): [`Chosen::into_surface`] or the integral forms fill them.
+/// (only its `δ` set): [`Chosen::into_surface`] or the integral forms fill them; with the
+/// member `(d·S, d)` in machine integers when the surface's matrix `S` is left zero (filled
+/// when asked for: [`SmoothQuartic::into_levin`]).
 struct Chosen {
     surface: ParameterizationSurface,
     fixed: Option<zsqrt::FixedRuling>,
+    member: Option<([[i128; 4]; 4], i128)>,
 }
 
 impl Chosen {
@@ -1004,6 +1027,9 @@ impl Chosen {
         let mut surface = self.surface;
         if let Some(r) = self.fixed {
             surface.ruling = r.to_ruling();
+        }
+        if let Some((m, den)) = self.member {
+            surface.matrix = surface::member_from_small(&m, den);
         }
         surface
     }
@@ -1100,11 +1126,12 @@ fn surface_among(
         return Ok(Some(Some(Chosen {
             surface: ParameterizationSurface {
                 lambda: Some(l),
-                matrix: surface::member_from_small(&m, den),
+                matrix: std::array::from_fn(|_| std::array::from_fn(|_| RBig::ZERO)),
                 kind: SurfaceKind::DoublyRuled,
                 ruling,
             },
             fixed,
+            member: Some((m, den)),
         })));
     }
     Ok(Some(None))

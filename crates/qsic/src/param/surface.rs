@@ -408,17 +408,23 @@ where
         + std::ops::Mul<Output = T>,
 {
     let vs: [[T; 4]; 40] = SMALL_VECTORS.map(|v| v.map(T::from));
-    let mv: [[T; 4]; 40] = vs
-        .map(|v| std::array::from_fn(|i| (0..4).fold(T::default(), |acc, j| acc + m[i][j] * v[j])));
+    let mul = |x: &[T; 4]| -> [T; 4] {
+        std::array::from_fn(|i| m[i][0] * x[0] + m[i][1] * x[1] + m[i][2] * x[2] + m[i][3] * x[3])
+    };
     let dot =
         |x: &[T; 4], y: &[T; 4]| -> T { x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + x[3] * y[3] };
-    let diag: [T; 40] = std::array::from_fn(|k| dot(&vs[k], &mv[k]));
-    if let Some(k) = diag.iter().position(|&x| x == T::default()) {
-        return Some(vs[k]);
+    // the first isotropic vector, else all the values of the form
+    let mut diag = [T::default(); 40];
+    for (k, v) in vs.iter().enumerate() {
+        diag[k] = dot(v, &mul(v));
+        if diag[k] == T::default() {
+            return Some(*v);
+        }
     }
     for p in 0..40 {
+        let mp = mul(&vs[p]);
         for q in p + 1..40 {
-            let spq = dot(&vs[p], &mv[q]);
+            let spq = dot(&mp, &vs[q]);
             let Some(r) = exact_sqrt((spq * spq - diag[p] * diag[q]).into()) else {
                 continue;
             };
@@ -1129,12 +1135,24 @@ pub(crate) fn small_member(
     if n.unsigned_abs() >= 1 << 60 || d >= 1 << 60 {
         return None;
     }
+    let bits = |v: u128| 128 - v.leading_zeros();
+    let max = |m: &[[i128; 4]; 4]| {
+        m.as_flattened()
+            .iter()
+            .fold(0, |acc, v| acc | v.unsigned_abs())
+    };
+    // |n·a| < 2¹²⁵ and |d·b| < 2¹²⁵: no overflow (the common case), else checked
+    let plain = bits(n.unsigned_abs()) + bits(max(a)) <= 125
+        && bits(d.unsigned_abs()) + bits(max(b)) <= 125;
     let mut out = [[0i128; 4]; 4];
     for i in 0..4 {
         for j in 0..4 {
-            let v = n
-                .checked_mul(a[i][j])?
-                .checked_sub(d.checked_mul(b[i][j])?)?;
+            let v = if plain {
+                n * a[i][j] - d * b[i][j]
+            } else {
+                n.checked_mul(a[i][j])?
+                    .checked_sub(d.checked_mul(b[i][j])?)?
+            };
             if v.unsigned_abs() >= 1 << 40 {
                 return None;
             }
@@ -1158,8 +1176,22 @@ pub(crate) fn member_from_small(m: &[[i128; 4]; 4], d: i128) -> [[RBig; 4]; 4] {
     })
 }
 
-/// `det M` by the Laplace expansion along the first two rows, every operation checked.
+/// `det M` by the Laplace expansion along the first two rows, every operation checked
+/// unless the entries are below `2³⁰` (then the 2 × 2 minors are below `2⁶¹`, their
+/// products below `2¹²²` and the sum of six below `2¹²⁵`).
 fn det_checked(m: &[[i128; 4]; 4]) -> Option<i128> {
+    if m.as_flattened().iter().all(|v| v.unsigned_abs() < 1 << 30) {
+        let minor = |r0: usize, r1: usize, c0: usize, c1: usize| {
+            m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0]
+        };
+        return Some(
+            minor(0, 1, 0, 1) * minor(2, 3, 2, 3) - minor(0, 1, 0, 2) * minor(2, 3, 1, 3)
+                + minor(0, 1, 0, 3) * minor(2, 3, 1, 2)
+                + minor(0, 1, 1, 2) * minor(2, 3, 0, 3)
+                - minor(0, 1, 1, 3) * minor(2, 3, 0, 2)
+                + minor(0, 1, 2, 3) * minor(2, 3, 0, 1),
+        );
+    }
     let minor = |r0: usize, r1: usize, c0: usize, c1: usize| -> Option<i128> {
         m[r0][c0]
             .checked_mul(m[r1][c1])?
@@ -1504,6 +1536,63 @@ mod tests {
         assert!(
             machine > 30 && overflow > 5,
             "{machine} machine, {overflow} overflow of {total}"
+        );
+    }
+
+    /// The ruling in fixed `i128` arrays (`zsqrt::ruling_fixed`, plain arithmetic under bit
+    /// length guards) equals the checked route's wherever it answers, declines (`Overflow`)
+    /// only where the guards cannot exclude overflow, and says `NotInField` exactly where the
+    /// checked route finds no ruling; members from tiny to near the `2⁴⁰` bound, so that
+    /// every guard is passed and failed (test builds check every operation for overflow:
+    /// a guard that lets one through panics here).
+    #[test]
+    fn fixed_rulings_equal_checked_rulings() {
+        use super::super::zsqrt::{ruling_fixed, Through};
+        let mut rng = qsic_algebra::testing::SplitMix(37);
+        let (mut fixed, mut overflow, mut not_in_field) = (0, 0, 0);
+        for bound in [
+            1i64,
+            2,
+            5,
+            30,
+            200,
+            3000,
+            1 << 14,
+            1 << 18,
+            1 << 24,
+            (1 << 39) - 1,
+        ] {
+            for _ in 0..80 {
+                let m = random_symmetric(&mut rng, bound);
+                let (Some(p), Some(delta)) = (small_point_of(&m), member_radicand(&m)) else {
+                    continue;
+                };
+                let want = ruling_through_small(&m, &p, &delta);
+                let dl = i128::try_from(&delta).expect("a radicand below 2¹²⁸");
+                match ruling_fixed(&m, &p, dl) {
+                    Ok(Through::Ruling(r)) => {
+                        fixed += 1;
+                        let got = r.to_ruling();
+                        assert_eq!(Some(got.clone()), want.expect("a ruling"), "{m:?}");
+                        let s: [[RBig; 4]; 4] = m.map(|row| row.map(RBig::from));
+                        assert_ruled(&s, &got);
+                        // the reduction keeps it a ruling of the same surface
+                        let mut reduced = r;
+                        reduced.reduce();
+                        assert_ruled(&s, &reduced.to_ruling());
+                    }
+                    Ok(Through::NotInField) => {
+                        not_in_field += 1;
+                        assert_eq!(want.expect("no error"), None, "{m:?}");
+                    }
+                    Ok(Through::Overflow) => overflow += 1,
+                    Err(_) => assert!(want.is_err(), "{m:?}"),
+                }
+            }
+        }
+        assert!(
+            fixed > 100 && overflow > 20,
+            "{fixed} fixed, {overflow} overflow, {not_in_field} not in the field"
         );
     }
 

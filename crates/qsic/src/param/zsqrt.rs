@@ -772,6 +772,7 @@ impl Zi {
 
 /// The bit length of the largest weight `|a| + |b|√δ` of `x` from above (`√|δ| < 2^h`):
 /// `max(bits(a), bits(b) + h) + 1`.
+#[inline]
 fn weight(x: &[Zi], h: u32) -> u32 {
     let (a, b) = x.iter().fold((0u128, 0u128), |(a, b), v| {
         (a | v.a.unsigned_abs(), b | v.b.unsigned_abs())
@@ -785,8 +786,32 @@ fn bits_of(x: &[i128]) -> u32 {
     bit_len_u(x.iter().fold(0u128, |acc, v| acc | v.unsigned_abs()))
 }
 
-/// `x` divided by the gcd of its integers `a`, `b` (nothing when it is 0 or 1).
+/// `x` divided by the gcd of its integers `a`, `b` (nothing when it is 0 or 1): in machine
+/// words when every part fits `i64` (the common case).
 fn make_primitive(x: &mut [Zi]) {
+    if narrow(x) {
+        let mut g = 0u64;
+        for v in x.iter() {
+            for part in [v.a as i64, v.b as i64] {
+                if part != 0 && g != 1 {
+                    let (mut p, mut q) = (g, part.unsigned_abs());
+                    while q != 0 {
+                        (p, q) = (q, p % q);
+                    }
+                    g = p;
+                }
+            }
+        }
+        if g > 1 {
+            // g divides a nonzero part below 2⁶³
+            let g = g as i64;
+            for v in x.iter_mut() {
+                v.a = i128::from(v.a as i64 / g);
+                v.b = i128::from(v.b as i64 / g);
+            }
+        }
+        return;
+    }
     let mut g = 0u128;
     for v in x.iter() {
         for part in [v.a, v.b] {
@@ -859,11 +884,14 @@ pub(crate) fn ruling_fixed(
     let bm = bits_of(m.as_flattened());
     let primitive = |v: [i128; 4]| -> [i128; 4] {
         let g = v.iter().fold(0u128, |g, x| gcd_u128(g, x.unsigned_abs()));
-        if g > 1 {
+        if g <= 1 {
+            v
+        } else if v.iter().all(|x| x.unsigned_abs() < 1 << 63) {
+            let g = g as i64;
+            v.map(|x| i128::from(x as i64 / g))
+        } else {
             let g = g as i128;
             v.map(|x| x / g)
-        } else {
-            v
         }
     };
     let mv = |x: &[i128; 4]| -> [i128; 4] {
@@ -1171,21 +1199,21 @@ impl<const N: usize> FixedPoly<N> {
         self.coeffs().iter().map(|v| v.big()).collect()
     }
 
-    /// Coefficient `i` times `2^e(i)`; `false` (nothing changed) when a result could reach
-    /// `2¹²⁶`.
-    fn shift(&mut self, e: impl Fn(usize) -> usize) -> bool {
-        let fits = self.coeffs().iter().enumerate().all(|(i, v)| {
+    /// Whether every coefficient `i` times `2^e(i)` stays below `2¹²⁶`.
+    fn fits(&self, e: impl Fn(usize) -> usize) -> bool {
+        self.coeffs().iter().enumerate().all(|(i, v)| {
             let b = bit_len(v.a).max(bit_len(v.b));
             b == 0 || b as usize + e(i) <= 126
-        });
-        if fits {
-            for (i, v) in self.c[..self.n].iter_mut().enumerate() {
-                let k = e(i) as u32;
-                v.a <<= k;
-                v.b <<= k;
-            }
+        })
+    }
+
+    /// Coefficient `i` times `2^e(i)` (the caller checked [`Self::fits`]).
+    fn shift(&mut self, e: impl Fn(usize) -> usize) {
+        for (i, v) in self.c[..self.n].iter_mut().enumerate() {
+            let k = e(i) as u32;
+            v.a <<= k;
+            v.b <<= k;
         }
-        fits
     }
 }
 
@@ -1327,6 +1355,132 @@ fn levin_core<const S: usize, const A: usize>(
     Some(((s, a, alt), !checked && !checked_products))
 }
 
+/// `x·y` in ℤ[√δ] without overflow checks, in products of machine words when `NARROW` (the
+/// caller knows every part of `x`, `y` and `δ` to fit `i64`: each product one instruction).
+#[inline(always)]
+fn zmul<const NARROW: bool>(x: Zi, y: Zi, delta: i128) -> Zi {
+    if NARROW {
+        let w = |v: i128| i128::from(v as i64);
+        Zi {
+            a: w(x.a) * w(y.a) + w(x.b) * w(y.b) * w(delta),
+            b: w(x.a) * w(y.b) + w(x.b) * w(y.a),
+        }
+    } else {
+        mul_unchecked(x, y, delta)
+    }
+}
+
+/// `x·y − z·w` of polynomials over ℤ[√δ] with `P` and `Q` coefficients into `N = P + Q − 1`,
+/// without overflow checks (the caller's bounds exclude overflow).
+#[inline(always)]
+fn cross_lines<const NARROW: bool, const P: usize, const Q: usize, const N: usize>(
+    x: &[Zi; P],
+    y: &[Zi; Q],
+    z: &[Zi; P],
+    w: &[Zi; Q],
+    delta: i128,
+) -> FixedPoly<N> {
+    debug_assert_eq!(P + Q - 1, N);
+    let mut c = [Zi::default(); N];
+    for i in 0..P {
+        for j in 0..Q {
+            c[i + j] = c[i + j]
+                .plus(zmul::<NARROW>(x[i], y[j], delta))
+                .minus(zmul::<NARROW>(z[i], w[j], delta));
+        }
+    }
+    let n = c
+        .iter()
+        .rposition(|v| *v != Zi::default())
+        .map_or(0, |k| k + 1);
+    FixedPoly { c, n }
+}
+
+/// Whether every part of `x` fits `i64`.
+fn narrow(x: &[Zi]) -> bool {
+    x.iter()
+        .all(|v| i128::from(v.a as i64) == v.a && i128::from(v.b as i64) == v.b)
+}
+
+/// [`levin_core`] for lines `b = b₀ + u·b₁`, `d = d₀ + u·d₁` (a symmetric `M`): the
+/// products `M·b₀`, `M·b₁`, `M·d₀`, `M·d₁` once, the forms from ten dot products
+/// (`c₀ = b₀ᵀMb₀ + 2u·b₀ᵀMb₁ + u²·b₁ᵀMb₁`, …), then `s`, `a`, `alt`; without overflow
+/// checks, each stage guarded by the weights of its operands as in [`levin_core`] (a
+/// coefficient of a form is a sum of at most two dot products of four products, below
+/// `2^(2σ_q + β_M + 5)`; one of `s` at most six products of the forms', one of `a`, `alt`
+/// four), in machine-word products where the parts fit `i64`. `None` when a guard fails.
+fn levin_lines(m: &[[i128; 4]; 4], r: &FixedRuling) -> Option<FixedForms<5, 4>> {
+    let dt = r.delta;
+    let h = bit_len(dt).div_ceil(2);
+    let vector = |w: usize, j: usize| -> [Zi; 4] {
+        std::array::from_fn(|i| Zi {
+            a: r.t[w][j][2 * i],
+            b: r.t[w][j][2 * i + 1],
+        })
+    };
+    // b₀, b₁, d₀, d₁
+    let v = [vector(0, 0), vector(0, 1), vector(1, 0), vector(1, 1)];
+    let sq = weight(v.as_flattened(), h);
+    let bm = bits_of(m.as_flattened());
+    if 2 * sq + bm + 5 > 126 {
+        return None;
+    }
+    let mv: [[Zi; 4]; 4] = v.map(|x| {
+        std::array::from_fn(|i| {
+            x[0].scaled(m[i][0])
+                .plus(x[1].scaled(m[i][1]))
+                .plus(x[2].scaled(m[i][2]))
+                .plus(x[3].scaled(m[i][3]))
+        })
+    });
+    fn dot<const NARROW: bool>(x: &[Zi; 4], y: &[Zi; 4], dt: i128) -> Zi {
+        zmul::<NARROW>(x[0], y[0], dt)
+            .plus(zmul::<NARROW>(x[1], y[1], dt))
+            .plus(zmul::<NARROW>(x[2], y[2], dt))
+            .plus(zmul::<NARROW>(x[3], y[3], dt))
+    }
+    fn forms<const NARROW: bool>(v: &[[Zi; 4]; 4], mv: &[[Zi; 4]; 4], dt: i128) -> [[Zi; 3]; 3] {
+        let d = |x: usize, y: usize| dot::<NARROW>(&v[x], &mv[y], dt);
+        [
+            [d(0, 0), d(0, 1).scaled(2), d(1, 1)],
+            [d(0, 2), d(0, 3).plus(d(1, 2)), d(1, 3)],
+            [d(2, 2), d(2, 3).scaled(2), d(3, 3)],
+        ]
+    }
+    let narrow_dt = i128::from(dt as i64) == dt;
+    let c = if narrow_dt && narrow(v.as_flattened()) && narrow(mv.as_flattened()) {
+        forms::<true>(&v, &mv, dt)
+    } else {
+        forms::<false>(&v, &mv, dt)
+    };
+    let sc = weight(c.as_flattened(), h);
+    if 2 * sc + 3 > 126 || sc + sq + 2 > 126 {
+        return None;
+    }
+    let b: [[Zi; 2]; 4] = std::array::from_fn(|i| [v[0][i], v[1][i]]);
+    let d: [[Zi; 2]; 4] = std::array::from_fn(|i| [v[2][i], v[3][i]]);
+    fn rest<const NARROW: bool>(
+        c: &[[Zi; 3]; 3],
+        b: &[[Zi; 2]; 4],
+        d: &[[Zi; 2]; 4],
+        dt: i128,
+    ) -> FixedForms<5, 4> {
+        let s = cross_lines::<NARROW, 3, 3, 5>(&c[1], &c[1], &c[0], &c[2], dt);
+        let a =
+            std::array::from_fn(|i| cross_lines::<NARROW, 3, 2, 4>(&c[2], &b[i], &c[1], &d[i], dt));
+        let alt =
+            std::array::from_fn(|i| cross_lines::<NARROW, 3, 2, 4>(&c[1], &b[i], &c[0], &d[i], dt));
+        (s, a, alt)
+    }
+    Some(
+        if narrow_dt && narrow(c.as_flattened()) && narrow(v.as_flattened()) {
+            rest::<true>(&c, &b, &d, dt)
+        } else {
+            rest::<false>(&c, &b, &d, dt)
+        },
+    )
+}
+
 /// Levin's forms of a [`FixedRuling`] in machine integers: the ruling `b`, `d` and
 /// `s`, `a`, `alt` ([`levin_core`]), each in a fixed buffer.
 #[derive(Clone, Copy, Debug)]
@@ -1355,7 +1509,10 @@ impl FixedLevin {
         let d: [FixedPoly<2>; 4] = std::array::from_fn(|i| poly(1, i));
         let bi: [&[Zi]; 4] = std::array::from_fn(|i| b[i].coeffs());
         let di: [&[Zi]; 4] = std::array::from_fn(|i| d[i].coeffs());
-        let ((s, a, alt), _) = levin_core::<5, 4>(m, &bi, &di, r.delta, false)?;
+        let (s, a, alt) = match levin_lines(m, r) {
+            Some(forms) => forms,
+            None => levin_core::<5, 4>(m, &bi, &di, r.delta, false)?.0,
+        };
         Some(FixedLevin {
             delta: r.delta,
             b,
@@ -1409,16 +1566,27 @@ impl FixedLevin {
     /// homogeneous degree: 1 for `b`, `d`, 3 for `a`, `alt`, 4 for `s`); `false` (nothing
     /// changed) when a number could leave `i128`.
     pub(crate) fn shift(&mut self, exponent: impl Fn(usize, usize) -> usize) -> bool {
-        let mut copy = *self;
-        let ok = copy.b.iter_mut().all(|p| p.shift(|i| exponent(1, i)))
-            && copy.d.iter_mut().all(|p| p.shift(|i| exponent(1, i)))
-            && copy.a.iter_mut().all(|p| p.shift(|i| exponent(3, i)))
-            && copy.alt.iter_mut().all(|p| p.shift(|i| exponent(3, i)))
-            && copy.s.shift(|i| exponent(4, i));
-        if ok {
-            *self = copy;
+        let fits = self
+            .b
+            .iter()
+            .chain(&self.d)
+            .all(|p| p.fits(|i| exponent(1, i)))
+            && self
+                .a
+                .iter()
+                .chain(&self.alt)
+                .all(|p| p.fits(|i| exponent(3, i)))
+            && self.s.fits(|i| exponent(4, i));
+        if fits {
+            for p in self.b.iter_mut().chain(&mut self.d) {
+                p.shift(|i| exponent(1, i));
+            }
+            for p in self.a.iter_mut().chain(&mut self.alt) {
+                p.shift(|i| exponent(3, i));
+            }
+            self.s.shift(|i| exponent(4, i));
         }
-        ok
+        fits
     }
 
     /// `b`, `d`, `a`, `alt`, `s` as [`ZPoly`]s.
@@ -1778,6 +1946,78 @@ mod tests {
                 assert_eq!(p, want);
             }
         }
+    }
+
+    /// The forms of a fixed ruling ([`FixedLevin`]) equal the big-integer ones on random
+    /// rulings and matrices of every size (declining only past the bounds of `levin_core`),
+    /// its `log₂` sizes of `s` equal [`log2_sizes`], and its shifts equal
+    /// [`scale_powers_of_two`] where they fit (and decline, changing nothing, where not).
+    #[test]
+    fn fixed_levin_equals_big_forms() {
+        let mut rng = SplitMix(41);
+        let (mut fixed, mut declined, mut shifted, mut too_far) = (0, 0, 0, 0);
+        for (bits, delta) in [(3u32, 0i64), (8, 5), (20, 0), (28, 3), (40, 2), (60, 7)] {
+            for _ in 0..40 {
+                let mut v = |b: u32| i128::from(rng.int(-99, 99)) << rng.int(0, b as i64) as u32;
+                let m: [[i128; 4]; 4] =
+                    std::array::from_fn(|_| std::array::from_fn(|_| v(bits / 2)));
+                let m: [[i128; 4]; 4] = std::array::from_fn(|i| {
+                    std::array::from_fn(|j| if i <= j { m[i][j] } else { m[j][i] })
+                });
+                let mut t = [[[0i128; 8]; 2]; 2];
+                for x in t.as_flattened_mut().as_flattened_mut().chunks_mut(2) {
+                    x[0] = v(bits);
+                    x[1] = if delta == 0 { 0 } else { v(bits) };
+                }
+                let r = FixedRuling {
+                    delta: i128::from(delta),
+                    t,
+                };
+                let big_delta = IBig::from(delta);
+                let (b, d) = r.to_zpolys();
+                let mb = m.map(|row| row.map(IBig::from));
+                let (s, a, alt) = levin_big(&mb, &b, &d, &big_delta);
+                let Some(f) = FixedLevin::new(&m, &r) else {
+                    declined += 1;
+                    assert!(bits >= 20, "declined at {bits} bits");
+                    continue;
+                };
+                fixed += 1;
+                let (fb, fd, fa, falt, fs) = f.into_zpolys();
+                let trimmed = |mut p: ZPoly| {
+                    trim(&mut p);
+                    p
+                };
+                assert_eq!((&fb, &fd), (&b, &d));
+                assert_eq!(fs, trimmed(s.clone()));
+                assert_eq!(fa, a.clone().map(trimmed));
+                assert_eq!(falt, alt.clone().map(trimmed));
+                assert_eq!(f.s_log2_sizes(), log2_sizes(&fs, &big_delta));
+                let k = rng.int(0, 16) as usize;
+                let exponent = |degree: usize, i: usize| k * (degree + 1 - i.min(degree));
+                let mut g = f;
+                if g.shift(exponent) {
+                    shifted += 1;
+                    let (gb, gd, ga, galt, gs) = g.into_zpolys();
+                    let scaled = |mut p: ZPoly, degree: usize| {
+                        scale_powers_of_two(&mut p, |i| exponent(degree, i));
+                        p
+                    };
+                    assert_eq!(gb, fb.map(|p| scaled(p, 1)));
+                    assert_eq!(gd, fd.map(|p| scaled(p, 1)));
+                    assert_eq!(ga, fa.map(|p| scaled(p, 3)));
+                    assert_eq!(galt, falt.map(|p| scaled(p, 3)));
+                    assert_eq!(gs, scaled(fs, 4));
+                } else {
+                    too_far += 1;
+                    assert_eq!(g.into_zpolys(), f.into_zpolys());
+                }
+            }
+        }
+        assert!(
+            fixed > 100 && declined > 10 && shifted > 50 && too_far > 10,
+            "{fixed} fixed, {declined} declined, {shifted} shifted, {too_far} too far"
+        );
     }
 
     /// The machine-integer forms equal the big-integer ones: without checks (bounded), checked
