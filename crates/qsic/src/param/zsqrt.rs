@@ -463,12 +463,16 @@ fn reduce_array(t: &mut [[[i128; 8]; 2]; 2]) -> Option<()> {
             let mut f = [to_f64_16(&v[0]), to_f64_16(&v[1])];
             let mut bits = [bits16(&v[0]), bits16(&v[1])];
             for _ in 0..8 {
-                let dot = |p: &[f64; 16], q: &[f64; 16]| -> f64 {
-                    p.iter().zip(q).map(|(a, b)| a * b).sum()
-                };
-                let (nx, ny) = (dot(&f[0], &f[0]), dot(&f[1], &f[1]));
+                // the three dot products in one pass, each summed in index order (as
+                // `Iterator::sum` from −0: the same floats)
+                let (mut nx, mut ny, mut nxy) = (-0.0f64, -0.0f64, -0.0f64);
+                for (a, b) in f[0].iter().zip(&f[1]) {
+                    nx += a * a;
+                    ny += b * b;
+                    nxy += a * b;
+                }
                 let (small, big, nsmall) = if nx <= ny { (0, 1, nx) } else { (1, 0, ny) };
-                let kf = (dot(&f[0], &f[1]) / nsmall).round();
+                let kf = (nxy / nsmall).round();
                 if !(kf.is_finite() && kf != 0.0 && kf.abs() < 1e30) {
                     break;
                 }
@@ -821,11 +825,18 @@ fn make_primitive(x: &mut [Zi]) {
         }
     }
     if g > 1 {
-        // g divides a nonzero entry, which is below 2¹²⁷
-        let g = g as i128;
+        // exact division: the power of two shifted out, then a product by the inverse of
+        // the odd part modulo 2¹²⁸ (Newton: each step doubles the correct low bits, from 3)
+        let s = g.trailing_zeros();
+        let odd = g >> s;
+        let mut inverse = odd;
+        for _ in 0..6 {
+            inverse = inverse.wrapping_mul(2u128.wrapping_sub(odd.wrapping_mul(inverse)));
+        }
+        let divide = |v: i128| ((v >> s) as u128).wrapping_mul(inverse) as i128;
         for v in x.iter_mut() {
-            v.a /= g;
-            v.b /= g;
+            v.a = divide(v.a);
+            v.b = divide(v.b);
         }
     }
 }
@@ -972,9 +983,17 @@ pub(crate) fn ruling_fixed(
     // the balancing of `surface::ruling_through`: |E₊| about |p| by a power of two
     let root_delta = to_f64(dt).abs().sqrt();
     let size = |v: &[Zi]| -> f64 {
-        v.iter()
-            .map(|x| to_f64(x.a).abs() + to_f64(x.b).abs() * root_delta)
-            .fold(0.0, f64::max)
+        // machine words convert in one instruction each (and exactly as `as f64`)
+        if narrow(v) {
+            let f = |x: i128| (x as i64) as f64;
+            v.iter()
+                .map(|x| f(x.a).abs() + f(x.b).abs() * root_delta)
+                .fold(0.0, f64::max)
+        } else {
+            v.iter()
+                .map(|x| to_f64(x.a).abs() + to_f64(x.b).abs() * root_delta)
+                .fold(0.0, f64::max)
+        }
     };
     let ratio = size(&p.map(Zi::int)) / size(&plus);
     if ratio.is_finite() && ratio >= 2.0 {
@@ -1453,8 +1472,8 @@ fn levin_lines(m: &[[i128; 4]; 4], r: &FixedRuling) -> Option<FixedForms<5, 4>> 
     } else {
         forms::<false>(&v, &mv, dt)
     };
-    let sc = weight(c.as_flattened(), h);
-    if 2 * sc + 3 > 126 || sc + sq + 2 > 126 {
+    let [w0, w1, w2] = c.map(|x| weight(&x, h));
+    if (2 * w1).max(w0 + w2) + 3 > 126 || w0.max(w1).max(w2) + sq + 2 > 126 {
         return None;
     }
     let b: [[Zi; 2]; 4] = std::array::from_fn(|i| [v[0][i], v[1][i]]);
