@@ -685,6 +685,8 @@ pub(crate) struct FixedRuling {
 }
 
 /// What [`ruling_fixed`] finds.
+// One value per call, matched at once: boxing the ruling would only add an allocation.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug)]
 pub(crate) enum Through {
     Ruling(FixedRuling),
@@ -705,7 +707,7 @@ impl FixedRuling {
     }
 
     /// `b` and `d` over ℤ[√δ] ([`ZPoly`], no trailing zeros).
-    pub(crate) fn to_zpolys(&self) -> ([ZPoly; 4], [ZPoly; 4]) {
+    pub(crate) fn to_zpolys(self) -> ([ZPoly; 4], [ZPoly; 4]) {
         let out = |w: usize| -> [ZPoly; 4] {
             std::array::from_fn(|i| {
                 let c = self.coordinate(w, i);
@@ -720,7 +722,7 @@ impl FixedRuling {
     }
 
     /// The public ruling over ℚ(√δ) (one square root for all the coefficients).
-    pub(crate) fn to_ruling(&self) -> super::surface::RuledParameterization {
+    pub(crate) fn to_ruling(self) -> super::surface::RuledParameterization {
         let delta = IBig::from(self.delta);
         let (b, d) = self.to_zpolys();
         super::surface::RuledParameterization {
