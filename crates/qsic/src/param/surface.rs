@@ -1550,7 +1550,10 @@ mod tests {
         use super::super::zsqrt::{ruling_fixed, Through};
         let mut rng = qsic_algebra::testing::SplitMix(37);
         let (mut fixed, mut overflow, mut not_in_field) = (0, 0, 0);
-        for bound in [
+        // members with a small point, then members through a given point (1, p₁, p₂, p₃)
+        // with |pᵢ| < 2^k (M₀₀ chosen to put it on the quadric), whose sizes cross the guards
+        let mut cases = Vec::new();
+        let bounds = [
             1i64,
             2,
             5,
@@ -1561,33 +1564,65 @@ mod tests {
             1 << 18,
             1 << 24,
             (1 << 39) - 1,
-        ] {
+        ];
+        for bound in bounds {
             for _ in 0..80 {
                 let m = random_symmetric(&mut rng, bound);
-                let (Some(p), Some(delta)) = (small_point_of(&m), member_radicand(&m)) else {
-                    continue;
-                };
-                let want = ruling_through_small(&m, &p, &delta);
-                let dl = i128::try_from(&delta).expect("a radicand below 2¹²⁸");
-                match ruling_fixed(&m, &p, dl) {
-                    Ok(Through::Ruling(r)) => {
-                        fixed += 1;
-                        let got = r.to_ruling();
-                        assert_eq!(Some(got.clone()), want.expect("a ruling"), "{m:?}");
-                        let s: [[RBig; 4]; 4] = m.map(|row| row.map(RBig::from));
-                        assert_ruled(&s, &got);
-                        // the reduction keeps it a ruling of the same surface
-                        let mut reduced = r;
-                        reduced.reduce();
-                        assert_ruled(&s, &reduced.to_ruling());
-                    }
-                    Ok(Through::NotInField) => {
-                        not_in_field += 1;
-                        assert_eq!(want.expect("no error"), None, "{m:?}");
-                    }
-                    Ok(Through::Overflow) => overflow += 1,
-                    Err(_) => assert!(want.is_err(), "{m:?}"),
+                if let Some(p) = small_point_of(&m) {
+                    cases.push((m, p));
                 }
+            }
+        }
+        // (det M must fit i128 for a radicand: M₀₀ ≈ 2^(2k + j + 3) stays below 2³²)
+        for k in [2i64, 6, 9, 11, 12, 13] {
+            for j in [1i64, 2, 3, 5] {
+                for _ in 0..16 {
+                    let mut m = random_symmetric(&mut rng, 1 << j);
+                    let p: [i128; 4] = std::array::from_fn(|i| {
+                        if i == 0 {
+                            1
+                        } else {
+                            rng.int(-(1 << k), 1 << k).into()
+                        }
+                    });
+                    m[0][0] = 0;
+                    let mut rest = 0i128;
+                    for i in 0..4 {
+                        for l in 0..4 {
+                            rest += p[i] * m[i][l] * p[l];
+                        }
+                    }
+                    m[0][0] = -rest;
+                    if m[0][0].unsigned_abs() < 1 << 40 {
+                        cases.push((m, p));
+                    }
+                }
+            }
+        }
+        for (m, p) in cases {
+            let Some(delta) = member_radicand(&m) else {
+                continue;
+            };
+            let want = ruling_through_small(&m, &p, &delta);
+            let dl = i128::try_from(&delta).expect("a radicand below 2¹²⁸");
+            match ruling_fixed(&m, &p, dl) {
+                Ok(Through::Ruling(r)) => {
+                    fixed += 1;
+                    let got = r.to_ruling();
+                    assert_eq!(Some(got.clone()), want.expect("a ruling"), "{m:?}");
+                    let s: [[RBig; 4]; 4] = m.map(|row| row.map(RBig::from));
+                    assert_ruled(&s, &got);
+                    // the reduction keeps it a ruling of the same surface
+                    let mut reduced = r;
+                    reduced.reduce();
+                    assert_ruled(&s, &reduced.to_ruling());
+                }
+                Ok(Through::NotInField) => {
+                    not_in_field += 1;
+                    assert_eq!(want.expect("no error"), None, "{m:?}");
+                }
+                Ok(Through::Overflow) => overflow += 1,
+                Err(_) => assert!(want.is_err(), "{m:?}"),
             }
         }
         assert!(
