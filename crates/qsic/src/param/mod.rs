@@ -202,8 +202,13 @@ pub fn parameterize_smooth_quartic(
 #[derive(Clone)]
 struct SmoothQuartic {
     /// The surface; for [`Forms::Integral`] with the ruling as chosen (the forms hold the
-    /// reduced and balanced one).
+    /// reduced and balanced one), its `b` and `d` empty when the ruling was computed in
+    /// machine integers, and its matrix zero when `member` holds it (both filled by
+    /// [`Self::into_levin`]).
     surface: ParameterizationSurface,
+    /// `(d·S, d)` in machine integers when the surface's matrix `S` is left to
+    /// [`Self::into_levin`] ([`surface::small_member`]).
+    member: Option<([[i128; 4]; 4], i128)>,
     substituted: Substituted,
     discriminant: DiscriminantRoots,
     forms: Forms,
@@ -248,10 +253,14 @@ impl SmoothQuartic {
         let s = self.exact_s();
         let SmoothQuartic {
             mut surface,
+            member,
             substituted,
             discriminant,
             forms,
         } = self;
+        if let Some((m, den)) = member {
+            surface.matrix = surface::member_from_small(&m, den);
+        }
         let a = match forms {
             Forms::Integral(f) => {
                 let (db, dd) = ruling_degrees(surface.kind);
@@ -308,8 +317,12 @@ fn smooth_quartic(
     } else {
         None
     };
-    let mut surface = match quick {
-        Some(surface) => surface,
+    let Chosen {
+        mut surface,
+        fixed,
+        member,
+    } = match quick {
+        Some(chosen) => chosen,
         None => {
             let analysis = analyze_pencil(a, b)
                 .ok_or_else(|| Error::Unsupported("a singular or single pencil".into()))?;
@@ -324,12 +337,17 @@ fn smooth_quartic(
             choose_surface(&integer_matrix(a), &integer_matrix(b), &analysis)?
         }
     };
+    if !fast {
+        if let Some(r) = &fixed {
+            surface.ruling = r.to_ruling();
+        }
+    }
     let (qm, substituted) = match surface.lambda {
         Some(_) => (a, Substituted::A),
         None => (b, Substituted::B),
     };
     let integral = if fast {
-        integral_levin(qm.integer_matrix().entries(), &surface.ruling, surface.kind)?
+        integral_levin(qm, &surface.ruling, fixed.as_ref(), surface.kind)?
     } else {
         None
     };
@@ -338,6 +356,7 @@ fn smooth_quartic(
         let discriminant = discriminant_roots(&zsqrt::to_poly(&fast.s, &fast.delta));
         return Ok(SmoothQuartic {
             surface,
+            member,
             substituted,
             discriminant,
             forms: Forms::Integral(fast),
@@ -388,8 +407,12 @@ fn smooth_quartic(
     let (bv, dv) = (&surface.ruling.b, &surface.ruling.d);
     let av: PolyVector = std::array::from_fn(|i| &(&c2 * &bv[i]) - &(&c1 * &dv[i]));
     let discriminant = discriminant_roots(&s);
+    if let Some((m, den)) = member {
+        surface.matrix = surface::member_from_small(&m, den);
+    }
     Ok(SmoothQuartic {
         surface,
+        member: None,
         substituted,
         discriminant,
         forms: Forms::Rational { a: av, s },
@@ -433,13 +456,28 @@ fn reduce_doubly_ruled(ruling: &mut RuledParameterization) {
 /// # Errors
 /// [`Error::Algebra`] if `s ≡ 0`.
 fn integral_levin(
-    qm: &[[IBig; 4]; 4],
+    qm: &Quadric,
     ruling: &RuledParameterization,
+    fixed: Option<&zsqrt::FixedRuling>,
     kind: SurfaceKind,
 ) -> Result<Option<IntegralLevin>, Error> {
-    // the common case: the reduced ruling straight from the rational one
-    let direct = match (kind, &ruling.delta) {
-        (SurfaceKind::DoublyRuled, delta) => {
+    // the common case: the ruling in machine integers from the point to the forms
+    let from_fixed = match fixed {
+        Some(r) => {
+            let mut r = *r;
+            r.reduce();
+            if let Some(forms) = small_matrix(qm).and_then(|m| zsqrt::FixedLevin::new(&m, &r)) {
+                return fixed_levin(forms).map(Some);
+            }
+            let (b, d) = r.to_zpolys();
+            Some((IBig::from(r.delta), b, d))
+        }
+        None => None,
+    };
+    // else the reduced ruling straight from the rational one
+    let direct = match (from_fixed, kind, &ruling.delta) {
+        (Some(r), _, _) => Some(r),
+        (None, SurfaceKind::DoublyRuled, delta) => {
             let delta = delta.clone().unwrap_or(IBig::ZERO);
             zsqrt::reduced_ruling(&ruling.b, &ruling.d, &delta).map(|(b, d)| (delta, b, d))
         }
@@ -457,6 +495,7 @@ fn integral_levin(
             (delta, b, d)
         }
     };
+    let qm = qm.integer_matrix().entries();
     // in machine integers when everything fits, else in big integers
     let (mut s, mut a, mut alt) = zsqrt::levin_small(qm, &b, &d, &delta)
         .unwrap_or_else(|| zsqrt::levin_big(qm, &b, &d, &delta));
@@ -496,6 +535,64 @@ fn integral_levin(
         alt,
         s,
     }))
+}
+
+/// The primitive integer matrix of `q` in `i128` (`None` past it).
+fn small_matrix(q: &Quadric) -> Option<[[i128; 4]; 4]> {
+    if let Some(m) = q.small_integer_matrix() {
+        return Some(m.map(|row| row.map(i128::from)));
+    }
+    let m = q.integer_matrix().entries();
+    let mut out = [[0i128; 4]; 4];
+    for (row, src) in out.iter_mut().zip(m) {
+        for (x, v) in row.iter_mut().zip(src) {
+            *x = i128::try_from(v).ok()?;
+        }
+    }
+    Some(out)
+}
+
+/// [`integral_levin`] from the forms of a fixed ruling (doubly ruled): the balancing in
+/// machine integers when it fits, else on the big integers.
+///
+/// # Errors
+/// [`Error::Algebra`] if `s ≡ 0`.
+fn fixed_levin(mut forms: zsqrt::FixedLevin) -> Result<IntegralLevin, Error> {
+    if forms.s_is_zero() {
+        return Err(Error::Algebra("s(u) vanishes identically".into()));
+    }
+    let k = balancing_exponent_of(&forms.s_log2_sizes());
+    let shifted = k == 0 || forms.shift(|degree, i| balance_exponent(k, degree, i));
+    let delta = IBig::from(forms.delta);
+    let (mut b, mut d, mut a, mut alt, mut s) = forms.into_zpolys();
+    if !shifted {
+        let (db, dd) = ruling_degrees(SurfaceKind::DoublyRuled);
+        let all = [
+            (&mut b, db),
+            (&mut d, dd),
+            (&mut a, 2 * dd + db),
+            (&mut alt, 2 * db + dd),
+        ];
+        for (v, degree) in all {
+            for p in v.iter_mut() {
+                zsqrt::scale_powers_of_two(p, |i| balance_exponent(k, degree, i));
+            }
+        }
+        zsqrt::scale_powers_of_two(&mut s, |i| balance_exponent(k, 2 * (db + dd), i));
+    }
+    Ok(IntegralLevin {
+        delta,
+        down: if integral_balancing(k) {
+            0
+        } else {
+            k.unsigned_abs() as usize
+        },
+        b,
+        d,
+        a,
+        alt,
+        s,
+    })
 }
 
 /// Whether the balancing `k` keeps the forms as integers, multiplied by `2^(−k·degree)`
@@ -667,6 +764,7 @@ fn levin_curve(
         substituted,
         discriminant: dr,
         forms,
+        ..
     } = quartic;
     let field = surface.ruling.delta.as_ref().map(curve::sqrt_field);
     let (a, d, s, alternate) = match forms {
@@ -900,10 +998,40 @@ fn choose_surface(
     a: &[[RBig; 4]; 4],
     b: &[[RBig; 4]; 4],
     analysis: &PencilAnalysis,
-) -> Result<ParameterizationSurface, Error> {
+) -> Result<Chosen, Error> {
     match choose_surface_small(a, b, analysis)? {
-        Some(surface) => Ok(surface),
-        None => choose_surface_full(a, b, analysis),
+        Some(chosen) => Ok(chosen),
+        None => choose_surface_full(a, b, analysis).map(|surface| Chosen {
+            surface,
+            fixed: None,
+            member: None,
+        }),
+    }
+}
+
+/// A chosen parameterization surface; with its ruling in machine integers when it was
+/// computed there ([`zsqrt::ruling_fixed`]), and then the surface's `b` and `d` left empty
+/// (only its `δ` set): [`Chosen::into_surface`] or the integral forms fill them; with the
+/// member `(d·S, d)` in machine integers when the surface's matrix `S` is left zero (filled
+/// when asked for: [`SmoothQuartic::into_levin`]).
+struct Chosen {
+    surface: ParameterizationSurface,
+    fixed: Option<zsqrt::FixedRuling>,
+    member: Option<([[i128; 4]; 4], i128)>,
+}
+
+impl Chosen {
+    /// The surface with its ruling.
+    #[cfg(test)]
+    fn into_surface(self) -> ParameterizationSurface {
+        let mut surface = self.surface;
+        if let Some(r) = self.fixed {
+            surface.ruling = r.to_ruling();
+        }
+        if let Some((m, den)) = self.member {
+            surface.matrix = surface::member_from_small(&m, den);
+        }
+        surface
     }
 }
 
@@ -920,7 +1048,7 @@ fn choose_surface_small(
     a: &[[RBig; 4]; 4],
     b: &[[RBig; 4]; 4],
     analysis: &PencilAnalysis,
-) -> Result<Option<ParameterizationSurface>, Error> {
+) -> Result<Option<Chosen>, Error> {
     let (primary, _) = primary_candidates(analysis);
     if primary
         .iter()
@@ -959,7 +1087,7 @@ fn surface_among(
     ai: &[[i128; 4]; 4],
     bi: &[[i128; 4]; 4],
     lambdas: Vec<RBig>,
-) -> Result<Option<Option<ParameterizationSurface>>, Error> {
+) -> Result<Option<Option<Chosen>>, Error> {
     let mut scored = Vec::with_capacity(lambdas.len());
     for l in lambdas {
         let Some((m, den)) = surface::small_member(ai, bi, &l) else {
@@ -976,14 +1104,34 @@ fn surface_among(
         let Some(p) = surface::small_point_of(&m) else {
             continue;
         };
-        let Some(ruling) = surface::ruling_through_small(&m, &p, &delta)? else {
-            continue;
+        let through = match i128::try_from(&delta) {
+            Ok(dl) => zsqrt::ruling_fixed(&m, &p, dl)?,
+            Err(_) => zsqrt::Through::Overflow,
         };
-        return Ok(Some(Some(ParameterizationSurface {
-            lambda: Some(l),
-            matrix: surface::member_from_small(&m, den),
-            kind: SurfaceKind::DoublyRuled,
-            ruling,
+        let (ruling, fixed) = match through {
+            zsqrt::Through::Ruling(r) => {
+                let ruling = RuledParameterization {
+                    b: std::array::from_fn(|_| Poly::zero()),
+                    d: std::array::from_fn(|_| Poly::zero()),
+                    delta: (r.delta != 0).then(|| IBig::from(r.delta)),
+                };
+                (ruling, Some(r))
+            }
+            zsqrt::Through::NotInField => continue,
+            zsqrt::Through::Overflow => match surface::ruling_through_small(&m, &p, &delta)? {
+                Some(ruling) => (ruling, None),
+                None => continue,
+            },
+        };
+        return Ok(Some(Some(Chosen {
+            surface: ParameterizationSurface {
+                lambda: Some(l),
+                matrix: std::array::from_fn(|_| std::array::from_fn(|_| RBig::ZERO)),
+                kind: SurfaceKind::DoublyRuled,
+                ruling,
+            },
+            fixed,
+            member: Some((m, den)),
         })));
     }
     Ok(Some(None))
@@ -992,10 +1140,7 @@ fn surface_among(
 /// The parameterization surface of a pencil known to have four simple roots, from the (2, 2)
 /// samples of [`pencil::quick_arc_samples`] (no pencil analysis) by [`surface_among`]; `None`
 /// when that gives none (then [`choose_surface`] decides from the analysis).
-fn choose_surface_quick(
-    a: &Quadric,
-    b: &Quadric,
-) -> Result<Option<ParameterizationSurface>, Error> {
+fn choose_surface_quick(a: &Quadric, b: &Quadric) -> Result<Option<Chosen>, Error> {
     let Some(arcs) = crate::pencil::quick_arc_samples(a, b) else {
         return Ok(None);
     };
@@ -1920,7 +2065,9 @@ mod tests {
                 let analysis = analyze_pencil(&a, &b).expect("regular");
                 let (am, bm) = (integer_matrix(&a), integer_matrix(&b));
                 total += 1;
-                let chosen = choose_surface(&am, &bm, &analysis).expect("a surface");
+                let chosen = choose_surface(&am, &bm, &analysis)
+                    .expect("a surface")
+                    .into_surface();
                 on_surface(&chosen);
                 assert_eq!(chosen.matrix, member(&am, &bm, chosen.lambda.as_ref()));
                 let (primary, _) = primary_candidates(&analysis);
@@ -1950,7 +2097,7 @@ mod tests {
                 if primary.iter().any(|(_, k)| *k == SurfaceKind::Cone) {
                     continue;
                 }
-                let fast = fast.expect("a small point");
+                let fast = fast.expect("a small point").into_surface();
                 assert_eq!(fast, chosen);
                 small += 1;
                 let d = chosen.ruling.delta.clone();
@@ -1984,7 +2131,9 @@ mod tests {
                     });
                 if none {
                     hard += 1;
-                    let chosen = choose_surface(&am, &bm, &analysis).expect("a surface");
+                    let chosen = choose_surface(&am, &bm, &analysis)
+                        .expect("a surface")
+                        .into_surface();
                     on_surface(&chosen);
                 }
             }

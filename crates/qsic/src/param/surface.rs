@@ -331,7 +331,7 @@ fn small_integer_matrix(s: &[[RBig; 4]; 4]) -> Option<[[i128; 4]; 4]> {
 }
 
 /// `⌊√n⌋` if `n ≥ 0` is a perfect square.
-fn exact_sqrt(n: i128) -> Option<i128> {
+pub(crate) fn exact_sqrt(n: i128) -> Option<i128> {
     if n < 0 {
         return None;
     }
@@ -408,17 +408,23 @@ where
         + std::ops::Mul<Output = T>,
 {
     let vs: [[T; 4]; 40] = SMALL_VECTORS.map(|v| v.map(T::from));
-    let mv: [[T; 4]; 40] = vs
-        .map(|v| std::array::from_fn(|i| (0..4).fold(T::default(), |acc, j| acc + m[i][j] * v[j])));
+    let mul = |x: &[T; 4]| -> [T; 4] {
+        std::array::from_fn(|i| m[i][0] * x[0] + m[i][1] * x[1] + m[i][2] * x[2] + m[i][3] * x[3])
+    };
     let dot =
         |x: &[T; 4], y: &[T; 4]| -> T { x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + x[3] * y[3] };
-    let diag: [T; 40] = std::array::from_fn(|k| dot(&vs[k], &mv[k]));
-    if let Some(k) = diag.iter().position(|&x| x == T::default()) {
-        return Some(vs[k]);
+    // the first isotropic vector, else all the values of the form
+    let mut diag = [T::default(); 40];
+    for (k, v) in vs.iter().enumerate() {
+        diag[k] = dot(v, &mul(v));
+        if diag[k] == T::default() {
+            return Some(*v);
+        }
     }
     for p in 0..40 {
+        let mp = mul(&vs[p]);
         for q in p + 1..40 {
-            let spq = dot(&vs[p], &mv[q]);
+            let spq = dot(&mp, &vs[q]);
             let Some(r) = exact_sqrt((spq * spq - diag[p] * diag[q]).into()) else {
                 continue;
             };
@@ -1153,12 +1159,24 @@ pub(crate) fn small_member(
     if n.unsigned_abs() >= 1 << 60 || d >= 1 << 60 {
         return None;
     }
+    let bits = |v: u128| 128 - v.leading_zeros();
+    let max = |m: &[[i128; 4]; 4]| {
+        m.as_flattened()
+            .iter()
+            .fold(0, |acc, v| acc | v.unsigned_abs())
+    };
+    // |n·a| < 2¹²⁵ and |d·b| < 2¹²⁵: no overflow (the common case), else checked
+    let plain = bits(n.unsigned_abs()) + bits(max(a)) <= 125
+        && bits(d.unsigned_abs()) + bits(max(b)) <= 125;
     let mut out = [[0i128; 4]; 4];
     for i in 0..4 {
         for j in 0..4 {
-            let v = n
-                .checked_mul(a[i][j])?
-                .checked_sub(d.checked_mul(b[i][j])?)?;
+            let v = if plain {
+                n * a[i][j] - d * b[i][j]
+            } else {
+                n.checked_mul(a[i][j])?
+                    .checked_sub(d.checked_mul(b[i][j])?)?
+            };
             if v.unsigned_abs() >= 1 << 40 {
                 return None;
             }
@@ -1182,8 +1200,22 @@ pub(crate) fn member_from_small(m: &[[i128; 4]; 4], d: i128) -> [[RBig; 4]; 4] {
     })
 }
 
-/// `det M` by the Laplace expansion along the first two rows, every operation checked.
+/// `det M` by the Laplace expansion along the first two rows, every operation checked
+/// unless the entries are below `2³⁰` (then the 2 × 2 minors are below `2⁶¹`, their
+/// products below `2¹²²` and the sum of six below `2¹²⁵`).
 fn det_checked(m: &[[i128; 4]; 4]) -> Option<i128> {
+    if m.as_flattened().iter().all(|v| v.unsigned_abs() < 1 << 30) {
+        let minor = |r0: usize, r1: usize, c0: usize, c1: usize| {
+            m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0]
+        };
+        return Some(
+            minor(0, 1, 0, 1) * minor(2, 3, 2, 3) - minor(0, 1, 0, 2) * minor(2, 3, 1, 3)
+                + minor(0, 1, 0, 3) * minor(2, 3, 1, 2)
+                + minor(0, 1, 1, 2) * minor(2, 3, 0, 3)
+                - minor(0, 1, 1, 3) * minor(2, 3, 0, 2)
+                + minor(0, 1, 2, 3) * minor(2, 3, 0, 1),
+        );
+    }
     let minor = |r0: usize, r1: usize, c0: usize, c1: usize| -> Option<i128> {
         m[r0][c0]
             .checked_mul(m[r1][c1])?
@@ -1567,6 +1599,98 @@ mod tests {
         assert!(
             machine > 30 && overflow > 5,
             "{machine} machine, {overflow} overflow of {total}"
+        );
+    }
+
+    /// The ruling in fixed `i128` arrays (`zsqrt::ruling_fixed`, plain arithmetic under bit
+    /// length guards) equals the checked route's wherever it answers, declines (`Overflow`)
+    /// only where the guards cannot exclude overflow, and says `NotInField` exactly where the
+    /// checked route finds no ruling; members from tiny to near the `2⁴⁰` bound, so that
+    /// every guard is passed and failed (test builds check every operation for overflow:
+    /// a guard that lets one through panics here).
+    #[test]
+    fn fixed_rulings_equal_checked_rulings() {
+        use super::super::zsqrt::{ruling_fixed, Through};
+        let mut rng = qsic_algebra::testing::SplitMix(37);
+        let (mut fixed, mut overflow, mut not_in_field) = (0, 0, 0);
+        // members with a small point, then members through a given point (1, p₁, p₂, p₃)
+        // with |pᵢ| < 2^k (M₀₀ chosen to put it on the quadric), whose sizes cross the guards
+        let mut cases = Vec::new();
+        let bounds = [
+            1i64,
+            2,
+            5,
+            30,
+            200,
+            3000,
+            1 << 14,
+            1 << 18,
+            1 << 24,
+            (1 << 39) - 1,
+        ];
+        for bound in bounds {
+            for _ in 0..80 {
+                let m = random_symmetric(&mut rng, bound);
+                if let Some(p) = small_point_of(&m) {
+                    cases.push((m, p));
+                }
+            }
+        }
+        // (det M must fit i128 for a radicand: M₀₀ ≈ 2^(2k + j + 3) stays below 2³²)
+        for k in [2i64, 6, 9, 11, 12, 13] {
+            for j in [1i64, 2, 3, 5] {
+                for _ in 0..16 {
+                    let mut m = random_symmetric(&mut rng, 1 << j);
+                    let p: [i128; 4] = std::array::from_fn(|i| {
+                        if i == 0 {
+                            1
+                        } else {
+                            rng.int(-(1 << k), 1 << k).into()
+                        }
+                    });
+                    m[0][0] = 0;
+                    let mut rest = 0i128;
+                    for i in 0..4 {
+                        for l in 0..4 {
+                            rest += p[i] * m[i][l] * p[l];
+                        }
+                    }
+                    m[0][0] = -rest;
+                    if m[0][0].unsigned_abs() < 1 << 40 {
+                        cases.push((m, p));
+                    }
+                }
+            }
+        }
+        for (m, p) in cases {
+            let Some(delta) = member_radicand(&m) else {
+                continue;
+            };
+            let want = ruling_through_small(&m, &p, &delta);
+            let dl = i128::try_from(&delta).expect("a radicand below 2¹²⁸");
+            match ruling_fixed(&m, &p, dl) {
+                Ok(Through::Ruling(r)) => {
+                    fixed += 1;
+                    let got = r.to_ruling();
+                    assert_eq!(Some(got.clone()), want.expect("a ruling"), "{m:?}");
+                    let s: [[RBig; 4]; 4] = m.map(|row| row.map(RBig::from));
+                    assert_ruled(&s, &got);
+                    // the reduction keeps it a ruling of the same surface
+                    let mut reduced = r;
+                    reduced.reduce();
+                    assert_ruled(&s, &reduced.to_ruling());
+                }
+                Ok(Through::NotInField) => {
+                    not_in_field += 1;
+                    assert_eq!(want.expect("no error"), None, "{m:?}");
+                }
+                Ok(Through::Overflow) => overflow += 1,
+                Err(_) => assert!(want.is_err(), "{m:?}"),
+            }
+        }
+        assert!(
+            fixed > 100 && overflow > 20,
+            "{fixed} fixed, {overflow} overflow, {not_in_field} not in the field"
         );
     }
 

@@ -463,12 +463,16 @@ fn reduce_array(t: &mut [[[i128; 8]; 2]; 2]) -> Option<()> {
             let mut f = [to_f64_16(&v[0]), to_f64_16(&v[1])];
             let mut bits = [bits16(&v[0]), bits16(&v[1])];
             for _ in 0..8 {
-                let dot = |p: &[f64; 16], q: &[f64; 16]| -> f64 {
-                    p.iter().zip(q).map(|(a, b)| a * b).sum()
-                };
-                let (nx, ny) = (dot(&f[0], &f[0]), dot(&f[1], &f[1]));
+                // the three dot products in one pass, each summed in index order (as
+                // `Iterator::sum` from −0: the same floats)
+                let (mut nx, mut ny, mut nxy) = (-0.0f64, -0.0f64, -0.0f64);
+                for (a, b) in f[0].iter().zip(&f[1]) {
+                    nx += a * a;
+                    ny += b * b;
+                    nxy += a * b;
+                }
                 let (small, big, nsmall) = if nx <= ny { (0, 1, nx) } else { (1, 0, ny) };
-                let kf = (dot(&f[0], &f[1]) / nsmall).round();
+                let kf = (nxy / nsmall).round();
                 if !(kf.is_finite() && kf != 0.0 && kf.abs() < 1e30) {
                     break;
                 }
@@ -670,6 +674,429 @@ fn mul_i(x: i128, y: i128) -> Option<i128> {
     }
 }
 
+/// A doubly ruled surface's ruling `b(u) + v·d(u)` (`b`, `d` of degree ≤ 1) over ℤ[√δ] in
+/// machine integers, in the layout of [`reduce_array`]: `t[w][j][2i + part]` with `w` 0 for
+/// `b` and 1 for `d`, `j` the power of `u`, `i` the coordinate, `part` 0 the rational and 1
+/// the `√δ` part; `delta` 0 when every coefficient is rational.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct FixedRuling {
+    pub(crate) delta: i128,
+    pub(crate) t: [[[i128; 8]; 2]; 2],
+}
+
+/// What [`ruling_fixed`] finds.
+// One value per call, matched at once: boxing the ruling would only add an allocation.
+#[allow(clippy::large_enum_variant)]
+#[derive(Debug)]
+pub(crate) enum Through {
+    Ruling(FixedRuling),
+    /// The lines through the point are not over ℚ(√δ) (`δ` not the square-free part of
+    /// `det M`).
+    NotInField,
+    /// A bound on the bit lengths passed `2¹²⁶`: the checked route decides.
+    Overflow,
+}
+
+impl FixedRuling {
+    /// The coefficient `i` (`w` 0 for `b`, 1 for `d`) as a polynomial in `u`, trimmed.
+    fn coordinate(&self, w: usize, i: usize) -> [Zi; 2] {
+        std::array::from_fn(|j| Zi {
+            a: self.t[w][j][2 * i],
+            b: self.t[w][j][2 * i + 1],
+        })
+    }
+
+    /// `b` and `d` over ℤ[√δ] ([`ZPoly`], no trailing zeros).
+    pub(crate) fn to_zpolys(self) -> ([ZPoly; 4], [ZPoly; 4]) {
+        let out = |w: usize| -> [ZPoly; 4] {
+            std::array::from_fn(|i| {
+                let c = self.coordinate(w, i);
+                let n = c
+                    .iter()
+                    .rposition(|v| *v != Zi::default())
+                    .map_or(0, |k| k + 1);
+                c[..n].iter().map(|v| v.big()).collect()
+            })
+        };
+        (out(0), out(1))
+    }
+
+    /// The public ruling over ℚ(√δ) (one square root for all the coefficients).
+    pub(crate) fn to_ruling(self) -> super::surface::RuledParameterization {
+        let delta = IBig::from(self.delta);
+        let (b, d) = self.to_zpolys();
+        super::surface::RuledParameterization {
+            b: std::array::from_fn(|i| to_poly(&b[i], &delta)),
+            d: std::array::from_fn(|i| to_poly(&d[i], &delta)),
+            delta: (self.delta != 0).then_some(delta),
+        }
+    }
+
+    /// [`reduce_ruling`] in place; left as it is when the reduction overflows.
+    pub(crate) fn reduce(&mut self) {
+        let mut t = self.t;
+        if reduce_array(&mut t).is_some() {
+            self.t = t;
+        }
+    }
+}
+
+impl Zi {
+    fn int(a: i128) -> Zi {
+        Zi { a, b: 0 }
+    }
+
+    /// `x + y`, `x − y`, `−x`, `k·x` without overflow checks (the callers bound the sizes).
+    fn plus(self, o: Zi) -> Zi {
+        Zi {
+            a: self.a + o.a,
+            b: self.b + o.b,
+        }
+    }
+
+    fn minus(self, o: Zi) -> Zi {
+        Zi {
+            a: self.a - o.a,
+            b: self.b - o.b,
+        }
+    }
+
+    fn negated(self) -> Zi {
+        Zi {
+            a: -self.a,
+            b: -self.b,
+        }
+    }
+
+    fn scaled(self, k: i128) -> Zi {
+        Zi {
+            a: self.a * k,
+            b: self.b * k,
+        }
+    }
+}
+
+/// The bit length of the largest weight `|a| + |b|√δ` of `x` from above (`√|δ| < 2^h`):
+/// `max(bits(a), bits(b) + h) + 1`.
+#[inline]
+fn weight(x: &[Zi], h: u32) -> u32 {
+    let (a, b) = x.iter().fold((0u128, 0u128), |(a, b), v| {
+        (a | v.a.unsigned_abs(), b | v.b.unsigned_abs())
+    });
+    let wb = if b == 0 { 0 } else { bit_len_u(b) + h };
+    bit_len_u(a).max(wb) + 1
+}
+
+/// The bit length of the largest `|v|` of `x`.
+fn bits_of(x: &[i128]) -> u32 {
+    bit_len_u(x.iter().fold(0u128, |acc, v| acc | v.unsigned_abs()))
+}
+
+/// `x` divided by the gcd of its integers `a`, `b` (nothing when it is 0 or 1): in machine
+/// words when every part fits `i64` (the common case).
+fn make_primitive(x: &mut [Zi]) {
+    if narrow(x) {
+        let mut g = 0u64;
+        for v in x.iter() {
+            for part in [v.a as i64, v.b as i64] {
+                if part != 0 && g != 1 {
+                    let (mut p, mut q) = (g, part.unsigned_abs());
+                    while q != 0 {
+                        (p, q) = (q, p % q);
+                    }
+                    g = p;
+                }
+            }
+        }
+        if g > 1 {
+            // g divides a nonzero part below 2⁶³
+            let g = g as i64;
+            for v in x.iter_mut() {
+                v.a = i128::from(v.a as i64 / g);
+                v.b = i128::from(v.b as i64 / g);
+            }
+        }
+        return;
+    }
+    let mut g = 0u128;
+    for v in x.iter() {
+        for part in [v.a, v.b] {
+            if part != 0 && g != 1 {
+                g = gcd_u128(g, part.unsigned_abs());
+            }
+        }
+    }
+    if g > 1 {
+        // exact division: the power of two shifted out, then a product by the inverse of
+        // the odd part modulo 2¹²⁸ (Newton: each step doubles the correct low bits, from 3)
+        let s = g.trailing_zeros();
+        let odd = g >> s;
+        let mut inverse = odd;
+        for _ in 0..6 {
+            inverse = inverse.wrapping_mul(2u128.wrapping_sub(odd.wrapping_mul(inverse)));
+        }
+        let divide = |v: i128| ((v >> s) as u128).wrapping_mul(inverse) as i128;
+        for v in x.iter_mut() {
+            v.a = divide(v.a);
+            v.b = divide(v.b);
+        }
+    }
+}
+
+/// `gcd(x, y)` (`gcd(0, y) = y`): Euclid in `u64` while the numbers fit.
+fn gcd_u128(mut x: u128, mut y: u128) -> u128 {
+    while y != 0 {
+        if let (Ok(mut a), Ok(mut b)) = (u64::try_from(x), u64::try_from(y)) {
+            while b != 0 {
+                (a, b) = (b, a % b);
+            }
+            return u128::from(a);
+        }
+        (x, y) = (y, x % y);
+    }
+    x
+}
+
+/// `v` in floats, correctly rounded (as `v as f64`), one instruction for a value of `i64`.
+fn to_f64(v: i128) -> f64 {
+    let small = v as i64;
+    if i128::from(small) == v {
+        small as f64
+    } else {
+        v as f64
+    }
+}
+
+/// The ruling of the integer matrix `M` (entries of the member, `k·S`) through its integer
+/// point `p`: the construction of `surface::ruling_through` (the same numbers: the same
+/// steps, contents and balancing) in `i128` without overflow checks, each step guarded by
+/// a bound on the bit lengths of its operands ([`weight`]: a sum of `n` products of weights
+/// below `2^x` and `2^y` stays below `2^(x + y + ⌈log₂ n⌉)`, at most `2¹²⁶`);
+/// [`Through::Overflow`] when a guard fails. `δ` is the square-free part of `det M` (1 for a
+/// square).
+///
+/// # Errors
+/// [`Error::Algebra`] as `surface::ruling_through` (`p` in the kernel, lines not real or not
+/// distinct).
+pub(crate) fn ruling_fixed(
+    m: &[[i128; 4]; 4],
+    p: &[i128; 4],
+    delta: i128,
+) -> Result<Through, crate::error::Error> {
+    use crate::error::Error;
+    macro_rules! fit {
+        ($bits:expr) => {
+            if $bits > 126 {
+                return Ok(Through::Overflow);
+            }
+        };
+    }
+    let irrational = delta != 1;
+    let dt = if irrational { delta } else { 0 };
+    let h = bit_len(dt).div_ceil(2);
+    let bm = bits_of(m.as_flattened());
+    let primitive = |v: [i128; 4]| -> [i128; 4] {
+        let g = v.iter().fold(0u128, |g, x| gcd_u128(g, x.unsigned_abs()));
+        if g <= 1 {
+            v
+        } else if v.iter().all(|x| x.unsigned_abs() < 1 << 63) {
+            let g = g as i64;
+            v.map(|x| i128::from(x as i64 / g))
+        } else {
+            let g = g as i128;
+            v.map(|x| x / g)
+        }
+    };
+    let mv = |x: &[i128; 4]| -> [i128; 4] {
+        std::array::from_fn(|i| m[i][0] * x[0] + m[i][1] * x[1] + m[i][2] * x[2] + m[i][3] * x[3])
+    };
+    let dot = |x: &[i128; 4], y: &[i128; 4]| -> i128 {
+        x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + x[3] * y[3]
+    };
+    let p = primitive(*p);
+    fit!(bm + bits_of(&p) + 2);
+    let r = mv(&p);
+    let j = r
+        .iter()
+        .position(|&v| v != 0)
+        .ok_or_else(|| Error::Algebra("a point in the kernel of a nonsingular quadric".into()))?;
+    let k0 = (0..4)
+        .find(|&k| k != j && p[k] != 0)
+        .ok_or_else(|| Error::Algebra("tangent plane basis".into()))?;
+    let mut rest = (0..4).filter(|&k| k != j && k != k0);
+    let kernel = |k: usize| -> [i128; 4] {
+        let mut v = [0i128; 4];
+        v[k] = r[j];
+        v[j] = -r[k];
+        primitive(v)
+    };
+    let e1 = kernel(rest.next().expect("two kernel vectors"));
+    let e2 = kernel(rest.next().expect("two kernel vectors"));
+    let be = bits_of(&e1).max(bits_of(&e2));
+    // M·e below 2^(bm + be + 2), eᵀMe below 2^(2be + bm + 4)
+    fit!(2 * be + bm + 4);
+    let (me1, me2) = (mv(&e1), mv(&e2));
+    let (s11, s12, s22) = (dot(&e1, &me1), dot(&e1, &me2), dot(&e2, &me2));
+    let bs = bits_of(&[s11, s12, s22]);
+    let (mut plus, mut minus): ([Zi; 4], [Zi; 4]) = if s11 == 0 {
+        fit!(bs + be + 2);
+        (
+            e1.map(Zi::int),
+            std::array::from_fn(|i| Zi::int(s22 * e1[i] - 2 * s12 * e2[i])),
+        )
+    } else {
+        // the exact square root below needs its argument below 2¹²⁰
+        if 2 * bs + 1 > 120 {
+            return Ok(Through::Overflow);
+        }
+        let disc = s12 * s12 - s11 * s22;
+        if disc <= 0 {
+            return Err(Error::Algebra(
+                "no real lines through a point of an inertia (2, 2) member".into(),
+            ));
+        }
+        let root = if irrational {
+            if disc % delta != 0 {
+                return Ok(Through::NotInField);
+            }
+            exact_sqrt(disc / delta).map(|t| Zi { a: 0, b: t })
+        } else {
+            exact_sqrt(disc).map(Zi::int)
+        };
+        let Some(root) = root else {
+            return Ok(Through::NotInField);
+        };
+        // (−s₁₂ ± t√δ)·e₁ + s₁₁·e₂
+        fit!(weight(&[root], h).max(bs + 1) + be + 2);
+        let line = |rt: Zi| -> [Zi; 4] {
+            let k1 = Zi::int(-s12).plus(rt);
+            std::array::from_fn(|i| k1.scaled(e1[i]).plus(Zi::int(s11 * e2[i])))
+        };
+        (line(root), line(root.negated()))
+    };
+    {
+        let mut both = [Zi::default(); 8];
+        both[..4].copy_from_slice(&plus);
+        both[4..].copy_from_slice(&minus);
+        make_primitive(&mut both);
+        plus.copy_from_slice(&both[..4]);
+        minus.copy_from_slice(&both[4..]);
+    }
+    // the balancing of `surface::ruling_through`: |E₊| about |p| by a power of two
+    let root_delta = to_f64(dt).abs().sqrt();
+    let size = |v: &[Zi]| -> f64 {
+        // machine words convert in one instruction each (and exactly as `as f64`)
+        if narrow(v) {
+            let f = |x: i128| (x as i64) as f64;
+            v.iter()
+                .map(|x| f(x.a).abs() + f(x.b).abs() * root_delta)
+                .fold(0.0, f64::max)
+        } else {
+            v.iter()
+                .map(|x| to_f64(x.a).abs() + to_f64(x.b).abs() * root_delta)
+                .fold(0.0, f64::max)
+        }
+    };
+    let ratio = size(&p.map(Zi::int)) / size(&plus);
+    if ratio.is_finite() && ratio >= 2.0 {
+        let e = ratio.log2().floor() as u32;
+        fit!(weight(&plus, h) + e);
+        plus = plus.map(|x| x.scaled(1 << e));
+    }
+    let p = if ratio.is_finite() && ratio > 0.0 && ratio <= 0.5 {
+        let e = (1.0 / ratio).log2().floor() as u32;
+        fit!(bits_of(&p) + e);
+        p.map(|x| x * (1 << e))
+    } else {
+        p
+    };
+    let zp = p.map(Zi::int);
+    // M·x and x·y over ℤ[√δ], guarded
+    let zmv = |x: &[Zi; 4]| -> Option<[Zi; 4]> {
+        (bm + weight(x, h) + 2 <= 126).then(|| {
+            std::array::from_fn(|i| {
+                (0..4).fold(Zi::default(), |acc, k| acc.plus(x[k].scaled(m[i][k])))
+            })
+        })
+    };
+    let zdot = |x: &[Zi; 4], y: &[Zi; 4]| -> Option<Zi> {
+        (weight(x, h) + weight(y, h) + 2 <= 126).then(|| {
+            (0..4).fold(Zi::default(), |acc, k| {
+                acc.plus(mul_unchecked(x[k], y[k], dt))
+            })
+        })
+    };
+    // α·x − β·y
+    let comb = |al: Zi, x: &[Zi; 4], be: Zi, y: &[Zi; 4]| -> Option<[Zi; 4]> {
+        let bound = (weight(&[al], h) + weight(x, h)).max(weight(&[be], h) + weight(y, h)) + 1;
+        (bound <= 126).then(|| {
+            std::array::from_fn(|i| mul_unchecked(al, x[i], dt).minus(mul_unchecked(be, y[i], dt)))
+        })
+    };
+    macro_rules! ck {
+        ($e:expr) => {
+            match $e {
+                Some(v) => v,
+                None => return Ok(Through::Overflow),
+            }
+        };
+    }
+    let m_minus = ck!(zmv(&minus));
+    let c = ck!(zdot(&plus, &m_minus));
+    if c == Zi::default() {
+        return Err(Error::Algebra(
+            "the two lines through a point are not distinct".into(),
+        ));
+    }
+    // g₀ = c·e_j − (ME₋)_j·E₊
+    let mut ej = [Zi::default(); 4];
+    ej[j] = Zi::int(1);
+    let mut g0 = ck!(comb(c, &ej, m_minus[j], &plus));
+    make_primitive(&mut g0);
+    let g0_plus = ck!(zdot(&g0, &ck!(zmv(&plus))));
+    let mut g1 = ck!(comb(c, &g0, g0_plus, &minus));
+    make_primitive(&mut g1);
+    let mg1 = ck!(zmv(&g1));
+    let rho = ck!(zdot(&zp, &mg1));
+    let g1g1 = ck!(zdot(&g1, &mg1));
+    fit!(weight(&[rho], h) + 1);
+    let two_rho = rho.scaled(2);
+    let f = ck!(comb(two_rho, &g1, g1g1, &zp));
+    fit!(2 * weight(&[rho], h) + 1);
+    let two_rho2 = mul_unchecked(rho, rho, dt).scaled(2);
+    fit!((weight(&[two_rho2], h) + weight(&minus, h)).max(weight(&[c], h) + weight(&f, h)));
+    // b = p − u·E₊, d = 2ρ²·E₋ + u·c·f, each made primitive
+    let mut bz = [Zi::default(); 8];
+    let mut dz = [Zi::default(); 8];
+    for i in 0..4 {
+        bz[2 * i] = zp[i];
+        bz[2 * i + 1] = plus[i].negated();
+        dz[2 * i] = mul_unchecked(two_rho2, minus[i], dt);
+        dz[2 * i + 1] = mul_unchecked(c, f[i], dt);
+    }
+    make_primitive(&mut bz);
+    make_primitive(&mut dz);
+    let mut t = [[[0i128; 8]; 2]; 2];
+    for (w, z) in [bz, dz].iter().enumerate() {
+        for i in 0..4 {
+            for jj in 0..2 {
+                t[w][jj][2 * i] = z[2 * i + jj].a;
+                t[w][jj][2 * i + 1] = z[2 * i + jj].b;
+            }
+        }
+    }
+    let any_irrational = bz.iter().chain(&dz).any(|v| v.b != 0);
+    Ok(Through::Ruling(FixedRuling {
+        delta: if any_irrational { dt } else { 0 },
+        t,
+    }))
+}
+
+/// `⌊√n⌋` if `0 ≤ n < 2¹²⁰` is a perfect square.
+fn exact_sqrt(n: i128) -> Option<i128> {
+    super::surface::exact_sqrt(n)
+}
+
 /// [`levin_small`]'s `s`, `a`, `alt` in big integers: the route when a number leaves
 /// `i128` (and the reference its tests compare with).
 pub(crate) fn levin_big(
@@ -777,18 +1204,55 @@ fn form_fixed(
     Some(acc)
 }
 
-/// `x·y − z·w` of polynomials over ℤ[√δ] (product degrees below 9) as a [`ZPoly`] without
+/// A polynomial over ℤ[√δ] in a fixed buffer: the coefficients `c[..n]`, no trailing zeros.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct FixedPoly<const N: usize> {
+    c: [Zi; N],
+    n: usize,
+}
+
+impl<const N: usize> FixedPoly<N> {
+    fn coeffs(&self) -> &[Zi] {
+        &self.c[..self.n]
+    }
+
+    fn to_zpoly(self) -> ZPoly {
+        self.coeffs().iter().map(|v| v.big()).collect()
+    }
+
+    /// Whether every coefficient `i` times `2^e(i)` stays below `2¹²⁶`.
+    fn fits(&self, e: impl Fn(usize) -> usize) -> bool {
+        self.coeffs().iter().enumerate().all(|(i, v)| {
+            let b = bit_len(v.a).max(bit_len(v.b));
+            b == 0 || b as usize + e(i) <= 126
+        })
+    }
+
+    /// Coefficient `i` times `2^e(i)` (the caller checked [`Self::fits`]).
+    fn shift(&mut self, e: impl Fn(usize) -> usize) {
+        for (i, v) in self.c[..self.n].iter_mut().enumerate() {
+            let k = e(i) as u32;
+            v.a <<= k;
+            v.b <<= k;
+        }
+    }
+}
+
+/// `x·y − z·w` of polynomials over ℤ[√δ] (product lengths at most `N`, else `None`) without
 /// trailing zeros; without overflow checks when `checked` is false (as [`form_fixed`]).
-fn cross_fixed(
+fn cross_fixed<const N: usize>(
     x: &[Zi],
     y: &[Zi],
     z: &[Zi],
     w: &[Zi],
     delta: i128,
     checked: bool,
-) -> Option<ZPoly> {
-    let mut out = [Zi::default(); 9];
+) -> Option<FixedPoly<N>> {
+    let mut out = [Zi::default(); N];
     for (negate, p, q) in [(false, x, y), (true, z, w)] {
+        if !p.is_empty() && !q.is_empty() && p.len() + q.len() - 1 > N {
+            return None;
+        }
         for (i, pc) in p.iter().enumerate() {
             if *pc == Zi::default() {
                 continue;
@@ -805,15 +1269,9 @@ fn cross_fixed(
                 } else {
                     let v = mul_unchecked(*pc, *qc, delta);
                     if negate {
-                        Zi {
-                            a: o.a - v.a,
-                            b: o.b - v.b,
-                        }
+                        o.minus(v)
                     } else {
-                        Zi {
-                            a: o.a + v.a,
-                            b: o.b + v.b,
-                        }
+                        o.plus(v)
                     }
                 };
             }
@@ -823,11 +1281,48 @@ fn cross_fixed(
         .iter()
         .rposition(|c| *c != Zi::default())
         .map_or(0, |i| i + 1);
-    Some(out[..n].iter().map(|c| c.big()).collect())
+    Some(FixedPoly { c: out, n })
 }
+
+/// Levin's `s`, `a`, `alt` in fixed buffers ([`levin_core`]).
+type FixedForms<const S: usize, const A: usize> =
+    (FixedPoly<S>, [FixedPoly<A>; 4], [FixedPoly<A>; 4]);
 
 /// [`levin_small`] on machine integers; also whether both stages ran without checks
 /// (`always_check` forces the checks, for the tests).
+fn levin_fixed(
+    m: &[[i128; 4]; 4],
+    b: &[ZPoly; 4],
+    d: &[ZPoly; 4],
+    delta: i128,
+    always_check: bool,
+) -> Option<(LevinForms, bool)> {
+    if b.iter().chain(d).any(|p| p.len() > 3) {
+        return None;
+    }
+    let mut fixed = [[Zi::default(); 3]; 8];
+    for (k, p) in b.iter().chain(d).enumerate() {
+        for (slot, c) in fixed[k].iter_mut().zip(p) {
+            *slot = Zi::of(c)?;
+        }
+    }
+    let bi: [&[Zi]; 4] = std::array::from_fn(|i| &fixed[i][..b[i].len()]);
+    let di: [&[Zi]; 4] = std::array::from_fn(|i| &fixed[4 + i][..d[i].len()]);
+    let ((s, a, alt), unchecked) = levin_core::<9, 9>(m, &bi, &di, delta, always_check)?;
+    Some((
+        (
+            s.to_zpoly(),
+            a.map(FixedPoly::to_zpoly),
+            alt.map(FixedPoly::to_zpoly),
+        ),
+        unchecked,
+    ))
+}
+
+/// Levin's `s = c₁² − c₀c₂`, `a = c₂b − c₁d`, `alt = c₁b − c₀d` with `c₀ = bᵀMb`,
+/// `c₁ = bᵀMd`, `c₂ = dᵀMd` over ℤ[√δ] in fixed buffers (`b`, `d` of at most 3
+/// coefficients); also whether both stages ran without checks. `None` on overflow or when a
+/// product does not fit the buffers.
 ///
 /// The bounds: the size of `x = a + b√δ` is its weight `N(x) = |a| + |b|√|δ|`, which bounds
 /// both parts (`|a| ≤ N`, `|b|·|δ| ≤ N·√|δ|`, so every partial product of an unchecked
@@ -840,34 +1335,22 @@ fn cross_fixed(
 /// products each) weighs below `2^(max(2σ₁, σ₀+σ₂)+4)` and `a`, `alt` (2·3 products) below
 /// `2^(max σᵢ + σ_q + 3)`: unchecked when at most `2¹²⁶`. Every partial sum is bounded by
 /// its final bound.
-fn levin_fixed(
+fn levin_core<const S: usize, const A: usize>(
     m: &[[i128; 4]; 4],
-    b: &[ZPoly; 4],
-    d: &[ZPoly; 4],
+    bi: &[&[Zi]; 4],
+    di: &[&[Zi]; 4],
     delta: i128,
     always_check: bool,
-) -> Option<(LevinForms, bool)> {
-    if b.iter().chain(d).any(|p| p.len() > 3) {
-        return None;
-    }
+) -> Option<(FixedForms<S, A>, bool)> {
     // √|δ| < 2^h: |δ| < 2^bits(δ) ≤ 2^(2h)
     let h = bit_len(delta).div_ceil(2);
     let size = |x: &Zi| bit_len(x.a).max(bit_len(x.b) + h) + 1;
-    let bm = m.iter().flatten().map(|v| bit_len(*v)).max().unwrap_or(0);
-    let mut sq = 0;
-    let mut fixed = [[Zi::default(); 3]; 8];
-    for (k, p) in b.iter().chain(d).enumerate() {
-        for (slot, c) in fixed[k].iter_mut().zip(p) {
-            *slot = Zi::of(c)?;
-            sq = sq.max(size(slot));
-        }
-    }
-    let bi: [&[Zi]; 4] = std::array::from_fn(|i| &fixed[i][..b[i].len()]);
-    let di: [&[Zi]; 4] = std::array::from_fn(|i| &fixed[4 + i][..d[i].len()]);
+    let bm = bits_of(m.as_flattened());
+    let sq = bi.iter().chain(di).map(|p| weight(p, h)).max().unwrap_or(0);
     let checked = always_check || 2 * sq + bm + 6 > 126;
-    let c0 = form_fixed(m, &bi, &bi, delta, checked)?;
-    let c1 = form_fixed(m, &bi, &di, delta, checked)?;
-    let c2 = form_fixed(m, &di, &di, delta, checked)?;
+    let c0 = form_fixed(m, bi, bi, delta, checked)?;
+    let c1 = form_fixed(m, bi, di, delta, checked)?;
+    let c2 = form_fixed(m, di, di, delta, checked)?;
     // without their trailing zeros, and the size of each
     let trimmed = |c: &[Zi; 5]| -> (usize, u32) {
         let n = c
@@ -880,16 +1363,264 @@ fn levin_fixed(
     let (c0, c1, c2) = (&c0[..n0], &c1[..n1], &c2[..n2]);
     let checked_products =
         always_check || (2 * s1).max(s0 + s2) + 4 > 126 || s2.max(s1).max(s0) + sq + 3 > 126;
-    let cross =
-        |x: &[Zi], y: &[Zi], z: &[Zi], w: &[Zi]| cross_fixed(x, y, z, w, delta, checked_products);
-    let s = cross(c1, c1, c0, c2)?;
-    let mut a: [ZPoly; 4] = Default::default();
-    let mut alt: [ZPoly; 4] = Default::default();
+    let s = cross_fixed::<S>(c1, c1, c0, c2, delta, checked_products)?;
+    let mut a = [FixedPoly {
+        c: [Zi::default(); A],
+        n: 0,
+    }; 4];
+    let mut alt = a;
     for i in 0..4 {
-        a[i] = cross(c2, bi[i], c1, di[i])?;
-        alt[i] = cross(c1, bi[i], c0, di[i])?;
+        a[i] = cross_fixed::<A>(c2, bi[i], c1, di[i], delta, checked_products)?;
+        alt[i] = cross_fixed::<A>(c1, bi[i], c0, di[i], delta, checked_products)?;
     }
     Some(((s, a, alt), !checked && !checked_products))
+}
+
+/// `x·y` in ℤ[√δ] without overflow checks, in products of machine words when `NARROW` (the
+/// caller knows every part of `x`, `y` and `δ` to fit `i64`: each product one instruction).
+#[inline(always)]
+fn zmul<const NARROW: bool>(x: Zi, y: Zi, delta: i128) -> Zi {
+    if NARROW {
+        let w = |v: i128| i128::from(v as i64);
+        Zi {
+            a: w(x.a) * w(y.a) + w(x.b) * w(y.b) * w(delta),
+            b: w(x.a) * w(y.b) + w(x.b) * w(y.a),
+        }
+    } else {
+        mul_unchecked(x, y, delta)
+    }
+}
+
+/// `x·y − z·w` of polynomials over ℤ[√δ] with `P` and `Q` coefficients into `N = P + Q − 1`,
+/// without overflow checks (the caller's bounds exclude overflow).
+#[inline(always)]
+fn cross_lines<const NARROW: bool, const P: usize, const Q: usize, const N: usize>(
+    x: &[Zi; P],
+    y: &[Zi; Q],
+    z: &[Zi; P],
+    w: &[Zi; Q],
+    delta: i128,
+) -> FixedPoly<N> {
+    debug_assert_eq!(P + Q - 1, N);
+    let mut c = [Zi::default(); N];
+    for i in 0..P {
+        for j in 0..Q {
+            c[i + j] = c[i + j]
+                .plus(zmul::<NARROW>(x[i], y[j], delta))
+                .minus(zmul::<NARROW>(z[i], w[j], delta));
+        }
+    }
+    let n = c
+        .iter()
+        .rposition(|v| *v != Zi::default())
+        .map_or(0, |k| k + 1);
+    FixedPoly { c, n }
+}
+
+/// Whether every part of `x` fits `i64`.
+fn narrow(x: &[Zi]) -> bool {
+    x.iter()
+        .all(|v| i128::from(v.a as i64) == v.a && i128::from(v.b as i64) == v.b)
+}
+
+/// [`levin_core`] for lines `b = b₀ + u·b₁`, `d = d₀ + u·d₁` (a symmetric `M`): the
+/// products `M·b₀`, `M·b₁`, `M·d₀`, `M·d₁` once, the forms from ten dot products
+/// (`c₀ = b₀ᵀMb₀ + 2u·b₀ᵀMb₁ + u²·b₁ᵀMb₁`, …), then `s`, `a`, `alt`; without overflow
+/// checks, each stage guarded by the weights of its operands as in [`levin_core`] (a
+/// coefficient of a form is a sum of at most two dot products of four products, below
+/// `2^(2σ_q + β_M + 5)`; one of `s` at most six products of the forms', one of `a`, `alt`
+/// four), in machine-word products where the parts fit `i64`. `None` when a guard fails.
+fn levin_lines(m: &[[i128; 4]; 4], r: &FixedRuling) -> Option<FixedForms<5, 4>> {
+    let dt = r.delta;
+    let h = bit_len(dt).div_ceil(2);
+    let vector = |w: usize, j: usize| -> [Zi; 4] {
+        std::array::from_fn(|i| Zi {
+            a: r.t[w][j][2 * i],
+            b: r.t[w][j][2 * i + 1],
+        })
+    };
+    // b₀, b₁, d₀, d₁
+    let v = [vector(0, 0), vector(0, 1), vector(1, 0), vector(1, 1)];
+    let sq = weight(v.as_flattened(), h);
+    let bm = bits_of(m.as_flattened());
+    if 2 * sq + bm + 5 > 126 {
+        return None;
+    }
+    let mv: [[Zi; 4]; 4] = v.map(|x| {
+        std::array::from_fn(|i| {
+            x[0].scaled(m[i][0])
+                .plus(x[1].scaled(m[i][1]))
+                .plus(x[2].scaled(m[i][2]))
+                .plus(x[3].scaled(m[i][3]))
+        })
+    });
+    fn dot<const NARROW: bool>(x: &[Zi; 4], y: &[Zi; 4], dt: i128) -> Zi {
+        zmul::<NARROW>(x[0], y[0], dt)
+            .plus(zmul::<NARROW>(x[1], y[1], dt))
+            .plus(zmul::<NARROW>(x[2], y[2], dt))
+            .plus(zmul::<NARROW>(x[3], y[3], dt))
+    }
+    fn forms<const NARROW: bool>(v: &[[Zi; 4]; 4], mv: &[[Zi; 4]; 4], dt: i128) -> [[Zi; 3]; 3] {
+        let d = |x: usize, y: usize| dot::<NARROW>(&v[x], &mv[y], dt);
+        [
+            [d(0, 0), d(0, 1).scaled(2), d(1, 1)],
+            [d(0, 2), d(0, 3).plus(d(1, 2)), d(1, 3)],
+            [d(2, 2), d(2, 3).scaled(2), d(3, 3)],
+        ]
+    }
+    let narrow_dt = i128::from(dt as i64) == dt;
+    let c = if narrow_dt && narrow(v.as_flattened()) && narrow(mv.as_flattened()) {
+        forms::<true>(&v, &mv, dt)
+    } else {
+        forms::<false>(&v, &mv, dt)
+    };
+    let [w0, w1, w2] = c.map(|x| weight(&x, h));
+    if (2 * w1).max(w0 + w2) + 3 > 126 || w0.max(w1).max(w2) + sq + 2 > 126 {
+        return None;
+    }
+    let b: [[Zi; 2]; 4] = std::array::from_fn(|i| [v[0][i], v[1][i]]);
+    let d: [[Zi; 2]; 4] = std::array::from_fn(|i| [v[2][i], v[3][i]]);
+    fn rest<const NARROW: bool>(
+        c: &[[Zi; 3]; 3],
+        b: &[[Zi; 2]; 4],
+        d: &[[Zi; 2]; 4],
+        dt: i128,
+    ) -> FixedForms<5, 4> {
+        let s = cross_lines::<NARROW, 3, 3, 5>(&c[1], &c[1], &c[0], &c[2], dt);
+        let a =
+            std::array::from_fn(|i| cross_lines::<NARROW, 3, 2, 4>(&c[2], &b[i], &c[1], &d[i], dt));
+        let alt =
+            std::array::from_fn(|i| cross_lines::<NARROW, 3, 2, 4>(&c[1], &b[i], &c[0], &d[i], dt));
+        (s, a, alt)
+    }
+    Some(
+        if narrow_dt && narrow(c.as_flattened()) && narrow(v.as_flattened()) {
+            rest::<true>(&c, &b, &d, dt)
+        } else {
+            rest::<false>(&c, &b, &d, dt)
+        },
+    )
+}
+
+/// Levin's forms of a [`FixedRuling`] in machine integers: the ruling `b`, `d` and
+/// `s`, `a`, `alt` ([`levin_core`]), each in a fixed buffer.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FixedLevin {
+    pub(crate) delta: i128,
+    b: [FixedPoly<2>; 4],
+    d: [FixedPoly<2>; 4],
+    a: [FixedPoly<4>; 4],
+    alt: [FixedPoly<4>; 4],
+    s: FixedPoly<5>,
+}
+
+impl FixedLevin {
+    /// The forms of the ruling `r` on the integer matrix `m`; `None` when a number leaves
+    /// `i128`.
+    pub(crate) fn new(m: &[[i128; 4]; 4], r: &FixedRuling) -> Option<FixedLevin> {
+        let poly = |w: usize, i: usize| -> FixedPoly<2> {
+            let c = r.coordinate(w, i);
+            let n = c
+                .iter()
+                .rposition(|v| *v != Zi::default())
+                .map_or(0, |k| k + 1);
+            FixedPoly { c, n }
+        };
+        let b: [FixedPoly<2>; 4] = std::array::from_fn(|i| poly(0, i));
+        let d: [FixedPoly<2>; 4] = std::array::from_fn(|i| poly(1, i));
+        let bi: [&[Zi]; 4] = std::array::from_fn(|i| b[i].coeffs());
+        let di: [&[Zi]; 4] = std::array::from_fn(|i| d[i].coeffs());
+        let (s, a, alt) = match levin_lines(m, r) {
+            Some(forms) => forms,
+            None => levin_core::<5, 4>(m, &bi, &di, r.delta, false)?.0,
+        };
+        Some(FixedLevin {
+            delta: r.delta,
+            b,
+            d,
+            a,
+            alt,
+            s,
+        })
+    }
+
+    /// `s ≡ 0`.
+    pub(crate) fn s_is_zero(&self) -> bool {
+        self.s.n == 0
+    }
+
+    /// The `log₂` sizes of the coefficients of `s`, as [`log2_sizes`] gives them.
+    pub(crate) fn s_log2_sizes(&self) -> Vec<f64> {
+        let root = to_f64(self.delta).sqrt();
+        self.s
+            .coeffs()
+            .iter()
+            .map(|c| {
+                if *c == Zi::default() {
+                    return f64::NEG_INFINITY;
+                }
+                let a = to_f64(c.a);
+                let v = if c.b == 0 { a } else { a + to_f64(c.b) * root }.abs();
+                if v > 0.0 {
+                    v.log2()
+                } else {
+                    // cancelled in floats: from bit lengths, as `log2_sizes`
+                    let root_bits = if c.b == 0 {
+                        0.0
+                    } else {
+                        bit_len(self.delta) as f64 / 2.0
+                    };
+                    let bits = |v: i128| {
+                        if v == 0 {
+                            f64::NEG_INFINITY
+                        } else {
+                            bit_len(v) as f64 - 1.0
+                        }
+                    };
+                    bits(c.a).max(bits(c.b) + root_bits) + 1.0
+                }
+            })
+            .collect()
+    }
+
+    /// Each coefficient `i` of each form times `2^exponent(degree, i)` (`degree` the form's
+    /// homogeneous degree: 1 for `b`, `d`, 3 for `a`, `alt`, 4 for `s`); `false` (nothing
+    /// changed) when a number could leave `i128`.
+    pub(crate) fn shift(&mut self, exponent: impl Fn(usize, usize) -> usize) -> bool {
+        let fits = self
+            .b
+            .iter()
+            .chain(&self.d)
+            .all(|p| p.fits(|i| exponent(1, i)))
+            && self
+                .a
+                .iter()
+                .chain(&self.alt)
+                .all(|p| p.fits(|i| exponent(3, i)))
+            && self.s.fits(|i| exponent(4, i));
+        if fits {
+            for p in self.b.iter_mut().chain(&mut self.d) {
+                p.shift(|i| exponent(1, i));
+            }
+            for p in self.a.iter_mut().chain(&mut self.alt) {
+                p.shift(|i| exponent(3, i));
+            }
+            self.s.shift(|i| exponent(4, i));
+        }
+        fits
+    }
+
+    /// `b`, `d`, `a`, `alt`, `s` as [`ZPoly`]s.
+    #[allow(clippy::type_complexity)]
+    pub(crate) fn into_zpolys(self) -> ([ZPoly; 4], [ZPoly; 4], [ZPoly; 4], [ZPoly; 4], ZPoly) {
+        (
+            self.b.map(FixedPoly::to_zpoly),
+            self.d.map(FixedPoly::to_zpoly),
+            self.a.map(FixedPoly::to_zpoly),
+            self.alt.map(FixedPoly::to_zpoly),
+            self.s.to_zpoly(),
+        )
+    }
 }
 
 #[cfg(test)]
@@ -1236,6 +1967,78 @@ mod tests {
                 assert_eq!(p, want);
             }
         }
+    }
+
+    /// The forms of a fixed ruling ([`FixedLevin`]) equal the big-integer ones on random
+    /// rulings and matrices of every size (declining only past the bounds of `levin_core`),
+    /// its `log₂` sizes of `s` equal [`log2_sizes`], and its shifts equal
+    /// [`scale_powers_of_two`] where they fit (and decline, changing nothing, where not).
+    #[test]
+    fn fixed_levin_equals_big_forms() {
+        let mut rng = SplitMix(41);
+        let (mut fixed, mut declined, mut shifted, mut too_far) = (0, 0, 0, 0);
+        for (bits, delta) in [(3u32, 0i64), (8, 5), (20, 0), (28, 3), (40, 2), (60, 7)] {
+            for _ in 0..40 {
+                let mut v = |b: u32| i128::from(rng.int(-99, 99)) << rng.int(0, b as i64) as u32;
+                let m: [[i128; 4]; 4] =
+                    std::array::from_fn(|_| std::array::from_fn(|_| v(bits / 2)));
+                let m: [[i128; 4]; 4] = std::array::from_fn(|i| {
+                    std::array::from_fn(|j| if i <= j { m[i][j] } else { m[j][i] })
+                });
+                let mut t = [[[0i128; 8]; 2]; 2];
+                for x in t.as_flattened_mut().as_flattened_mut().chunks_mut(2) {
+                    x[0] = v(bits);
+                    x[1] = if delta == 0 { 0 } else { v(bits) };
+                }
+                let r = FixedRuling {
+                    delta: i128::from(delta),
+                    t,
+                };
+                let big_delta = IBig::from(delta);
+                let (b, d) = r.to_zpolys();
+                let mb = m.map(|row| row.map(IBig::from));
+                let (s, a, alt) = levin_big(&mb, &b, &d, &big_delta);
+                let Some(f) = FixedLevin::new(&m, &r) else {
+                    declined += 1;
+                    assert!(bits >= 20, "declined at {bits} bits");
+                    continue;
+                };
+                fixed += 1;
+                let (fb, fd, fa, falt, fs) = f.into_zpolys();
+                let trimmed = |mut p: ZPoly| {
+                    trim(&mut p);
+                    p
+                };
+                assert_eq!((&fb, &fd), (&b, &d));
+                assert_eq!(fs, trimmed(s.clone()));
+                assert_eq!(fa, a.clone().map(trimmed));
+                assert_eq!(falt, alt.clone().map(trimmed));
+                assert_eq!(f.s_log2_sizes(), log2_sizes(&fs, &big_delta));
+                let k = rng.int(0, 16) as usize;
+                let exponent = |degree: usize, i: usize| k * (degree + 1 - i.min(degree));
+                let mut g = f;
+                if g.shift(exponent) {
+                    shifted += 1;
+                    let (gb, gd, ga, galt, gs) = g.into_zpolys();
+                    let scaled = |mut p: ZPoly, degree: usize| {
+                        scale_powers_of_two(&mut p, |i| exponent(degree, i));
+                        p
+                    };
+                    assert_eq!(gb, fb.map(|p| scaled(p, 1)));
+                    assert_eq!(gd, fd.map(|p| scaled(p, 1)));
+                    assert_eq!(ga, fa.map(|p| scaled(p, 3)));
+                    assert_eq!(galt, falt.map(|p| scaled(p, 3)));
+                    assert_eq!(gs, scaled(fs, 4));
+                } else {
+                    too_far += 1;
+                    assert_eq!(g.into_zpolys(), f.into_zpolys());
+                }
+            }
+        }
+        assert!(
+            fixed > 100 && declined > 10 && shifted > 50 && too_far > 10,
+            "{fixed} fixed, {declined} declined, {shifted} shifted, {too_far} too far"
+        );
     }
 
     /// The machine-integer forms equal the big-integer ones: without checks (bounded), checked
