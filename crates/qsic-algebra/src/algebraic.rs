@@ -330,6 +330,24 @@ impl AlgebraicReal {
         self.poly.get()
     }
 
+    /// Whether `self` and `other` are given by the same defining polynomial and stated
+    /// isolating interval (so the same number): by the shared polynomial when they were
+    /// isolated together or cloned, without making a norm not made yet; else by comparing
+    /// the polynomials.
+    ///
+    /// ```
+    /// # use qsic_algebra::{AlgebraicReal, Poly};
+    /// let roots = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 1]));
+    /// let again = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 1]));
+    /// assert!(roots[0].same_definition(&roots[0].clone()));
+    /// assert!(roots[0].same_definition(&again[0]));
+    /// assert!(!roots[0].same_definition(&roots[1]));
+    /// ```
+    pub fn same_definition(&self, other: &AlgebraicReal) -> bool {
+        self.interval == other.interval
+            && (Arc::ptr_eq(&self.poly, &other.poly) || self.poly() == other.poly())
+    }
+
     /// The stated isolating interval (the one made with, or narrowed by [`Self::refine`]
     /// and [`Self::refine_to`]).
     pub fn interval(&self) -> &RootInterval {

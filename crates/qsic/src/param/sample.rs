@@ -1737,12 +1737,7 @@ struct Approximations(RefCell<Vec<(AlgebraicReal, f64)>>);
 
 impl Approximations {
     fn of(&self, r: &AlgebraicReal) -> f64 {
-        if let Some((_, v)) = self
-            .0
-            .borrow()
-            .iter()
-            .find(|(q, _)| q.poly() == r.poly() && q.interval() == r.interval())
-        {
+        if let Some((_, v)) = self.0.borrow().iter().find(|(q, _)| q.same_definition(r)) {
             return *v;
         }
         let v = r.to_f64();
@@ -2393,10 +2388,11 @@ impl<'a> Sampler<'a> {
     /// ill-conditioned.
     fn end_value(&self, r: &'a AlgebraicReal) -> f64 {
         // the two sheets of an oval share their ends: each found once
-        let known = self.ends.borrow().iter().find_map(|(q, v)| {
-            (std::ptr::eq(*q, r) || q.poly() == r.poly() && q.interval() == r.interval())
-                .then_some(*v)
-        });
+        let known = self
+            .ends
+            .borrow()
+            .iter()
+            .find_map(|(q, v)| (std::ptr::eq(*q, r) || q.same_definition(r)).then_some(*v));
         known.unwrap_or_else(|| {
             let v = self.end_value_uncached(r);
             self.ends.borrow_mut().push((r, v));
@@ -3813,10 +3809,7 @@ mod tests {
                         // the end itself
                         let exact = r.to_f64();
                         assert!((kept - exact).abs() <= 1e-9 * (1.0 + exact.abs()), "{r:?}");
-                        if ends
-                            .iter()
-                            .any(|q| q.poly() == r.poly() && q.interval() == r.interval())
-                        {
+                        if ends.iter().any(|q| q.same_definition(r)) {
                             shared += 1;
                         } else {
                             ends.push(r);
