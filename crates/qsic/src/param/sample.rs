@@ -286,7 +286,6 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
                         approx: &approx,
                         ends: RefCell::new(Vec::new()),
                         other_sheet: RefCell::new(None),
-                        midpoints: RefCell::new(Vec::new()),
                     });
                 }
                 let sampler = slot.as_ref().expect("made above");
@@ -1229,33 +1228,6 @@ impl<'a> Evaluator<'a> {
             _ => self.values_any(t, rev, sheet),
         };
         self.unit_of(x, root, t, rev, sheet)
-    }
-
-    /// [`Evaluator::eval_unit`] on both sheets of Levin's form at once (`a`, `d` and `√s`
-    /// evaluated once, then the same operations as on either sheet: the same results bit
-    /// for bit): `(plus, minus)`.
-    fn eval_unit_both(&self, u: (f64, f64)) -> (Option<[f64; 4]>, Option<[f64; 4]>) {
-        let (t, rev) = reduced_parameter(u);
-        let (a, w, root) = match self.big_d {
-            2 => self.parts::<3, 1>(t, rev),
-            3 => self.parts::<4, 2>(t, rev),
-            4 => self.parts::<5, 3>(t, rev),
-            _ => {
-                return (
-                    self.eval_unit(u, Sheet::Plus),
-                    self.eval_unit(u, Sheet::Minus),
-                )
-            }
-        };
-        let (mut p, mut m) = (a, a);
-        for i in 0..4 {
-            p[i] += root * w[i];
-            m[i] += -root * w[i];
-        }
-        (
-            self.unit_of(p, root, t, rev, Sheet::Plus),
-            self.unit_of(m, root, t, rev, Sheet::Minus),
-        )
     }
 
     /// The unit vector of the value `x` (with `√s = root`) at the reduced parameter `t`,
@@ -2386,14 +2358,7 @@ struct Sampler<'a> {
     /// The grid of the other sheet made with the last one of Levin's form: `(t₀, step, n)`
     /// as bits, the sheet and its points ([`Evaluator::grid_both`]).
     other_sheet: RefCell<Option<OtherSheet>>,
-    /// Midpoints of Levin's form computed for the other sheet with a bisection (the two
-    /// sheets of an oval bisect at the same `θ`): `θ` as bits, the sheet, the unit vector;
-    /// at most [`MIDPOINTS_KEPT`], oldest first.
-    midpoints: RefCell<Vec<(u64, Sheet, [f64; 4])>>,
 }
-
-/// Most midpoints kept for the other sheet ([`Sampler::at_mid`]).
-const MIDPOINTS_KEPT: usize = 32;
 
 impl<'a> Sampler<'a> {
     /// The grid of `sheet` on `θₖ = t₀ + k·step` ([`Evaluator::grid`]): on Levin's form both
@@ -2461,39 +2426,6 @@ impl<'a> Sampler<'a> {
         self.at_u(theta, (s, c), lo, hi, sheet)
     }
 
-    /// [`Sampler::at`] for a bisection: on Levin's form both sheets evaluated at once, the
-    /// other sheet's point kept for its own bisection at the same `θ` (taken from there
-    /// when kept: the point `at` would compute, bit for bit).
-    fn at_mid(&self, theta: f64, lo: f64, hi: f64, sheet: Sheet) -> Result<Sample, Error> {
-        if !self.eval.levin {
-            return self.at(theta, lo, hi, sheet);
-        }
-        let key = theta.to_bits();
-        let u = theta.sin_cos();
-        {
-            let mut kept = self.midpoints.borrow_mut();
-            if let Some(i) = kept.iter().position(|m| m.0 == key && m.1 == sheet) {
-                let (_, _, x) = kept.remove(i);
-                return Ok(Sample::new(theta, x));
-            }
-            let (plus, minus) = self.eval.eval_unit_both(u);
-            let (mine, other) = match sheet {
-                Sheet::Minus => (minus, plus.map(|x| (Sheet::Plus, x))),
-                _ => (plus, minus.map(|x| (Sheet::Minus, x))),
-            };
-            if let Some((s, x)) = other {
-                if kept.len() >= MIDPOINTS_KEPT {
-                    kept.remove(0);
-                }
-                kept.push((key, s, x));
-            }
-            if let Some(x) = mine {
-                return Ok(Sample::new(theta, x));
-            }
-        }
-        self.at_u(theta, u, lo, hi, sheet)
-    }
-
     /// [`Sampler::at`] with `u ≈ (sin θ, cos θ)` given (up to a positive factor).
     fn at_u(
         &self,
@@ -2549,7 +2481,7 @@ impl<'a> Sampler<'a> {
             return Ok(None);
         }
         let (lo, hi) = (p.theta.min(q.theta), p.theta.max(q.theta));
-        let m = self.at_mid(0.5 * (p.theta + q.theta), lo, hi, sheet)?;
+        let m = self.at(0.5 * (p.theta + q.theta), lo, hi, sheet)?;
         let swung = opposite
             && (dot(&m.x, &p.x).abs() < MAX_ANGLE.cos() || dot(&m.x, &q.x).abs() < MAX_ANGLE.cos());
         if far || swung {
@@ -2825,12 +2757,9 @@ impl<'a> Sampler<'a> {
             None => run_of(xs, walk, &mut line.h, |x| dot(&form.h, x)),
         };
         let xs = &xs[..taken];
-        // the usual orientation copied as it is (one block copy), else negated point by point
-        if walk.flip {
-            line.x.extend(xs.iter().map(|x| x.map(|v| -v)));
-        } else {
-            line.x.extend_from_slice(xs);
-        }
+        let flip = walk.flip;
+        line.x
+            .extend(xs.iter().map(|x| if flip { x.map(|v| -v) } else { *x }));
         if taken > 0 {
             k += taken;
             walk.prev = Sample::new(t0 + step * ((k - 1) as f64), px);
@@ -3846,7 +3775,6 @@ mod tests {
             approx,
             ends: RefCell::new(Vec::new()),
             other_sheet: RefCell::new(None),
-            midpoints: RefCell::new(Vec::new()),
         }
     }
 
@@ -4086,82 +4014,5 @@ mod tests {
         let (l, h) = (inner_f64(&lo, true), inner_f64(&hi, false));
         assert!(l > h);
         assert_eq!(eval.root_of_s(l, h), None);
-    }
-
-    /// Both sheets at once ([`Evaluator::eval_unit_both`]) are [`Evaluator::eval_unit`] on
-    /// each sheet bit for bit (failures included), at random parameters all round ℙ¹.
-    #[test]
-    fn both_sheets_at_once_match_single_evaluations() {
-        let mut rng = SplitMix(0xb07);
-        let bits = |x: Option<[f64; 4]>| x.map(|v| v.map(f64::to_bits));
-        let mut checked = 0;
-        for param in levin_params(0xb08, 6) {
-            let eval = Evaluator::new(&param).unwrap();
-            for _ in 0..300 {
-                let theta = (rng.int(-1_000_000, 1_000_000) as f64) * (PI / 1_000_000.0);
-                let u = theta.sin_cos();
-                let (plus, minus) = eval.eval_unit_both(u);
-                assert_eq!(bits(plus), bits(eval.eval_unit(u, Sheet::Plus)), "{theta}");
-                assert_eq!(
-                    bits(minus),
-                    bits(eval.eval_unit(u, Sheet::Minus)),
-                    "{theta}"
-                );
-                checked += usize::from(plus.is_some()) + usize::from(minus.is_some());
-            }
-        }
-        assert!(checked > 3000, "{checked}");
-    }
-
-    /// A bisection point kept for the other sheet ([`Sampler::at_mid`]) is the point
-    /// [`Sampler::at`] computes, bit for bit; each direct success of the other sheet is kept
-    /// (at most [`MIDPOINTS_KEPT`], the oldest dropped) and taken when that sheet asks.
-    #[test]
-    fn midpoints_kept_for_the_other_sheet_are_the_points_computed() {
-        let mut rng = SplitMix(0x3d1);
-        let chart = SampleOptions::default().chart().unwrap();
-        let mut taken = 0;
-        for param in levin_params(0x3d2, 4) {
-            let approx = Approximations::default();
-            let sampler = test_sampler(&param, &chart, &approx);
-            let (lo, hi) = (-PI, PI);
-            let len = || sampler.midpoints.borrow().len();
-            for round in 0..3 {
-                sampler.midpoints.borrow_mut().clear();
-                let (first, other) = if round == 1 {
-                    (Sheet::Minus, Sheet::Plus)
-                } else {
-                    (Sheet::Plus, Sheet::Minus)
-                };
-                let count = if round == 2 { MIDPOINTS_KEPT + 5 } else { 20 };
-                let thetas: Vec<f64> = (0..count)
-                    .map(|_| (rng.int(-999_999, 999_999) as f64) * (PI / 1_000_000.0))
-                    .collect();
-                let same = |t: f64, sheet: Sheet| {
-                    let got = sampler.at_mid(t, lo, hi, sheet).unwrap();
-                    let want = sampler.at(t, lo, hi, sheet).unwrap();
-                    assert_eq!(got.x.map(f64::to_bits), want.x.map(f64::to_bits));
-                    assert_eq!(got.theta.to_bits(), want.theta.to_bits());
-                };
-                for &t in &thetas {
-                    same(t, first);
-                }
-                let direct = (thetas.iter())
-                    .filter(|t| sampler.eval.eval_unit(t.sin_cos(), other).is_some())
-                    .count();
-                assert_eq!(len(), direct.min(MIDPOINTS_KEPT));
-                let mut hits = 0;
-                for &t in &thetas {
-                    let before = len();
-                    same(t, other);
-                    hits += usize::from(len() < before);
-                }
-                if count <= MIDPOINTS_KEPT {
-                    assert_eq!(hits, direct);
-                }
-                taken += hits;
-            }
-        }
-        assert!(taken > 100, "{taken}");
     }
 }
