@@ -728,10 +728,10 @@ struct Evaluator<'a> {
     d: [Lanes; MAX_TERMS],
     /// `s` (Levin), five coefficients.
     s: [f64; 5],
-    /// `x`, `d`, `s` from the highest power down (Horner's order for `|t| ≤ 1`).
-    x_desc: [Lanes; MAX_TERMS],
-    d_desc: [Lanes; MAX_TERMS],
-    s_desc: [f64; 5],
+    /// `(x, d, s)` in Horner's order for `rev` (index `rev as usize`): from the highest
+    /// power down for `rev` false (`|t| ≤ 1`), as `x`, `d`, `s` for `rev` true — one
+    /// indexed load a point in [`Evaluator::parts`].
+    horner: [HornerSet; 2],
     /// Levin's form (else rational).
     levin: bool,
     /// `|x|`, `|d|` in both orders (the rounding bound's majorant at `|t|`).
@@ -765,6 +765,14 @@ struct Evaluator<'a> {
     param: &'a ComponentParam,
     /// The homogeneous degree `D`.
     big_d: usize,
+}
+
+/// The coefficients of one Horner order ([`Evaluator::horner`]).
+#[derive(Clone, Copy)]
+struct HornerSet {
+    x: [Lanes; MAX_TERMS],
+    d: [Lanes; MAX_TERMS],
+    s: [f64; 5],
 }
 
 /// A double-double number `hi + lo`, `|lo| ≤ ulp(hi)/2`: about 106 bits.
@@ -1186,7 +1194,16 @@ impl<'a> Evaluator<'a> {
             let (d0, d1) = split(&dv[..nd], cd);
             (x0, x1, d0, d1)
         });
+        let horner = [
+            HornerSet {
+                x: x_desc,
+                d: d_desc,
+                s: s_desc,
+            },
+            HornerSet { x, d: dv, s: sv },
+        ];
         Ok(Evaluator {
+            horner,
             split_abs,
             x_abs: abs(&x),
             d_abs: abs(&dv),
@@ -1196,9 +1213,6 @@ impl<'a> Evaluator<'a> {
             d_abs_max,
             sure_root,
             sure_norm,
-            x_desc,
-            d_desc,
-            s_desc,
             x,
             d: dv,
             s: sv,
@@ -1384,11 +1398,8 @@ impl<'a> Evaluator<'a> {
     /// rule started at the leading coefficient.
     #[inline(always)]
     fn parts<const NA: usize, const ND: usize>(&self, t: f64, rev: bool) -> (Lanes, Lanes, f64) {
-        let (xc, dc, sc) = if rev {
-            (&self.x, &self.d, &self.s)
-        } else {
-            (&self.x_desc, &self.d_desc, &self.s_desc)
-        };
+        let set = &self.horner[usize::from(rev)];
+        let (xc, dc, sc) = (&set.x, &set.d, &set.s);
         let mut v = xc[0];
         for c in &xc[1..NA] {
             for i in 0..4 {
@@ -4007,5 +4018,34 @@ mod tests {
         let (l, h) = (inner_f64(&lo, true), inner_f64(&hi, false));
         assert!(l > h);
         assert_eq!(eval.root_of_s(l, h), None);
+    }
+
+    /// The unrolled evaluation on the coefficient set chosen by index
+    /// ([`Evaluator::horner`]) is the generic Horner evaluation of [`Evaluator::values_any`]
+    /// on both orders and sheets, value for value.
+    #[test]
+    fn indexed_coefficient_sets_match_generic_horner() {
+        let mut rng = SplitMix(0x4e7);
+        let mut checked = 0;
+        for param in levin_params(0x4e8, 6) {
+            let eval = Evaluator::new(&param).unwrap();
+            for _ in 0..200 {
+                let t = rng.int(-1_000_000, 1_000_000) as f64 / 1_000_000.0;
+                for rev in [false, true] {
+                    for sheet in [Sheet::Plus, Sheet::Minus] {
+                        let want = eval.values_any(t, rev, sheet);
+                        let got = match eval.big_d {
+                            2 => eval.values::<3, 1>(t, rev, sheet),
+                            3 => eval.values::<4, 2>(t, rev, sheet),
+                            4 => eval.values::<5, 3>(t, rev, sheet),
+                            _ => continue,
+                        };
+                        assert_eq!(got, want, "t = {t}, rev = {rev}");
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert!(checked >= 4000, "{checked}");
     }
 }
