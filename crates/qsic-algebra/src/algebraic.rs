@@ -127,7 +127,7 @@ impl Refinement {
 }
 
 impl AlgebraicReal {
-    fn with_interval(poly: Poly, interval: RootInterval) -> AlgebraicReal {
+    pub(crate) fn with_interval(poly: Poly, interval: RootInterval) -> AlgebraicReal {
         AlgebraicReal::with_shared(Arc::new(Defining::made(poly)), interval)
     }
 

@@ -92,12 +92,48 @@ impl NumberField {
     /// assert_eq!(a.sub(&Ring::from_int(&1.into())).inv().unwrap().sign(), Sign::Positive);
     /// ```
     pub fn new(alpha: &AlgebraicReal) -> NumberField {
+        NumberField::of(alpha.clone())
+    }
+
+    /// ℚ(√δ) for an integer `δ > 0` that is not a square, `√δ` isolated by
+    /// `(⌊√δ⌋, ⌊√δ⌋ + 1)` (`x² − δ` is negative at the left end and positive at the right
+    /// one: no evaluation needed); `None` for a square or `δ ≤ 0`. The same field as
+    /// [`Self::new`] of the positive root of `x² − δ`, with less work.
+    ///
+    /// ```
+    /// # use qsic_algebra::{field::NumberField, IBig, Poly, Ring};
+    /// let k = NumberField::sqrt(&IBig::from(12)).unwrap();
+    /// let a = k.generator();
+    /// assert_eq!(a.mul(&a), Ring::from_int(&12.into()));
+    /// assert_eq!(k.modulus(), Poly::from_i64s(&[-12, 0, 1]));
+    /// assert!(NumberField::sqrt(&IBig::from(9)).is_none() && NumberField::sqrt(&IBig::ZERO).is_none());
+    /// ```
+    pub fn sqrt(delta: &IBig) -> Option<NumberField> {
+        use dashu_int::ops::{SquareRoot, UnsignedAbs};
+        if *delta <= IBig::ZERO {
+            return None;
+        }
+        let r = match u64::try_from(delta) {
+            Ok(v) => IBig::from(v.isqrt()),
+            Err(_) => IBig::from(delta.unsigned_abs().sqrt()),
+        };
+        if &r * &r == *delta {
+            return None;
+        }
+        let poly = Poly::from_trimmed(vec![-delta.clone(), IBig::ZERO, IBig::ONE]);
+        let interval = RootInterval::Open(RBig::from(r.clone()), RBig::from(r + IBig::ONE));
+        Some(NumberField::of(AlgebraicReal::with_interval(
+            poly, interval,
+        )))
+    }
+
+    /// ℚ(α), taking `α`.
+    fn of(alpha: AlgebraicReal) -> NumberField {
+        let degree = alpha.poly().degree().unwrap_or(0);
         NumberField {
             shared: Arc::new(Shared {
-                state: Mutex::new(Arc::new(State {
-                    alpha: alpha.clone(),
-                })),
-                degree: AtomicUsize::new(alpha.poly().degree().unwrap_or(0)),
+                state: Mutex::new(Arc::new(State { alpha })),
+                degree: AtomicUsize::new(degree),
             }),
         }
     }
@@ -132,7 +168,11 @@ impl NumberField {
     /// assert_eq!(x.numerator(), &Poly::from_i64s(&[3, -2]));
     /// ```
     pub fn linear_element(&self, a: IBig, b: IBig) -> NumberFieldElement {
-        let num = Poly::new(vec![a, b]);
+        let num = if b.is_zero() {
+            Poly::new(vec![a])
+        } else {
+            Poly::from_trimmed(vec![a, b])
+        };
         if num.degree().unwrap_or(0) >= self.shared.degree.load(Ordering::Acquire) {
             return self.reduced(num, IBig::ONE);
         }
@@ -1542,6 +1582,50 @@ mod tests {
             &x,
             &shrinking.integer_element(&Poly::from_i64s(&[3, 5]))
         ));
+    }
+
+    /// [`NumberField::sqrt`] is [`NumberField::new`] of the positive root of `x² − δ`: the
+    /// same modulus, `α` and signs of `a + bα` (random `δ`, small and past `u64`), and `None`
+    /// exactly for squares and `δ ≤ 0`.
+    #[test]
+    fn sqrt_field_equals_the_general_one() {
+        let mut rng = crate::testing::SplitMix(0x5_9e7);
+        for i in 0..120 {
+            let delta = match i % 4 {
+                0 => IBig::from(rng.int(-5, 60)),
+                1 => IBig::from(rng.int(1, 1 << 20)).pow(2),
+                2 => IBig::from(rng.int(1, 1 << 30)) << 70,
+                _ => IBig::from(rng.int(1, 1 << 40)) * IBig::from(rng.int(1, 1 << 40)) + 1,
+            };
+            let roots = AlgebraicReal::real_roots_of(&Poly::new(vec![
+                -delta.clone(),
+                IBig::ZERO,
+                IBig::ONE,
+            ]));
+            let general = match roots.last() {
+                Some(r) if r.poly().degree() == Some(2) => NumberField::new(r),
+                _ => {
+                    assert!(NumberField::sqrt(&delta).is_none(), "δ = {delta}");
+                    continue;
+                }
+            };
+            let fast = NumberField::sqrt(&delta).expect("δ > 0 not a square");
+            assert_eq!(fast.modulus(), general.modulus());
+            assert_eq!(fast.alpha(), general.alpha());
+            assert!(fast.alpha().is_valid());
+            for _ in 0..5 {
+                let (a, b) = (
+                    IBig::from(rng.int(-999, 999)),
+                    IBig::from(rng.int(-999, 999)),
+                );
+                let (x, y) = (
+                    fast.linear_element(a.clone(), b.clone()),
+                    general.linear_element(a, b),
+                );
+                assert_eq!(x.sign(), y.sign(), "δ = {delta}: {x}");
+                assert_eq!(x.mul(&x).numerator(), y.mul(&y).numerator());
+            }
+        }
     }
 
     #[test]

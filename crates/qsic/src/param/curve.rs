@@ -11,7 +11,6 @@
 
 use crate::classify::{Classification, ComponentKind, SingularPointKind};
 use qsic_algebra::field::{NumberField, NumberFieldElement, Quadratic};
-use qsic_algebra::roots::RootInterval;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
 
 /// An exact real number: a rational, or an element of a real number field ℚ(α).
@@ -190,17 +189,11 @@ pub fn rational(v: RBig) -> Number {
 /// If `δ ≤ 0` (no real root): a caller bug, the radicands here come from real quadratic
 /// fields.
 pub fn sqrt_field(delta: &IBig) -> NumberField {
-    use dashu_int::ops::{SquareRoot, UnsignedAbs};
-    let p = Poly::new(vec![-delta.clone(), IBig::ZERO, IBig::ONE]);
-    // ⌊√δ⌋ < √δ < ⌊√δ⌋ + 1 isolates the positive root when δ is not a square (the only
-    // root of x² − δ there; no root isolation needed)
-    let r = IBig::from(delta.unsigned_abs().sqrt());
-    if *delta > IBig::ZERO && &r * &r != *delta {
-        let interval = RootInterval::Open(RBig::from(r.clone()), RBig::from(r + IBig::ONE));
-        if let Some(alpha) = AlgebraicReal::from_isolating_interval(&p, &interval) {
-            return NumberField::new(&alpha);
-        }
+    // ⌊√δ⌋ < √δ < ⌊√δ⌋ + 1 isolates the positive root when δ > 0 is not a square
+    if let Some(k) = NumberField::sqrt(delta) {
+        return k;
     }
+    let p = Poly::new(vec![-delta.clone(), IBig::ZERO, IBig::ONE]);
     let roots = AlgebraicReal::real_roots_of(&p);
     NumberField::new(roots.last().expect("x² − δ has a positive root for δ > 0"))
 }

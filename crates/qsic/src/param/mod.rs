@@ -741,6 +741,7 @@ pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
 /// and one closed real piece per positive arc of `s` between consecutive real roots on
 /// ℝ ∪ {∞} (the sheets `+` and `−` joined at the roots), two pieces (the two sheets) when
 /// `s > 0` everywhere; the pieces are disjoint (a nonsingular curve).
+#[inline(never)] // one call a curve; kept apart for the profiles
 fn levin_curve(
     classification: Classification,
     quartic: SmoothQuartic,
@@ -769,6 +770,8 @@ fn levin_curve(
     let field = surface.ruling.delta.as_ref().map(curve::sqrt_field);
     let (a, d, s, alternate) = match forms {
         Forms::Integral(f) => {
+            // freed before the conversions allocate (its blocks are reused)
+            drop(surface);
             let (db, dd) = ruling_degrees(kind);
             let convert = |p: zsqrt::ZPoly, degree: usize| -> NumberPoly {
                 if f.down == 0 {
@@ -819,15 +822,30 @@ fn levin_curve(
         }
     };
     let param = reduced_levin(a, d, s, degree, alternate);
-    // the sign of s on the arc after each end, in the same cyclic order
-    let mut after: Vec<Sign> = dr.arcs.iter().skip(1).map(|a| a.1).collect();
+    // the sign of s on the arc after each end, in the same cyclic order (on the stack: at
+    // most 4 finite roots and ∞ for a quartic's s)
     let everywhere = dr.arcs[0].1;
-    let mut ends: Vec<ParamValue> = dr.roots.into_iter().map(ParamValue::Finite).collect();
+    let signs = dr.arcs[1..].iter().map(|a| a.1);
+    let signs = signs.chain(dr.at_infinity.then_some(everywhere));
+    let mut buffer = [Sign::Zero; 6];
+    let owned: Vec<Sign>;
+    let after: &[Sign] = if dr.arcs.len() <= buffer.len() {
+        let mut len = 0;
+        for (slot, sign) in buffer.iter_mut().zip(signs) {
+            *slot = sign;
+            len += 1;
+        }
+        &buffer[..len]
+    } else {
+        owned = signs.collect();
+        &owned
+    };
+    let mut ends = Vec::with_capacity(dr.roots.len() + usize::from(dr.at_infinity));
+    ends.extend(dr.roots.into_iter().map(ParamValue::Finite));
     if dr.at_infinity {
         ends.push(ParamValue::Infinity);
-        after.push(everywhere);
     }
-    quartic_curve(classification, param, (ends, &after, everywhere), n)
+    quartic_curve(classification, param, (ends, after, everywhere), n)
 }
 
 /// The Levin form `a ± d√s` (homogeneous degree `degree`) with its alternate, reduced where
@@ -911,63 +929,57 @@ fn quartic_curve(
 /// order, `after[i]` the sign of `s` on the arc after `ends[i]`, `everywhere` its sign when it
 /// has no real root. One closed piece per positive arc (the sheets `+` and `−` joined at its
 /// ends), two (the two sheets) when `s > 0` everywhere.
-fn levin_pieces(ends: Vec<ParamValue>, after: &[Sign], everywhere: Sign) -> Vec<RealPiece> {
-    let mut pieces = Vec::new();
-    // each end moved into the piece that uses it last, cloned for the others
+fn levin_pieces(mut ends: Vec<ParamValue>, after: &[Sign], everywhere: Sign) -> Vec<RealPiece> {
     let count = ends.len();
-    let mut uses = vec![0usize; count];
-    for i in (0..count).filter(|&i| after[i] == Sign::Positive) {
-        uses[i] += 1;
-        uses[(i + 1) % count] += 1;
+    let positive = |i: usize| after[i] == Sign::Positive;
+    if count == 0 {
+        if everywhere != Sign::Positive {
+            return Vec::new();
+        }
+        let sheet = |sheet| RealPiece::Curve {
+            component: 0,
+            arcs: vec![Arc {
+                range: ParamRange::All,
+                sheet,
+                reversed: false,
+            }],
+            closed: true,
+        };
+        return vec![sheet(Sheet::Plus), sheet(Sheet::Minus)];
     }
-    let mut ends: Vec<Option<ParamValue>> = ends.into_iter().map(Some).collect();
-    let mut take = |k: usize| -> ParamValue {
-        uses[k] -= 1;
-        let end = if uses[k] == 0 {
-            ends[k].take()
+    let mut pieces = Vec::with_capacity((0..count).filter(|&i| positive(i)).count());
+    // end k is the start of arc k and the end of arc k − 1 (arc `count − 1` for k = 0, the
+    // last one made): moved at its last use, cloned before
+    let mut take = |k: usize, last: bool| -> ParamValue {
+        if last {
+            std::mem::replace(&mut ends[k], ParamValue::Infinity)
         } else {
             ends[k].clone()
-        };
-        end.expect("an end is moved at its last use")
-    };
-    let loop_over = |range: ParamRange| RealPiece::Curve {
-        component: 0,
-        arcs: vec![
-            Arc {
-                range: range.clone(),
-                sheet: Sheet::Plus,
-                reversed: false,
-            },
-            Arc {
-                range,
-                sheet: Sheet::Minus,
-                reversed: true,
-            },
-        ],
-        closed: true,
-    };
-    if count == 0 {
-        if everywhere == Sign::Positive {
-            for sheet in [Sheet::Plus, Sheet::Minus] {
-                pieces.push(RealPiece::Curve {
-                    component: 0,
-                    arcs: vec![Arc {
-                        range: ParamRange::All,
-                        sheet,
-                        reversed: false,
-                    }],
-                    closed: true,
-                });
-            }
         }
-    } else {
-        for i in 0..count {
-            if after[i] == Sign::Positive {
-                let start = take(i);
-                let next = take((i + 1) % count);
-                pieces.push(loop_over(ParamRange::Between(start, next)));
-            }
-        }
+    };
+    for i in (0..count).filter(|&i| positive(i)) {
+        let next = (i + 1) % count;
+        // end i is used later only as the end of the last arc (i = 0; this arc itself when
+        // count = 1); end `next` later as the start of arc `next` (not when that is arc 0)
+        let start = take(i, !(i == 0 && positive(count - 1)));
+        let stop = take(next, next == 0 || !positive(next));
+        let range = ParamRange::Between(start, stop);
+        pieces.push(RealPiece::Curve {
+            component: 0,
+            arcs: vec![
+                Arc {
+                    range: range.clone(),
+                    sheet: Sheet::Plus,
+                    reversed: false,
+                },
+                Arc {
+                    range,
+                    sheet: Sheet::Minus,
+                    reversed: true,
+                },
+            ],
+            closed: true,
+        });
     }
     pieces
 }
@@ -1731,6 +1743,59 @@ mod tests {
         // a rational part 2²⁰ in b
         ruling.b[3] = line(quad(r(1 << 20), r(0)), one());
         assert_eq!(ruling_height(&ruling), 2 + 21);
+    }
+
+    /// [`levin_pieces`] (ends moved at their last use) equals the pieces made by cloning
+    /// every end, for every sign pattern of up to 6 ends (with and without ∞ among them).
+    #[test]
+    fn levin_pieces_move_the_ends_as_cloning_would_give() {
+        let value = |k: usize| ParamValue::Finite(AlgebraicReal::from_rational(RBig::from(k)));
+        for count in 0..=6usize {
+            for pattern in 0..(1u32 << count) {
+                for (everywhere, infinity) in [(Sign::Positive, false), (Sign::Negative, true)] {
+                    let after: Vec<Sign> = (0..count)
+                        .map(|i| match pattern >> i & 1 {
+                            1 => Sign::Positive,
+                            _ => Sign::Negative,
+                        })
+                        .collect();
+                    let ends: Vec<ParamValue> = (0..count)
+                        .map(|k| match infinity && k + 1 == count {
+                            true => ParamValue::Infinity,
+                            false => value(k),
+                        })
+                        .collect();
+                    let expected: Vec<String> = (0..count)
+                        .filter(|&i| after[i] == Sign::Positive)
+                        .map(|i| {
+                            let range =
+                                ParamRange::Between(ends[i].clone(), ends[(i + 1) % count].clone());
+                            let arc = |sheet, reversed| Arc {
+                                range: range.clone(),
+                                sheet,
+                                reversed,
+                            };
+                            RealPiece::Curve {
+                                component: 0,
+                                arcs: vec![arc(Sheet::Plus, false), arc(Sheet::Minus, true)],
+                                closed: true,
+                            }
+                        })
+                        .map(|p| format!("{p:?}"))
+                        .collect();
+                    let got: Vec<String> = levin_pieces(ends, &after, everywhere)
+                        .iter()
+                        .map(|p| format!("{p:?}"))
+                        .collect();
+                    if count == 0 {
+                        let two = everywhere == Sign::Positive;
+                        assert_eq!(got.len(), if two { 2 } else { 0 });
+                    } else {
+                        assert_eq!(got, expected, "{count} ends, pattern {pattern:b}");
+                    }
+                }
+            }
+        }
     }
 
     fn rq(v: i64) -> Quadratic {
