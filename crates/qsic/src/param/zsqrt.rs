@@ -1220,6 +1220,16 @@ impl<const N: usize> FixedPoly<N> {
         self.coeffs().iter().map(|v| v.big()).collect()
     }
 
+    /// [`to_number_poly`] of [`Self::to_zpoly`] without the big-integer polynomial between.
+    fn to_number_poly(self, field: Option<&qsic_algebra::field::NumberField>) -> super::NumberPoly {
+        let c = self.coeffs();
+        let n = c
+            .iter()
+            .rposition(|v| *v != Zi::default())
+            .map_or(0, |k| k + 1);
+        Poly::from_trimmed(c[..n].iter().map(|v| to_number(v.big(), field)).collect())
+    }
+
     /// Whether every coefficient `i` times `2^e(i)` stays below `2¹²⁶`.
     fn fits(&self, e: impl Fn(usize) -> usize) -> bool {
         self.coeffs().iter().enumerate().all(|(i, v)| {
@@ -1612,6 +1622,25 @@ impl FixedLevin {
 
     /// `b`, `d`, `a`, `alt`, `s` as [`ZPoly`]s.
     #[allow(clippy::type_complexity)]
+    /// `s` over ℤ[√δ] in big integers.
+    pub(crate) fn s_zpoly(&self) -> ZPoly {
+        self.s.to_zpoly()
+    }
+
+    /// `a`, `d`, `alt`, `b` as output polynomials over `field` = ℚ(√δ) ([`to_number_poly`]
+    /// of [`Self::into_zpolys`], without the big-integer polynomials).
+    pub(crate) fn to_number_polys(
+        self,
+        field: Option<&qsic_algebra::field::NumberField>,
+    ) -> [[super::NumberPoly; 4]; 4] {
+        [
+            self.a.map(|p| p.to_number_poly(field)),
+            self.d.map(|p| p.to_number_poly(field)),
+            self.alt.map(|p| p.to_number_poly(field)),
+            self.b.map(|p| p.to_number_poly(field)),
+        ]
+    }
+
     pub(crate) fn into_zpolys(self) -> ([ZPoly; 4], [ZPoly; 4], [ZPoly; 4], [ZPoly; 4], ZPoly) {
         (
             self.b.map(FixedPoly::to_zpoly),
