@@ -523,19 +523,7 @@ fn integral_levin(
     }
     let k = balancing_exponent_of(&zsqrt::log2_sizes(&s, &delta));
     if k != 0 {
-        let (db, dd) = ruling_degrees(kind);
-        let forms = [
-            (&mut b, db),
-            (&mut d, dd),
-            (&mut a, 2 * dd + db),
-            (&mut alt, 2 * db + dd),
-        ];
-        for (v, degree) in forms {
-            for p in v.iter_mut() {
-                zsqrt::scale_powers_of_two(p, |i| balance_exponent(k, degree, i));
-            }
-        }
-        zsqrt::scale_powers_of_two(&mut s, |i| balance_exponent(k, 2 * (db + dd), i));
+        balance_big(k, kind, [&mut b, &mut d, &mut a, &mut alt], &mut s);
     }
     Ok(Some(IntegralLevin {
         delta,
@@ -599,21 +587,12 @@ fn fixed_levin(mut forms: zsqrt::FixedLevin) -> Result<IntegralLevin, Error> {
         });
     }
     let (mut b, mut d, mut a, mut alt, mut s) = forms.into_zpolys();
-    {
-        let (db, dd) = ruling_degrees(SurfaceKind::DoublyRuled);
-        let all = [
-            (&mut b, db),
-            (&mut d, dd),
-            (&mut a, 2 * dd + db),
-            (&mut alt, 2 * db + dd),
-        ];
-        for (v, degree) in all {
-            for p in v.iter_mut() {
-                zsqrt::scale_powers_of_two(p, |i| balance_exponent(k, degree, i));
-            }
-        }
-        zsqrt::scale_powers_of_two(&mut s, |i| balance_exponent(k, 2 * (db + dd), i));
-    }
+    balance_big(
+        k,
+        SurfaceKind::DoublyRuled,
+        [&mut b, &mut d, &mut a, &mut alt],
+        &mut s,
+    );
     Ok(IntegralLevin {
         delta,
         down,
@@ -624,6 +603,24 @@ fn fixed_levin(mut forms: zsqrt::FixedLevin) -> Result<IntegralLevin, Error> {
         s,
         fixed: None,
     })
+}
+
+/// The balancing `k` ([`balance_exponent`]) on the big-integer forms `[b, d, a, alt]` and
+/// `s` of a ruling of `kind`.
+fn balance_big(
+    k: i64,
+    kind: SurfaceKind,
+    [b, d, a, alt]: [&mut [zsqrt::ZPoly; 4]; 4],
+    s: &mut zsqrt::ZPoly,
+) {
+    let (db, dd) = ruling_degrees(kind);
+    let forms = [(b, db), (d, dd), (a, 2 * dd + db), (alt, 2 * db + dd)];
+    for (v, degree) in forms {
+        for p in v.iter_mut() {
+            zsqrt::scale_powers_of_two(p, |i| balance_exponent(k, degree, i));
+        }
+    }
+    zsqrt::scale_powers_of_two(s, |i| balance_exponent(k, 2 * (db + dd), i));
 }
 
 /// Whether the balancing `k` keeps the forms as integers, multiplied by `2^(−k·degree)`

@@ -3349,26 +3349,32 @@ mod tests {
     use crate::Quadric;
     use qsic_algebra::testing::SplitMix;
 
+    /// The curve of a random pair of symmetric integer matrices (entries in [−10, 10]),
+    /// `None` when a matrix is zero or the curve is not parameterized.
+    fn random_curve(rng: &mut SplitMix) -> Option<Curve> {
+        let mut m = [[[0i64; 4]; 4]; 2];
+        for q in &mut m {
+            for i in 0..4 {
+                for j in i..4 {
+                    let c = rng.int(-10, 10);
+                    q[i][j] = if i == j { 2 * c } else { c };
+                    q[j][i] = q[i][j];
+                }
+            }
+        }
+        let (a, b) = (
+            Quadric::from_integers(m[0]).ok()?,
+            Quadric::from_integers(m[1]).ok()?,
+        );
+        crate::param::parameterize(&a, &b).ok()
+    }
+
     /// Levin parameterizations of random generic pairs (coefficients in ℚ(√δ)).
     fn levin_params(seed: u64, count: usize) -> Vec<ComponentParam> {
         let mut rng = SplitMix(seed);
         let mut out = Vec::new();
         while out.len() < count {
-            let mut m = [[[0i64; 4]; 4]; 2];
-            for q in &mut m {
-                for i in 0..4 {
-                    for j in i..4 {
-                        let c = rng.int(-10, 10);
-                        q[i][j] = if i == j { 2 * c } else { c };
-                        q[j][i] = q[i][j];
-                    }
-                }
-            }
-            let (Ok(a), Ok(b)) = (Quadric::from_integers(m[0]), Quadric::from_integers(m[1]))
-            else {
-                continue;
-            };
-            let Ok(curve) = crate::param::parameterize(&a, &b) else {
+            let Some(curve) = random_curve(&mut rng) else {
                 continue;
             };
             for c in curve.components {
@@ -3735,21 +3741,7 @@ mod tests {
         let mut rng = SplitMix(seed);
         let mut out = Vec::new();
         while out.len() < count {
-            let mut m = [[[0i64; 4]; 4]; 2];
-            for q in &mut m {
-                for i in 0..4 {
-                    for j in i..4 {
-                        let c = rng.int(-10, 10);
-                        q[i][j] = if i == j { 2 * c } else { c };
-                        q[j][i] = q[i][j];
-                    }
-                }
-            }
-            let (Ok(a), Ok(b)) = (Quadric::from_integers(m[0]), Quadric::from_integers(m[1]))
-            else {
-                continue;
-            };
-            let Ok(curve) = crate::param::parameterize(&a, &b) else {
+            let Some(curve) = random_curve(&mut rng) else {
                 continue;
             };
             let levin = curve.pieces.iter().find_map(|p| match p {
