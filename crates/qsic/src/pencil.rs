@@ -132,7 +132,7 @@ pub(crate) fn principal_minor_sums_of_pencil(a: &[[IBig; 4]; 4], b: &[[IBig; 4];
 /// their one row outside such a pair (below `3·2⁶⁹`), the determinant by Laplace's expansion
 /// along rows `{0, 1}` (six products of two quadratics, below `2⁹⁸`): no overflow, no
 /// interpolation.
-fn minor_sums_i128(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> Option<[[i128; 5]; 4]> {
+pub(crate) fn minor_sums_i128(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> Option<[[i128; 5]; 4]> {
     if a.iter()
         .chain(b)
         .flatten()
@@ -440,6 +440,12 @@ fn floor_and_ceil(
 /// or a number leaves `i128`.
 pub(crate) fn quick_arc_samples(a: &Quadric, b: &Quadric) -> Option<Vec<(RBig, Inertia)>> {
     let e = minor_sums_i128(a.small_integer_matrix()?, b.small_integer_matrix()?)?;
+    quick_arc_samples_of(&e)
+}
+
+/// [`quick_arc_samples`] from `E₁…E₄` of `λA − B` (`e[k]` of degree `k + 1`, from degree 0,
+/// of the primitive integer matrices), as the classification's fast path computed them.
+pub(crate) fn quick_arc_samples_of(e: &[[i128; 5]; 4]) -> Option<Vec<(RBig, Inertia)>> {
     if e[3][4] == 0 {
         return None;
     }

@@ -13,9 +13,11 @@
 //!   by the signs of `f` there, and the inertia at each sample comes from the certified
 //!   signs of the principal minor sums `E₁…E₄`.
 //!
-//! The polynomials `E_k(λ)` come from the one minor implementation in `i128`
-//! ([`qsic_algebra::linalg::pencil::principal_minor_sums_of_members`]: the principal minors of
-//! the members at `λ = ∞, 0, ±1` and `det(2A − B)`, then interpolation).
+//! The polynomials `E_k(λ)` come straight from the entries when they are below `2²²`
+//! (`pencil::minor_sums_i128`, the pencil's quadratic 2×2 minors), else from the one minor
+//! implementation in `i128` ([`qsic_algebra::linalg::pencil::principal_minor_sums_of_members`]:
+//! the principal minors of the members at `λ = ∞, 0, ±1` and `det(2A − B)`, then
+//! interpolation). The curve's surface choice reads the same sums ([`SimpleRoots`]).
 //!
 //! Precondition, checked: every entry is below [`ENTRY_LIMIT`] = 2²⁴ in absolute value. Then
 //! the members' entries are below `3·2²⁴`, every product of four of them below `81·2⁹⁶ < 2¹⁰³`,
@@ -42,7 +44,19 @@ struct MinorSums {
     e4: [i128; 5],
 }
 
-fn minor_sums(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> MinorSums {
+/// The fast path's answer with what it computed on the way: the case (1–4) and `E₁…E₄` of
+/// `λA − B` (`e[k]` of degree `k + 1`, from degree 0), for a caller that needs them too.
+pub(crate) struct SimpleRoots {
+    pub case: u8,
+    pub sums: [[i128; 5]; 4],
+}
+
+fn minor_sums(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> [[i128; 5]; 4] {
+    crate::pencil::minor_sums_i128(a, b).unwrap_or_else(|| minor_sums_of_members(a, b))
+}
+
+/// [`minor_sums`] by interpolation from five members (any entries below [`ENTRY_LIMIT`]).
+fn minor_sums_of_members(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> [[i128; 5]; 4] {
     // the members lA − B and A, formed in i64 (|entries| < 3·2²⁴)
     let member = |l: i64, k: i64| {
         let mut m = [[0i128; 4]; 4];
@@ -53,19 +67,13 @@ fn minor_sums(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> MinorSums {
         }
         m
     };
-    let [e1, e2, e3, e4] = principal_minor_sums_of_members([
+    principal_minor_sums_of_members([
         &member(1, 0),
         &member(0, 1),
         &member(1, 1),
         &member(-1, 1),
         &member(2, 1),
-    ]);
-    MinorSums {
-        e1: lowest(&e1),
-        e2: lowest(&e2),
-        e3: lowest(&e3),
-        e4,
-    }
+    ])
 }
 
 /// The lowest `K` coefficients.
@@ -88,13 +96,31 @@ fn sign_of_sum(terms: &[f64], factors: usize) -> Option<Sign> {
 /// not apply (an entry not below [`ENTRY_LIMIT`], `det A = 0`, a multiple root) or cannot
 /// certify a sign.
 pub(crate) fn classify_simple_roots(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> Option<u8> {
+    simple_roots(a, b).map(|r| r.case)
+}
+
+/// [`classify_simple_roots`] with the minor sums it computed.
+pub(crate) fn simple_roots(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> Option<SimpleRoots> {
     if !within_entry_limit(a) || !within_entry_limit(b) {
         return None;
     }
-    let s = minor_sums(a, b);
+    let sums = minor_sums(a, b);
+    let [e1, e2, e3, e4] = &sums;
+    let s = MinorSums {
+        e1: lowest(e1),
+        e2: lowest(e2),
+        e3: lowest(e3),
+        e4: *e4,
+    };
     if s.e4[4] == 0 {
         return None;
     }
+    let case = case_of(&s)?;
+    Some(SimpleRoots { case, sums })
+}
+
+/// The case from the minor sums (`E₄` of degree 4).
+fn case_of(s: &MinorSums) -> Option<u8> {
     let [e, d, c, b1, a4] = to_f64(&s.e4);
     let (a, b) = (a4, b1);
     let disc = sign_of_sum(
@@ -331,11 +357,24 @@ mod tests {
         }
         let poly = |c: &[i128]| Poly::new(c.iter().map(|&v| IBig::from(v)).collect());
         for (a, b) in pairs {
-            let s = minor_sums(&a, &b);
             let sym = |m| SymMatrix4::from_i64(m).expect("symmetric");
             let exact = MatrixPencil::new(sym(a), sym(b)).principal_minor_sums();
-            let got = [poly(&s.e1), poly(&s.e2), poly(&s.e3), poly(&s.e4)];
-            assert_eq!(got, exact, "A = {a:?}, B = {b:?}");
+            // both routes (the direct one answers below 2²²), as the fast path reads them
+            for s in [minor_sums(&a, &b), minor_sums_of_members(&a, &b)] {
+                let got = [
+                    poly(&s[0][..2]),
+                    poly(&s[1][..3]),
+                    poly(&s[2][..4]),
+                    poly(&s[3]),
+                ];
+                assert_eq!(got, exact, "A = {a:?}, B = {b:?}");
+                // the degrees the fast path reads: nothing above them
+                assert!(s[0][2..]
+                    .iter()
+                    .chain(&s[1][3..])
+                    .chain(&s[2][4..])
+                    .all(|&v| v == 0));
+            }
         }
     }
 

@@ -87,15 +87,28 @@ impl Classification {
 /// assert_eq!(c.real_type(), Some("one_conic"));
 /// ```
 pub fn classify(a: &Quadric, b: &Quadric) -> Classification {
-    classify_fast(a, b).unwrap_or_else(|| classify_exact(a, b))
+    classify_keeping_sums(a, b).0
 }
 
-/// The fast path's classification (module `fast`: four simple roots, small entries), or
-/// `None` when it does not decide.
-fn classify_fast(a: &Quadric, b: &Quadric) -> Option<Classification> {
+/// [`classify()`] with `E₁…E₄` of `λA − B` when the fast path decided (module `fast`), for
+/// the curve's surface choice, which reads them too.
+pub(crate) fn classify_keeping_sums(
+    a: &Quadric,
+    b: &Quadric,
+) -> (Classification, Option<[[i128; 5]; 4]>) {
+    match classify_fast(a, b) {
+        Some(fast::SimpleRoots { case, sums }) => {
+            (from_row(&CASES[usize::from(case) - 1], 0), Some(sums))
+        }
+        None => (classify_exact(a, b), None),
+    }
+}
+
+/// The fast path's answer (module `fast`: four simple roots, small entries), or `None` when
+/// it does not decide.
+fn classify_fast(a: &Quadric, b: &Quadric) -> Option<fast::SimpleRoots> {
     let (sa, sb) = (a.small_integer_matrix()?, b.small_integer_matrix()?);
-    let case = fast::classify_simple_roots(sa, sb)?;
-    Some(from_row(&CASES[usize::from(case) - 1], 0))
+    fast::simple_roots(sa, sb)
 }
 
 /// The classification of a singular pencil from its type (`None`: undetermined, never guessed).
@@ -249,6 +262,7 @@ fn from_row(row: &CaseRow, i: usize) -> Classification {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use qsic_algebra::{IBig, Poly};
 
     /// `classify` takes the fast path for almost every random pair, and its answer is the
     /// exact path's in full.
@@ -278,9 +292,15 @@ mod tests {
         let (total, mut decided) = (300, 0);
         for _ in 0..total {
             let (a, b) = (random_quadric(), random_quadric());
-            if let Some(c) = classify_fast(&a, &b) {
+            if let (c, Some(sums)) = classify_keeping_sums(&a, &b) {
                 decided += 1;
                 assert_eq!(c, classify_exact(&a, &b), "{a:?}, {b:?}");
+                // the sums kept for the curve are the pencil's (from all its minors)
+                let e = PencilData::new(&a, &b).pencil().principal_minor_sums();
+                for (k, ek) in e.iter().enumerate() {
+                    let kept: Vec<IBig> = sums[k][..k + 2].iter().map(|&v| IBig::from(v)).collect();
+                    assert_eq!(*ek, Poly::new(kept), "E{}", k + 1);
+                }
             }
         }
         assert!(decided * 100 >= total * 95, "{decided} of {total} decided");

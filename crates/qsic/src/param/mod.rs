@@ -33,7 +33,9 @@ pub use line_cubic::{parameterize_line_and_cubic, LineAndCubic, Meeting};
 pub use nodal::{parameterize_singular_quartic, SingularQuartic};
 pub use surface::{PolyVector, RuledParameterization};
 
-use crate::classify::{analyze_pencil, classify, Classification, ComponentKind, PencilKind};
+use crate::classify::{
+    analyze_pencil, classify, classify_keeping_sums, Classification, ComponentKind, PencilKind,
+};
 use crate::error::Error;
 use crate::pencil::{dyadic_between_isolated, PencilAnalysis, PencilPoint};
 use crate::quadric::Quadric;
@@ -191,8 +193,9 @@ pub fn parameterize_smooth_quartic(
     a: &Quadric,
     b: &Quadric,
 ) -> Result<LevinParameterization, Error> {
-    let simple = matches!(classify(a, b).case, Some(1..=4));
-    smooth_quartic(a, b, true, simple).map(SmoothQuartic::into_levin)
+    let (classification, sums) = classify_keeping_sums(a, b);
+    let simple = matches!(classification.case, Some(1..=4));
+    smooth_quartic(a, b, true, simple, sums.as_ref()).map(SmoothQuartic::into_levin)
 }
 
 /// What [`smooth_quartic`] finds before any conversion to the output types: the surface,
@@ -319,16 +322,18 @@ impl IntegralLevin {
 /// [`parameterize_smooth_quartic`] before the conversions, with the integral forms when the
 /// ruling is integral (the common case); `fast = false` takes the rational route (the tests
 /// compare the two). `simple`: the class says four simple roots of `det(λA − B)`, so the
-/// surface may come from [`choose_surface_quick`].
+/// surface may come from [`choose_surface_quick`]; `sums`: `E₁…E₄` of the pencil if the
+/// classification computed them.
 fn smooth_quartic(
     a: &Quadric,
     b: &Quadric,
     fast: bool,
     simple: bool,
+    sums: Option<&[[i128; 5]; 4]>,
 ) -> Result<SmoothQuartic, Error> {
     // the pencil analysis works on the primitive integer matrices: so does λ
     let quick = if simple {
-        choose_surface_quick(a, b)?
+        choose_surface_quick(a, b, sums)?
     } else {
         None
     };
@@ -735,9 +740,10 @@ fn balancing_exponent_of(log2_sizes: &[f64]) -> i64 {
 /// assert_eq!((c.components.len(), c.pieces.len(), c.connected.len()), (1, 2, 2));
 /// ```
 pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
-    let classification = classify(a, b);
+    let (classification, sums) = classify_keeping_sums(a, b);
     match (classification.pencil, classification.case) {
-        (PencilKind::Regular, Some(1..=4)) => match smooth_quartic(a, b, true, true) {
+        (PencilKind::Regular, Some(1..=4)) => match smooth_quartic(a, b, true, true, sums.as_ref())
+        {
             Ok(quartic) => levin_curve(classification, quartic, a, b),
             // no ruling over one square root at the tried members: a biquadratic one
             Err(Error::Unsupported(why)) => {
@@ -1190,10 +1196,19 @@ fn surface_among(
 }
 
 /// The parameterization surface of a pencil known to have four simple roots, from the (2, 2)
-/// samples of [`pencil::quick_arc_samples`] (no pencil analysis) by [`surface_among`]; `None`
-/// when that gives none (then [`choose_surface`] decides from the analysis).
-fn choose_surface_quick(a: &Quadric, b: &Quadric) -> Result<Option<Chosen>, Error> {
-    let Some(arcs) = crate::pencil::quick_arc_samples(a, b) else {
+/// samples of [`pencil::quick_arc_samples`] (no pencil analysis; from `sums`, `E₁…E₄` of the
+/// pencil, when given) by [`surface_among`]; `None` when that gives none (then
+/// [`choose_surface`] decides from the analysis).
+fn choose_surface_quick(
+    a: &Quadric,
+    b: &Quadric,
+    sums: Option<&[[i128; 5]; 4]>,
+) -> Result<Option<Chosen>, Error> {
+    let arcs = match sums {
+        Some(e) => crate::pencil::quick_arc_samples_of(e),
+        None => crate::pencil::quick_arc_samples(a, b),
+    };
+    let Some(arcs) = arcs else {
         return Ok(None);
     };
     let lambdas: Vec<RBig> = arcs
@@ -2104,10 +2119,13 @@ mod tests {
         let mut total = 0;
         for (seed, bound) in [(1u64, 10i64), (2, 1000), (3, 3)] {
             for (a, b) in smooth_pairs(seed, 40, bound) {
-                let simple = matches!(classify(&a, &b).case, Some(1..=4));
+                // the classification's minor sums on one route, the quick samples' own on
+                // the other
+                let (classification, sums) = classify_keeping_sums(&a, &b);
+                let simple = matches!(classification.case, Some(1..=4));
                 let (Ok(q1), Ok(q2)) = (
-                    smooth_quartic(&a, &b, true, simple),
-                    smooth_quartic(&a, &b, false, simple),
+                    smooth_quartic(&a, &b, true, simple, sums.as_ref()),
+                    smooth_quartic(&a, &b, false, simple, None),
                 ) else {
                     continue;
                 };
