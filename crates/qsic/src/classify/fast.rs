@@ -92,14 +92,15 @@ fn sign_of_sum(terms: &[f64], factors: usize) -> Option<Sign> {
     certified_sign(value, sum_of_products_bound(factors, terms.len(), mag))
 }
 
-/// The case (1–4) of a pencil with four simple roots, or `None` when the fast path does
-/// not apply (an entry not below [`ENTRY_LIMIT`], `det A = 0`, a multiple root) or cannot
-/// certify a sign.
-pub(crate) fn classify_simple_roots(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> Option<u8> {
+/// The case of [`simple_roots`] (the tests' shorthand).
+#[cfg(test)]
+fn classify_simple_roots(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> Option<u8> {
     simple_roots(a, b).map(|r| r.case)
 }
 
-/// [`classify_simple_roots`] with the minor sums it computed.
+/// The case (1–4) of a pencil with four simple roots with the minor sums it was read from, or
+/// `None` when the fast path does not apply (an entry not below [`ENTRY_LIMIT`], `det A = 0`,
+/// a multiple root) or cannot certify a sign.
 pub(crate) fn simple_roots(a: &[[i64; 4]; 4], b: &[[i64; 4]; 4]) -> Option<SimpleRoots> {
     if !within_entry_limit(a) || !within_entry_limit(b) {
         return None;

@@ -34,7 +34,7 @@ pub use nodal::{parameterize_singular_quartic, SingularQuartic};
 pub use surface::{PolyVector, RuledParameterization};
 
 use crate::classify::{
-    analyze_pencil, classify, classify_keeping_sums, Classification, ComponentKind, PencilKind,
+    analyze_pencil, classify_keeping_sums, Classification, ComponentKind, PencilKind,
 };
 use crate::error::Error;
 use crate::pencil::{dyadic_between_isolated, PencilAnalysis, PencilPoint};
@@ -1772,6 +1772,7 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::classify::classify;
     use qsic_algebra::Ring;
 
     /// Half the bits of `δ` plus the largest numerator or denominator of a coefficient's
