@@ -425,6 +425,48 @@ impl AlgebraicReal {
     /// assert_eq!(sqrt2.sign_of(&Poly::from_rational_roots(&[(1415, 1000)])), Sign::Negative);
     /// ```
     pub fn sign_of(&self, q: &Poly) -> Sign {
+        self.sign_with_gcd(q, |p| p.gcd(q))
+    }
+
+    /// The sign of `q` at each of `roots`: [`Self::sign_of`] at each, with the gcd of `q` and
+    /// a defining polynomial computed once for all the roots that share it (the real roots of
+    /// one polynomial, from [`Self::real_roots_of`]): where the gcd is constant, no root of that
+    /// polynomial is a root of `q`, and refinement alone decides.
+    ///
+    /// ```
+    /// # use qsic_algebra::{AlgebraicReal, Poly, Sign};
+    /// // the roots ±√2, ±√3 of (x² − 2)(x² − 3), and q = x² − 2
+    /// let p = &Poly::from_i64s(&[-2, 0, 1]) * &Poly::from_i64s(&[-3, 0, 1]);
+    /// let roots = AlgebraicReal::real_roots_of(&p);
+    /// let signs = AlgebraicReal::signs_at(&roots, &Poly::from_i64s(&[-2, 0, 1]));
+    /// assert_eq!(signs, [Sign::Positive, Sign::Zero, Sign::Zero, Sign::Positive]);
+    /// ```
+    pub fn signs_at(roots: &[AlgebraicReal], q: &Poly) -> Vec<Sign> {
+        // (defining polynomial, its gcd with q) of the roots seen
+        let mut gcds: Vec<(Arc<Defining>, Poly)> = Vec::new();
+        roots
+            .iter()
+            .map(|r| {
+                r.sign_with_gcd(q, |p| {
+                    let known = gcds
+                        .iter()
+                        .find(|(d, _)| Arc::ptr_eq(d, &r.poly) || d.get() == p);
+                    match known {
+                        Some((_, g)) => g.clone(),
+                        None => {
+                            let g = p.gcd(q);
+                            gcds.push((Arc::clone(&r.poly), g.clone()));
+                            g
+                        }
+                    }
+                })
+            })
+            .collect()
+    }
+
+    /// [`Self::sign_of`] with `gcd(p, q)` for the defining polynomial `p` from `gcd` (asked
+    /// only when the refined interval does not decide).
+    fn sign_with_gcd(&self, q: &Poly, gcd: impl FnOnce(&Poly) -> Poly) -> Sign {
         if q.is_constant() {
             return Sign::of(&q.leading());
         }
@@ -433,7 +475,7 @@ impl AlgebraicReal {
             return s;
         }
         if let RootInterval::Open(lo, hi) = &r.interval {
-            let g = self.poly().gcd(q);
+            let g = gcd(self.poly());
             if g.degree().unwrap_or(0) > 0 && g.sign_at(lo) * g.sign_at(hi) == Sign::Negative {
                 return Sign::Zero;
             }
@@ -1172,6 +1214,32 @@ fn gcd_u128(a: u128, b: u128) -> u128 {
 
 #[cfg(test)]
 mod tests {
+
+    /// `signs_at` is `sign_of` at each root, on the roots of random products with factors
+    /// shared with `q` (zeros at some roots, not at others), over roots of two different
+    /// polynomials, and with a rational root among them; the Sturm–Tarski route agrees.
+    #[test]
+    fn signs_at_roots_are_the_signs_one_at_a_time() {
+        let mut rng = crate::testing::SplitMix(2026);
+        let mut zeros = 0;
+        for _ in 0..30 {
+            let mut factor = || Poly::from_i64s(&[rng.int(-9, 9), rng.int(-5, 5), 1]);
+            let (f, g, h) = (factor(), factor(), factor());
+            let p = &(&f * &g) * &Poly::from_i64s(&[-1, 3]); // a rational root 1/3
+            let other = &h * &Poly::from_i64s(&[-7, 0, 1]);
+            let q = &g * &h;
+            let mut roots = AlgebraicReal::real_roots_of(&p);
+            roots.extend(AlgebraicReal::real_roots_of(&other));
+            let got = AlgebraicReal::signs_at(&roots, &q);
+            assert_eq!(got.len(), roots.len());
+            for (r, s) in roots.iter().zip(&got) {
+                assert_eq!(*s, r.sign_of(&q), "{q:?} at a root of {:?}", r.poly());
+                assert_eq!(*s, r.sign_of_sturm_tarski(&q));
+                zeros += usize::from(*s == Sign::Zero);
+            }
+        }
+        assert!(zeros >= 10, "{zeros} zeros");
+    }
 
     #[test]
     fn comparing_a_narrow_number_with_a_wide_one_refines_only_the_wide_one() {

@@ -2049,17 +2049,50 @@ fn exact_crossings_of(exact: &ExactParam, h: &[RBig; 4]) -> Option<Vec<Crossing>
                 })
             };
             let mut out: Vec<Crossing> = Vec::new();
-            for r in roots(&n) {
-                let mut sh = sheets(sign_at(&ha, &r), sign_at(&hd, &r), sign_at(s, &r));
-                let on_s = sign_at(s, &r) == Sign::Zero;
-                sh.retain(|&sheet| {
-                    !vanishes(
-                        sheet,
-                        &|i| sign_at(&a[i], &r),
-                        &|i| if on_s { Sign::Zero } else { sign_at(&d[i], &r) },
-                        &|i| sign_at(&norms[i], &r) == Sign::Zero,
-                    )
-                });
+            // the signs at every root at once (one gcd per polynomial, not per root)
+            let nz = Poly::from_rational(&n).0.squarefree_part();
+            let rs = AlgebraicReal::certified_real_roots_of(&nz)
+                .unwrap_or_else(|| AlgebraicReal::real_roots_of(&nz));
+            let signs = |p: &Poly<RBig>| -> Vec<Sign> {
+                if p.is_zero() {
+                    vec![Sign::Zero; rs.len()]
+                } else {
+                    AlgebraicReal::signs_at(&rs, &Poly::from_rational(p).0)
+                }
+            };
+            let (sa, sd, ss) = (signs(&ha), signs(&hd), signs(s));
+            // a removable zero needs every a_i² − d_i²·s to vanish there: none where the
+            // gcd of n and them is constant (the common case)
+            let common = norms.iter().try_fold(nz.clone(), |g, m| {
+                let g = if m.is_zero() {
+                    g
+                } else {
+                    g.gcd(&Poly::from_rational(m).0)
+                };
+                if g.is_constant() {
+                    None
+                } else {
+                    Some(g)
+                }
+            });
+            // the roots of n where every a_i² − d_i²·s vanishes: the roots of `common`
+            let removable = match &common {
+                Some(g) => AlgebraicReal::signs_at(&rs, g),
+                None => vec![Sign::Positive; rs.len()],
+            };
+            for (k, r) in rs.into_iter().enumerate() {
+                let mut sh = sheets(sa[k], sd[k], ss[k]);
+                if removable[k] == Sign::Zero {
+                    let on_s = ss[k] == Sign::Zero;
+                    sh.retain(|&sheet| {
+                        !vanishes(
+                            sheet,
+                            &|i| sign_at(&a[i], &r),
+                            &|i| if on_s { Sign::Zero } else { sign_at(&d[i], &r) },
+                            &|_| true,
+                        )
+                    });
+                }
                 out.push(Crossing {
                     value: ParamValue::Finite(r),
                     sheets: sh,
