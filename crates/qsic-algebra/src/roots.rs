@@ -304,6 +304,8 @@ impl<'a> PositiveIsolation<'a> {
     /// The roots found, once [`PositiveIsolation::step`] has emptied the work list.
     fn roots(self) -> Vec<RootInterval> {
         let (p0, p) = (self.p0, &self.p);
+        // decided once for all the roots, and only if one is left open
+        let mut irrational = None;
         self.found
             .into_iter()
             .map(|f| match f {
@@ -318,11 +320,45 @@ impl<'a> PositiveIsolation<'a> {
                     } else {
                         iv
                     };
-                    exact_if_rational(p, iv)
+                    if *irrational.get_or_insert_with(|| no_rational_root(p)) {
+                        iv
+                    } else {
+                        exact_if_rational(p, iv)
+                    }
                 }
             })
             .collect()
     }
+}
+
+/// The primes of [`no_rational_root`]'s sieve.
+const SIEVE_PRIMES: [u64; 12] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37];
+
+/// `true` only if the integer polynomial `p` has no rational root: some prime `ℓ` of
+/// [`SIEVE_PRIMES`] divides neither the leading coefficient nor any value `p(x)`, `x ∈ 𝔽_ℓ`
+/// (a root `a/b` in lowest terms has `b | lc(p)`, so `ℓ ∤ b` and `a·b⁻¹` would be a root
+/// modulo `ℓ`). `false` means "not known". A sieve of a few hundred word operations that
+/// spares [`exact_if_rational`]'s refinement to width `1/lc(p)` on each root.
+pub(crate) fn no_rational_root(p: &Poly) -> bool {
+    let Some(degree) = p.degree() else {
+        return false;
+    };
+    if degree == 0 {
+        return true;
+    }
+    SIEVE_PRIMES.iter().any(|&l| {
+        let residues: Vec<u64> = p
+            .coeffs()
+            .iter()
+            .map(|c| {
+                let r = c % IBig::from(l);
+                let r = i64::try_from(&r).expect("a residue below ℓ");
+                r.rem_euclid(l as i64) as u64
+            })
+            .collect();
+        residues[degree] != 0
+            && (0..l).all(|x| residues.iter().rev().fold(0, |acc, &c| (acc * x + c) % l) != 0)
+    })
 }
 
 /// The root of the primitive `p` in the open interval `iv`, exactly if it is a rational
@@ -690,6 +726,29 @@ pub fn refine(p: &Poly, root: &RootInterval, width: &RBig) -> RootInterval {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The sieve never claims "no rational root" for a polynomial with one (from random
+    /// linear factors with denominators up to 40, whose numerators the primes may divide),
+    /// and proves it for most products of random irreducible quadratics.
+    #[test]
+    fn the_rational_root_sieve_is_sound() {
+        let mut rng = crate::testing::SplitMix(1729);
+        let mut proved = 0;
+        for _ in 0..200 {
+            let quadratic = Poly::from_i64s(&[rng.int(1, 50), rng.int(-3, 3), rng.int(1, 9)]);
+            let cubic = &quadratic * &Poly::from_i64s(&[rng.int(-9, 9), 0, 0, 1]);
+            let linear = Poly::from_i64s(&[rng.int(-60, 60), rng.int(1, 40)]);
+            assert!(!no_rational_root(&(&cubic * &linear)), "{cubic} · {linear}");
+            let rational = crate::AlgebraicReal::real_roots_of(&cubic)
+                .iter()
+                .any(|r| r.as_rational().is_some());
+            if no_rational_root(&cubic) {
+                proved += 1;
+                assert!(!rational, "{cubic}");
+            }
+        }
+        assert!(proved >= 100, "{proved} of 200");
+    }
     use proptest::prelude::*;
 
     fn check_isolation(p: &Poly, expected: usize) {

@@ -48,7 +48,7 @@
 //! an integer in `aₙ·[c − r, c + r]`; none there proves `ζ` irrational, one is checked
 //! exactly, several (a wide disk) go to the exact path's refinement.
 
-use super::{exact_if_rational, RootInterval};
+use super::{exact_if_rational, no_rational_root, RootInterval};
 use crate::poly::Poly;
 use dashu_int::ops::{BitTest, UnsignedAbs};
 use dashu_int::IBig;
@@ -589,6 +589,8 @@ pub fn certified_real_roots_enclosed(p: &Poly) -> Option<Vec<CertifiedRoot>> {
     certified_disks(&s, z, r)?;
     let lc = p.leading();
     let small_lc = lc.bit_len() <= 64;
+    // whether `p` has no rational root at all: decided once, when a root is left open
+    let mut irrational = None;
     let mut out = Vec::new();
     for i in 0..n {
         if z[i].im != 0.0 {
@@ -614,7 +616,13 @@ pub fn certified_real_roots_enclosed(p: &Poly) -> Option<Vec<CertifiedRoot>> {
         let interval = match small_lc.then(|| rationality(p, &lc, c, ri, s.k)) {
             None | Some(Rationality::Irrational) => iv,
             Some(Rationality::Rational(v)) => RootInterval::Exact(v),
-            Some(Rationality::Unknown) => exact_if_rational(p, iv),
+            Some(Rationality::Unknown) => {
+                if *irrational.get_or_insert_with(|| no_rational_root(p)) {
+                    iv
+                } else {
+                    exact_if_rational(p, iv)
+                }
+            }
         };
         let narrow = match &interval {
             RootInterval::Exact(_) => interval.clone(),

@@ -1914,19 +1914,6 @@ fn chart_form(h: &[RBig; 4], v: &[Poly<RBig>; 4]) -> Poly<RBig> {
     (0..4).fold(Poly::zero(), |acc, i| &acc + &v[i].scale(&h[i]))
 }
 
-/// The sign of the rational polynomial `p` at the algebraic `r`.
-fn sign_at(p: &Poly<RBig>, r: &AlgebraicReal) -> Sign {
-    if p.is_zero() {
-        return Sign::Zero;
-    }
-    r.sign_of(&Poly::from_rational(p).0)
-}
-
-/// The coefficient of `u^k`, the value at `u = ∞` of a form of degree `k`.
-fn at_infinity(p: &Poly<RBig>, k: usize) -> Sign {
-    Sign::of(p.coeff(k).numerator())
-}
-
 /// A crossing of the plane at infinity: where on ℙ¹ and on which sheets.
 struct Crossing {
     value: ParamValue,
@@ -2014,8 +2001,22 @@ fn exact_crossings_of(exact: &ExactParam, h: &[RBig; 4]) -> Option<Vec<Crossing>
             Some(out)
         }
         ExactParam::Levin { a, d, s, degree } => {
-            let (ha, hd) = (chart_form(h, a), chart_form(h, d));
-            let n = &(&ha * &ha) - &(&(&hd * &hd) * s);
+            // over ℤ: a = A/α, d = D/β, s = S/γ, h = H/η with positive integers α, β, γ, η;
+            // h(a)² − h(d)²·s times η²α²β²γ is N = H(A)²·β²γ − H(D)²·S·α², and
+            // a_i² − d_i²·s times α²β²γ is A_i²·β²γ − D_i²·S·α² (signs and zeros kept)
+            let (av, alpha) = integer_vector(a);
+            let (dv, beta) = integer_vector(d);
+            let (sv, gamma) = integer_vector(std::slice::from_ref(s));
+            let (hv, _) = integer_row(h);
+            let sz = &sv[0];
+            let form = |v: &[Poly]| -> Poly {
+                (0..4).fold(Poly::zero(), |acc, i| &acc + &v[i].scale(&hv[i]))
+            };
+            let (ha, hd) = (form(&av), form(&dv));
+            let (k1, k2) = (&beta * &beta * &gamma, &alpha * &alpha);
+            let norm =
+                |x: &Poly, y: &Poly| -> Poly { &(x * x).scale(&k1) - &(&(y * y) * sz).scale(&k2) };
+            let n = norm(&ha, &hd);
             if n.is_zero() {
                 // a quartic is not planar: h(a) = ±h(d)√s identically cannot hold
                 return Some(Vec::new());
@@ -2032,9 +2033,7 @@ fn exact_crossings_of(exact: &ExactParam, h: &[RBig; 4]) -> Option<Vec<Crossing>
             // a_i² − d_i²·s: X_σ is the zero vector where every one vanishes and the signs
             // of a_i and d_i match σ (a removable zero of Levin's form, where c₂ = 0: not a
             // point of the plane, whatever h is)
-            let norms: Vec<Poly<RBig>> = (0..4)
-                .map(|i| &(&a[i] * &a[i]) - &(&(&d[i] * &d[i]) * s))
-                .collect();
+            let norms: Vec<Poly> = (0..4).map(|i| norm(&av[i], &dv[i])).collect();
             let vanishes = |sheet: Sheet,
                             sign_a: &dyn Fn(usize) -> Sign,
                             sign_d: &dyn Fn(usize) -> Sign,
@@ -2049,46 +2048,51 @@ fn exact_crossings_of(exact: &ExactParam, h: &[RBig; 4]) -> Option<Vec<Crossing>
                 })
             };
             let mut out: Vec<Crossing> = Vec::new();
-            // the signs at every root at once (one gcd per polynomial, not per root)
-            let nz = Poly::from_rational(&n).0.squarefree_part();
-            let rs = AlgebraicReal::certified_real_roots_of(&nz)
-                .unwrap_or_else(|| AlgebraicReal::real_roots_of(&nz));
-            let signs = |p: &Poly<RBig>| -> Vec<Sign> {
-                if p.is_zero() {
-                    vec![Sign::Zero; rs.len()]
-                } else {
-                    AlgebraicReal::signs_at(&rs, &Poly::from_rational(p).0)
-                }
-            };
-            let (sa, sd, ss) = (signs(&ha), signs(&hd), signs(s));
-            // a removable zero needs every a_i² − d_i²·s to vanish there: none where the
-            // gcd of n and them is constant (the common case)
+            // a removable zero needs every norm to vanish: the roots of their gcd with n (none,
+            // the common case), isolated apart from the rest of n (whose rational roots are
+            // then rare: the removable zeros are the usual ones)
+            let nz = n.squarefree_part();
             let common = norms.iter().try_fold(nz.clone(), |g, m| {
-                let g = if m.is_zero() {
-                    g
-                } else {
-                    g.gcd(&Poly::from_rational(m).0)
-                };
+                let g = if m.is_zero() { g } else { g.gcd(m) };
                 if g.is_constant() {
                     None
                 } else {
                     Some(g)
                 }
             });
-            // the roots of n where every a_i² − d_i²·s vanishes: the roots of `common`
-            let removable = match &common {
-                Some(g) => AlgebraicReal::signs_at(&rs, g),
-                None => vec![Sign::Positive; rs.len()],
+            let isolate = |p: &Poly| {
+                AlgebraicReal::certified_real_roots_of(p)
+                    .unwrap_or_else(|| AlgebraicReal::real_roots_of(p))
             };
+            let mut rs: Vec<(AlgebraicReal, bool)> = Vec::new();
+            match &common {
+                Some(g) => {
+                    let rest = nz.div_exact(g).expect("a divisor of n");
+                    rs.extend(isolate(&rest).into_iter().map(|r| (r, false)));
+                    rs.extend(isolate(g).into_iter().map(|r| (r, true)));
+                    rs.sort_by(|x, y| x.0.cmp(&y.0));
+                }
+                None => rs.extend(isolate(&nz).into_iter().map(|r| (r, false))),
+            }
+            let (rs, removable): (Vec<AlgebraicReal>, Vec<bool>) = rs.into_iter().unzip();
+            // the signs at every root at once (one gcd per polynomial, not per root)
+            let signs = |p: &Poly| -> Vec<Sign> {
+                if p.is_zero() {
+                    vec![Sign::Zero; rs.len()]
+                } else {
+                    AlgebraicReal::signs_at(&rs, p)
+                }
+            };
+            let (sa, sd, ss) = (signs(&ha), signs(&hd), signs(sz));
             for (k, r) in rs.into_iter().enumerate() {
                 let mut sh = sheets(sa[k], sd[k], ss[k]);
-                if removable[k] == Sign::Zero {
+                if removable[k] {
                     let on_s = ss[k] == Sign::Zero;
                     sh.retain(|&sheet| {
                         !vanishes(
                             sheet,
-                            &|i| sign_at(&a[i], &r),
-                            &|i| if on_s { Sign::Zero } else { sign_at(&d[i], &r) },
+                            &|i| r.sign_of(&av[i]),
+                            &|i| if on_s { Sign::Zero } else { r.sign_of(&dv[i]) },
                             &|_| true,
                         )
                     });
@@ -2099,23 +2103,20 @@ fn exact_crossings_of(exact: &ExactParam, h: &[RBig; 4]) -> Option<Vec<Crossing>
                 });
             }
             if n.degree().unwrap_or(0) < 2 * degree {
-                let mut sh = sheets(
-                    at_infinity(&ha, *degree),
-                    at_infinity(&hd, degree - 2),
-                    at_infinity(s, 4),
-                );
+                let top = |p: &Poly, k: usize| Sign::of(&p.coeff(k));
+                let mut sh = sheets(top(&ha, *degree), top(&hd, degree - 2), top(sz, 4));
                 sh.retain(|&sheet| {
                     !vanishes(
                         sheet,
-                        &|i| at_infinity(&a[i], *degree),
+                        &|i| top(&av[i], *degree),
                         &|i| {
-                            if at_infinity(s, 4) == Sign::Zero {
+                            if top(sz, 4) == Sign::Zero {
                                 Sign::Zero
                             } else {
-                                at_infinity(&d[i], degree - 2)
+                                top(&dv[i], degree - 2)
                             }
                         },
-                        &|i| at_infinity(&norms[i], 2 * degree) == Sign::Zero,
+                        &|i| top(&norms[i], 2 * degree) == Sign::Zero,
                     )
                 });
                 out.push(Crossing {
@@ -2126,6 +2127,29 @@ fn exact_crossings_of(exact: &ExactParam, h: &[RBig; 4]) -> Option<Vec<Crossing>
             Some(out)
         }
     }
+}
+
+/// The integer polynomials `L·vᵢ` for the least common denominator `L > 0` of every
+/// coefficient, with `L`.
+fn integer_vector(v: &[Poly<RBig>]) -> (Vec<Poly>, IBig) {
+    let mut l = IBig::ONE;
+    for c in v.iter().flat_map(|p| p.coeffs()) {
+        let d = IBig::from(c.denominator().clone());
+        if !d.is_one() {
+            l = &l / qsic_algebra::int_gcd(&l, &d) * d;
+        }
+    }
+    let ints = v
+        .iter()
+        .map(|p| p.map(|c| c.numerator() * &(&l / IBig::from(c.denominator().clone()))))
+        .collect();
+    (ints, l)
+}
+
+/// [`integer_vector`] of the row `h`.
+fn integer_row(h: &[RBig; 4]) -> ([IBig; 4], IBig) {
+    let (v, l) = integer_vector(&h.clone().map(|c| Poly::new(vec![c])));
+    (std::array::from_fn(|i| v[i].coeff(0)), l)
 }
 
 /// The state of the walk along one arc: the last point and the segments still to check.
@@ -3400,6 +3424,126 @@ mod tests {
             Quadric::from_integers(m[1]).ok()?,
         );
         crate::param::parameterize(&a, &b).ok()
+    }
+
+    /// The crossings of Levin's form over ℚ as the per-root route over the rationals found
+    /// them (each sign by `sign_of`, the removable-zero test at every root): the same
+    /// parameters and sheets, on the rational Levin parameterizations of random pairs
+    /// (those with removable zeros among them) and four charts.
+    #[test]
+    fn exact_crossings_equal_the_per_root_route() {
+        /// The crossings, and how many roots of `n` are removable zeros (every norm zero).
+        fn reference(exact: &ExactParam, h: &[RBig; 4]) -> (Vec<(ParamValue, Vec<Sheet>)>, usize) {
+            let ExactParam::Levin { a, d, s, degree } = exact else {
+                unreachable!("a Levin form")
+            };
+            let sign_at = |p: &Poly<RBig>, r: &AlgebraicReal| {
+                if p.is_zero() {
+                    Sign::Zero
+                } else {
+                    r.sign_of(&Poly::from_rational(p).0)
+                }
+            };
+            let top = |p: &Poly<RBig>, k: usize| Sign::of(p.coeff(k).numerator());
+            let (ha, hd) = (chart_form(h, a), chart_form(h, d));
+            let n = &(&ha * &ha) - &(&(&hd * &hd) * s);
+            let norms: Vec<Poly<RBig>> = (0..4)
+                .map(|i| &(&a[i] * &a[i]) - &(&(&d[i] * &d[i]) * s))
+                .collect();
+            let sheets = |sa: Sign, sd: Sign, ss: Sign| -> Vec<Sheet> {
+                match (ss, sd) {
+                    (Sign::Negative, _) => Vec::new(),
+                    (Sign::Zero, _) | (_, Sign::Zero) => vec![Sheet::Plus, Sheet::Minus],
+                    _ if sa == sd => vec![Sheet::Minus],
+                    _ => vec![Sheet::Plus],
+                }
+            };
+            let keep = |sheet: Sheet,
+                        sa: &dyn Fn(usize) -> Sign,
+                        sd: &dyn Fn(usize) -> Sign,
+                        z: &dyn Fn(usize) -> bool| {
+                !(0..4).all(|i| {
+                    z(i) && match sheet {
+                        Sheet::Plus => sa(i) == -sd(i),
+                        _ => sa(i) == sd(i),
+                    }
+                })
+            };
+            let roots = AlgebraicReal::real_roots_of(&Poly::from_rational(&n).0.squarefree_part());
+            let (mut out, mut removable) = (Vec::new(), 0);
+            for r in roots {
+                removable += usize::from(norms.iter().all(|m| sign_at(m, &r) == Sign::Zero));
+                let on_s = sign_at(s, &r) == Sign::Zero;
+                let mut sh = sheets(sign_at(&ha, &r), sign_at(&hd, &r), sign_at(s, &r));
+                sh.retain(|&sheet| {
+                    keep(
+                        sheet,
+                        &|i| sign_at(&a[i], &r),
+                        &|i| if on_s { Sign::Zero } else { sign_at(&d[i], &r) },
+                        &|i| sign_at(&norms[i], &r) == Sign::Zero,
+                    )
+                });
+                out.push((ParamValue::Finite(r), sh));
+            }
+            if n.degree().unwrap_or(0) < 2 * degree {
+                let on_s = top(s, 4) == Sign::Zero;
+                let mut sh = sheets(top(&ha, *degree), top(&hd, degree - 2), top(s, 4));
+                sh.retain(|&sheet| {
+                    keep(
+                        sheet,
+                        &|i| top(&a[i], *degree),
+                        &|i| {
+                            if on_s {
+                                Sign::Zero
+                            } else {
+                                top(&d[i], degree - 2)
+                            }
+                        },
+                        &|i| top(&norms[i], 2 * degree) == Sign::Zero,
+                    )
+                });
+                out.push((ParamValue::Infinity, sh));
+            }
+            (out, removable)
+        }
+        let charts: [[i64; 4]; 4] = [[0, 0, 0, 1], [1, 0, 0, 0], [1, -2, 3, 1], [0, 1, 1, -5]];
+        let mut rng = SplitMix(5);
+        let (mut params, mut tried, mut removable) = (0, 0, 0);
+        while params < 12 && tried < 6000 {
+            tried += 1;
+            let Some(curve) = random_curve(&mut rng) else {
+                continue;
+            };
+            for c in &curve.components {
+                let Some(param) = &c.param else { continue };
+                let exact = ExactParam::new(param);
+                if !matches!(exact, ExactParam::Levin { .. }) {
+                    continue;
+                }
+                params += 1;
+                for chart in &charts {
+                    let h = chart.map(RBig::from);
+                    let got = exact_crossings_of(&exact, &h).expect("a Levin form over ℚ");
+                    let (want, r) = reference(&exact, &h);
+                    removable += r;
+                    assert_eq!(got.len(), want.len(), "{chart:?}");
+                    for (g, (value, sheets)) in got.iter().zip(&want) {
+                        let same = match (&g.value, value) {
+                            (ParamValue::Finite(x), ParamValue::Finite(y)) => x == y,
+                            (ParamValue::Infinity, ParamValue::Infinity) => true,
+                            _ => false,
+                        };
+                        assert!(same, "{chart:?}");
+                        assert_eq!(g.sheets, *sheets, "{chart:?}");
+                    }
+                }
+            }
+        }
+        assert!(
+            params >= 12,
+            "{params} rational Levin forms in {tried} pairs"
+        );
+        assert!(removable >= 4, "{removable} removable zeros");
     }
 
     /// Levin parameterizations of random generic pairs (coefficients in ℚ(√δ)).
