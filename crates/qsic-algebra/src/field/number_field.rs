@@ -72,9 +72,176 @@ impl State {
 /// field.
 #[derive(Clone)]
 pub struct NumberFieldElement {
-    num: Poly,
+    num: Numerator,
     den: IBig,
     field: Option<NumberField>,
+}
+
+/// The integer numerator `C` of an element, without trailing zeros: up to two coefficients
+/// inline (the rationals and the elements of ℚ(√δ) — building, cloning and dropping them
+/// allocates nothing while the integers are small), longer ones in a [`Poly`].
+#[derive(Clone)]
+enum Numerator {
+    /// The coefficients `c[..len]` (`len ≤ 2`, the last one nonzero); the other slot is zero.
+    Short([IBig; 2], u8),
+    /// At least three coefficients.
+    Long(Poly),
+}
+
+impl Numerator {
+    /// The zero numerator.
+    const ZERO: Numerator = Numerator::Short([IBig::ZERO, IBig::ZERO], 0);
+
+    /// The constant `v`.
+    fn constant(v: IBig) -> Numerator {
+        let len = u8::from(!v.is_zero());
+        Numerator::Short([v, IBig::ZERO], len)
+    }
+
+    /// `a + b·x`.
+    fn linear(a: IBig, b: IBig) -> Numerator {
+        if b.is_zero() {
+            Numerator::constant(a)
+        } else {
+            Numerator::Short([a, b], 2)
+        }
+    }
+
+    /// The numerator of a polynomial (inline when it has at most two coefficients).
+    fn from_poly(p: Poly) -> Numerator {
+        if p.coeffs().len() > 2 {
+            return Numerator::Long(p);
+        }
+        let mut c = p.into_coeffs().into_iter();
+        match (c.next(), c.next()) {
+            (None, _) => Numerator::ZERO,
+            (Some(a), None) => Numerator::Short([a, IBig::ZERO], 1),
+            (Some(a), Some(b)) => Numerator::Short([a, b], 2),
+        }
+    }
+
+    /// The numerator with trimmed coefficients `c`.
+    fn from_coeffs(c: &[IBig]) -> Numerator {
+        match c {
+            [] => Numerator::ZERO,
+            [a] => Numerator::Short([a.clone(), IBig::ZERO], 1),
+            [a, b] => Numerator::Short([a.clone(), b.clone()], 2),
+            _ => Numerator::Long(Poly::from_trimmed(c.to_vec())),
+        }
+    }
+
+    /// The coefficients, constant first.
+    #[inline]
+    fn coeffs(&self) -> &[IBig] {
+        match self {
+            Numerator::Short(c, len) => &c[..usize::from(*len)],
+            Numerator::Long(p) => p.coeffs(),
+        }
+    }
+
+    /// As a [`Poly`] (allocates for a short numerator).
+    fn to_poly(&self) -> Poly {
+        match self {
+            Numerator::Short(..) => Poly::from_trimmed(self.coeffs().to_vec()),
+            Numerator::Long(p) => p.clone(),
+        }
+    }
+
+    /// `f` of the numerator as a [`Poly`] (built only for a short one).
+    fn with_poly<R>(&self, f: impl FnOnce(&Poly) -> R) -> R {
+        match self {
+            Numerator::Short(..) => f(&self.to_poly()),
+            Numerator::Long(p) => f(p),
+        }
+    }
+
+    fn is_zero(&self) -> bool {
+        self.coeffs().is_empty()
+    }
+
+    /// Degree ≤ 0.
+    fn is_constant(&self) -> bool {
+        self.coeffs().len() <= 1
+    }
+
+    fn degree(&self) -> Option<usize> {
+        self.coeffs().len().checked_sub(1)
+    }
+
+    /// The leading coefficient (zero for zero).
+    fn leading(&self) -> IBig {
+        self.coeffs().last().cloned().unwrap_or(IBig::ZERO)
+    }
+
+    /// The coefficient of `xʲ`.
+    fn coeff(&self, j: usize) -> IBig {
+        self.coeffs().get(j).cloned().unwrap_or(IBig::ZERO)
+    }
+
+    /// The gcd of the coefficients (`≥ 0`).
+    fn content(&self) -> IBig {
+        match self.coeffs() {
+            [] => IBig::ZERO,
+            [a] => crate::int_gcd(a, &IBig::ZERO),
+            [a, b] => crate::int_gcd(a, b),
+            _ => self.with_poly(Poly::content),
+        }
+    }
+
+    /// `f` applied to every coefficient, trimmed.
+    fn map(&self, mut f: impl FnMut(&IBig) -> IBig) -> Numerator {
+        match self {
+            Numerator::Short([a, b], len) => match len {
+                0 => Numerator::ZERO,
+                1 => Numerator::constant(f(a)),
+                _ => {
+                    let a = f(a);
+                    Numerator::linear(a, f(b))
+                }
+            },
+            Numerator::Long(p) => Numerator::from_poly(p.map(f)),
+        }
+    }
+
+    /// Every coefficient times `k`.
+    fn scale(&self, k: &IBig) -> Numerator {
+        self.map(|v| v * k)
+    }
+
+    fn neg(&self) -> Numerator {
+        self.map(|v| -v)
+    }
+
+    /// The sum.
+    fn add(&self, o: &Numerator) -> Numerator {
+        match (self, o) {
+            (Numerator::Short([a, b], _), Numerator::Short([c, d], _)) => {
+                Numerator::linear(a + c, b + d)
+            }
+            _ => Numerator::from_poly(&self.to_poly() + &o.to_poly()),
+        }
+    }
+
+    /// The product, of degree `deg self + deg o` (not reduced).
+    fn mul(&self, o: &Numerator) -> Numerator {
+        match (self.coeffs(), o.coeffs()) {
+            ([], _) | (_, []) => Numerator::ZERO,
+            ([a], _) => o.scale(a),
+            (_, [b]) => self.scale(b),
+            ([a0, a1], [b0, b1]) => Numerator::Long(Poly::from_trimmed(vec![
+                a0 * b0,
+                a0 * b1 + a1 * b0,
+                a1 * b1,
+            ])),
+            _ => Numerator::from_poly(&self.to_poly() * &o.to_poly()),
+        }
+    }
+}
+
+impl PartialEq for Numerator {
+    fn eq(&self, other: &Numerator) -> bool {
+        self.coeffs() == other.coeffs()
+    }
 }
 
 impl NumberField {
@@ -148,12 +315,12 @@ impl NumberField {
         let (num, scale) = Poly::from_rational(c);
         // c = num / scale
         let num = num.scale(&IBig::from(scale.denominator().clone()));
-        self.reduced(num, scale.numerator().clone())
+        self.reduced(Numerator::from_poly(num), scale.numerator().clone())
     }
 
     /// The element `c(α)` of an integer polynomial.
     pub fn integer_element(&self, c: &Poly) -> NumberFieldElement {
-        self.reduced(c.clone(), IBig::ONE)
+        self.reduced(Numerator::from_coeffs(c.coeffs()), IBig::ONE)
     }
 
     /// The element `a + b·α` of integers `a`, `b`: [`Self::integer_element`] of `a + b·x`
@@ -165,14 +332,10 @@ impl NumberField {
     /// let k = NumberField::new(&AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 1]))[1]);
     /// let x = k.linear_element(IBig::from(3), IBig::from(-2)); // 3 − 2√2
     /// assert_eq!(x, k.integer_element(&Poly::from_i64s(&[3, -2])));
-    /// assert_eq!(x.numerator(), &Poly::from_i64s(&[3, -2]));
+    /// assert_eq!(x.numerator(), Poly::from_i64s(&[3, -2]).coeffs());
     /// ```
     pub fn linear_element(&self, a: IBig, b: IBig) -> NumberFieldElement {
-        let num = if b.is_zero() {
-            Poly::new(vec![a])
-        } else {
-            Poly::from_trimmed(vec![a, b])
-        };
+        let num = Numerator::linear(a, b);
         if num.degree().unwrap_or(0) >= self.shared.degree.load(Ordering::Acquire) {
             return self.reduced(num, IBig::ONE);
         }
@@ -195,7 +358,7 @@ impl NumberField {
     }
 
     /// `num/den` reduced modulo the current defining polynomial, normalised.
-    fn reduced(&self, num: Poly, den: IBig) -> NumberFieldElement {
+    fn reduced(&self, num: Numerator, den: IBig) -> NumberFieldElement {
         let (num, den) = reduce(num, den, self.snapshot().modulus());
         NumberFieldElement::normalized(num, den, Some(self))
     }
@@ -294,7 +457,7 @@ fn working_width() -> RBig {
 
 /// `num/den` as `num′/den′` with `deg num′ < deg m` (pseudo-remainder: `den` takes the
 /// power of `lc(m)`).
-fn reduce(num: Poly, den: IBig, m: &Poly) -> (Poly, IBig) {
+fn reduce(num: Numerator, den: IBig, m: &Poly) -> (Numerator, IBig) {
     let (Some(n), Some(dm)) = (num.degree(), m.degree()) else {
         return (num, den);
     };
@@ -302,8 +465,13 @@ fn reduce(num: Poly, den: IBig, m: &Poly) -> (Poly, IBig) {
         return (num, den);
     }
     let l = m.leading();
+    let rem = match (num.coeffs(), m.coeffs()) {
+        // a product of two elements of ℚ(√δ): l·c − c₂·m, inline
+        ([c0, c1, c2], [m0, m1, _]) => Numerator::linear(&l * c0 - c2 * m0, &l * c1 - c2 * m1),
+        _ => Numerator::from_poly(num.with_poly(|p| p.pseudo_rem(m))),
+    };
     let scale = if l.is_one() { l } else { l.pow(n - dm + 1) };
-    (num.pseudo_rem(m), den * scale)
+    (rem, den * scale)
 }
 
 /// `lc(b)^(δ+1)·a = q·b + r` with `deg r < deg b`, `δ = deg a − deg b ≥ 0`:
@@ -374,7 +542,7 @@ impl NumberFieldElement {
     /// The rational `v` (in every field).
     pub fn rational(v: RBig) -> NumberFieldElement {
         NumberFieldElement {
-            num: Poly::constant(v.numerator().clone()),
+            num: Numerator::constant(v.numerator().clone()),
             den: IBig::from(v.denominator().clone()),
             field: None,
         }
@@ -390,18 +558,14 @@ impl NumberFieldElement {
     /// ```
     pub fn integer(v: IBig) -> NumberFieldElement {
         NumberFieldElement {
-            num: if v.is_zero() {
-                Poly::zero()
-            } else {
-                Poly::from_trimmed(vec![v])
-            },
+            num: Numerator::constant(v),
             den: IBig::ONE,
             field: None,
         }
     }
 
     /// `num/den` with the invariants restored (`den ≠ 0`).
-    fn normalized(num: Poly, den: IBig, field: Option<&NumberField>) -> NumberFieldElement {
+    fn normalized(num: Numerator, den: IBig, field: Option<&NumberField>) -> NumberFieldElement {
         let field = field.cloned();
         if num.is_zero() {
             return NumberFieldElement {
@@ -426,13 +590,28 @@ impl NumberFieldElement {
         NumberFieldElement { num, den, field }
     }
 
-    /// The integer numerator `C` of `self = C(α)/d` (reduced modulo the defining polynomial
-    /// at the time it was computed).
-    pub fn numerator(&self) -> &Poly {
-        &self.num
+    /// The coefficients (constant first, no trailing zero) of the integer numerator `C` of
+    /// `self = C(α)/d` (reduced modulo the defining polynomial at the time it was computed).
+    ///
+    /// ```
+    /// # use qsic_algebra::{field::NumberField, IBig, Poly, Ring};
+    /// let k = NumberField::sqrt(&IBig::from(2)).unwrap();
+    /// let x = k.generator().add(&Ring::from_int(&IBig::from(3))); // 3 + √2
+    /// assert_eq!(x.numerator(), [IBig::from(3), IBig::from(1)]);
+    /// assert!(x.sub(&x).numerator().is_empty());
+    /// ```
+    #[inline]
+    pub fn numerator(&self) -> &[IBig] {
+        self.num.coeffs()
+    }
+
+    /// The integer numerator `C` of `self = C(α)/d` as a polynomial ([`Self::numerator`]).
+    pub fn numerator_poly(&self) -> Poly {
+        self.num.to_poly()
     }
 
     /// The positive denominator `d` of `self = C(α)/d`.
+    #[inline]
     pub fn denominator(&self) -> &IBig {
         &self.den
     }
@@ -440,10 +619,17 @@ impl NumberFieldElement {
     /// The representative `C/d ∈ ℚ[x]`.
     pub fn representative(&self) -> Poly<RBig> {
         let d = RBig::from(self.den.clone());
-        self.num.map(|v| RBig::from(v.clone()) / &d)
+        Poly::new(
+            self.num
+                .coeffs()
+                .iter()
+                .map(|v| RBig::from(v.clone()) / &d)
+                .collect(),
+        )
     }
 
     /// The field, `None` for a rational made without one.
+    #[inline]
     pub fn field(&self) -> Option<&NumberField> {
         self.field.as_ref()
     }
@@ -472,14 +658,16 @@ impl NumberFieldElement {
         let Some(field) = self.field_if_irrational() else {
             return Sign::of(&self.num.leading());
         };
-        let seen = field.snapshot();
-        if let Some(s) = seen.alpha.sign_on_refined(&self.num) {
-            return s;
-        }
-        if field.decide_zero(&seen, &self.num) {
-            return Sign::Zero;
-        }
-        field.snapshot().alpha.sign_of_nonzero(&self.num)
+        self.num.with_poly(|num| {
+            let seen = field.snapshot();
+            if let Some(s) = seen.alpha.sign_on_refined(num) {
+                return s;
+            }
+            if field.decide_zero(&seen, num) {
+                return Sign::Zero;
+            }
+            field.snapshot().alpha.sign_of_nonzero(num)
+        })
     }
 
     /// A float approximation (display only): the representative at a rational within
@@ -492,7 +680,7 @@ impl NumberFieldElement {
                 (iv.lo() + iv.hi()) / RBig::from(2)
             }
         };
-        (self.num.eval_rational(&x) / RBig::from(self.den.clone()))
+        (self.num.with_poly(|p| p.eval_rational(&x)) / RBig::from(self.den.clone()))
             .to_f64()
             .value()
     }
@@ -536,7 +724,7 @@ impl Ring for NumberFieldElement {
     fn is_zero(&self) -> bool {
         match self.field_if_irrational() {
             None => self.num.is_zero(),
-            Some(f) => f.vanishes(&self.num),
+            Some(f) => self.num.with_poly(|p| f.vanishes(p)),
         }
     }
     /// # Panics
@@ -544,9 +732,9 @@ impl Ring for NumberFieldElement {
     fn add(&self, o: &Self) -> Self {
         let field = self.common_field(o);
         if self.den == o.den {
-            return NumberFieldElement::normalized(&self.num + &o.num, self.den.clone(), field);
+            return NumberFieldElement::normalized(self.num.add(&o.num), self.den.clone(), field);
         }
-        let num = &self.num.scale(&o.den) + &o.num.scale(&self.den);
+        let num = self.num.scale(&o.den).add(&o.num.scale(&self.den));
         NumberFieldElement::normalized(num, &self.den * &o.den, field)
     }
     fn sub(&self, o: &Self) -> Self {
@@ -558,14 +746,14 @@ impl Ring for NumberFieldElement {
         let (num, den) = match (self.num.is_constant(), o.num.is_constant(), field) {
             (true, _, _) => (o.num.scale(&self.num.leading()), den),
             (_, true, _) => (self.num.scale(&o.num.leading()), den),
-            (_, _, Some(f)) => reduce(&self.num * &o.num, den, f.snapshot().modulus()),
-            (_, _, None) => (&self.num * &o.num, den),
+            (_, _, Some(f)) => reduce(self.num.mul(&o.num), den, f.snapshot().modulus()),
+            (_, _, None) => (self.num.mul(&o.num), den),
         };
         NumberFieldElement::normalized(num, den, field)
     }
     fn neg(&self) -> Self {
         NumberFieldElement {
-            num: -&self.num,
+            num: self.num.neg(),
             den: self.den.clone(),
             field: self.field.clone(),
         }
@@ -589,16 +777,16 @@ impl Field for NumberFieldElement {
             let v = self.num.leading();
             return (!v.is_zero()).then(|| {
                 NumberFieldElement::normalized(
-                    Poly::constant(self.den.clone()),
+                    Numerator::constant(self.den.clone()),
                     v,
                     self.field.as_ref(),
                 )
             });
         };
         // 1/(C/d) = d·S/r
-        let (s, r) = field.invert(&self.num)?;
+        let (s, r) = self.num.with_poly(|p| field.invert(p))?;
         Some(NumberFieldElement::normalized(
-            s.scale(&self.den),
+            Numerator::from_poly(s.scale(&self.den)),
             r,
             Some(field),
         ))
@@ -1577,7 +1765,7 @@ mod tests {
         assert_eq!(shrinking.modulus(), Poly::from_i64s(&[-2, 1]));
         // reduced modulo x − 2 now: 3 + 5α = 13
         let x = shrinking.linear_element(IBig::from(3), IBig::from(5));
-        assert!(x.numerator().is_constant() && x == Nfe::integer(IBig::from(13)));
+        assert!(x.numerator().len() == 1 && x == Nfe::integer(IBig::from(13)));
         assert!(same(
             &x,
             &shrinking.integer_element(&Poly::from_i64s(&[3, 5]))
