@@ -1863,6 +1863,96 @@ mod tests {
         assert!(format!("{k:?}").contains("x^3 - 2"));
     }
 
+    /// `x` with its numerator on the heap whatever its length: the representation every
+    /// numerator had before the inline form, which the arithmetic must still read right.
+    fn heap_form(x: &Nfe) -> Nfe {
+        Nfe {
+            num: Numerator::Long(x.num.to_poly()),
+            den: x.den.clone(),
+            field: x.field.clone(),
+        }
+    }
+
+    /// The inline numerators (rationals, ℚ(√δ), the reduction of a product of two linear
+    /// numerators modulo a quadratic) give the representations and values of the heap form
+    /// and of `ℚ[x]` arithmetic modulo the defining polynomial, under every operation, on
+    /// random elements of quadratic (monic or not), cubic and shrinking fields.
+    #[test]
+    fn inline_numerators_agree_with_the_heap_form() {
+        let mut rng = Rng(0x1e_f0);
+        let root =
+            |c: &[i64], i: usize| AlgebraicReal::real_roots_of(&Poly::from_i64s(c))[i].clone();
+        // √2; −√(5/3); 1 as a root of 5x² + 2x − 7 and √2 as one of (x² − 2)(x² − 3) (both
+        // shrink on a zero divisor); ∛2
+        let ks = [
+            NumberField::sqrt(&IBig::from(2)).unwrap(),
+            NumberField::new(&root(&[-5, 0, 3], 0)),
+            NumberField::new(&root(&[-7, 2, 5], 1)),
+            NumberField::new(&root(&[6, 0, -5, 0, 1], 2)),
+            NumberField::new(&root(&[-2, 0, 0, 1], 0)),
+        ];
+        let same = |x: &Nfe, y: &Nfe| {
+            x.numerator() == y.numerator()
+                && x.denominator() == y.denominator()
+                && x.to_string() == y.to_string()
+                && x == y
+        };
+        for k in &ks {
+            let degree = k.modulus().degree().unwrap();
+            let element = |rng: &mut Rng| {
+                let big = |rng: &mut Rng| IBig::from(rng.int(-9, 9)) << rng.int(0, 90) as usize;
+                let len = rng.int(0, degree as i64) as usize;
+                let c: Vec<RBig> = (0..len)
+                    .map(|_| RBig::from_parts_signed(big(rng), IBig::from(rng.int(1, 4))))
+                    .collect();
+                match rng.int(0, 3) {
+                    0 => Nfe::rational(c.first().cloned().unwrap_or(RBig::ZERO)),
+                    1 => k.linear_element(big(rng), big(rng)),
+                    _ => k.element(&Poly::new(c)),
+                }
+            };
+            for _ in 0..150 {
+                let (a, b) = (element(&mut rng), element(&mut rng));
+                let (ha, hb) = (heap_form(&a), heap_form(&b));
+                // r(x) − r(y)·op mod m = 0 over ℚ (the current modulus divides the older ones)
+                let holds = |z: &Nfe, expected: &Poly<RBig>| {
+                    let m = k.modulus().to_rational();
+                    (&z.representative() - expected).rem(&m).is_zero()
+                };
+                let (ra, rb) = (a.representative(), b.representative());
+                let (sum, product, neg) = (&a + &b, &a * &b, -a.clone());
+                assert!(
+                    holds(&sum, &(&ra + &rb)) && holds(&product, &(&ra * &rb)),
+                    "{a}, {b}"
+                );
+                assert!(holds(&neg, &-&ra));
+                for (x, y) in [(&ha, &hb), (&a, &hb), (&ha, &b)] {
+                    assert!(same(&(x + y), &sum), "{x} + {y}");
+                    assert!(same(&(x - y), &(&a - &b)), "{x} − {y}");
+                    assert!(same(&(x * y), &product), "{x} · {y}");
+                    assert!(same(&-x.clone(), &neg));
+                    assert_eq!(x == y, a == b);
+                    assert_eq!(x.sign(), a.sign());
+                    assert_eq!(x.is_zero(), a.is_zero());
+                    assert!((x.to_f64() - a.to_f64()).abs() <= 1e-9 * a.to_f64().abs().max(1.0));
+                    match (x.inv(), a.inv()) {
+                        (Some(u), Some(v)) => assert!(same(&u, &v) && (&u * x).is_one()),
+                        (None, None) => assert!(a.is_zero()),
+                        _ => panic!("{x}: inverses differ"),
+                    }
+                }
+                // the values: a short form only where the numerator has at most two terms
+                assert!(same(&ha, &a) && same(&hb, &b));
+                for z in [&a, &b, &sum, &product, &neg] {
+                    assert_eq!(
+                        matches!(z.num, Numerator::Short(..)),
+                        z.numerator().len() <= 2
+                    );
+                }
+            }
+        }
+    }
+
     #[test]
     #[should_panic(expected = "different number fields")]
     fn different_fields_do_not_mix() {

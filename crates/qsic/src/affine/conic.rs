@@ -568,5 +568,8 @@ pub fn approx(v: &Number) -> f64 {
 
 /// The rational value of an element with a constant numerator.
 fn constant(c: &Number) -> RBig {
-    c.numerator().first().map_or(RBig::ZERO, |v| RBig::from(v.clone())) / RBig::from(c.denominator().clone())
+    c.numerator()
+        .first()
+        .map_or(RBig::ZERO, |v| RBig::from(v.clone()))
+        / RBig::from(c.denominator().clone())
 }

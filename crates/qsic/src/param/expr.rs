@@ -325,7 +325,10 @@ fn intervals_meet(a: &AlgebraicReal, b: &AlgebraicReal) -> bool {
 
 /// The rational value of an element with a constant numerator.
 fn constant(c: &Number) -> RBig {
-    c.numerator().first().map_or(RBig::ZERO, |v| RBig::from(v.clone())) / RBig::from(c.denominator().clone())
+    c.numerator()
+        .first()
+        .map_or(RBig::ZERO, |v| RBig::from(v.clone()))
+        / RBig::from(c.denominator().clone())
 }
 
 #[cfg(test)]

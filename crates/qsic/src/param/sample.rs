@@ -938,8 +938,12 @@ fn sqrt_generator_dd(k: &NumberField) -> Option<(Dd, IBig)> {
 /// within `2⁻¹²⁰` of `α`, split in two floats.
 fn to_dd(c: &Number) -> Dd {
     let v = match c.field().filter(|_| c.numerator().len() > 1) {
-        None => c.numerator().first().map_or(RBig::ZERO, |v| RBig::from(v.clone()))
-            / RBig::from(c.denominator().clone()),
+        None => {
+            c.numerator()
+                .first()
+                .map_or(RBig::ZERO, |v| RBig::from(v.clone()))
+                / RBig::from(c.denominator().clone())
+        }
         Some(k) => {
             let width = RBig::from_parts_signed(IBig::ONE, IBig::ONE << 120);
             let iv = k.alpha().refined_interval(&width);
@@ -1857,12 +1861,10 @@ fn rational_poly(p: &NumberPoly) -> Option<Poly<RBig>> {
     let c = p
         .coeffs()
         .iter()
-        .map(|c| {
-            match c.numerator() {
-                [] => Some(RBig::ZERO),
-                [v] => Some(RBig::from(v.clone()) / RBig::from(c.denominator().clone())),
-                _ => None,
-            }
+        .map(|c| match c.numerator() {
+            [] => Some(RBig::ZERO),
+            [v] => Some(RBig::from(v.clone()) / RBig::from(c.denominator().clone())),
+            _ => None,
         })
         .collect::<Option<Vec<_>>>()?;
     Some(Poly::new(c))
