@@ -82,29 +82,25 @@ pub struct NumberFieldElement {
 /// allocates nothing while the integers are small), longer ones in a [`Poly`].
 #[derive(Clone)]
 enum Numerator {
-    /// The coefficients `c[..len]` (`len ≤ 2`, the last one nonzero); the other slot is zero.
-    Short([IBig; 2], u8),
+    /// `c₀ + c₁x`: the coefficients are `[c₀, c₁]`, `[c₀]` if `c₁ = 0`, none if both are
+    /// zero (the length is not stored: the enum then takes a niche of `IBig`, 48 bytes).
+    Short([IBig; 2]),
     /// At least three coefficients.
     Long(Poly),
 }
 
 impl Numerator {
     /// The zero numerator.
-    const ZERO: Numerator = Numerator::Short([IBig::ZERO, IBig::ZERO], 0);
+    const ZERO: Numerator = Numerator::Short([IBig::ZERO, IBig::ZERO]);
 
     /// The constant `v`.
     fn constant(v: IBig) -> Numerator {
-        let len = u8::from(!v.is_zero());
-        Numerator::Short([v, IBig::ZERO], len)
+        Numerator::Short([v, IBig::ZERO])
     }
 
     /// `a + b·x`.
     fn linear(a: IBig, b: IBig) -> Numerator {
-        if b.is_zero() {
-            Numerator::constant(a)
-        } else {
-            Numerator::Short([a, b], 2)
-        }
+        Numerator::Short([a, b])
     }
 
     /// The numerator of a polynomial (inline when it has at most two coefficients).
@@ -115,8 +111,7 @@ impl Numerator {
         let mut c = p.into_coeffs().into_iter();
         match (c.next(), c.next()) {
             (None, _) => Numerator::ZERO,
-            (Some(a), None) => Numerator::Short([a, IBig::ZERO], 1),
-            (Some(a), Some(b)) => Numerator::Short([a, b], 2),
+            (Some(a), b) => Numerator::Short([a, b.unwrap_or(IBig::ZERO)]),
         }
     }
 
@@ -124,8 +119,8 @@ impl Numerator {
     fn from_coeffs(c: &[IBig]) -> Numerator {
         match c {
             [] => Numerator::ZERO,
-            [a] => Numerator::Short([a.clone(), IBig::ZERO], 1),
-            [a, b] => Numerator::Short([a.clone(), b.clone()], 2),
+            [a] => Numerator::constant(a.clone()),
+            [a, b] => Numerator::Short([a.clone(), b.clone()]),
             _ => Numerator::Long(Poly::from_trimmed(c.to_vec())),
         }
     }
@@ -134,7 +129,14 @@ impl Numerator {
     #[inline]
     fn coeffs(&self) -> &[IBig] {
         match self {
-            Numerator::Short(c, len) => &c[..usize::from(*len)],
+            Numerator::Short(c) => {
+                let len = if c[1].is_zero() {
+                    usize::from(!c[0].is_zero())
+                } else {
+                    2
+                };
+                &c[..len]
+            }
             Numerator::Long(p) => p.coeffs(),
         }
     }
@@ -191,7 +193,7 @@ impl Numerator {
     /// `f` applied to every coefficient, trimmed.
     fn map(&self, mut f: impl FnMut(&IBig) -> IBig) -> Numerator {
         match self {
-            Numerator::Short([a, b], len) => match len {
+            Numerator::Short([a, b]) => match self.coeffs().len() {
                 0 => Numerator::ZERO,
                 1 => Numerator::constant(f(a)),
                 _ => {
@@ -215,9 +217,7 @@ impl Numerator {
     /// The sum.
     fn add(&self, o: &Numerator) -> Numerator {
         match (self, o) {
-            (Numerator::Short([a, b], _), Numerator::Short([c, d], _)) => {
-                Numerator::linear(a + c, b + d)
-            }
+            (Numerator::Short([a, b]), Numerator::Short([c, d])) => Numerator::linear(a + c, b + d),
             _ => Numerator::from_poly(&self.to_poly() + &o.to_poly()),
         }
     }
@@ -335,8 +335,9 @@ impl NumberField {
     /// assert_eq!(x.numerator(), Poly::from_i64s(&[3, -2]).coeffs());
     /// ```
     pub fn linear_element(&self, a: IBig, b: IBig) -> NumberFieldElement {
+        let degree = usize::from(!b.is_zero());
         let num = Numerator::linear(a, b);
-        if num.degree().unwrap_or(0) >= self.shared.degree.load(Ordering::Acquire) {
+        if degree >= self.shared.degree.load(Ordering::Acquire) {
             return self.reduced(num, IBig::ONE);
         }
         NumberFieldElement {
