@@ -26,7 +26,8 @@
 //! field refine `α` once. Rational constants carry no context, so [`Ring::zero`],
 //! [`Ring::one`] and [`Ring::from_int`] work; combining elements of two contexts made
 //! separately is a caller bug and panics (like [`Quadratic`](super::Quadratic) radicands).
-//! Integer numerators keep products and signs free of rational normalisation.
+//! Integer numerators keep products and signs free of rational normalisation; those of at
+//! most two coefficients (rationals, ℚ(√δ)) are stored inline, without a heap allocation.
 
 use crate::algebraic::AlgebraicReal;
 use crate::poly::Poly;

@@ -555,7 +555,7 @@ fn float_axis(
 /// cancelling coefficients: the representative at a rational within `2⁻²⁰⁰` of `α`, exactly,
 /// then rounded (display only; [`Number::to_f64`] uses `2⁻⁶⁴`).
 pub fn approx(v: &Number) -> f64 {
-    match v.field().filter(|_| !v.numerator().len() <= 1) {
+    match v.field().filter(|_| v.numerator().len() > 1) {
         None => constant(v).to_f64().value(),
         Some(field) => {
             let width = RBig::from_parts_signed(1.into(), IBig::ONE << 200);
