@@ -26,7 +26,8 @@
 //! field refine `α` once. Rational constants carry no context, so [`Ring::zero`],
 //! [`Ring::one`] and [`Ring::from_int`] work; combining elements of two contexts made
 //! separately is a caller bug and panics (like [`Quadratic`](super::Quadratic) radicands).
-//! Integer numerators keep products and signs free of rational normalisation.
+//! Integer numerators keep products and signs free of rational normalisation; those of at
+//! most two coefficients (rationals, ℚ(√δ)) are stored inline, without a heap allocation.
 
 use crate::algebraic::AlgebraicReal;
 use crate::poly::Poly;
@@ -72,9 +73,176 @@ impl State {
 /// field.
 #[derive(Clone)]
 pub struct NumberFieldElement {
-    num: Poly,
+    num: Numerator,
     den: IBig,
     field: Option<NumberField>,
+}
+
+/// The integer numerator `C` of an element, without trailing zeros: up to two coefficients
+/// inline (the rationals and the elements of ℚ(√δ) — building, cloning and dropping them
+/// allocates nothing while the integers are small), longer ones in a [`Poly`].
+#[derive(Clone)]
+enum Numerator {
+    /// `c₀ + c₁x`: the coefficients are `[c₀, c₁]`, `[c₀]` if `c₁ = 0`, none if both are
+    /// zero (the length is not stored: the enum then takes a niche of `IBig`, 48 bytes).
+    Short([IBig; 2]),
+    /// At least three coefficients.
+    Long(Poly),
+}
+
+impl Numerator {
+    /// The zero numerator.
+    const ZERO: Numerator = Numerator::Short([IBig::ZERO, IBig::ZERO]);
+
+    /// The constant `v`.
+    fn constant(v: IBig) -> Numerator {
+        Numerator::Short([v, IBig::ZERO])
+    }
+
+    /// `a + b·x`.
+    fn linear(a: IBig, b: IBig) -> Numerator {
+        Numerator::Short([a, b])
+    }
+
+    /// The numerator of a polynomial (inline when it has at most two coefficients).
+    fn from_poly(p: Poly) -> Numerator {
+        if p.coeffs().len() > 2 {
+            return Numerator::Long(p);
+        }
+        let mut c = p.into_coeffs().into_iter();
+        match (c.next(), c.next()) {
+            (None, _) => Numerator::ZERO,
+            (Some(a), b) => Numerator::Short([a, b.unwrap_or(IBig::ZERO)]),
+        }
+    }
+
+    /// The numerator with trimmed coefficients `c`.
+    fn from_coeffs(c: &[IBig]) -> Numerator {
+        match c {
+            [] => Numerator::ZERO,
+            [a] => Numerator::constant(a.clone()),
+            [a, b] => Numerator::Short([a.clone(), b.clone()]),
+            _ => Numerator::Long(Poly::from_trimmed(c.to_vec())),
+        }
+    }
+
+    /// The coefficients, constant first.
+    #[inline]
+    fn coeffs(&self) -> &[IBig] {
+        match self {
+            Numerator::Short(c) => {
+                let len = if c[1].is_zero() {
+                    usize::from(!c[0].is_zero())
+                } else {
+                    2
+                };
+                &c[..len]
+            }
+            Numerator::Long(p) => p.coeffs(),
+        }
+    }
+
+    /// As a [`Poly`] (allocates for a short numerator).
+    fn to_poly(&self) -> Poly {
+        match self {
+            Numerator::Short(..) => Poly::from_trimmed(self.coeffs().to_vec()),
+            Numerator::Long(p) => p.clone(),
+        }
+    }
+
+    /// `f` of the numerator as a [`Poly`] (built only for a short one).
+    fn with_poly<R>(&self, f: impl FnOnce(&Poly) -> R) -> R {
+        match self {
+            Numerator::Short(..) => f(&self.to_poly()),
+            Numerator::Long(p) => f(p),
+        }
+    }
+
+    fn is_zero(&self) -> bool {
+        self.coeffs().is_empty()
+    }
+
+    /// Degree ≤ 0.
+    fn is_constant(&self) -> bool {
+        self.coeffs().len() <= 1
+    }
+
+    fn degree(&self) -> Option<usize> {
+        self.coeffs().len().checked_sub(1)
+    }
+
+    /// The leading coefficient (zero for zero).
+    fn leading(&self) -> IBig {
+        self.coeffs().last().cloned().unwrap_or(IBig::ZERO)
+    }
+
+    /// The coefficient of `xʲ`.
+    fn coeff(&self, j: usize) -> IBig {
+        self.coeffs().get(j).cloned().unwrap_or(IBig::ZERO)
+    }
+
+    /// The gcd of the coefficients (`≥ 0`).
+    fn content(&self) -> IBig {
+        match self.coeffs() {
+            [] => IBig::ZERO,
+            [a] => crate::int_gcd(a, &IBig::ZERO),
+            [a, b] => crate::int_gcd(a, b),
+            _ => self.with_poly(Poly::content),
+        }
+    }
+
+    /// `f` applied to every coefficient, trimmed.
+    fn map(&self, mut f: impl FnMut(&IBig) -> IBig) -> Numerator {
+        match self {
+            Numerator::Short([a, b]) => match self.coeffs().len() {
+                0 => Numerator::ZERO,
+                1 => Numerator::constant(f(a)),
+                _ => {
+                    let a = f(a);
+                    Numerator::linear(a, f(b))
+                }
+            },
+            Numerator::Long(p) => Numerator::from_poly(p.map(f)),
+        }
+    }
+
+    /// Every coefficient times `k`.
+    fn scale(&self, k: &IBig) -> Numerator {
+        self.map(|v| v * k)
+    }
+
+    fn neg(&self) -> Numerator {
+        self.map(|v| -v)
+    }
+
+    /// The sum.
+    fn add(&self, o: &Numerator) -> Numerator {
+        match (self, o) {
+            (Numerator::Short([a, b]), Numerator::Short([c, d])) => Numerator::linear(a + c, b + d),
+            _ => Numerator::from_poly(&self.to_poly() + &o.to_poly()),
+        }
+    }
+
+    /// The product, of degree `deg self + deg o` (not reduced).
+    fn mul(&self, o: &Numerator) -> Numerator {
+        match (self.coeffs(), o.coeffs()) {
+            ([], _) | (_, []) => Numerator::ZERO,
+            ([a], _) => o.scale(a),
+            (_, [b]) => self.scale(b),
+            ([a0, a1], [b0, b1]) => Numerator::Long(Poly::from_trimmed(vec![
+                a0 * b0,
+                a0 * b1 + a1 * b0,
+                a1 * b1,
+            ])),
+            _ => Numerator::from_poly(&self.to_poly() * &o.to_poly()),
+        }
+    }
+}
+
+impl PartialEq for Numerator {
+    fn eq(&self, other: &Numerator) -> bool {
+        self.coeffs() == other.coeffs()
+    }
 }
 
 impl NumberField {
@@ -148,12 +316,12 @@ impl NumberField {
         let (num, scale) = Poly::from_rational(c);
         // c = num / scale
         let num = num.scale(&IBig::from(scale.denominator().clone()));
-        self.reduced(num, scale.numerator().clone())
+        self.reduced(Numerator::from_poly(num), scale.numerator().clone())
     }
 
     /// The element `c(α)` of an integer polynomial.
     pub fn integer_element(&self, c: &Poly) -> NumberFieldElement {
-        self.reduced(c.clone(), IBig::ONE)
+        self.reduced(Numerator::from_coeffs(c.coeffs()), IBig::ONE)
     }
 
     /// The element `a + b·α` of integers `a`, `b`: [`Self::integer_element`] of `a + b·x`
@@ -165,15 +333,12 @@ impl NumberField {
     /// let k = NumberField::new(&AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-2, 0, 1]))[1]);
     /// let x = k.linear_element(IBig::from(3), IBig::from(-2)); // 3 − 2√2
     /// assert_eq!(x, k.integer_element(&Poly::from_i64s(&[3, -2])));
-    /// assert_eq!(x.numerator(), &Poly::from_i64s(&[3, -2]));
+    /// assert_eq!(x.numerator(), Poly::from_i64s(&[3, -2]).coeffs());
     /// ```
     pub fn linear_element(&self, a: IBig, b: IBig) -> NumberFieldElement {
-        let num = if b.is_zero() {
-            Poly::new(vec![a])
-        } else {
-            Poly::from_trimmed(vec![a, b])
-        };
-        if num.degree().unwrap_or(0) >= self.shared.degree.load(Ordering::Acquire) {
+        let degree = usize::from(!b.is_zero());
+        let num = Numerator::linear(a, b);
+        if degree >= self.shared.degree.load(Ordering::Acquire) {
             return self.reduced(num, IBig::ONE);
         }
         NumberFieldElement {
@@ -195,7 +360,7 @@ impl NumberField {
     }
 
     /// `num/den` reduced modulo the current defining polynomial, normalised.
-    fn reduced(&self, num: Poly, den: IBig) -> NumberFieldElement {
+    fn reduced(&self, num: Numerator, den: IBig) -> NumberFieldElement {
         let (num, den) = reduce(num, den, self.snapshot().modulus());
         NumberFieldElement::normalized(num, den, Some(self))
     }
@@ -294,7 +459,7 @@ fn working_width() -> RBig {
 
 /// `num/den` as `num′/den′` with `deg num′ < deg m` (pseudo-remainder: `den` takes the
 /// power of `lc(m)`).
-fn reduce(num: Poly, den: IBig, m: &Poly) -> (Poly, IBig) {
+fn reduce(num: Numerator, den: IBig, m: &Poly) -> (Numerator, IBig) {
     let (Some(n), Some(dm)) = (num.degree(), m.degree()) else {
         return (num, den);
     };
@@ -302,8 +467,13 @@ fn reduce(num: Poly, den: IBig, m: &Poly) -> (Poly, IBig) {
         return (num, den);
     }
     let l = m.leading();
+    let rem = match (num.coeffs(), m.coeffs()) {
+        // a product of two elements of ℚ(√δ): l·c − c₂·m, inline
+        ([c0, c1, c2], [m0, m1, _]) => Numerator::linear(&l * c0 - c2 * m0, &l * c1 - c2 * m1),
+        _ => Numerator::from_poly(num.with_poly(|p| p.pseudo_rem(m))),
+    };
     let scale = if l.is_one() { l } else { l.pow(n - dm + 1) };
-    (num.pseudo_rem(m), den * scale)
+    (rem, den * scale)
 }
 
 /// `lc(b)^(δ+1)·a = q·b + r` with `deg r < deg b`, `δ = deg a − deg b ≥ 0`:
@@ -374,7 +544,7 @@ impl NumberFieldElement {
     /// The rational `v` (in every field).
     pub fn rational(v: RBig) -> NumberFieldElement {
         NumberFieldElement {
-            num: Poly::constant(v.numerator().clone()),
+            num: Numerator::constant(v.numerator().clone()),
             den: IBig::from(v.denominator().clone()),
             field: None,
         }
@@ -390,18 +560,14 @@ impl NumberFieldElement {
     /// ```
     pub fn integer(v: IBig) -> NumberFieldElement {
         NumberFieldElement {
-            num: if v.is_zero() {
-                Poly::zero()
-            } else {
-                Poly::from_trimmed(vec![v])
-            },
+            num: Numerator::constant(v),
             den: IBig::ONE,
             field: None,
         }
     }
 
     /// `num/den` with the invariants restored (`den ≠ 0`).
-    fn normalized(num: Poly, den: IBig, field: Option<&NumberField>) -> NumberFieldElement {
+    fn normalized(num: Numerator, den: IBig, field: Option<&NumberField>) -> NumberFieldElement {
         let field = field.cloned();
         if num.is_zero() {
             return NumberFieldElement {
@@ -426,13 +592,28 @@ impl NumberFieldElement {
         NumberFieldElement { num, den, field }
     }
 
-    /// The integer numerator `C` of `self = C(α)/d` (reduced modulo the defining polynomial
-    /// at the time it was computed).
-    pub fn numerator(&self) -> &Poly {
-        &self.num
+    /// The coefficients (constant first, no trailing zero) of the integer numerator `C` of
+    /// `self = C(α)/d` (reduced modulo the defining polynomial at the time it was computed).
+    ///
+    /// ```
+    /// # use qsic_algebra::{field::NumberField, IBig, Poly, Ring};
+    /// let k = NumberField::sqrt(&IBig::from(2)).unwrap();
+    /// let x = k.generator().add(&Ring::from_int(&IBig::from(3))); // 3 + √2
+    /// assert_eq!(x.numerator(), [IBig::from(3), IBig::from(1)]);
+    /// assert!(x.sub(&x).numerator().is_empty());
+    /// ```
+    #[inline]
+    pub fn numerator(&self) -> &[IBig] {
+        self.num.coeffs()
+    }
+
+    /// The integer numerator `C` of `self = C(α)/d` as a polynomial ([`Self::numerator`]).
+    pub fn numerator_poly(&self) -> Poly {
+        self.num.to_poly()
     }
 
     /// The positive denominator `d` of `self = C(α)/d`.
+    #[inline]
     pub fn denominator(&self) -> &IBig {
         &self.den
     }
@@ -440,10 +621,17 @@ impl NumberFieldElement {
     /// The representative `C/d ∈ ℚ[x]`.
     pub fn representative(&self) -> Poly<RBig> {
         let d = RBig::from(self.den.clone());
-        self.num.map(|v| RBig::from(v.clone()) / &d)
+        Poly::new(
+            self.num
+                .coeffs()
+                .iter()
+                .map(|v| RBig::from(v.clone()) / &d)
+                .collect(),
+        )
     }
 
     /// The field, `None` for a rational made without one.
+    #[inline]
     pub fn field(&self) -> Option<&NumberField> {
         self.field.as_ref()
     }
@@ -472,14 +660,16 @@ impl NumberFieldElement {
         let Some(field) = self.field_if_irrational() else {
             return Sign::of(&self.num.leading());
         };
-        let seen = field.snapshot();
-        if let Some(s) = seen.alpha.sign_on_refined(&self.num) {
-            return s;
-        }
-        if field.decide_zero(&seen, &self.num) {
-            return Sign::Zero;
-        }
-        field.snapshot().alpha.sign_of_nonzero(&self.num)
+        self.num.with_poly(|num| {
+            let seen = field.snapshot();
+            if let Some(s) = seen.alpha.sign_on_refined(num) {
+                return s;
+            }
+            if field.decide_zero(&seen, num) {
+                return Sign::Zero;
+            }
+            field.snapshot().alpha.sign_of_nonzero(num)
+        })
     }
 
     /// A float approximation (display only): the representative at a rational within
@@ -492,7 +682,7 @@ impl NumberFieldElement {
                 (iv.lo() + iv.hi()) / RBig::from(2)
             }
         };
-        (self.num.eval_rational(&x) / RBig::from(self.den.clone()))
+        (self.num.with_poly(|p| p.eval_rational(&x)) / RBig::from(self.den.clone()))
             .to_f64()
             .value()
     }
@@ -536,7 +726,7 @@ impl Ring for NumberFieldElement {
     fn is_zero(&self) -> bool {
         match self.field_if_irrational() {
             None => self.num.is_zero(),
-            Some(f) => f.vanishes(&self.num),
+            Some(f) => self.num.with_poly(|p| f.vanishes(p)),
         }
     }
     /// # Panics
@@ -544,9 +734,9 @@ impl Ring for NumberFieldElement {
     fn add(&self, o: &Self) -> Self {
         let field = self.common_field(o);
         if self.den == o.den {
-            return NumberFieldElement::normalized(&self.num + &o.num, self.den.clone(), field);
+            return NumberFieldElement::normalized(self.num.add(&o.num), self.den.clone(), field);
         }
-        let num = &self.num.scale(&o.den) + &o.num.scale(&self.den);
+        let num = self.num.scale(&o.den).add(&o.num.scale(&self.den));
         NumberFieldElement::normalized(num, &self.den * &o.den, field)
     }
     fn sub(&self, o: &Self) -> Self {
@@ -558,14 +748,14 @@ impl Ring for NumberFieldElement {
         let (num, den) = match (self.num.is_constant(), o.num.is_constant(), field) {
             (true, _, _) => (o.num.scale(&self.num.leading()), den),
             (_, true, _) => (self.num.scale(&o.num.leading()), den),
-            (_, _, Some(f)) => reduce(&self.num * &o.num, den, f.snapshot().modulus()),
-            (_, _, None) => (&self.num * &o.num, den),
+            (_, _, Some(f)) => reduce(self.num.mul(&o.num), den, f.snapshot().modulus()),
+            (_, _, None) => (self.num.mul(&o.num), den),
         };
         NumberFieldElement::normalized(num, den, field)
     }
     fn neg(&self) -> Self {
         NumberFieldElement {
-            num: -&self.num,
+            num: self.num.neg(),
             den: self.den.clone(),
             field: self.field.clone(),
         }
@@ -589,16 +779,16 @@ impl Field for NumberFieldElement {
             let v = self.num.leading();
             return (!v.is_zero()).then(|| {
                 NumberFieldElement::normalized(
-                    Poly::constant(self.den.clone()),
+                    Numerator::constant(self.den.clone()),
                     v,
                     self.field.as_ref(),
                 )
             });
         };
         // 1/(C/d) = d·S/r
-        let (s, r) = field.invert(&self.num)?;
+        let (s, r) = self.num.with_poly(|p| field.invert(p))?;
         Some(NumberFieldElement::normalized(
-            s.scale(&self.den),
+            Numerator::from_poly(s.scale(&self.den)),
             r,
             Some(field),
         ))
@@ -1577,7 +1767,7 @@ mod tests {
         assert_eq!(shrinking.modulus(), Poly::from_i64s(&[-2, 1]));
         // reduced modulo x − 2 now: 3 + 5α = 13
         let x = shrinking.linear_element(IBig::from(3), IBig::from(5));
-        assert!(x.numerator().is_constant() && x == Nfe::integer(IBig::from(13)));
+        assert!(x.numerator().len() == 1 && x == Nfe::integer(IBig::from(13)));
         assert!(same(
             &x,
             &shrinking.integer_element(&Poly::from_i64s(&[3, 5]))
@@ -1673,6 +1863,96 @@ mod tests {
         assert_eq!(Nfe::zero().inv(), None);
         assert_eq!(Nfe::rational(rat(-2, 3)).sign(), Sign::Negative);
         assert!(format!("{k:?}").contains("x^3 - 2"));
+    }
+
+    /// `x` with its numerator on the heap whatever its length: the representation every
+    /// numerator had before the inline form, which the arithmetic must still read right.
+    fn heap_form(x: &Nfe) -> Nfe {
+        Nfe {
+            num: Numerator::Long(x.num.to_poly()),
+            den: x.den.clone(),
+            field: x.field.clone(),
+        }
+    }
+
+    /// The inline numerators (rationals, ℚ(√δ), the reduction of a product of two linear
+    /// numerators modulo a quadratic) give the representations and values of the heap form
+    /// and of `ℚ[x]` arithmetic modulo the defining polynomial, under every operation, on
+    /// random elements of quadratic (monic or not), cubic and shrinking fields.
+    #[test]
+    fn inline_numerators_agree_with_the_heap_form() {
+        let mut rng = Rng(0x1e_f0);
+        let root =
+            |c: &[i64], i: usize| AlgebraicReal::real_roots_of(&Poly::from_i64s(c))[i].clone();
+        // √2; −√(5/3); 1 as a root of 5x² + 2x − 7 and √2 as one of (x² − 2)(x² − 3) (both
+        // shrink on a zero divisor); ∛2
+        let ks = [
+            NumberField::sqrt(&IBig::from(2)).unwrap(),
+            NumberField::new(&root(&[-5, 0, 3], 0)),
+            NumberField::new(&root(&[-7, 2, 5], 1)),
+            NumberField::new(&root(&[6, 0, -5, 0, 1], 2)),
+            NumberField::new(&root(&[-2, 0, 0, 1], 0)),
+        ];
+        let same = |x: &Nfe, y: &Nfe| {
+            x.numerator() == y.numerator()
+                && x.denominator() == y.denominator()
+                && x.to_string() == y.to_string()
+                && x == y
+        };
+        for k in &ks {
+            let degree = k.modulus().degree().unwrap();
+            let element = |rng: &mut Rng| {
+                let big = |rng: &mut Rng| IBig::from(rng.int(-9, 9)) << rng.int(0, 90) as usize;
+                let len = rng.int(0, degree as i64) as usize;
+                let c: Vec<RBig> = (0..len)
+                    .map(|_| RBig::from_parts_signed(big(rng), IBig::from(rng.int(1, 4))))
+                    .collect();
+                match rng.int(0, 3) {
+                    0 => Nfe::rational(c.first().cloned().unwrap_or(RBig::ZERO)),
+                    1 => k.linear_element(big(rng), big(rng)),
+                    _ => k.element(&Poly::new(c)),
+                }
+            };
+            for _ in 0..150 {
+                let (a, b) = (element(&mut rng), element(&mut rng));
+                let (ha, hb) = (heap_form(&a), heap_form(&b));
+                // r(x) − r(y)·op mod m = 0 over ℚ (the current modulus divides the older ones)
+                let holds = |z: &Nfe, expected: &Poly<RBig>| {
+                    let m = k.modulus().to_rational();
+                    (&z.representative() - expected).rem(&m).is_zero()
+                };
+                let (ra, rb) = (a.representative(), b.representative());
+                let (sum, product, neg) = (&a + &b, &a * &b, -a.clone());
+                assert!(
+                    holds(&sum, &(&ra + &rb)) && holds(&product, &(&ra * &rb)),
+                    "{a}, {b}"
+                );
+                assert!(holds(&neg, &-&ra));
+                for (x, y) in [(&ha, &hb), (&a, &hb), (&ha, &b)] {
+                    assert!(same(&(x + y), &sum), "{x} + {y}");
+                    assert!(same(&(x - y), &(&a - &b)), "{x} − {y}");
+                    assert!(same(&(x * y), &product), "{x} · {y}");
+                    assert!(same(&-x.clone(), &neg));
+                    assert_eq!(x == y, a == b);
+                    assert_eq!(x.sign(), a.sign());
+                    assert_eq!(x.is_zero(), a.is_zero());
+                    assert!((x.to_f64() - a.to_f64()).abs() <= 1e-9 * a.to_f64().abs().max(1.0));
+                    match (x.inv(), a.inv()) {
+                        (Some(u), Some(v)) => assert!(same(&u, &v) && (&u * x).is_one()),
+                        (None, None) => assert!(a.is_zero()),
+                        _ => panic!("{x}: inverses differ"),
+                    }
+                }
+                // the values: a short form only where the numerator has at most two terms
+                assert!(same(&ha, &a) && same(&hb, &b));
+                for z in [&a, &b, &sum, &product, &neg] {
+                    assert_eq!(
+                        matches!(z.num, Numerator::Short(..)),
+                        z.numerator().len() <= 2
+                    );
+                }
+            }
+        }
     }
 
     #[test]

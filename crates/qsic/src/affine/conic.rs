@@ -225,7 +225,7 @@ fn div(a: &Number, b: &Number) -> Result<Number, Error> {
 /// `v` without its field when it is rational (so that rational outputs of conics made in
 /// different fields combine).
 fn plain(v: &Number) -> Number {
-    if v.numerator().is_constant() {
+    if v.numerator().len() <= 1 {
         Number::rational(constant(v))
     } else {
         v.clone()
@@ -385,7 +385,7 @@ fn central(
         .into_iter()
         .flatten()
         .chain([kappa])
-        .all(|v| v.numerator().is_constant());
+        .all(|v| v.numerator().len() <= 1);
     let (centre, va, vb, f, g, kappa) = (
         plain3(&centre),
         plain3(va),
@@ -425,7 +425,7 @@ fn central(
             Some(r) => Number::rational(r.clone()),
             None => from_quadratic(&s, Some(&sqrt_field(s.radicand()))),
         })
-    } else if disc.numerator().is_constant() {
+    } else if disc.numerator().len() <= 1 {
         // a rational D that is a square keeps everything in K
         Quadratic::sqrt_rational(&constant(&disc))
             .as_rational()
@@ -555,7 +555,7 @@ fn float_axis(
 /// cancelling coefficients: the representative at a rational within `2⁻²⁰⁰` of `α`, exactly,
 /// then rounded (display only; [`Number::to_f64`] uses `2⁻⁶⁴`).
 pub fn approx(v: &Number) -> f64 {
-    match v.field().filter(|_| !v.numerator().is_constant()) {
+    match v.field().filter(|_| v.numerator().len() > 1) {
         None => constant(v).to_f64().value(),
         Some(field) => {
             let width = RBig::from_parts_signed(1.into(), IBig::ONE << 200);
@@ -568,5 +568,8 @@ pub fn approx(v: &Number) -> f64 {
 
 /// The rational value of an element with a constant numerator.
 fn constant(c: &Number) -> RBig {
-    RBig::from(c.numerator().coeff(0)) / RBig::from(c.denominator().clone())
+    c.numerator()
+        .first()
+        .map_or(RBig::ZERO, |v| RBig::from(v.clone()))
+        / RBig::from(c.denominator().clone())
 }

@@ -123,6 +123,9 @@ pub struct Arc {
 }
 
 /// A connected piece of the real locus of one component.
+// the point's four coordinates inline (a few hundred bytes): pieces are few, and a box would
+// cost an allocation a point
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug)]
 pub enum RealPiece {
     /// An isolated real point (of component `component`, a point or the real point of a

@@ -163,7 +163,7 @@ impl Names {
     /// assert_eq!(Names::new().number(&c), "1 + 1/2*sqrt(2)"); // 1 + √8/4
     /// ```
     pub fn number(&mut self, c: &Number) -> String {
-        let Some(field) = c.field().filter(|_| !c.numerator().is_constant()) else {
+        let Some(field) = c.field().filter(|_| c.numerator().len() > 1) else {
             return rational_to_string(&constant(c));
         };
         let alpha = field.alpha();
@@ -325,7 +325,10 @@ fn intervals_meet(a: &AlgebraicReal, b: &AlgebraicReal) -> bool {
 
 /// The rational value of an element with a constant numerator.
 fn constant(c: &Number) -> RBig {
-    RBig::from(c.numerator().coeff(0)) / RBig::from(c.denominator().clone())
+    c.numerator()
+        .first()
+        .map_or(RBig::ZERO, |v| RBig::from(v.clone()))
+        / RBig::from(c.denominator().clone())
 }
 
 #[cfg(test)]

@@ -2099,7 +2099,7 @@ mod tests {
                 integral += 1;
             }
             for c in &numbers {
-                for v in c.numerator().coeffs() {
+                for v in c.numerator() {
                     widest = widest.max(v.bit_len());
                 }
             }
