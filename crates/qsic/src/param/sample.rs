@@ -847,31 +847,25 @@ fn int_dd(v: &IBig) -> Dd {
     // the magnitude from its words where it fits in 127 bits (the usual case, no conversion
     // through the big-integer routines)
     let (sign, words) = v.as_sign_words();
-    // one word below 2⁵³ (the usual coefficient): exact in one float
+    let neg = sign == dashu_int::Sign::Negative;
+    // one word (the usual coefficient): below 2⁵³ exact in one float (`i64` to `f64`, one
+    // instruction), else split as `i128_dd` does
     if let [w] = words {
         if *w < 1 << 53 {
-            let x = *w as f64;
-            return Dd(
-                if sign == dashu_int::Sign::Negative {
-                    -x
-                } else {
-                    x
-                },
-                0.0,
-            );
+            let x = (*w as i64) as f64;
+            return Dd(if neg { -x } else { x }, 0.0);
         }
+        return magnitude_dd(u128::from(*w), neg);
     }
     let bits = dashu_int::Word::BITS;
     if words.len() as u32 * bits <= 128 {
         let m = (words.iter().rev()).fold(0u128, |m, w| (m << (bits % 128)) | u128::from(*w));
-        let neg = sign == dashu_int::Sign::Negative;
         if m < 1 << 53 {
-            let x = (m as u64) as f64;
+            let x = ((m as u64) as i64) as f64;
             return Dd(if neg { -x } else { x }, 0.0);
         }
         if m < 1 << 127 {
-            let m = m as i128;
-            return i128_dd(if neg { -m } else { m });
+            return magnitude_dd(m, neg);
         }
     }
     // beyond 2¹²⁷: the leading 120 bits (the rest is below the double-double's precision)
@@ -898,19 +892,31 @@ fn int_dd(v: &IBig) -> Dd {
 /// An `i128` in double-double: its leading 53 bits (exact) plus the rest rounded, in
 /// machine integers only.
 fn i128_dd(v: i128) -> Dd {
-    let m = v.unsigned_abs();
+    magnitude_dd(v.unsigned_abs(), v < 0)
+}
+
+/// `±m` in double-double for `m < 2¹²⁸` ([`i128_dd`]): the leading 53 bits `top·2ᵉ` (exact)
+/// plus the rest `r < 2ᵉ` rounded. Machine words below `2⁶³` go to floats as signed
+/// integers (one instruction each).
+#[inline(always)]
+fn magnitude_dd(m: u128, neg: bool) -> Dd {
     let bits = 128 - m.leading_zeros();
     if bits <= 53 {
-        let x = (m as u64) as f64;
-        return Dd(if v < 0 { -x } else { x }, 0.0);
+        let x = ((m as u64) as i64) as f64;
+        return Dd(if neg { -x } else { x }, 0.0);
     }
     let e = bits - 53;
-    let top = (m >> e) as u64;
+    // `top < 2⁵³`
+    let top = ((m >> e) as u64) as i64;
     let scale = f64::from_bits(((1023 + e) as u64) << 52);
     let rest = m - ((top as u128) << e);
-    let rest_f = ((rest >> 64) as u64) as f64 * 18446744073709551616.0 + (rest as u64) as f64;
+    let rest_f = if rest < 1 << 63 {
+        (rest as i64) as f64
+    } else {
+        ((rest >> 64) as u64) as f64 * 18446744073709551616.0 + (rest as u64) as f64
+    };
     let d = Dd::two_sum(top as f64 * scale, rest_f);
-    if v < 0 {
+    if neg {
         d.neg()
     } else {
         d
@@ -1006,13 +1012,14 @@ fn horner_dd(c: &[Dd], t: f64, rev: bool) -> Dd {
 }
 
 /// Newton's method on `f` (value, derivative) safeguarded by bisection in `(lo, hi)`, where
-/// `f(lo) = flo` and `f(hi)` have opposite signs: a float near the root.
-fn newton_bracketed(f: &dyn Fn(f64) -> (f64, f64), lo: f64, hi: f64, flo: f64) -> f64 {
+/// `f(lo) = flo` and `f(hi)` have opposite signs: a float near the root, returned once
+/// `|f| ≤ noise` (the rounding level of `f`, where the steps only follow the noise).
+fn newton_bracketed(f: &dyn Fn(f64) -> (f64, f64), lo: f64, hi: f64, flo: f64, noise: f64) -> f64 {
     let (mut a, mut b) = (lo, hi);
     let mut x = 0.5 * (a + b);
     for _ in 0..200 {
         let (fx, dfx) = f(x);
-        if fx == 0.0 || !fx.is_finite() {
+        if fx.abs() <= noise || !fx.is_finite() {
             return x;
         }
         if (fx < 0.0) == (flo < 0.0) {
@@ -1231,32 +1238,90 @@ impl<'a> Evaluator<'a> {
     fn eval_unit(&self, u: (f64, f64), sheet: Sheet) -> Option<[f64; 4]> {
         let (t, rev) = reduced_parameter(u);
         // the usual degrees with their sizes known at compile time (unrolled Horner)
-        let (x, root) = match (self.levin, self.big_d) {
-            (true, 2) => self.values::<3, 1>(t, rev, sheet),
-            (true, 3) => self.values::<4, 2>(t, rev, sheet),
-            (true, 4) => self.values::<5, 3>(t, rev, sheet),
-            (false, 1) => self.values::<2, 0>(t, rev, sheet),
-            (false, 2) => self.values::<3, 0>(t, rev, sheet),
-            (false, 3) => self.values::<4, 0>(t, rev, sheet),
-            (false, 4) => self.values::<5, 0>(t, rev, sheet),
-            _ => self.values_any(t, rev, sheet),
-        };
-        self.unit_of(x, root, t, rev, sheet)
+        match (self.levin, self.big_d) {
+            (true, 2) => self.eval_unit_of::<3, 1>(t, rev, sheet),
+            (true, 3) => self.eval_unit_of::<4, 2>(t, rev, sheet),
+            (true, 4) => self.eval_unit_of::<5, 3>(t, rev, sheet),
+            (false, 1) => self.eval_unit_of::<2, 0>(t, rev, sheet),
+            (false, 2) => self.eval_unit_of::<3, 0>(t, rev, sheet),
+            (false, 3) => self.eval_unit_of::<4, 0>(t, rev, sheet),
+            (false, 4) => self.eval_unit_of::<5, 0>(t, rev, sheet),
+            _ => {
+                let (x, root) = self.values_any(t, rev, sheet);
+                let norm = dot(&x, &x).sqrt();
+                if self.cheaply_certified(t, rev, root, norm) {
+                    return Some(x.map(|v| v / norm));
+                }
+                self.certify(t, rev, sheet, x, norm, root)
+            }
+        }
+    }
+
+    /// [`Evaluator::eval_unit`] for `NA` and `ND` coefficients.
+    #[inline(always)]
+    fn eval_unit_of<const NA: usize, const ND: usize>(
+        &self,
+        t: f64,
+        rev: bool,
+        sheet: Sheet,
+    ) -> Option<[f64; 4]> {
+        let (x, root) = self.values::<NA, ND>(t, rev, sheet);
+        self.unit_of::<NA, ND>(x, root, t, rev, sheet)
+    }
+
+    /// Whether the bounds made once ([`Evaluator::sure`]) or the majorant at `|t|`
+    /// ([`Evaluator::majorant`]) certify an evaluation with `√s = root` and norm `norm`.
+    #[inline(always)]
+    fn cheaply_certified(&self, t: f64, rev: bool, root: f64, norm: f64) -> bool {
+        self.sure(root, norm)
+            || norm.is_finite()
+                && norm > 0.0
+                && self.gamma * self.majorant(t, rev, root) <= 1e-10 * norm
     }
 
     /// The unit vector of the value `x` (with `√s = root`) at the reduced parameter `t`,
-    /// certified: the majorant `Σ|cₖ|` first, the bound at `|t|` where it does not certify.
+    /// certified: the majorant `Σ|cₖ|` first, the bound at `|t|` ([`Evaluator::bound_of`],
+    /// the same value as [`Evaluator::certify`]'s) where it does not certify.
     #[inline(always)]
-    fn unit_of(&self, x: Lanes, root: f64, t: f64, rev: bool, sheet: Sheet) -> Option<[f64; 4]> {
+    fn unit_of<const NA: usize, const ND: usize>(
+        &self,
+        x: Lanes,
+        root: f64,
+        t: f64,
+        rev: bool,
+        sheet: Sheet,
+    ) -> Option<[f64; 4]> {
         let norm = dot(&x, &x).sqrt();
-        if self.sure(root, norm) {
+        if self.cheaply_certified(t, rev, root, norm) {
             return Some(x.map(|v| v / norm));
         }
-        let cheap = self.majorant(t, rev, root);
-        if norm.is_finite() && norm > 0.0 && self.gamma * cheap <= 1e-10 * norm {
+        self.certify_of::<NA, ND>(t, rev, sheet, x, norm, root)
+    }
+
+    /// [`Evaluator::certify`] with the unrolled bound of `NA` and `ND` coefficients.
+    #[cold]
+    #[inline(never)]
+    fn certify_of<const NA: usize, const ND: usize>(
+        &self,
+        t: f64,
+        rev: bool,
+        sheet: Sheet,
+        x: Lanes,
+        norm: f64,
+        root: f64,
+    ) -> Option<[f64; 4]> {
+        let bound = self.bound_of::<NA, ND>(t, rev, root);
+        if self.bound_certifies(bound, norm) {
             return Some(x.map(|v| v / norm));
         }
-        self.certify(t, rev, sheet, x, norm, root)
+        self.certify_dd(bound, t, rev, sheet)
+    }
+
+    /// Whether the rounding bound `bound` at `|t|` certifies an evaluation of norm `norm`:
+    /// `γ·bound ≤ 10⁻¹⁰·‖X‖` (false for NaN).
+    #[inline(always)]
+    fn bound_certifies(&self, bound: f64, norm: f64) -> bool {
+        norm.is_finite() && norm > 0.0 && self.gamma * bound <= 1e-10 * norm
     }
 
     /// [`Evaluator::eval_unit`] on the uniform grid `θₖ = t₀ + k·step`, `k = 1, …, n − 1`,
@@ -1368,7 +1433,7 @@ impl<'a> Evaluator<'a> {
         for (t, rev) in grid_parameters(t0, step, n) {
             let (x, root) = self.values::<NA, ND>(t, rev, sheet);
             out.push(
-                self.unit_of(x, root, t, rev, sheet)
+                self.unit_of::<NA, ND>(x, root, t, rev, sheet)
                     .unwrap_or([f64::NAN; 4]),
             );
         }
@@ -1481,13 +1546,12 @@ impl<'a> Evaluator<'a> {
         (m, nm, m_ok): (Lanes, f64, bool),
     ) -> ([f64; 4], [f64; 4]) {
         let bound = self.bound_of::<NA, ND>(t, rev, root);
-        let nan = [f64::NAN; 4];
         let one = |x: Lanes, norm: f64, ok: bool, sheet: Sheet| {
-            if ok {
+            if ok || self.bound_certifies(bound, norm) {
                 x.map(|v| v / norm)
             } else {
-                self.certify_with(bound, t, rev, sheet, x, norm)
-                    .unwrap_or(nan)
+                self.certify_dd(bound, t, rev, sheet)
+                    .unwrap_or([f64::NAN; 4])
             }
         };
         (
@@ -1545,9 +1609,17 @@ impl<'a> Evaluator<'a> {
         x: Lanes,
         norm: f64,
     ) -> Option<[f64; 4]> {
-        if norm.is_finite() && norm > 0.0 && self.gamma * bound <= 1e-10 * norm {
+        if self.bound_certifies(bound, norm) {
             return Some(x.map(|v| v / norm));
         }
+        self.certify_dd(bound, t, rev, sheet)
+    }
+
+    /// The retry in double-double of an evaluation whose rounding bound at `|t|` is
+    /// `bound` (too large for the floats); `None` for an infinite bound.
+    #[cold]
+    #[inline(never)]
+    fn certify_dd(&self, bound: f64, t: f64, rev: bool, sheet: Sheet) -> Option<[f64; 4]> {
         if !bound.is_finite() {
             return None;
         }
@@ -1581,7 +1653,10 @@ impl<'a> Evaluator<'a> {
         // a float Newton start where the floats bracket the root, polished in double-double
         let (glo, ghi) = (float(lo).0, float(hi).0);
         if glo * ghi < 0.0 {
-            let start = newton_bracketed(&float, lo, hi, glo);
+            // Horner's rounding of `s` in floats on the bracket: within `16ε·Σ|sₖ||u|ᵏ`
+            let m = lo.abs().max(hi.abs());
+            let size = self.s.iter().rev().fold(0.0, |v: f64, k| v * m + k.abs());
+            let start = newton_bracketed(&float, lo, hi, glo, 16.0 * f64::EPSILON * size);
             let mut x = start;
             for _ in 0..3 {
                 let (fx, dfx) = f(x);
@@ -1688,6 +1763,52 @@ impl<'a> Evaluator<'a> {
     /// `X` in double-double arithmetic (`t` is exact), `None` where even that rounding could
     /// exceed `10⁻¹⁰·‖X‖`.
     fn eval_dd(&self, t: f64, rev: bool, sheet: Sheet, bound: f64) -> Option<[f64; 4]> {
+        let x = self.values_dd(t, rev, sheet);
+        let x = if x.iter().all(|v| v.is_finite()) {
+            x
+        } else {
+            // beyond the range of Veltkamp's split: with the fused products
+            self.values_dd_fused(t, rev, sheet)
+        };
+        let norm = x.iter().map(|v| v * v).sum::<f64>().sqrt();
+        let gamma = self.gamma * f64::EPSILON * 4.0;
+        (norm.is_finite() && norm > 0.0 && gamma * bound <= 1e-10 * norm).then_some(x)
+    }
+
+    /// `X` in double-double arithmetic, the four coordinates at once ([`Dd4`]): the values of
+    /// [`Evaluator::values_dd_fused`] (every product error is exact either way) wherever
+    /// Veltkamp's split does not overflow (else a NaN).
+    fn values_dd(&self, t: f64, rev: bool, sheet: Sheet) -> [f64; 4] {
+        let dd = self.dd();
+        let n = self.big_d + 1;
+        let ts = split(t);
+        let horner = |c: &[[Dd; 4]]| -> Dd4 {
+            let mut v = Dd4::default();
+            let mut step = |k: &[Dd; 4]| v = v.mul_f64(t, ts).add(&Dd4::of(k));
+            if rev {
+                c.iter().for_each(&mut step);
+            } else {
+                c.iter().rev().for_each(&mut step);
+            }
+            v
+        };
+        let mut v = horner(&dd.x[..n]);
+        if self.levin {
+            let r = horner_dd(&dd.s, t, rev).sqrt();
+            let mut dr = horner(&dd.d[..n - 2]).mul(r);
+            if sheet == Sheet::Minus {
+                dr = Dd4 {
+                    hi: dr.hi.map(|v| -v),
+                    lo: dr.lo.map(|v| -v),
+                };
+            }
+            v = v.add(&dr);
+        }
+        std::array::from_fn(|i| v.hi[i] + v.lo[i])
+    }
+
+    /// [`Evaluator::values_dd`] one coordinate at a time, products by `mul_add`.
+    fn values_dd_fused(&self, t: f64, rev: bool, sheet: Sheet) -> [f64; 4] {
         let dd = self.dd();
         let n = self.big_d + 1;
         let root = self.levin.then(|| horner_dd(&dd.s, t, rev).sqrt());
@@ -1713,9 +1834,82 @@ impl<'a> Evaluator<'a> {
             }
             x[i] = v.0 + v.1;
         }
-        let norm = x.iter().map(|v| v * v).sum::<f64>().sqrt();
-        let gamma = self.gamma * f64::EPSILON * 4.0;
-        (norm.is_finite() && norm > 0.0 && gamma * bound <= 1e-10 * norm).then_some(x)
+        x
+    }
+}
+
+/// Veltkamp's split of `a` into `h + l` exactly, each of at most 26 significant bits
+/// (`|a| < 2⁹⁹⁶`; beyond, NaN).
+#[inline(always)]
+fn split(a: f64) -> (f64, f64) {
+    let c = 134_217_729.0 * a;
+    let h = c - (c - a);
+    (h, a - h)
+}
+
+/// `a·b − p` for `p = fl(a·b)`, exactly, by Dekker's product (`b` given split, [`split`]):
+/// the value of `a.mul_add(b, −p)` without a fused multiply-add (away from underflow).
+#[inline(always)]
+fn product_error(a: f64, (bh, bl): (f64, f64), p: f64) -> f64 {
+    let (ah, al) = split(a);
+    al * bl - (((p - ah * bh) - al * bh) - ah * bl)
+}
+
+/// Four double-doubles ([`Dd`]) lane by lane, the operations of [`Dd`] on each (written
+/// lane-wise so that they run on vector registers).
+#[derive(Clone, Copy, Default)]
+struct Dd4 {
+    hi: Lanes,
+    lo: Lanes,
+}
+
+impl Dd4 {
+    fn of(v: &[Dd; 4]) -> Dd4 {
+        Dd4 {
+            hi: v.map(|d| d.0),
+            lo: v.map(|d| d.1),
+        }
+    }
+
+    #[inline(always)]
+    fn two_sum(a: Lanes, b: Lanes) -> Dd4 {
+        let mut out = Dd4::default();
+        for i in 0..4 {
+            let s = a[i] + b[i];
+            let bb = s - a[i];
+            out.hi[i] = s;
+            out.lo[i] = (a[i] - (s - bb)) + (b[i] - bb);
+        }
+        out
+    }
+
+    /// [`Dd::add`] on each lane.
+    #[inline(always)]
+    fn add(&self, o: &Dd4) -> Dd4 {
+        let s = Dd4::two_sum(self.hi, o.hi);
+        let t = Dd4::two_sum(self.lo, o.lo);
+        let hi = Dd4::two_sum(s.hi, std::array::from_fn(|i| s.lo[i] + t.hi[i]));
+        Dd4::two_sum(hi.hi, std::array::from_fn(|i| hi.lo[i] + t.lo[i]))
+    }
+
+    /// [`Dd::mul_f64`] on each lane, `ts` the split of `t`.
+    #[inline(always)]
+    fn mul_f64(&self, t: f64, ts: (f64, f64)) -> Dd4 {
+        let p: Lanes = std::array::from_fn(|i| self.hi[i] * t);
+        let e: Lanes =
+            std::array::from_fn(|i| product_error(self.hi[i], ts, p[i]) + self.lo[i] * t);
+        Dd4::two_sum(p, e)
+    }
+
+    /// [`Dd::mul`] by one double-double on each lane.
+    #[inline(always)]
+    fn mul(&self, o: Dd) -> Dd4 {
+        let os = split(o.0);
+        let p: Lanes = std::array::from_fn(|i| self.hi[i] * o.0);
+        let e: Lanes = std::array::from_fn(|i| {
+            product_error(self.hi[i], os, p[i]) + self.hi[i] * o.1 + self.lo[i] * o.0
+        });
+        Dd4::two_sum(p, e)
     }
 }
 
@@ -3679,6 +3873,158 @@ mod tests {
                 assert!(&err * &err <= &tolerance * &tolerance, "{v}: {d:?}");
             }
         }
+    }
+
+    /// [`magnitude_dd`] (signed conversions where a word allows) is the general split (top
+    /// 53 bits plus the rest through two unsigned words) bit for bit, at every bit length
+    /// up to 127, the rest at or beyond `2⁶³` included (the fallback branch).
+    #[test]
+    fn magnitude_split_matches_general_route() {
+        let reference = |m: u128, neg: bool| -> Dd {
+            let bits = 128 - m.leading_zeros();
+            if bits <= 53 {
+                let x = (m as u64) as f64;
+                return Dd(if neg { -x } else { x }, 0.0);
+            }
+            let e = bits - 53;
+            let top = (m >> e) as u64;
+            let scale = f64::from_bits(((1023 + e) as u64) << 52);
+            let rest = m - ((top as u128) << e);
+            let rest_f =
+                ((rest >> 64) as u64) as f64 * 18446744073709551616.0 + (rest as u64) as f64;
+            let d = Dd::two_sum(top as f64 * scale, rest_f);
+            if neg {
+                d.neg()
+            } else {
+                d
+            }
+        };
+        let mut rng = SplitMix(0xd0d0);
+        let mut wide_rest = 0;
+        for bits in 0..=127u32 {
+            for _ in 0..20 {
+                let m = ((u128::from(rng.next_u64()) << 64) | u128::from(rng.next_u64()))
+                    >> (128 - bits.max(1));
+                let m = if bits == 0 { 0 } else { m | (1 << (bits - 1)) };
+                let neg = rng.int(0, 1) == 1;
+                let (got, want) = (magnitude_dd(m, neg), reference(m, neg));
+                assert_eq!((got.0, got.1), (want.0, want.1), "{m}");
+                let v = if neg { -IBig::from(m) } else { IBig::from(m) };
+                let via = int_dd(&v);
+                assert_eq!((via.0, via.1), (want.0, want.1), "{m}");
+                wide_rest += usize::from(bits > 53 && m & ((1 << (bits - 53)) - 1) >= 1 << 63);
+            }
+        }
+        assert!(wide_rest > 100, "{wide_rest}");
+    }
+
+    /// Dekker's product ([`product_error`]) is the fused multiply-add's rounding error, and
+    /// the lane-wise double-double evaluation ([`Evaluator::values_dd`]) is the one
+    /// coordinate at a time by `mul_add` ([`Evaluator::values_dd_fused`]), value for value, on
+    /// random parameters all round ℙ¹ and both sheets; coefficients beyond Veltkamp's range
+    /// give NaN there, and [`Evaluator::eval_dd`] falls back to the fused products.
+    #[test]
+    fn double_double_lanes_match_fused_products() {
+        let mut rng = SplitMix(0xdd4);
+        for _ in 0..20_000 {
+            let e = rng.int(-900, 900) as i32;
+            let a = (rng.next_u64() as f64 / u64::MAX as f64 - 0.5) * 2f64.powi(e);
+            let b = rng.next_u64() as f64 / u64::MAX as f64 * 2.0 - 1.0;
+            let p = a * b;
+            assert_eq!(product_error(a, split(b), p), a.mul_add(b, -p), "{a} {b}");
+        }
+        let mut checked = 0;
+        for param in levin_params(0xdd5, 6) {
+            let eval = Evaluator::new(&param).unwrap();
+            for _ in 0..200 {
+                let theta = (rng.next_u64() as f64 / u64::MAX as f64 - 0.5) * PI;
+                let (t, rev) = reduced_parameter(theta.sin_cos());
+                for sheet in [Sheet::Plus, Sheet::Minus] {
+                    let (got, want) = (
+                        eval.values_dd(t, rev, sheet),
+                        eval.values_dd_fused(t, rev, sheet),
+                    );
+                    assert_eq!(got, want, "t = {t}");
+                    checked += 1;
+                }
+            }
+            // `a` beyond 2⁹⁹⁶: the split overflows, the fused products do not
+            // (the leading coefficients, at a tiny `t`: the values stay in range)
+            let mut wide = eval.dd().clone();
+            for (i, c) in wide.x[eval.big_d].iter_mut().enumerate() {
+                *c = Dd((1.0 + i as f64 / 8.0) * 2f64.powi(1000), 0.0);
+            }
+            let wide = Evaluator {
+                quick_dd: Some(Box::new(wide)),
+                ..Evaluator::new(&param).unwrap()
+            };
+            let t = 2f64.powi(-400);
+            assert!(wide
+                .values_dd(t, false, Sheet::Plus)
+                .iter()
+                .any(|v| v.is_nan()));
+            let fused = wide.values_dd_fused(t, false, Sheet::Plus);
+            assert!(fused.iter().all(|v| v.is_finite()));
+            assert_eq!(wide.eval_dd(t, false, Sheet::Plus, 0.0), Some(fused));
+        }
+        assert!(checked >= 2000, "{checked}");
+    }
+
+    /// [`Evaluator::eval_unit`] (unrolled Horner, unrolled bound where the majorant does not
+    /// certify) is the generic route (any degree: [`Evaluator::values_any`], then
+    /// [`Evaluator::certify`]) point for point, on rational and Levin parameterizations, with
+    /// points certified by the bound at `|t|` only among them.
+    #[test]
+    fn unrolled_evaluation_matches_generic_route() {
+        let mut rng = SplitMix(0xe7a1);
+        let mut params = levin_params(0xe7a2, 6);
+        let mut seed = SplitMix(0xe7a3);
+        while params.len() < 12 {
+            let Some(curve) = random_curve(&mut seed) else {
+                continue;
+            };
+            params.extend(curve.components.into_iter().filter_map(|c| match c.param {
+                Some(p @ ComponentParam::Rational { .. }) => Some(p),
+                _ => None,
+            }));
+        }
+        let (mut checked, mut by_bound, mut rational) = (0, 0, 0);
+        for param in &params {
+            let eval = Evaluator::new(param).unwrap();
+            let sheets: &[Sheet] = if eval.levin {
+                &[Sheet::Plus, Sheet::Minus]
+            } else {
+                rational += 1;
+                &[Sheet::Only]
+            };
+            for k in 0..2000 {
+                // uniform in θ, and clustered near t = 0 and t = ±1
+                let theta = match k % 3 {
+                    0 => (rng.next_u64() as f64 / u64::MAX as f64 - 0.5) * PI,
+                    1 => (rng.next_u64() as f64 / u64::MAX as f64 - 0.5) * 1e-3,
+                    _ => FRAC_PI_2 * (1.0 - 2e-3 * rng.next_u64() as f64 / u64::MAX as f64),
+                };
+                let u = theta.sin_cos();
+                let (t, rev) = reduced_parameter(u);
+                for &sheet in sheets {
+                    let (x, root) = eval.values_any(t, rev, sheet);
+                    let norm = dot(&x, &x).sqrt();
+                    let cheap = eval.cheaply_certified(t, rev, root, norm);
+                    let want = if cheap {
+                        Some(x.map(|v| v / norm))
+                    } else {
+                        by_bound += 1;
+                        eval.certify(t, rev, sheet, x, norm, root)
+                    };
+                    assert_eq!(eval.eval_unit(u, sheet), want, "θ = {theta}");
+                    checked += 1;
+                }
+            }
+        }
+        assert!(
+            rational > 0 && checked > 20_000 && by_bound > 0,
+            "{rational} {checked} {by_bound}"
+        );
     }
 
     /// The float evaluation (majorant certificate, unrolled Horner) against the double-double
