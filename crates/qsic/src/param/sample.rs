@@ -560,6 +560,7 @@ impl Converter {
 
     /// `c` as a float and in double-double (module docs); [`Number::to_f64`] where the
     /// double-double is not finite or not available.
+    #[inline]
     fn convert(&mut self, c: &Number) -> Result<Converted, Error> {
         let num = c.numerator();
         // `v/1 = v` for a normalized double-double: the division left out; by a power of two
@@ -722,23 +723,13 @@ impl Default for DdCoeffs {
 /// comparison certifies most evaluations and the exact bound is computed only where it
 /// fails.
 struct Evaluator<'a> {
-    /// `X` (rational) or `a` (Levin), `D + 1` powers used.
-    x: [Lanes; MAX_TERMS],
-    /// `d` (Levin), `D − 1` powers used.
-    d: [Lanes; MAX_TERMS],
-    /// `s` (Levin), five coefficients.
-    s: [f64; 5],
     /// `(x, d, s)` in Horner's order for `rev` (index `rev as usize`): from the highest
-    /// power down for `rev` false (`|t| ≤ 1`), as `x`, `d`, `s` for `rev` true — one
-    /// indexed load a point in [`Evaluator::parts`].
+    /// power down for `rev` false (`|t| ≤ 1`), in increasing powers for `rev` true
+    /// ([`Evaluator::x`], [`Evaluator::d`], [`Evaluator::s`]) — one indexed load a point in
+    /// [`Evaluator::parts`].
     horner: [HornerSet; 2],
     /// Levin's form (else rational).
     levin: bool,
-    /// `|x|`, `|d|` in both orders (the rounding bound's majorant at `|t|`).
-    x_abs: [Lanes; MAX_TERMS],
-    d_abs: [Lanes; MAX_TERMS],
-    x_abs_desc: [Lanes; MAX_TERMS],
-    d_abs_desc: [Lanes; MAX_TERMS],
     /// For the Horner order of `rev` (index `rev as usize`): the largest `|c₀ᵢ|` (the
     /// constant term in `t`) and `Σₖ₌₁|cₖᵢ|` over `i`, of `x` and of `d`: the majorant
     /// `|c₀| + |t|·Σₖ₌₁|cₖ|` of the bound `Σₖ|cₖ||t|ᵏ`, tighter than `Σₖ|cₖ|` near `t = 0`.
@@ -767,12 +758,15 @@ struct Evaluator<'a> {
     big_d: usize,
 }
 
-/// The coefficients of one Horner order ([`Evaluator::horner`]).
+/// The coefficients of one Horner order ([`Evaluator::horner`]), and the absolute values
+/// of `x` and `d` (for the rounding bound, [`Evaluator::bound_of`]).
 #[derive(Clone, Copy)]
 struct HornerSet {
     x: [Lanes; MAX_TERMS],
     d: [Lanes; MAX_TERMS],
     s: [f64; 5],
+    x_abs: [Lanes; MAX_TERMS],
+    d_abs: [Lanes; MAX_TERMS],
 }
 
 /// A double-double number `hi + lo`, `|lo| ≤ ulp(hi)/2`: about 106 bits.
@@ -843,6 +837,7 @@ fn integral_f64_to_ibig(x: f64) -> IBig {
 }
 
 /// An integer in double-double (exact below `2¹⁰⁶` in magnitude, rounded beyond).
+#[inline(always)]
 fn int_dd(v: &IBig) -> Dd {
     // the magnitude from its words where it fits in 127 bits (the usual case, no conversion
     // through the big-integer routines)
@@ -868,7 +863,14 @@ fn int_dd(v: &IBig) -> Dd {
             return magnitude_dd(m, neg);
         }
     }
-    // beyond 2¹²⁷: the leading 120 bits (the rest is below the double-double's precision)
+    wide_int_dd(v)
+}
+
+/// [`int_dd`] beyond `2¹²⁷`.
+#[cold]
+#[inline(never)]
+fn wide_int_dd(v: &IBig) -> Dd {
+    // the leading 120 bits (the rest is below the double-double's precision)
     let e = {
         use dashu_int::ops::BitTest;
         v.bit_len() - 120
@@ -1064,16 +1066,63 @@ fn sure_bounds(gamma: f64, x_abs_max: f64, d_abs_max: f64, s: &[f64; 5]) -> (f64
 /// `k = 1, …, n − 1`: `(sin θₖ, cos θₖ)` by rotations from `(0, 1)`, exact every
 /// [`RESYNC`] points.
 fn grid_parameters(t0: f64, step: f64, n: usize) -> impl Iterator<Item = (f64, bool)> {
-    let (sh, ch) = step.sin_cos();
+    let (sh, ch) = sin_cos(step);
     let mut u = (0.0, 1.0);
     (1..n).map(move |k| {
         u = if k % RESYNC == 1 {
-            (t0 + step * (k as f64)).sin_cos()
+            sin_cos(t0 + step * (k as f64))
         } else {
             (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh)
         };
         reduced_parameter(u)
     })
+}
+
+/// `(sin θ, cos θ)` within a few ulps, cheaper than the library's: `θ` reduced by the
+/// nearest multiple of `π/2` (in two parts: `k·P₁` exact for `|k| < 2²⁰`), then the Taylor
+/// series on `|r| ≤ π/4` to `r¹⁷` and `r¹⁸` (the first terms left out below `10⁻¹⁹`). For the
+/// parameters of single evaluations ([`Sampler::at`]): any `(U₀, U₁)` is a parameter, the
+/// accuracy only places the point at `θ`. The library's beyond `|θ| ≤ 2¹⁸` (and for NaN).
+fn sin_cos(theta: f64) -> (f64, f64) {
+    if !(theta.abs() <= 262_144.0) {
+        return theta.sin_cos();
+    }
+    // π/2 = P₁ + P₂, P₁ with 33 significant bits
+    const P1: f64 = f64::from_bits(0x3FF9_21FB_5440_0000);
+    const P2: f64 = f64::from_bits(0x3DD0_B461_1A62_6331);
+    let k = (theta * std::f64::consts::FRAC_2_PI).round();
+    let r = (theta - k * P1) - k * P2;
+    let r2 = r * r;
+    const S: [f64; 8] = [
+        -1.0 / 6.0,
+        1.0 / 120.0,
+        -1.0 / 5_040.0,
+        1.0 / 362_880.0,
+        -1.0 / 39_916_800.0,
+        1.0 / 6_227_020_800.0,
+        -1.0 / 1_307_674_368_000.0,
+        1.0 / 355_687_428_096_000.0,
+    ];
+    const C: [f64; 9] = [
+        -1.0 / 2.0,
+        1.0 / 24.0,
+        -1.0 / 720.0,
+        1.0 / 40_320.0,
+        -1.0 / 3_628_800.0,
+        1.0 / 479_001_600.0,
+        -1.0 / 87_178_291_200.0,
+        1.0 / 20_922_789_888_000.0,
+        -1.0 / 6_402_373_705_728_000.0,
+    ];
+    let ps = S.iter().rev().fold(0.0, |v, c| v * r2 + c);
+    let pc = C.iter().rev().fold(0.0, |v, c| v * r2 + c);
+    let (sin, cos) = (r + r * r2 * ps, 1.0 + r2 * pc);
+    match (k as i64) & 3 {
+        0 => (sin, cos),
+        1 => (cos, -sin),
+        2 => (-sin, -cos),
+        _ => (-cos, sin),
+    }
 }
 
 /// `X(U₀, U₁)` as `t = U₀/U₁` (`|t| ≤ 1`) or `t = U₁/U₀` with the coefficients reversed.
@@ -1171,7 +1220,6 @@ impl<'a> Evaluator<'a> {
         }
         let mut s_desc = sv;
         s_desc.reverse();
-        let abs = |c: &[Lanes; MAX_TERMS]| c.map(|k| k.map(f64::abs));
         // the constant term and the others' sums, in increasing powers of `t` (`rev` false)
         // and decreasing (`rev` true: the constant term is the last coefficient)
         let split = |c: &[Lanes], constant: usize| -> (f64, f64) {
@@ -1201,28 +1249,30 @@ impl<'a> Evaluator<'a> {
             let (d0, d1) = split(&dv[..nd], cd);
             (x0, x1, d0, d1)
         });
+        let abs = |c: &[Lanes; MAX_TERMS]| c.map(|k| k.map(f64::abs));
         let horner = [
             HornerSet {
                 x: x_desc,
                 d: d_desc,
                 s: s_desc,
+                x_abs: abs(&x_desc),
+                d_abs: abs(&d_desc),
             },
-            HornerSet { x, d: dv, s: sv },
+            HornerSet {
+                x,
+                d: dv,
+                s: sv,
+                x_abs: abs(&x),
+                d_abs: abs(&dv),
+            },
         ];
         Ok(Evaluator {
             horner,
             split_abs,
-            x_abs: abs(&x),
-            d_abs: abs(&dv),
-            x_abs_desc: abs(&x_desc),
-            d_abs_desc: abs(&d_desc),
             x_abs_max,
             d_abs_max,
             sure_root,
             sure_norm,
-            x,
-            d: dv,
-            s: sv,
             levin,
             gamma,
             narrow,
@@ -1231,6 +1281,21 @@ impl<'a> Evaluator<'a> {
             param,
             big_d,
         })
+    }
+
+    /// `X` (rational) or `a` (Levin) in increasing powers, `D + 1` used.
+    fn x(&self) -> &[Lanes; MAX_TERMS] {
+        &self.horner[1].x
+    }
+
+    /// `d` (Levin) in increasing powers, `D − 1` used.
+    fn d(&self) -> &[Lanes; MAX_TERMS] {
+        &self.horner[1].d
+    }
+
+    /// `s` (Levin) in increasing powers.
+    fn s(&self) -> &[f64; 5] {
+        &self.horner[1].s
     }
 
     /// The unit vector of `X(U₀, U₁)` on `sheet` (up to sign), `None` where rounding could
@@ -1299,8 +1364,7 @@ impl<'a> Evaluator<'a> {
     }
 
     /// [`Evaluator::certify`] with the unrolled bound of `NA` and `ND` coefficients.
-    #[cold]
-    #[inline(never)]
+    #[inline(always)]
     fn certify_of<const NA: usize, const ND: usize>(
         &self,
         t: f64,
@@ -1340,7 +1404,7 @@ impl<'a> Evaluator<'a> {
             _ => {
                 out.clear();
                 out.extend((1..n).map(|k| {
-                    let u = (t0 + step * (k as f64)).sin_cos();
+                    let u = sin_cos(t0 + step * (k as f64));
                     self.eval_unit(u, sheet).unwrap_or([f64::NAN; 4])
                 }));
             }
@@ -1383,10 +1447,10 @@ impl<'a> Evaluator<'a> {
         minus.clear();
         minus.resize(n.saturating_sub(1), [0.0; 4]);
         // the parameters of `grid_parameters`: a chunk of `RESYNC` from each exact one
-        let (sh, ch) = step.sin_cos();
+        let (sh, ch) = sin_cos(step);
         let chunks = plus.chunks_mut(RESYNC).zip(minus.chunks_mut(RESYNC));
         for (c, (pc, mc)) in chunks.enumerate() {
-            let mut u = (t0 + step * ((c * RESYNC + 1) as f64)).sin_cos();
+            let mut u = sin_cos(t0 + step * ((c * RESYNC + 1) as f64));
             for (pu, mu) in pc.iter_mut().zip(mc.iter_mut()) {
                 let (t, rev) = reduced_parameter(u);
                 u = (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh);
@@ -1508,11 +1572,8 @@ impl<'a> Evaluator<'a> {
     #[inline(always)]
     fn bound_of<const NA: usize, const ND: usize>(&self, t: f64, rev: bool, root: f64) -> f64 {
         let at = t.abs();
-        let (xc, dc) = if rev {
-            (&self.x_abs, &self.d_abs)
-        } else {
-            (&self.x_abs_desc, &self.d_abs_desc)
-        };
+        let set = &self.horner[usize::from(rev)];
+        let (xc, dc) = (&set.x_abs, &set.d_abs);
         let mut bx = xc[0];
         for c in &xc[1..NA] {
             for i in 0..4 {
@@ -1533,9 +1594,9 @@ impl<'a> Evaluator<'a> {
 
     /// The two sheets' points at a node of [`Evaluator::grid_both_of`] where the majorant
     /// `Σ|cₖ|` does not certify one of them: the bound at `|t|` (the same for both sheets)
-    /// computed once, as [`Evaluator::unit_of`] would.
-    #[cold]
-    #[inline(never)]
+    /// computed once, as [`Evaluator::unit_of`] would (inlined: the call cost more than the
+    /// bound; the double-double retry stays out of line, [`Evaluator::certify_dd`]).
+    #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn certify_both<const NA: usize, const ND: usize>(
         &self,
@@ -1563,11 +1624,11 @@ impl<'a> Evaluator<'a> {
     /// [`Evaluator::values`] for any degree.
     fn values_any(&self, t: f64, rev: bool, sheet: Sheet) -> (Lanes, f64) {
         let n = self.big_d + 1;
-        let mut x = horner_lanes(&self.x[..n], t, rev);
+        let mut x = horner_lanes(&self.x()[..n], t, rev);
         let mut root = 0.0;
         if self.levin {
-            root = horner_scalar(&self.s, t, rev).max(0.0).sqrt();
-            let dv = horner_lanes(&self.d[..n - 2], t, rev);
+            root = horner_scalar(self.s(), t, rev).max(0.0).sqrt();
+            let dv = horner_lanes(&self.d()[..n - 2], t, rev);
             let sr = if sheet == Sheet::Minus { -root } else { root };
             for i in 0..4 {
                 x[i] += sr * dv[i];
@@ -1589,9 +1650,9 @@ impl<'a> Evaluator<'a> {
         root: f64,
     ) -> Option<[f64; 4]> {
         let n = self.big_d + 1;
-        let bx = horner_lanes_abs(&self.x[..n], t, rev);
+        let bx = horner_lanes_abs(&self.x()[..n], t, rev);
         let bd = if self.levin {
-            horner_lanes_abs(&self.d[..n - 2], t, rev)
+            horner_lanes_abs(&self.d()[..n - 2], t, rev)
         } else {
             [0.0; 4]
         };
@@ -1638,7 +1699,7 @@ impl<'a> Evaluator<'a> {
         let sd = &self.dd().s;
         // s(u) and s′(u) in floats; s(u) in double-double
         let float = |u: f64| -> (f64, f64) {
-            self.s
+            self.s()
                 .iter()
                 .rev()
                 .fold((0.0, 0.0), |(v, dv), &k| (v * u + k, dv * u + v))
@@ -1655,7 +1716,7 @@ impl<'a> Evaluator<'a> {
         if glo * ghi < 0.0 {
             // Horner's rounding of `s` in floats on the bracket: within `16ε·Σ|sₖ||u|ᵏ`
             let m = lo.abs().max(hi.abs());
-            let size = self.s.iter().rev().fold(0.0, |v: f64, k| v * m + k.abs());
+            let size = self.s().iter().rev().fold(0.0, |v: f64, k| v * m + k.abs());
             let start = newton_bracketed(&float, lo, hi, glo, 16.0 * f64::EPSILON * size);
             let mut x = start;
             for _ in 0..3 {
@@ -1668,7 +1729,7 @@ impl<'a> Evaluator<'a> {
                 x = next;
                 if done {
                     let size = self
-                        .s
+                        .s()
                         .iter()
                         .rev()
                         .fold(0.0, |v: f64, k| v * x.abs() + k.abs());
@@ -1690,7 +1751,7 @@ impl<'a> Evaluator<'a> {
         // most |x|·2⁻⁴²
         let conditioned = |x: f64| -> Option<f64> {
             let size = self
-                .s
+                .s()
                 .iter()
                 .rev()
                 .fold(0.0, |v: f64, k| v * x.abs() + k.abs());
@@ -2007,14 +2068,16 @@ fn span<'r>(
 
 /// A float on the side of `q` given by `up` (`> q` for `up`, `< q` otherwise; `q` itself
 /// when it is zero), from the quotient of the floats of its numerator and denominator (each
-/// rounded to nearest, the quotient too: within `1.5` ulps) moved by `8ε·|v|` (at least four
-/// ulps); NaN where a float is not finite or below the normal range (no such float is known
-/// cheaply). Cheaper than the correctly rounded [`RBig::to_f64`].
+/// within one ulp: the leading part of [`int_dd`], a one-word denominator rounded to nearest;
+/// the quotient rounded to nearest: within `2.5` ulps) moved by `8ε·|v|` (at least four ulps); NaN where a float is not finite or
+/// below the normal range (no such float is known cheaply). Cheaper than the correctly
+/// rounded [`RBig::to_f64`].
 fn inner_f64(q: &RBig, up: bool) -> f64 {
-    let (n, d) = (
-        q.numerator().to_f64().value(),
-        q.denominator().to_f64().value(),
-    );
+    let d = match q.denominator().as_words() {
+        [w] => *w as f64,
+        _ => q.denominator().to_f64().value(),
+    };
+    let n = int_dd(q.numerator()).0;
     if n == 0.0 && q.numerator().is_zero() {
         return 0.0;
     }
@@ -2359,11 +2422,33 @@ impl Line {
         }
     }
 
-    /// Reverses the points from `start` on, with their marks.
-    fn reverse_from(&mut self, start: usize) {
+    /// Reverses the points from `start` on, with their marks; negated too (with their `h`)
+    /// for `negate`, in the same pass.
+    fn reverse_from(&mut self, start: usize, negate: bool) {
         let end = self.x.len();
-        self.x[start..].reverse();
-        self.h[start..].reverse();
+        if negate {
+            let neg = |v: [f64; 4]| v.map(|c| -c);
+            let x = &mut self.x[start..];
+            let n = x.len();
+            for i in 0..n / 2 {
+                let (a, b) = (x[i], x[n - 1 - i]);
+                (x[i], x[n - 1 - i]) = (neg(b), neg(a));
+            }
+            if n % 2 == 1 {
+                x[n / 2] = neg(x[n / 2]);
+            }
+            let h = &mut self.h[start..];
+            for i in 0..n / 2 {
+                let (a, b) = (h[i], h[n - 1 - i]);
+                (h[i], h[n - 1 - i]) = (-b, -a);
+            }
+            if n % 2 == 1 {
+                h[n / 2] = -h[n / 2];
+            }
+        } else {
+            self.x[start..].reverse();
+            self.h[start..].reverse();
+        }
         let m0 = self.marks.partition_point(|m| m.0 < start);
         for m in &mut self.marks[m0..] {
             m.0 = start + end - 1 - m.0;
@@ -2623,7 +2708,7 @@ impl<'a> Sampler<'a> {
     /// The point at `θ` on `sheet`, retried at nearby parameters inside `(lo, hi)` where
     /// rounding is too large.
     fn at(&self, theta: f64, lo: f64, hi: f64, sheet: Sheet) -> Result<Sample, Error> {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = sin_cos(theta);
         self.at_u(theta, (s, c), lo, hi, sheet)
     }
 
@@ -2645,7 +2730,7 @@ impl<'a> Sampler<'a> {
             if !(lo < t && t < hi) {
                 continue;
             }
-            if let Some(x) = self.eval.eval_unit(t.sin_cos(), sheet) {
+            if let Some(x) = self.eval.eval_unit(sin_cos(t), sheet) {
                 return Ok(Sample::new(t, x));
             }
         }
@@ -2661,7 +2746,7 @@ impl<'a> Sampler<'a> {
         }
         for f in [1e-9, 1e-6, 1e-3] {
             let t = theta + f * (other - theta);
-            if let Some(x) = self.eval.eval_unit(t.sin_cos(), sheet) {
+            if let Some(x) = self.eval.eval_unit(sin_cos(t), sheet) {
                 return Ok(Sample::new(t, x));
             }
         }
@@ -2914,17 +2999,11 @@ impl<'a> Sampler<'a> {
                 let (inf, sing) = line.pop();
                 line.mark(start - 1, inf, sing);
             }
-            line.reverse_from(start);
             // oriented within the arc; the whole arc negated where it meets the line reversed
-            let x = &mut line.x;
-            if start > 0 && x.len() > start && dot(&x[start - 1], &x[start]) < 0.0 {
-                for v in &mut x[start..] {
-                    *v = v.map(|c| -c);
-                }
-                for h in &mut line.h[start..] {
-                    *h = -*h;
-                }
-            }
+            // (its last point comes first)
+            let x = &line.x;
+            let negate = start > 0 && x.len() > start && dot(&x[start - 1], &x[x.len() - 1]) < 0.0;
+            line.reverse_from(start, negate);
         }
         Ok(())
     }
@@ -3626,8 +3705,8 @@ mod tests {
                 let t = rng.int(-1000, 1000) as f64 / 1000.0;
                 let root = rng.int(0, 1 << 20) as f64 / 1024.0;
                 for rev in [false, true] {
-                    let bx = horner_lanes_abs(&eval.x[..n], t, rev);
-                    let bd = horner_lanes_abs(&eval.d[..n - 2], t, rev);
+                    let bx = horner_lanes_abs(&eval.x()[..n], t, rev);
+                    let bd = horner_lanes_abs(&eval.d()[..n - 2], t, rev);
                     let want = (0..4).map(|i| bx[i] + bd[i] * root).fold(0.0, f64::max);
                     let got = match eval.big_d {
                         2 => eval.bound_of::<3, 1>(t, rev, root),
@@ -3806,7 +3885,28 @@ mod tests {
                 (8, false, true)
             ]
         );
-        line.reverse_from(3);
+        // reversed and negated in one pass: reversed, then negated
+        for len in [3, 4, 5, 6, 7] {
+            let mut one = Line {
+                chart: ChartForm::new([1.0, 0.0, 0.5, 1.0]),
+                ..Line::default()
+            };
+            for k in 0..len {
+                one.push(&Sample::new(k as f64, [k as f64, 1.0, -2.0, 0.5]));
+            }
+            let mut two = Line {
+                x: one.x.clone(),
+                h: one.h.clone(),
+                ..Line::default()
+            };
+            one.reverse_from(1, true);
+            two.reverse_from(1, false);
+            let neg: Vec<[f64; 4]> = two.x.iter().map(|v| v.map(|c| -c)).collect();
+            assert_eq!((&one.x[..1], &one.x[1..]), (&two.x[..1], &neg[1..]));
+            let neg_h: Vec<f64> = two.h.iter().map(|v| -v).collect();
+            assert_eq!((&one.h[..1], &one.h[1..]), (&two.h[..1], &neg_h[1..]));
+        }
+        line.reverse_from(3, false);
         // points 3..10 reversed: index i ↦ 12 − i
         assert_eq!(line.x[3][0], 9.0);
         assert_eq!(
@@ -3872,6 +3972,36 @@ mod tests {
                 let tolerance = IBig::ONE << bits.saturating_sub(100);
                 assert!(&err * &err <= &tolerance * &tolerance, "{v}: {d:?}");
             }
+        }
+    }
+
+    /// [`sin_cos`] is the library's within `2⁻⁵¹` with the same signs, on random angles of
+    /// the arcs' range, at the multiples of `π/4` and next to them, and beyond its range
+    /// (the library's itself).
+    #[test]
+    fn fast_sine_and_cosine_match_the_library() {
+        let mut rng = SplitMix(0x51c0);
+        let mut thetas: Vec<f64> = (0..20_000)
+            .map(|_| (rng.next_u64() as f64 / u64::MAX as f64 - 0.3) * 12.0)
+            .collect();
+        for k in -12..=12 {
+            let c = k as f64 * std::f64::consts::FRAC_PI_4;
+            thetas.extend([c, c + 1e-9, c - 1e-9, c + 1e-15, c - 1e-15]);
+        }
+        thetas.extend([1e-300, -1e-300, 0.0, -0.0, 1e-8]);
+        for theta in thetas {
+            let (s, c) = sin_cos(theta);
+            let (ws, wc) = theta.sin_cos();
+            assert!((s - ws).abs() <= 2f64.powi(-51), "{theta}: {s} {ws}");
+            assert!((c - wc).abs() <= 2f64.powi(-51), "{theta}: {c} {wc}");
+            for (v, w) in [(s, ws), (c, wc)] {
+                assert!(w.abs() < 1e-15 || (v > 0.0) == (w > 0.0), "{theta}");
+            }
+        }
+        for theta in [1e6, -3e7, f64::INFINITY] {
+            let (got, want) = (sin_cos(theta), theta.sin_cos());
+            assert_eq!(got.0.to_bits(), want.0.to_bits());
+            assert_eq!(got.1.to_bits(), want.1.to_bits());
         }
     }
 
