@@ -1084,7 +1084,7 @@ fn grid_parameters(t0: f64, step: f64, n: usize) -> impl Iterator<Item = (f64, b
 /// parameters of single evaluations ([`Sampler::at`]): any `(U₀, U₁)` is a parameter, the
 /// accuracy only places the point at `θ`. The library's beyond `|θ| ≤ 2¹⁸` (and for NaN).
 fn sin_cos(theta: f64) -> (f64, f64) {
-    if !(theta.abs() <= 262_144.0) {
+    if theta.is_nan() || theta.abs() > 262_144.0 {
         return theta.sin_cos();
     }
     // π/2 = P₁ + P₂, P₁ with 33 significant bits
