@@ -559,6 +559,7 @@ impl Converter {
 
     /// `c` as a float and in double-double (module docs); [`Number::to_f64`] where the
     /// double-double is not finite or not available.
+    #[inline]
     fn convert(&mut self, c: &Number) -> Result<Converted, Error> {
         let num = c.numerator();
         // `v/1 = v` for a normalized double-double: the division left out; by a power of two
@@ -723,23 +724,13 @@ impl Default for DdCoeffs {
 /// comparison certifies most evaluations and the exact bound is computed only where it
 /// fails.
 struct Evaluator<'a> {
-    /// `X` (rational) or `a` (Levin), `D + 1` powers used.
-    x: [Lanes; MAX_TERMS],
-    /// `d` (Levin), `D − 1` powers used.
-    d: [Lanes; MAX_TERMS],
-    /// `s` (Levin), five coefficients.
-    s: [f64; 5],
     /// `(x, d, s)` in Horner's order for `rev` (index `rev as usize`): from the highest
-    /// power down for `rev` false (`|t| ≤ 1`), as `x`, `d`, `s` for `rev` true — one
-    /// indexed load a point in [`Evaluator::parts`].
+    /// power down for `rev` false (`|t| ≤ 1`), in increasing powers for `rev` true
+    /// ([`Evaluator::x`], [`Evaluator::d`], [`Evaluator::s`]) — one indexed load a point in
+    /// [`Evaluator::parts`].
     horner: [HornerSet; 2],
     /// Levin's form (else rational).
     levin: bool,
-    /// `|x|`, `|d|` in both orders (the rounding bound's majorant at `|t|`).
-    x_abs: [Lanes; MAX_TERMS],
-    d_abs: [Lanes; MAX_TERMS],
-    x_abs_desc: [Lanes; MAX_TERMS],
-    d_abs_desc: [Lanes; MAX_TERMS],
     /// For the Horner order of `rev` (index `rev as usize`): the largest `|c₀ᵢ|` (the
     /// constant term in `t`) and `Σₖ₌₁|cₖᵢ|` over `i`, of `x` and of `d`: the majorant
     /// `|c₀| + |t|·Σₖ₌₁|cₖ|` of the bound `Σₖ|cₖ||t|ᵏ`, tighter than `Σₖ|cₖ|` near `t = 0`.
@@ -768,12 +759,15 @@ struct Evaluator<'a> {
     big_d: usize,
 }
 
-/// The coefficients of one Horner order ([`Evaluator::horner`]).
+/// The coefficients of one Horner order ([`Evaluator::horner`]), and the absolute values
+/// of `x` and `d` (for the rounding bound, [`Evaluator::bound_of`]).
 #[derive(Clone, Copy)]
 struct HornerSet {
     x: [Lanes; MAX_TERMS],
     d: [Lanes; MAX_TERMS],
     s: [f64; 5],
+    x_abs: [Lanes; MAX_TERMS],
+    d_abs: [Lanes; MAX_TERMS],
 }
 
 /// A double-double number `hi + lo`, `|lo| ≤ ulp(hi)/2`: about 106 bits.
@@ -844,38 +838,40 @@ fn integral_f64_to_ibig(x: f64) -> IBig {
 }
 
 /// An integer in double-double (exact below `2¹⁰⁶` in magnitude, rounded beyond).
+#[inline(always)]
 fn int_dd(v: &IBig) -> Dd {
     // the magnitude from its words where it fits in 127 bits (the usual case, no conversion
     // through the big-integer routines)
     let (sign, words) = v.as_sign_words();
-    // one word below 2⁵³ (the usual coefficient): exact in one float
+    let neg = sign == dashu_int::Sign::Negative;
+    // one word (the usual coefficient): below 2⁵³ exact in one float (`i64` to `f64`, one
+    // instruction), else split as `i128_dd` does
     if let [w] = words {
         if *w < 1 << 53 {
-            let x = *w as f64;
-            return Dd(
-                if sign == dashu_int::Sign::Negative {
-                    -x
-                } else {
-                    x
-                },
-                0.0,
-            );
+            let x = (*w as i64) as f64;
+            return Dd(if neg { -x } else { x }, 0.0);
         }
+        return magnitude_dd(u128::from(*w), neg);
     }
     let bits = dashu_int::Word::BITS;
     if words.len() as u32 * bits <= 128 {
         let m = (words.iter().rev()).fold(0u128, |m, w| (m << (bits % 128)) | u128::from(*w));
-        let neg = sign == dashu_int::Sign::Negative;
         if m < 1 << 53 {
-            let x = (m as u64) as f64;
+            let x = ((m as u64) as i64) as f64;
             return Dd(if neg { -x } else { x }, 0.0);
         }
         if m < 1 << 127 {
-            let m = m as i128;
-            return i128_dd(if neg { -m } else { m });
+            return magnitude_dd(m, neg);
         }
     }
-    // beyond 2¹²⁷: the leading 120 bits (the rest is below the double-double's precision)
+    wide_int_dd(v)
+}
+
+/// [`int_dd`] beyond `2¹²⁷`.
+#[cold]
+#[inline(never)]
+fn wide_int_dd(v: &IBig) -> Dd {
+    // the leading 120 bits (the rest is below the double-double's precision)
     let e = {
         use dashu_int::ops::BitTest;
         v.bit_len() - 120
@@ -899,19 +895,31 @@ fn int_dd(v: &IBig) -> Dd {
 /// An `i128` in double-double: its leading 53 bits (exact) plus the rest rounded, in
 /// machine integers only.
 fn i128_dd(v: i128) -> Dd {
-    let m = v.unsigned_abs();
+    magnitude_dd(v.unsigned_abs(), v < 0)
+}
+
+/// `±m` in double-double for `m < 2¹²⁸` ([`i128_dd`]): the leading 53 bits `top·2ᵉ` (exact)
+/// plus the rest `r < 2ᵉ` rounded. Machine words below `2⁶³` go to floats as signed
+/// integers (one instruction each).
+#[inline(always)]
+fn magnitude_dd(m: u128, neg: bool) -> Dd {
     let bits = 128 - m.leading_zeros();
     if bits <= 53 {
-        let x = (m as u64) as f64;
-        return Dd(if v < 0 { -x } else { x }, 0.0);
+        let x = ((m as u64) as i64) as f64;
+        return Dd(if neg { -x } else { x }, 0.0);
     }
     let e = bits - 53;
-    let top = (m >> e) as u64;
+    // `top < 2⁵³`
+    let top = ((m >> e) as u64) as i64;
     let scale = f64::from_bits(((1023 + e) as u64) << 52);
     let rest = m - ((top as u128) << e);
-    let rest_f = ((rest >> 64) as u64) as f64 * 18446744073709551616.0 + (rest as u64) as f64;
+    let rest_f = if rest < 1 << 63 {
+        (rest as i64) as f64
+    } else {
+        ((rest >> 64) as u64) as f64 * 18446744073709551616.0 + (rest as u64) as f64
+    };
     let d = Dd::two_sum(top as f64 * scale, rest_f);
-    if v < 0 {
+    if neg {
         d.neg()
     } else {
         d
@@ -1012,13 +1020,14 @@ fn horner_dd(c: &[Dd], t: f64, rev: bool) -> Dd {
 }
 
 /// Newton's method on `f` (value, derivative) safeguarded by bisection in `(lo, hi)`, where
-/// `f(lo) = flo` and `f(hi)` have opposite signs: a float near the root.
-fn newton_bracketed(f: &dyn Fn(f64) -> (f64, f64), lo: f64, hi: f64, flo: f64) -> f64 {
+/// `f(lo) = flo` and `f(hi)` have opposite signs: a float near the root, returned once
+/// `|f| ≤ noise` (the rounding level of `f`, where the steps only follow the noise).
+fn newton_bracketed(f: &dyn Fn(f64) -> (f64, f64), lo: f64, hi: f64, flo: f64, noise: f64) -> f64 {
     let (mut a, mut b) = (lo, hi);
     let mut x = 0.5 * (a + b);
     for _ in 0..200 {
         let (fx, dfx) = f(x);
-        if fx == 0.0 || !fx.is_finite() {
+        if fx.abs() <= noise || !fx.is_finite() {
             return x;
         }
         if (fx < 0.0) == (flo < 0.0) {
@@ -1063,16 +1072,63 @@ fn sure_bounds(gamma: f64, x_abs_max: f64, d_abs_max: f64, s: &[f64; 5]) -> (f64
 /// `k = 1, …, n − 1`: `(sin θₖ, cos θₖ)` by rotations from `(0, 1)`, exact every
 /// [`RESYNC`] points.
 fn grid_parameters(t0: f64, step: f64, n: usize) -> impl Iterator<Item = (f64, bool)> {
-    let (sh, ch) = step.sin_cos();
+    let (sh, ch) = sin_cos(step);
     let mut u = (0.0, 1.0);
     (1..n).map(move |k| {
         u = if k % RESYNC == 1 {
-            (t0 + step * (k as f64)).sin_cos()
+            sin_cos(t0 + step * (k as f64))
         } else {
             (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh)
         };
         reduced_parameter(u)
     })
+}
+
+/// `(sin θ, cos θ)` within a few ulps, cheaper than the library's: `θ` reduced by the
+/// nearest multiple of `π/2` (in two parts: `k·P₁` exact for `|k| < 2²⁰`), then the Taylor
+/// series on `|r| ≤ π/4` to `r¹⁷` and `r¹⁸` (the first terms left out below `10⁻¹⁹`). For the
+/// parameters of single evaluations ([`Sampler::at`]): any `(U₀, U₁)` is a parameter, the
+/// accuracy only places the point at `θ`. The library's beyond `|θ| ≤ 2¹⁸` (and for NaN).
+fn sin_cos(theta: f64) -> (f64, f64) {
+    if theta.is_nan() || theta.abs() > 262_144.0 {
+        return theta.sin_cos();
+    }
+    // π/2 = P₁ + P₂, P₁ with 33 significant bits
+    const P1: f64 = f64::from_bits(0x3FF9_21FB_5440_0000);
+    const P2: f64 = f64::from_bits(0x3DD0_B461_1A62_6331);
+    let k = (theta * std::f64::consts::FRAC_2_PI).round();
+    let r = (theta - k * P1) - k * P2;
+    let r2 = r * r;
+    const S: [f64; 8] = [
+        -1.0 / 6.0,
+        1.0 / 120.0,
+        -1.0 / 5_040.0,
+        1.0 / 362_880.0,
+        -1.0 / 39_916_800.0,
+        1.0 / 6_227_020_800.0,
+        -1.0 / 1_307_674_368_000.0,
+        1.0 / 355_687_428_096_000.0,
+    ];
+    const C: [f64; 9] = [
+        -1.0 / 2.0,
+        1.0 / 24.0,
+        -1.0 / 720.0,
+        1.0 / 40_320.0,
+        -1.0 / 3_628_800.0,
+        1.0 / 479_001_600.0,
+        -1.0 / 87_178_291_200.0,
+        1.0 / 20_922_789_888_000.0,
+        -1.0 / 6_402_373_705_728_000.0,
+    ];
+    let ps = S.iter().rev().fold(0.0, |v, c| v * r2 + c);
+    let pc = C.iter().rev().fold(0.0, |v, c| v * r2 + c);
+    let (sin, cos) = (r + r * r2 * ps, 1.0 + r2 * pc);
+    match (k as i64) & 3 {
+        0 => (sin, cos),
+        1 => (cos, -sin),
+        2 => (-sin, -cos),
+        _ => (-cos, sin),
+    }
 }
 
 /// `X(U₀, U₁)` as `t = U₀/U₁` (`|t| ≤ 1`) or `t = U₁/U₀` with the coefficients reversed.
@@ -1170,7 +1226,6 @@ impl<'a> Evaluator<'a> {
         }
         let mut s_desc = sv;
         s_desc.reverse();
-        let abs = |c: &[Lanes; MAX_TERMS]| c.map(|k| k.map(f64::abs));
         // the constant term and the others' sums, in increasing powers of `t` (`rev` false)
         // and decreasing (`rev` true: the constant term is the last coefficient)
         let split = |c: &[Lanes], constant: usize| -> (f64, f64) {
@@ -1200,28 +1255,30 @@ impl<'a> Evaluator<'a> {
             let (d0, d1) = split(&dv[..nd], cd);
             (x0, x1, d0, d1)
         });
+        let abs = |c: &[Lanes; MAX_TERMS]| c.map(|k| k.map(f64::abs));
         let horner = [
             HornerSet {
                 x: x_desc,
                 d: d_desc,
                 s: s_desc,
+                x_abs: abs(&x_desc),
+                d_abs: abs(&d_desc),
             },
-            HornerSet { x, d: dv, s: sv },
+            HornerSet {
+                x,
+                d: dv,
+                s: sv,
+                x_abs: abs(&x),
+                d_abs: abs(&dv),
+            },
         ];
         Ok(Evaluator {
             horner,
             split_abs,
-            x_abs: abs(&x),
-            d_abs: abs(&dv),
-            x_abs_desc: abs(&x_desc),
-            d_abs_desc: abs(&d_desc),
             x_abs_max,
             d_abs_max,
             sure_root,
             sure_norm,
-            x,
-            d: dv,
-            s: sv,
             levin,
             gamma,
             narrow,
@@ -1232,37 +1289,109 @@ impl<'a> Evaluator<'a> {
         })
     }
 
+    /// `X` (rational) or `a` (Levin) in increasing powers, `D + 1` used.
+    fn x(&self) -> &[Lanes; MAX_TERMS] {
+        &self.horner[1].x
+    }
+
+    /// `d` (Levin) in increasing powers, `D − 1` used.
+    fn d(&self) -> &[Lanes; MAX_TERMS] {
+        &self.horner[1].d
+    }
+
+    /// `s` (Levin) in increasing powers.
+    fn s(&self) -> &[f64; 5] {
+        &self.horner[1].s
+    }
+
     /// The unit vector of `X(U₀, U₁)` on `sheet` (up to sign), `None` where rounding could
     /// exceed `10⁻¹⁰·‖X‖` even in double-double.
     fn eval_unit(&self, u: (f64, f64), sheet: Sheet) -> Option<[f64; 4]> {
         let (t, rev) = reduced_parameter(u);
         // the usual degrees with their sizes known at compile time (unrolled Horner)
-        let (x, root) = match (self.levin, self.big_d) {
-            (true, 2) => self.values::<3, 1>(t, rev, sheet),
-            (true, 3) => self.values::<4, 2>(t, rev, sheet),
-            (true, 4) => self.values::<5, 3>(t, rev, sheet),
-            (false, 1) => self.values::<2, 0>(t, rev, sheet),
-            (false, 2) => self.values::<3, 0>(t, rev, sheet),
-            (false, 3) => self.values::<4, 0>(t, rev, sheet),
-            (false, 4) => self.values::<5, 0>(t, rev, sheet),
-            _ => self.values_any(t, rev, sheet),
-        };
-        self.unit_of(x, root, t, rev, sheet)
+        match (self.levin, self.big_d) {
+            (true, 2) => self.eval_unit_of::<3, 1>(t, rev, sheet),
+            (true, 3) => self.eval_unit_of::<4, 2>(t, rev, sheet),
+            (true, 4) => self.eval_unit_of::<5, 3>(t, rev, sheet),
+            (false, 1) => self.eval_unit_of::<2, 0>(t, rev, sheet),
+            (false, 2) => self.eval_unit_of::<3, 0>(t, rev, sheet),
+            (false, 3) => self.eval_unit_of::<4, 0>(t, rev, sheet),
+            (false, 4) => self.eval_unit_of::<5, 0>(t, rev, sheet),
+            _ => {
+                let (x, root) = self.values_any(t, rev, sheet);
+                let norm = dot(&x, &x).sqrt();
+                if self.cheaply_certified(t, rev, root, norm) {
+                    return Some(x.map(|v| v / norm));
+                }
+                self.certify(t, rev, sheet, x, norm, root)
+            }
+        }
+    }
+
+    /// [`Evaluator::eval_unit`] for `NA` and `ND` coefficients.
+    #[inline(always)]
+    fn eval_unit_of<const NA: usize, const ND: usize>(
+        &self,
+        t: f64,
+        rev: bool,
+        sheet: Sheet,
+    ) -> Option<[f64; 4]> {
+        let (x, root) = self.values::<NA, ND>(t, rev, sheet);
+        self.unit_of::<NA, ND>(x, root, t, rev, sheet)
+    }
+
+    /// Whether the bounds made once ([`Evaluator::sure`]) or the majorant at `|t|`
+    /// ([`Evaluator::majorant`]) certify an evaluation with `√s = root` and norm `norm`.
+    #[inline(always)]
+    fn cheaply_certified(&self, t: f64, rev: bool, root: f64, norm: f64) -> bool {
+        self.sure(root, norm)
+            || norm.is_finite()
+                && norm > 0.0
+                && self.gamma * self.majorant(t, rev, root) <= 1e-10 * norm
     }
 
     /// The unit vector of the value `x` (with `√s = root`) at the reduced parameter `t`,
-    /// certified: the majorant `Σ|cₖ|` first, the bound at `|t|` where it does not certify.
+    /// certified: the majorant `Σ|cₖ|` first, the bound at `|t|` ([`Evaluator::bound_of`],
+    /// the same value as [`Evaluator::certify`]'s) where it does not certify.
     #[inline(always)]
-    fn unit_of(&self, x: Lanes, root: f64, t: f64, rev: bool, sheet: Sheet) -> Option<[f64; 4]> {
+    fn unit_of<const NA: usize, const ND: usize>(
+        &self,
+        x: Lanes,
+        root: f64,
+        t: f64,
+        rev: bool,
+        sheet: Sheet,
+    ) -> Option<[f64; 4]> {
         let norm = dot(&x, &x).sqrt();
-        if self.sure(root, norm) {
+        if self.cheaply_certified(t, rev, root, norm) {
             return Some(x.map(|v| v / norm));
         }
-        let cheap = self.majorant(t, rev, root);
-        if norm.is_finite() && norm > 0.0 && self.gamma * cheap <= 1e-10 * norm {
+        self.certify_of::<NA, ND>(t, rev, sheet, x, norm, root)
+    }
+
+    /// [`Evaluator::certify`] with the unrolled bound of `NA` and `ND` coefficients.
+    #[inline(always)]
+    fn certify_of<const NA: usize, const ND: usize>(
+        &self,
+        t: f64,
+        rev: bool,
+        sheet: Sheet,
+        x: Lanes,
+        norm: f64,
+        root: f64,
+    ) -> Option<[f64; 4]> {
+        let bound = self.bound_of::<NA, ND>(t, rev, root);
+        if self.bound_certifies(bound, norm) {
             return Some(x.map(|v| v / norm));
         }
-        self.certify(t, rev, sheet, x, norm, root)
+        self.certify_dd(bound, t, rev, sheet)
+    }
+
+    /// Whether the rounding bound `bound` at `|t|` certifies an evaluation of norm `norm`:
+    /// `γ·bound ≤ 10⁻¹⁰·‖X‖` (false for NaN).
+    #[inline(always)]
+    fn bound_certifies(&self, bound: f64, norm: f64) -> bool {
+        norm.is_finite() && norm > 0.0 && self.gamma * bound <= 1e-10 * norm
     }
 
     /// [`Evaluator::eval_unit`] on the uniform grid `θₖ = t₀ + k·step`, `k = 1, …, n − 1`,
@@ -1281,7 +1410,7 @@ impl<'a> Evaluator<'a> {
             _ => {
                 out.clear();
                 out.extend((1..n).map(|k| {
-                    let u = (t0 + step * (k as f64)).sin_cos();
+                    let u = sin_cos(t0 + step * (k as f64));
                     self.eval_unit(u, sheet).unwrap_or([f64::NAN; 4])
                 }));
             }
@@ -1324,10 +1453,10 @@ impl<'a> Evaluator<'a> {
         minus.clear();
         minus.resize(n.saturating_sub(1), [0.0; 4]);
         // the parameters of `grid_parameters`: a chunk of `RESYNC` from each exact one
-        let (sh, ch) = step.sin_cos();
+        let (sh, ch) = sin_cos(step);
         let chunks = plus.chunks_mut(RESYNC).zip(minus.chunks_mut(RESYNC));
         for (c, (pc, mc)) in chunks.enumerate() {
-            let mut u = (t0 + step * ((c * RESYNC + 1) as f64)).sin_cos();
+            let mut u = sin_cos(t0 + step * ((c * RESYNC + 1) as f64));
             for (pu, mu) in pc.iter_mut().zip(mc.iter_mut()) {
                 let (t, rev) = reduced_parameter(u);
                 u = (u.0 * ch + u.1 * sh, u.1 * ch - u.0 * sh);
@@ -1374,7 +1503,7 @@ impl<'a> Evaluator<'a> {
         for (t, rev) in grid_parameters(t0, step, n) {
             let (x, root) = self.values::<NA, ND>(t, rev, sheet);
             out.push(
-                self.unit_of(x, root, t, rev, sheet)
+                self.unit_of::<NA, ND>(x, root, t, rev, sheet)
                     .unwrap_or([f64::NAN; 4]),
             );
         }
@@ -1449,11 +1578,8 @@ impl<'a> Evaluator<'a> {
     #[inline(always)]
     fn bound_of<const NA: usize, const ND: usize>(&self, t: f64, rev: bool, root: f64) -> f64 {
         let at = t.abs();
-        let (xc, dc) = if rev {
-            (&self.x_abs, &self.d_abs)
-        } else {
-            (&self.x_abs_desc, &self.d_abs_desc)
-        };
+        let set = &self.horner[usize::from(rev)];
+        let (xc, dc) = (&set.x_abs, &set.d_abs);
         let mut bx = xc[0];
         for c in &xc[1..NA] {
             for i in 0..4 {
@@ -1474,9 +1600,9 @@ impl<'a> Evaluator<'a> {
 
     /// The two sheets' points at a node of [`Evaluator::grid_both_of`] where the majorant
     /// `Σ|cₖ|` does not certify one of them: the bound at `|t|` (the same for both sheets)
-    /// computed once, as [`Evaluator::unit_of`] would.
-    #[cold]
-    #[inline(never)]
+    /// computed once, as [`Evaluator::unit_of`] would (inlined: the call cost more than the
+    /// bound; the double-double retry stays out of line, [`Evaluator::certify_dd`]).
+    #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn certify_both<const NA: usize, const ND: usize>(
         &self,
@@ -1487,13 +1613,12 @@ impl<'a> Evaluator<'a> {
         (m, nm, m_ok): (Lanes, f64, bool),
     ) -> ([f64; 4], [f64; 4]) {
         let bound = self.bound_of::<NA, ND>(t, rev, root);
-        let nan = [f64::NAN; 4];
         let one = |x: Lanes, norm: f64, ok: bool, sheet: Sheet| {
-            if ok {
+            if ok || self.bound_certifies(bound, norm) {
                 x.map(|v| v / norm)
             } else {
-                self.certify_with(bound, t, rev, sheet, x, norm)
-                    .unwrap_or(nan)
+                self.certify_dd(bound, t, rev, sheet)
+                    .unwrap_or([f64::NAN; 4])
             }
         };
         (
@@ -1505,11 +1630,11 @@ impl<'a> Evaluator<'a> {
     /// [`Evaluator::values`] for any degree.
     fn values_any(&self, t: f64, rev: bool, sheet: Sheet) -> (Lanes, f64) {
         let n = self.big_d + 1;
-        let mut x = horner_lanes(&self.x[..n], t, rev);
+        let mut x = horner_lanes(&self.x()[..n], t, rev);
         let mut root = 0.0;
         if self.levin {
-            root = horner_scalar(&self.s, t, rev).max(0.0).sqrt();
-            let dv = horner_lanes(&self.d[..n - 2], t, rev);
+            root = horner_scalar(self.s(), t, rev).max(0.0).sqrt();
+            let dv = horner_lanes(&self.d()[..n - 2], t, rev);
             let sr = if sheet == Sheet::Minus { -root } else { root };
             for i in 0..4 {
                 x[i] += sr * dv[i];
@@ -1531,9 +1656,9 @@ impl<'a> Evaluator<'a> {
         root: f64,
     ) -> Option<[f64; 4]> {
         let n = self.big_d + 1;
-        let bx = horner_lanes_abs(&self.x[..n], t, rev);
+        let bx = horner_lanes_abs(&self.x()[..n], t, rev);
         let bd = if self.levin {
-            horner_lanes_abs(&self.d[..n - 2], t, rev)
+            horner_lanes_abs(&self.d()[..n - 2], t, rev)
         } else {
             [0.0; 4]
         };
@@ -1551,9 +1676,17 @@ impl<'a> Evaluator<'a> {
         x: Lanes,
         norm: f64,
     ) -> Option<[f64; 4]> {
-        if norm.is_finite() && norm > 0.0 && self.gamma * bound <= 1e-10 * norm {
+        if self.bound_certifies(bound, norm) {
             return Some(x.map(|v| v / norm));
         }
+        self.certify_dd(bound, t, rev, sheet)
+    }
+
+    /// The retry in double-double of an evaluation whose rounding bound at `|t|` is
+    /// `bound` (too large for the floats); `None` for an infinite bound.
+    #[cold]
+    #[inline(never)]
+    fn certify_dd(&self, bound: f64, t: f64, rev: bool, sheet: Sheet) -> Option<[f64; 4]> {
         if !bound.is_finite() {
             return None;
         }
@@ -1572,7 +1705,7 @@ impl<'a> Evaluator<'a> {
         let sd = &self.dd().s;
         // s(u) and s′(u) in floats; s(u) in double-double
         let float = |u: f64| -> (f64, f64) {
-            self.s
+            self.s()
                 .iter()
                 .rev()
                 .fold((0.0, 0.0), |(v, dv), &k| (v * u + k, dv * u + v))
@@ -1587,7 +1720,10 @@ impl<'a> Evaluator<'a> {
         // a float Newton start where the floats bracket the root, polished in double-double
         let (glo, ghi) = (float(lo).0, float(hi).0);
         if glo * ghi < 0.0 {
-            let start = newton_bracketed(&float, lo, hi, glo);
+            // Horner's rounding of `s` in floats on the bracket: within `16ε·Σ|sₖ||u|ᵏ`
+            let m = lo.abs().max(hi.abs());
+            let size = self.s().iter().rev().fold(0.0, |v: f64, k| v * m + k.abs());
+            let start = newton_bracketed(&float, lo, hi, glo, 16.0 * f64::EPSILON * size);
             let mut x = start;
             for _ in 0..3 {
                 let (fx, dfx) = f(x);
@@ -1599,7 +1735,7 @@ impl<'a> Evaluator<'a> {
                 x = next;
                 if done {
                     let size = self
-                        .s
+                        .s()
                         .iter()
                         .rev()
                         .fold(0.0, |v: f64, k| v * x.abs() + k.abs());
@@ -1621,7 +1757,7 @@ impl<'a> Evaluator<'a> {
         // most |x|·2⁻⁴²
         let conditioned = |x: f64| -> Option<f64> {
             let size = self
-                .s
+                .s()
                 .iter()
                 .rev()
                 .fold(0.0, |v: f64, k| v * x.abs() + k.abs());
@@ -1694,6 +1830,52 @@ impl<'a> Evaluator<'a> {
     /// `X` in double-double arithmetic (`t` is exact), `None` where even that rounding could
     /// exceed `10⁻¹⁰·‖X‖`.
     fn eval_dd(&self, t: f64, rev: bool, sheet: Sheet, bound: f64) -> Option<[f64; 4]> {
+        let x = self.values_dd(t, rev, sheet);
+        let x = if x.iter().all(|v| v.is_finite()) {
+            x
+        } else {
+            // beyond the range of Veltkamp's split: with the fused products
+            self.values_dd_fused(t, rev, sheet)
+        };
+        let norm = x.iter().map(|v| v * v).sum::<f64>().sqrt();
+        let gamma = self.gamma * f64::EPSILON * 4.0;
+        (norm.is_finite() && norm > 0.0 && gamma * bound <= 1e-10 * norm).then_some(x)
+    }
+
+    /// `X` in double-double arithmetic, the four coordinates at once ([`Dd4`]): the values of
+    /// [`Evaluator::values_dd_fused`] (every product error is exact either way) wherever
+    /// Veltkamp's split does not overflow (else a NaN).
+    fn values_dd(&self, t: f64, rev: bool, sheet: Sheet) -> [f64; 4] {
+        let dd = self.dd();
+        let n = self.big_d + 1;
+        let ts = split(t);
+        let horner = |c: &[[Dd; 4]]| -> Dd4 {
+            let mut v = Dd4::default();
+            let mut step = |k: &[Dd; 4]| v = v.mul_f64(t, ts).add(&Dd4::of(k));
+            if rev {
+                c.iter().for_each(&mut step);
+            } else {
+                c.iter().rev().for_each(&mut step);
+            }
+            v
+        };
+        let mut v = horner(&dd.x[..n]);
+        if self.levin {
+            let r = horner_dd(&dd.s, t, rev).sqrt();
+            let mut dr = horner(&dd.d[..n - 2]).mul(r);
+            if sheet == Sheet::Minus {
+                dr = Dd4 {
+                    hi: dr.hi.map(|v| -v),
+                    lo: dr.lo.map(|v| -v),
+                };
+            }
+            v = v.add(&dr);
+        }
+        std::array::from_fn(|i| v.hi[i] + v.lo[i])
+    }
+
+    /// [`Evaluator::values_dd`] one coordinate at a time, products by `mul_add`.
+    fn values_dd_fused(&self, t: f64, rev: bool, sheet: Sheet) -> [f64; 4] {
         let dd = self.dd();
         let n = self.big_d + 1;
         let root = self.levin.then(|| horner_dd(&dd.s, t, rev).sqrt());
@@ -1719,9 +1901,82 @@ impl<'a> Evaluator<'a> {
             }
             x[i] = v.0 + v.1;
         }
-        let norm = x.iter().map(|v| v * v).sum::<f64>().sqrt();
-        let gamma = self.gamma * f64::EPSILON * 4.0;
-        (norm.is_finite() && norm > 0.0 && gamma * bound <= 1e-10 * norm).then_some(x)
+        x
+    }
+}
+
+/// Veltkamp's split of `a` into `h + l` exactly, each of at most 26 significant bits
+/// (`|a| < 2⁹⁹⁶`; beyond, NaN).
+#[inline(always)]
+fn split(a: f64) -> (f64, f64) {
+    let c = 134_217_729.0 * a;
+    let h = c - (c - a);
+    (h, a - h)
+}
+
+/// `a·b − p` for `p = fl(a·b)`, exactly, by Dekker's product (`b` given split, [`split`]):
+/// the value of `a.mul_add(b, −p)` without a fused multiply-add (away from underflow).
+#[inline(always)]
+fn product_error(a: f64, (bh, bl): (f64, f64), p: f64) -> f64 {
+    let (ah, al) = split(a);
+    al * bl - (((p - ah * bh) - al * bh) - ah * bl)
+}
+
+/// Four double-doubles ([`Dd`]) lane by lane, the operations of [`Dd`] on each (written
+/// lane-wise so that they run on vector registers).
+#[derive(Clone, Copy, Default)]
+struct Dd4 {
+    hi: Lanes,
+    lo: Lanes,
+}
+
+impl Dd4 {
+    fn of(v: &[Dd; 4]) -> Dd4 {
+        Dd4 {
+            hi: v.map(|d| d.0),
+            lo: v.map(|d| d.1),
+        }
+    }
+
+    #[inline(always)]
+    fn two_sum(a: Lanes, b: Lanes) -> Dd4 {
+        let mut out = Dd4::default();
+        for i in 0..4 {
+            let s = a[i] + b[i];
+            let bb = s - a[i];
+            out.hi[i] = s;
+            out.lo[i] = (a[i] - (s - bb)) + (b[i] - bb);
+        }
+        out
+    }
+
+    /// [`Dd::add`] on each lane.
+    #[inline(always)]
+    fn add(&self, o: &Dd4) -> Dd4 {
+        let s = Dd4::two_sum(self.hi, o.hi);
+        let t = Dd4::two_sum(self.lo, o.lo);
+        let hi = Dd4::two_sum(s.hi, std::array::from_fn(|i| s.lo[i] + t.hi[i]));
+        Dd4::two_sum(hi.hi, std::array::from_fn(|i| hi.lo[i] + t.lo[i]))
+    }
+
+    /// [`Dd::mul_f64`] on each lane, `ts` the split of `t`.
+    #[inline(always)]
+    fn mul_f64(&self, t: f64, ts: (f64, f64)) -> Dd4 {
+        let p: Lanes = std::array::from_fn(|i| self.hi[i] * t);
+        let e: Lanes =
+            std::array::from_fn(|i| product_error(self.hi[i], ts, p[i]) + self.lo[i] * t);
+        Dd4::two_sum(p, e)
+    }
+
+    /// [`Dd::mul`] by one double-double on each lane.
+    #[inline(always)]
+    fn mul(&self, o: Dd) -> Dd4 {
+        let os = split(o.0);
+        let p: Lanes = std::array::from_fn(|i| self.hi[i] * o.0);
+        let e: Lanes = std::array::from_fn(|i| {
+            product_error(self.hi[i], os, p[i]) + self.hi[i] * o.1 + self.lo[i] * o.0
+        });
+        Dd4::two_sum(p, e)
     }
 }
 
@@ -1819,14 +2074,16 @@ fn span<'r>(
 
 /// A float on the side of `q` given by `up` (`> q` for `up`, `< q` otherwise; `q` itself
 /// when it is zero), from the quotient of the floats of its numerator and denominator (each
-/// rounded to nearest, the quotient too: within `1.5` ulps) moved by `8ε·|v|` (at least four
-/// ulps); NaN where a float is not finite or below the normal range (no such float is known
-/// cheaply). Cheaper than the correctly rounded [`RBig::to_f64`].
+/// within one ulp: the leading part of [`int_dd`], a one-word denominator rounded to nearest;
+/// the quotient rounded to nearest: within `2.5` ulps) moved by `8ε·|v|` (at least four ulps); NaN where a float is not finite or
+/// below the normal range (no such float is known cheaply). Cheaper than the correctly
+/// rounded [`RBig::to_f64`].
 fn inner_f64(q: &RBig, up: bool) -> f64 {
-    let (n, d) = (
-        q.numerator().to_f64().value(),
-        q.denominator().to_f64().value(),
-    );
+    let d = match q.denominator().as_words() {
+        [w] => *w as f64,
+        _ => q.denominator().to_f64().value(),
+    };
+    let n = int_dd(q.numerator()).0;
     if n == 0.0 && q.numerator().is_zero() {
         return 0.0;
     }
@@ -2228,11 +2485,33 @@ impl Line {
         }
     }
 
-    /// Reverses the points from `start` on, with their marks.
-    fn reverse_from(&mut self, start: usize) {
+    /// Reverses the points from `start` on, with their marks; negated too (with their `h`)
+    /// for `negate`, in the same pass.
+    fn reverse_from(&mut self, start: usize, negate: bool) {
         let end = self.x.len();
-        self.x[start..].reverse();
-        self.h[start..].reverse();
+        if negate {
+            let neg = |v: [f64; 4]| v.map(|c| -c);
+            let x = &mut self.x[start..];
+            let n = x.len();
+            for i in 0..n / 2 {
+                let (a, b) = (x[i], x[n - 1 - i]);
+                (x[i], x[n - 1 - i]) = (neg(b), neg(a));
+            }
+            if n % 2 == 1 {
+                x[n / 2] = neg(x[n / 2]);
+            }
+            let h = &mut self.h[start..];
+            for i in 0..n / 2 {
+                let (a, b) = (h[i], h[n - 1 - i]);
+                (h[i], h[n - 1 - i]) = (-b, -a);
+            }
+            if n % 2 == 1 {
+                h[n / 2] = -h[n / 2];
+            }
+        } else {
+            self.x[start..].reverse();
+            self.h[start..].reverse();
+        }
         let m0 = self.marks.partition_point(|m| m.0 < start);
         for m in &mut self.marks[m0..] {
             m.0 = start + end - 1 - m.0;
@@ -2492,7 +2771,7 @@ impl<'a> Sampler<'a> {
     /// The point at `θ` on `sheet`, retried at nearby parameters inside `(lo, hi)` where
     /// rounding is too large.
     fn at(&self, theta: f64, lo: f64, hi: f64, sheet: Sheet) -> Result<Sample, Error> {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = sin_cos(theta);
         self.at_u(theta, (s, c), lo, hi, sheet)
     }
 
@@ -2514,7 +2793,7 @@ impl<'a> Sampler<'a> {
             if !(lo < t && t < hi) {
                 continue;
             }
-            if let Some(x) = self.eval.eval_unit(t.sin_cos(), sheet) {
+            if let Some(x) = self.eval.eval_unit(sin_cos(t), sheet) {
                 return Ok(Sample::new(t, x));
             }
         }
@@ -2530,7 +2809,7 @@ impl<'a> Sampler<'a> {
         }
         for f in [1e-9, 1e-6, 1e-3] {
             let t = theta + f * (other - theta);
-            if let Some(x) = self.eval.eval_unit(t.sin_cos(), sheet) {
+            if let Some(x) = self.eval.eval_unit(sin_cos(t), sheet) {
                 return Ok(Sample::new(t, x));
             }
         }
@@ -2783,17 +3062,11 @@ impl<'a> Sampler<'a> {
                 let (inf, sing) = line.pop();
                 line.mark(start - 1, inf, sing);
             }
-            line.reverse_from(start);
             // oriented within the arc; the whole arc negated where it meets the line reversed
-            let x = &mut line.x;
-            if start > 0 && x.len() > start && dot(&x[start - 1], &x[start]) < 0.0 {
-                for v in &mut x[start..] {
-                    *v = v.map(|c| -c);
-                }
-                for h in &mut line.h[start..] {
-                    *h = -*h;
-                }
-            }
+            // (its last point comes first)
+            let x = &line.x;
+            let negate = start > 0 && x.len() > start && dot(&x[start - 1], &x[x.len() - 1]) < 0.0;
+            line.reverse_from(start, negate);
         }
         Ok(())
     }
@@ -3615,8 +3888,8 @@ mod tests {
                 let t = rng.int(-1000, 1000) as f64 / 1000.0;
                 let root = rng.int(0, 1 << 20) as f64 / 1024.0;
                 for rev in [false, true] {
-                    let bx = horner_lanes_abs(&eval.x[..n], t, rev);
-                    let bd = horner_lanes_abs(&eval.d[..n - 2], t, rev);
+                    let bx = horner_lanes_abs(&eval.x()[..n], t, rev);
+                    let bd = horner_lanes_abs(&eval.d()[..n - 2], t, rev);
                     let want = (0..4).map(|i| bx[i] + bd[i] * root).fold(0.0, f64::max);
                     let got = match eval.big_d {
                         2 => eval.bound_of::<3, 1>(t, rev, root),
@@ -3795,7 +4068,28 @@ mod tests {
                 (8, false, true)
             ]
         );
-        line.reverse_from(3);
+        // reversed and negated in one pass: reversed, then negated
+        for len in [3, 4, 5, 6, 7] {
+            let mut one = Line {
+                chart: ChartForm::new([1.0, 0.0, 0.5, 1.0]),
+                ..Line::default()
+            };
+            for k in 0..len {
+                one.push(&Sample::new(k as f64, [k as f64, 1.0, -2.0, 0.5]));
+            }
+            let mut two = Line {
+                x: one.x.clone(),
+                h: one.h.clone(),
+                ..Line::default()
+            };
+            one.reverse_from(1, true);
+            two.reverse_from(1, false);
+            let neg: Vec<[f64; 4]> = two.x.iter().map(|v| v.map(|c| -c)).collect();
+            assert_eq!((&one.x[..1], &one.x[1..]), (&two.x[..1], &neg[1..]));
+            let neg_h: Vec<f64> = two.h.iter().map(|v| -v).collect();
+            assert_eq!((&one.h[..1], &one.h[1..]), (&two.h[..1], &neg_h[1..]));
+        }
+        line.reverse_from(3, false);
         // points 3..10 reversed: index i ↦ 12 − i
         assert_eq!(line.x[3][0], 9.0);
         assert_eq!(
@@ -3862,6 +4156,188 @@ mod tests {
                 assert!(&err * &err <= &tolerance * &tolerance, "{v}: {d:?}");
             }
         }
+    }
+
+    /// [`sin_cos`] is the library's within `2⁻⁵¹` with the same signs, on random angles of
+    /// the arcs' range, at the multiples of `π/4` and next to them, and beyond its range
+    /// (the library's itself).
+    #[test]
+    fn fast_sine_and_cosine_match_the_library() {
+        let mut rng = SplitMix(0x51c0);
+        let mut thetas: Vec<f64> = (0..20_000)
+            .map(|_| (rng.next_u64() as f64 / u64::MAX as f64 - 0.3) * 12.0)
+            .collect();
+        for k in -12..=12 {
+            let c = k as f64 * std::f64::consts::FRAC_PI_4;
+            thetas.extend([c, c + 1e-9, c - 1e-9, c + 1e-15, c - 1e-15]);
+        }
+        thetas.extend([1e-300, -1e-300, 0.0, -0.0, 1e-8]);
+        for theta in thetas {
+            let (s, c) = sin_cos(theta);
+            let (ws, wc) = theta.sin_cos();
+            assert!((s - ws).abs() <= 2f64.powi(-51), "{theta}: {s} {ws}");
+            assert!((c - wc).abs() <= 2f64.powi(-51), "{theta}: {c} {wc}");
+            for (v, w) in [(s, ws), (c, wc)] {
+                assert!(w.abs() < 1e-15 || (v > 0.0) == (w > 0.0), "{theta}");
+            }
+        }
+        for theta in [1e6, -3e7, f64::INFINITY] {
+            let (got, want) = (sin_cos(theta), theta.sin_cos());
+            assert_eq!(got.0.to_bits(), want.0.to_bits());
+            assert_eq!(got.1.to_bits(), want.1.to_bits());
+        }
+    }
+
+    /// [`magnitude_dd`] (signed conversions where a word allows) is the general split (top
+    /// 53 bits plus the rest through two unsigned words) bit for bit, at every bit length
+    /// up to 127, the rest at or beyond `2⁶³` included (the fallback branch).
+    #[test]
+    fn magnitude_split_matches_general_route() {
+        let reference = |m: u128, neg: bool| -> Dd {
+            let bits = 128 - m.leading_zeros();
+            if bits <= 53 {
+                let x = (m as u64) as f64;
+                return Dd(if neg { -x } else { x }, 0.0);
+            }
+            let e = bits - 53;
+            let top = (m >> e) as u64;
+            let scale = f64::from_bits(((1023 + e) as u64) << 52);
+            let rest = m - ((top as u128) << e);
+            let rest_f =
+                ((rest >> 64) as u64) as f64 * 18446744073709551616.0 + (rest as u64) as f64;
+            let d = Dd::two_sum(top as f64 * scale, rest_f);
+            if neg {
+                d.neg()
+            } else {
+                d
+            }
+        };
+        let mut rng = SplitMix(0xd0d0);
+        let mut wide_rest = 0;
+        for bits in 0..=127u32 {
+            for _ in 0..20 {
+                let m = ((u128::from(rng.next_u64()) << 64) | u128::from(rng.next_u64()))
+                    >> (128 - bits.max(1));
+                let m = if bits == 0 { 0 } else { m | (1 << (bits - 1)) };
+                let neg = rng.int(0, 1) == 1;
+                let (got, want) = (magnitude_dd(m, neg), reference(m, neg));
+                assert_eq!((got.0, got.1), (want.0, want.1), "{m}");
+                let v = if neg { -IBig::from(m) } else { IBig::from(m) };
+                let via = int_dd(&v);
+                assert_eq!((via.0, via.1), (want.0, want.1), "{m}");
+                wide_rest += usize::from(bits > 53 && m & ((1 << (bits - 53)) - 1) >= 1 << 63);
+            }
+        }
+        assert!(wide_rest > 100, "{wide_rest}");
+    }
+
+    /// Dekker's product ([`product_error`]) is the fused multiply-add's rounding error, and
+    /// the lane-wise double-double evaluation ([`Evaluator::values_dd`]) is the one
+    /// coordinate at a time by `mul_add` ([`Evaluator::values_dd_fused`]), value for value, on
+    /// random parameters all round ℙ¹ and both sheets; coefficients beyond Veltkamp's range
+    /// give NaN there, and [`Evaluator::eval_dd`] falls back to the fused products.
+    #[test]
+    fn double_double_lanes_match_fused_products() {
+        let mut rng = SplitMix(0xdd4);
+        for _ in 0..20_000 {
+            let e = rng.int(-900, 900) as i32;
+            let a = (rng.next_u64() as f64 / u64::MAX as f64 - 0.5) * 2f64.powi(e);
+            let b = rng.next_u64() as f64 / u64::MAX as f64 * 2.0 - 1.0;
+            let p = a * b;
+            assert_eq!(product_error(a, split(b), p), a.mul_add(b, -p), "{a} {b}");
+        }
+        let mut checked = 0;
+        for param in levin_params(0xdd5, 6) {
+            let eval = Evaluator::new(&param).unwrap();
+            for _ in 0..200 {
+                let theta = (rng.next_u64() as f64 / u64::MAX as f64 - 0.5) * PI;
+                let (t, rev) = reduced_parameter(theta.sin_cos());
+                for sheet in [Sheet::Plus, Sheet::Minus] {
+                    let (got, want) = (
+                        eval.values_dd(t, rev, sheet),
+                        eval.values_dd_fused(t, rev, sheet),
+                    );
+                    assert_eq!(got, want, "t = {t}");
+                    checked += 1;
+                }
+            }
+            // `a` beyond 2⁹⁹⁶: the split overflows, the fused products do not
+            // (the leading coefficients, at a tiny `t`: the values stay in range)
+            let mut wide = eval.dd().clone();
+            for (i, c) in wide.x[eval.big_d].iter_mut().enumerate() {
+                *c = Dd((1.0 + i as f64 / 8.0) * 2f64.powi(1000), 0.0);
+            }
+            let wide = Evaluator {
+                quick_dd: Some(Box::new(wide)),
+                ..Evaluator::new(&param).unwrap()
+            };
+            let t = 2f64.powi(-400);
+            assert!(wide
+                .values_dd(t, false, Sheet::Plus)
+                .iter()
+                .any(|v| v.is_nan()));
+            let fused = wide.values_dd_fused(t, false, Sheet::Plus);
+            assert!(fused.iter().all(|v| v.is_finite()));
+            assert_eq!(wide.eval_dd(t, false, Sheet::Plus, 0.0), Some(fused));
+        }
+        assert!(checked >= 2000, "{checked}");
+    }
+
+    /// [`Evaluator::eval_unit`] (unrolled Horner, unrolled bound where the majorant does not
+    /// certify) is the generic route (any degree: [`Evaluator::values_any`], then
+    /// [`Evaluator::certify`]) point for point, on rational and Levin parameterizations, with
+    /// points certified by the bound at `|t|` only among them.
+    #[test]
+    fn unrolled_evaluation_matches_generic_route() {
+        let mut rng = SplitMix(0xe7a1);
+        let mut params = levin_params(0xe7a2, 6);
+        let mut seed = SplitMix(0xe7a3);
+        while params.len() < 12 {
+            let Some(curve) = random_curve(&mut seed) else {
+                continue;
+            };
+            params.extend(curve.components.into_iter().filter_map(|c| match c.param {
+                Some(p @ ComponentParam::Rational { .. }) => Some(p),
+                _ => None,
+            }));
+        }
+        let (mut checked, mut by_bound, mut rational) = (0, 0, 0);
+        for param in &params {
+            let eval = Evaluator::new(param).unwrap();
+            let sheets: &[Sheet] = if eval.levin {
+                &[Sheet::Plus, Sheet::Minus]
+            } else {
+                rational += 1;
+                &[Sheet::Only]
+            };
+            for k in 0..2000 {
+                // uniform in θ, and clustered near t = 0 and t = ±1
+                let theta = match k % 3 {
+                    0 => (rng.next_u64() as f64 / u64::MAX as f64 - 0.5) * PI,
+                    1 => (rng.next_u64() as f64 / u64::MAX as f64 - 0.5) * 1e-3,
+                    _ => FRAC_PI_2 * (1.0 - 2e-3 * rng.next_u64() as f64 / u64::MAX as f64),
+                };
+                let u = theta.sin_cos();
+                let (t, rev) = reduced_parameter(u);
+                for &sheet in sheets {
+                    let (x, root) = eval.values_any(t, rev, sheet);
+                    let norm = dot(&x, &x).sqrt();
+                    let cheap = eval.cheaply_certified(t, rev, root, norm);
+                    let want = if cheap {
+                        Some(x.map(|v| v / norm))
+                    } else {
+                        by_bound += 1;
+                        eval.certify(t, rev, sheet, x, norm, root)
+                    };
+                    assert_eq!(eval.eval_unit(u, sheet), want, "θ = {theta}");
+                    checked += 1;
+                }
+            }
+        }
+        assert!(
+            rational > 0 && checked > 20_000 && by_bound > 0,
+            "{rational} {checked} {by_bound}"
+        );
     }
 
     /// The float evaluation (majorant certificate, unrolled Horner) against the double-double
