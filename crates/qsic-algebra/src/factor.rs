@@ -126,24 +126,54 @@ pub fn factorize(n: &IBig) -> Result<Factorization, FactorError> {
         return Err(FactorError::Zero);
     }
     let negative = *n < IBig::ZERO;
-    let mut m: UBig = n.unsigned_abs();
+    let mut big: UBig = n.unsigned_abs();
     let mut factors: Vec<(u128, u32)> = Vec::new();
-    for &p in small_primes() {
-        let pb = UBig::from(p);
-        if &pb * &pb > m {
-            break;
+    let primes = small_primes();
+    // trial division in big integers while the cofactor has more than 128 bits, then in
+    // machine words (one division instruction a prime below 2⁶⁴)
+    let mut next = 0;
+    let mut m = loop {
+        if let Ok(m) = u128::try_from(&big) {
+            break m;
         }
-        if &m % p != 0u32 {
+        let Some(&p) = primes.get(next) else {
+            return Err(FactorError::TooLarge {
+                bits: big.bit_len(),
+            });
+        };
+        next += 1;
+        if &big % p != 0u32 {
             continue;
         }
-        let mut e = 0;
-        while &m % p == 0u32 {
-            m /= &pb;
+        let (pb, mut e) = (UBig::from(p), 0);
+        while &big % p == 0u32 {
+            big /= &pb;
             e += 1;
         }
         factors.push((p as u128, e));
+    };
+    let rem = |m: u128, p: u128| -> u128 {
+        if m >> 64 == 0 {
+            u128::from(m as u64 % p as u64)
+        } else {
+            m % p
+        }
+    };
+    for &p in &primes[next..] {
+        let p = u128::from(p);
+        if p * p > m {
+            break;
+        }
+        if rem(m, p) != 0 {
+            continue;
+        }
+        let mut e = 0;
+        while rem(m, p) == 0 {
+            m /= p;
+            e += 1;
+        }
+        factors.push((p, e));
     }
-    let m = u128::try_from(&m).map_err(|_| FactorError::TooLarge { bits: m.bit_len() })?;
     let mut budget = RHO_BUDGET;
     let mut stack = vec![m];
     let mut large: Vec<u128> = Vec::new();

@@ -1105,14 +1105,70 @@ pub(crate) fn levin_big(
     d: &[ZPoly; 4],
     delta: &IBig,
 ) -> LevinForms {
-    let c0 = poly_form(m, b, b, delta);
-    let c1 = poly_form(m, b, d, delta);
-    let c2 = poly_form(m, d, d, delta);
+    let (c0, c1, c2) = forms_checked(m, b, d, delta).unwrap_or_else(|| {
+        (
+            poly_form(m, b, b, delta),
+            poly_form(m, b, d, delta),
+            poly_form(m, d, d, delta),
+        )
+    });
+    levin_from_forms(b, d, delta, c0, c1, c2)
+}
+
+/// [`levin_big`] from the forms `c₀ = bᵀMb`, `c₁ = bᵀMd`, `c₂ = dᵀMd` (the products in big
+/// integers).
+fn levin_from_forms(
+    b: &[ZPoly; 4],
+    d: &[ZPoly; 4],
+    delta: &IBig,
+    c0: ZPoly,
+    c1: ZPoly,
+    c2: ZPoly,
+) -> LevinForms {
     let s = poly_sub(&poly_mul(&c1, &c1, delta), &poly_mul(&c0, &c2, delta));
     let combine = |x: &[Zq], y: &[Zq]| -> [ZPoly; 4] {
         std::array::from_fn(|i| poly_sub(&poly_mul(x, &b[i], delta), &poly_mul(y, &d[i], delta)))
     };
     (s, combine(&c2, &c1), combine(&c1, &c0))
+}
+
+/// The forms `c₀ = bᵀMb`, `c₁ = bᵀMd`, `c₂ = dᵀMd` of [`levin_big`] in `i128` with every
+/// operation checked, when `M`, `δ` and the coefficients of `b` and `d` (at most 3 each) are
+/// machine integers and the forms fit (they often do where `s`, `a`, `alt` do not: their
+/// products then go to big integers); `None` otherwise.
+fn forms_checked(
+    m: &[[IBig; 4]; 4],
+    b: &[ZPoly; 4],
+    d: &[ZPoly; 4],
+    delta: &IBig,
+) -> Option<(ZPoly, ZPoly, ZPoly)> {
+    if b.iter().chain(d).any(|p| p.len() > 3) {
+        return None;
+    }
+    let mut mi = [[0i128; 4]; 4];
+    for (row, src) in mi.iter_mut().zip(m) {
+        for (x, v) in row.iter_mut().zip(src) {
+            *x = i128::try_from(v).ok()?;
+        }
+    }
+    let dl = i128::try_from(delta).ok()?;
+    let mut fixed = [[Zi::default(); 3]; 8];
+    for (k, p) in b.iter().chain(d).enumerate() {
+        for (slot, c) in fixed[k].iter_mut().zip(p) {
+            *slot = Zi::of(c)?;
+        }
+    }
+    let bi: [&[Zi]; 4] = std::array::from_fn(|i| &fixed[i][..b[i].len()]);
+    let di: [&[Zi]; 4] = std::array::from_fn(|i| &fixed[4 + i][..d[i].len()]);
+    let form = |x: &[&[Zi]; 4], y: &[&[Zi]; 4]| -> Option<ZPoly> {
+        let c = form_fixed(&mi, x, y, dl, true)?;
+        let n = c
+            .iter()
+            .rposition(|v| *v != Zi::default())
+            .map_or(0, |k| k + 1);
+        Some(c[..n].iter().map(|v| v.big()).collect())
+    };
+    Some((form(&bi, &bi)?, form(&bi, &di)?, form(&di, &di)?))
 }
 
 /// Levin's whole form in machine integers: `s = c₁² − c₀c₂`, `a = c₂b − c₁d` and
@@ -1972,6 +2028,69 @@ mod tests {
             }
         }
         assert!(checked >= 100, "{checked}");
+    }
+
+    /// The checked machine forms of [`levin_big`] are the big-integer ones ([`poly_form`],
+    /// the other route) where they answer, and they decline where a form leaves `i128`
+    /// (coefficients of 60 bits: products of 120 bits times the matrix) or an input does.
+    #[test]
+    fn checked_forms_equal_the_big_ones() {
+        let mut rng = SplitMix(77);
+        let (mut answered, mut declined) = (0, 0);
+        for bits in [0usize, 20, 40, 60, 130] {
+            for _ in 0..20 {
+                let irrational = rng.int(0, 1) == 1;
+                let delta = IBig::from(if irrational { rng.int(2, 99) } else { 1 });
+                let m: [[IBig; 4]; 4] = {
+                    let mut m: [[IBig; 4]; 4] = Default::default();
+                    for i in 0..4 {
+                        for j in i..4 {
+                            m[i][j] = IBig::from(rng.int(-999, 999));
+                            m[j][i] = m[i][j].clone();
+                        }
+                    }
+                    m
+                };
+                let mut poly = || {
+                    let len = 1 + rng.int(0, 2) as usize;
+                    let mut p = random_poly(&mut rng, bits, irrational, len);
+                    trim(&mut p);
+                    p
+                };
+                let b: [ZPoly; 4] = std::array::from_fn(|_| poly());
+                let d: [ZPoly; 4] = std::array::from_fn(|_| poly());
+                let want = (
+                    poly_form(&m, &b, &b, &delta),
+                    poly_form(&m, &b, &d, &delta),
+                    poly_form(&m, &d, &d, &delta),
+                );
+                match forms_checked(&m, &b, &d, &delta) {
+                    Some(mut got) => {
+                        answered += 1;
+                        let mut want = want;
+                        for p in [
+                            &mut got.0,
+                            &mut got.1,
+                            &mut got.2,
+                            &mut want.0,
+                            &mut want.1,
+                            &mut want.2,
+                        ] {
+                            trim(p);
+                        }
+                        assert_eq!(got, want, "{bits} bits");
+                    }
+                    None => {
+                        declined += 1;
+                        assert!(bits >= 60, "declined at {bits} bits");
+                    }
+                }
+            }
+        }
+        assert!(
+            answered >= 50 && declined >= 20,
+            "{answered} answered, {declined} declined"
+        );
     }
 
     /// [`scale_powers_of_two`] multiplies each coefficient by its power of two, on small and

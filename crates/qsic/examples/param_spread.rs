@@ -1,0 +1,50 @@
+//! The cost of each random generic pair (cases 1–4) apart: `parameterize`, `sample` of about
+//! 1000 points and the drops, in one `#[inline(never)]` call per pair, so that callgrind
+//! dumps a profile after each and the spread (median, mean, the costliest pairs) shows:
+//!
+//! ```text
+//! cargo build --profile profiling -p qsic --example param_spread
+//! valgrind --tool=callgrind --callgrind-out-file=cg --dump-after='param_spread::one' \
+//!     target/profiling/examples/param_spread 1000
+//! for f in cg.*; do echo "${f#cg.} $(grep -m1 '^totals:' "$f" | cut -d' ' -f2)"; done
+//! ```
+//!
+//! Dump `k` is pair `k − 1` (the first also holds the set-up); the pairs are those of
+//! `param_cost`, in the same order.
+
+use qsic::param::parameterize;
+use qsic::param::sample::{sample, SampleOptions};
+use qsic::{classify, Quadric};
+
+#[path = "../benches/inputs/mod.rs"]
+mod inputs;
+
+use inputs::{random_pairs, SplitMix};
+
+/// One pair end to end; the number of real pieces sampled.
+#[inline(never)]
+fn one(a: &Quadric, b: &Quadric) -> usize {
+    let Ok(curve) = parameterize(a, b) else {
+        return 0;
+    };
+    let options = SampleOptions {
+        points: 1000usize.div_ceil(curve.pieces.len().max(1)),
+        ..SampleOptions::default()
+    };
+    sample(&curve, &options).map_or(0, |s| s.pieces.len())
+}
+
+fn main() {
+    let n: usize = std::env::args()
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(400);
+    let mut rng = SplitMix(42);
+    let pairs: Vec<(Quadric, Quadric)> = random_pairs(&mut rng, 8 * n)
+        .into_iter()
+        .filter(|(a, b)| matches!(classify(a, b).case, Some(1..=4)))
+        .take(n)
+        .collect();
+    let pieces: usize = pairs.iter().map(|(a, b)| one(a, b)).sum();
+    println!("{} pairs, {pieces} pieces", pairs.len());
+}
