@@ -10,12 +10,12 @@
 
 use qsic::param::sample::{sample, SampleOptions, Sampled};
 use qsic::param::{parameterize, Curve};
-use qsic::{classify, Quadric};
+use qsic::Quadric;
 
 #[path = "../benches/inputs/mod.rs"]
 mod inputs;
 
-use inputs::{random_pairs, SplitMix};
+use inputs::generic_pairs;
 
 #[inline(never)]
 fn describe(pairs: &[(Quadric, Quadric)]) -> Vec<Curve> {
@@ -44,12 +44,7 @@ fn main() {
         .nth(1)
         .and_then(|s| s.parse().ok())
         .unwrap_or(50);
-    let mut rng = SplitMix(42);
-    let pairs: Vec<(Quadric, Quadric)> = random_pairs(&mut rng, 8 * n)
-        .into_iter()
-        .filter(|(a, b)| matches!(classify(a, b).case, Some(1..=4)))
-        .take(n)
-        .collect();
+    let pairs = generic_pairs(n);
     let curves = describe(&pairs);
     let sampled = points(&curves);
     let total: usize = sampled

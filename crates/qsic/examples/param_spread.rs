@@ -14,12 +14,12 @@
 
 use qsic::param::parameterize;
 use qsic::param::sample::{sample, SampleOptions};
-use qsic::{classify, Quadric};
+use qsic::Quadric;
 
 #[path = "../benches/inputs/mod.rs"]
 mod inputs;
 
-use inputs::{random_pairs, SplitMix};
+use inputs::generic_pairs;
 
 /// One pair end to end; the number of real pieces sampled.
 #[inline(never)]
@@ -39,12 +39,7 @@ fn main() {
         .nth(1)
         .and_then(|s| s.parse().ok())
         .unwrap_or(400);
-    let mut rng = SplitMix(42);
-    let pairs: Vec<(Quadric, Quadric)> = random_pairs(&mut rng, 8 * n)
-        .into_iter()
-        .filter(|(a, b)| matches!(classify(a, b).case, Some(1..=4)))
-        .take(n)
-        .collect();
+    let pairs = generic_pairs(n);
     let pieces: usize = pairs.iter().map(|(a, b)| one(a, b)).sum();
     println!("{} pairs, {pieces} pieces", pairs.len());
 }

@@ -21,6 +21,17 @@ pub fn random_pairs(rng: &mut SplitMix, n: usize) -> Vec<(Quadric, Quadric)> {
         .collect()
 }
 
+/// The first `n` pairs of cases 1–4 (a nonsingular quartic) among the random pairs of
+/// `SplitMix(42)`: the curve benchmarks' family (`param_cost`, `param_spread`).
+pub fn generic_pairs(n: usize) -> Vec<(Quadric, Quadric)> {
+    let mut rng = SplitMix(42);
+    random_pairs(&mut rng, 8 * n)
+        .into_iter()
+        .filter(|(a, b)| matches!(qsic::classify(a, b).case, Some(1..=4)))
+        .take(n)
+        .collect()
+}
+
 /// The pairs of `cases.jsonl` whose id matches `filter`, with their labelled case.
 pub fn corpus_pairs(filter: impl Fn(&str) -> bool) -> Vec<(String, Quadric, Quadric)> {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/cases.jsonl");
