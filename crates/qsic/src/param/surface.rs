@@ -1662,6 +1662,19 @@ mod tests {
                 }
             }
         }
+        // diag(u, v, −u, −v) through (a, b, a, b): one line direction (1, 0, 1, 0), far
+        // smaller than the point (the balancing scales that line up)
+        for k in [3i64, 10, 20, 30] {
+            for _ in 0..8 {
+                let (u, v) = (rng.int(1, 9), rng.int(1, 9));
+                let mut m = [[0i128; 4]; 4];
+                for (i, w) in [u, v, -u, -v].into_iter().enumerate() {
+                    m[i][i] = w.into();
+                }
+                let (a, b) = (rng.int(1, 1 << k), rng.int(1, 1 << k));
+                cases.push((m, [a, b, a, b].map(i128::from)));
+            }
+        }
         for (m, p) in cases {
             let Some(delta) = member_radicand(&m) else {
                 continue;
