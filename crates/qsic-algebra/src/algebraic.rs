@@ -1495,12 +1495,9 @@ mod tests {
         }
     }
 
-    /// The norms in machine words (`i128`, 256-bit) against big integers, for coefficients of
-    /// 3 to 126 bits and `δ` up to 2⁶¹ (the ranges where each applies and beyond), and the
-    /// roots of `s = A + B√δ` as valid numbers of that norm, equal to the exact ones.
     /// `v` (below `2²⁵⁵` in magnitude) in two's complement words.
     fn to_wide(v: &IBig) -> Wide {
-        let m = dashu_int::UBig::try_from(if v < &IBig::ZERO { -v } else { v.clone() }).unwrap();
+        let m = dashu_int::ops::UnsignedAbs::unsigned_abs(v);
         let mut w = [0u64; 4];
         w[..m.as_words().len()].copy_from_slice(m.as_words());
         if v < &IBig::ZERO {
@@ -1560,6 +1557,9 @@ mod tests {
         assert!(routes.iter().all(|&r| r >= 50), "{routes:?}");
     }
 
+    /// The norms in machine words (`i128`, 256-bit) against big integers, for coefficients of
+    /// 3 to 126 bits and `δ` up to 2⁶¹ (the ranges where each applies and beyond), and the
+    /// roots of `s = A + B√δ` as valid numbers of that norm, equal to the exact ones.
     #[test]
     fn zsqrt_norms_and_roots_agree_with_big_integers() {
         let mut rng = crate::testing::SplitMix(808);

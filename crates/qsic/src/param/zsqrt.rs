@@ -1142,22 +1142,8 @@ fn forms_checked(
     d: &[ZPoly; 4],
     delta: &IBig,
 ) -> Option<(ZPoly, ZPoly, ZPoly)> {
-    if b.iter().chain(d).any(|p| p.len() > 3) {
-        return None;
-    }
-    let mut mi = [[0i128; 4]; 4];
-    for (row, src) in mi.iter_mut().zip(m) {
-        for (x, v) in row.iter_mut().zip(src) {
-            *x = i128::try_from(v).ok()?;
-        }
-    }
-    let dl = i128::try_from(delta).ok()?;
-    let mut fixed = [[Zi::default(); 3]; 8];
-    for (k, p) in b.iter().chain(d).enumerate() {
-        for (slot, c) in fixed[k].iter_mut().zip(p) {
-            *slot = Zi::of(c)?;
-        }
-    }
+    let (mi, dl) = machine_matrix(m, delta)?;
+    let fixed = fixed_rows(b, d)?;
     let bi: [&[Zi]; 4] = std::array::from_fn(|i| &fixed[i][..b[i].len()]);
     let di: [&[Zi]; 4] = std::array::from_fn(|i| &fixed[4 + i][..d[i].len()]);
     let form = |x: &[&[Zi]; 4], y: &[&[Zi]; 4]| -> Option<ZPoly> {
@@ -1183,14 +1169,34 @@ pub(crate) fn levin_small(
     d: &[ZPoly; 4],
     delta: &IBig,
 ) -> Option<LevinForms> {
+    let (mi, dl) = machine_matrix(m, delta)?;
+    levin_fixed(&mi, b, d, dl, false).map(|(forms, _)| forms)
+}
+
+/// `M` and `δ` in `i128`, `None` past it.
+fn machine_matrix(m: &[[IBig; 4]; 4], delta: &IBig) -> Option<([[i128; 4]; 4], i128)> {
     let mut mi = [[0i128; 4]; 4];
     for (row, src) in mi.iter_mut().zip(m) {
         for (x, v) in row.iter_mut().zip(src) {
             *x = i128::try_from(v).ok()?;
         }
     }
-    let dl = i128::try_from(delta).ok()?;
-    levin_fixed(&mi, b, d, dl, false).map(|(forms, _)| forms)
+    Some((mi, i128::try_from(delta).ok()?))
+}
+
+/// The coefficients of `b` (rows 0–3) and `d` (rows 4–7) in fixed `i128` buffers; `None`
+/// when one leaves `i128` or a coordinate has more than 3 coefficients.
+fn fixed_rows(b: &[ZPoly; 4], d: &[ZPoly; 4]) -> Option<[[Zi; 3]; 8]> {
+    if b.iter().chain(d).any(|p| p.len() > 3) {
+        return None;
+    }
+    let mut fixed = [[Zi::default(); 3]; 8];
+    for (k, p) in b.iter().chain(d).enumerate() {
+        for (slot, c) in fixed[k].iter_mut().zip(p) {
+            *slot = Zi::of(c)?;
+        }
+    }
+    Some(fixed)
 }
 
 /// The bit length of `|v|`.
@@ -1363,15 +1369,7 @@ fn levin_fixed(
     delta: i128,
     always_check: bool,
 ) -> Option<(LevinForms, bool)> {
-    if b.iter().chain(d).any(|p| p.len() > 3) {
-        return None;
-    }
-    let mut fixed = [[Zi::default(); 3]; 8];
-    for (k, p) in b.iter().chain(d).enumerate() {
-        for (slot, c) in fixed[k].iter_mut().zip(p) {
-            *slot = Zi::of(c)?;
-        }
-    }
+    let fixed = fixed_rows(b, d)?;
     let bi: [&[Zi]; 4] = std::array::from_fn(|i| &fixed[i][..b[i].len()]);
     let di: [&[Zi]; 4] = std::array::from_fn(|i| &fixed[4 + i][..d[i].len()]);
     let ((s, a, alt), unchecked) = levin_core::<9, 9>(m, &bi, &di, delta, always_check)?;
