@@ -470,6 +470,9 @@ impl AlgebraicReal {
         if q.is_constant() {
             return Sign::of(&q.leading());
         }
+        if let Some(s) = self.sign_by_enclosure(q) {
+            return s;
+        }
         let r = self.snapshot();
         if let Some(s) = r.sign_of(q) {
             return s;
@@ -484,14 +487,42 @@ impl AlgebraicReal {
     }
 
     /// The sign of `q(α)` if the refined interval decides it without refining further
-    /// (exact when it answers).
-    pub(crate) fn sign_on_refined(&self, q: &Poly) -> Option<Sign> {
-        self.snapshot().sign_of(q)
+    /// (exact when it answers; no gcd, no refinement: cheap, and `None` where `q(α) = 0`
+    /// with `α` irrational).
+    ///
+    /// ```
+    /// # use qsic_algebra::{AlgebraicReal, Poly, Sign};
+    /// let sqrt2 = AlgebraicReal::certified_real_roots_of(&Poly::from_i64s(&[-2, 0, 1])).unwrap().pop().unwrap();
+    /// assert_eq!(sqrt2.sign_on_refined(&Poly::from_i64s(&[-1, 1])), Some(Sign::Positive)); // x − 1
+    /// assert_eq!(sqrt2.sign_on_refined(&Poly::from_i64s(&[-2, 0, 1])), None); // zero there
+    /// ```
+    pub fn sign_on_refined(&self, q: &Poly) -> Option<Sign> {
+        self.sign_by_enclosure(q)
+            .or_else(|| self.snapshot().sign_of(q))
+    }
+
+    /// The sign of `q(α)` from the certified float enclosure, when there is one and it
+    /// decides ([`certified_sign_poly_near`](crate::filter::certified_sign_poly_near)): a
+    /// Horner evaluation in floats instead of one in big rationals at the interval's ends.
+    fn sign_by_enclosure(&self, q: &Poly) -> Option<Sign> {
+        let (c, r) = self.enclosure?;
+        let n = q.coeffs().len();
+        if n > MAX_CERTIFIED_DEGREE + 1 {
+            return None;
+        }
+        let mut f = [0.0; MAX_CERTIFIED_DEGREE + 1];
+        for (x, v) in f.iter_mut().zip(q.coeffs()) {
+            *x = v.to_f64().value();
+        }
+        crate::filter::certified_sign_poly_near(&f[..n], c, r)
     }
 
     /// The sign of `q(α)`, known to be nonzero: refines until interval arithmetic decides.
     /// (With `q(α) = 0` and `α` irrational this would not end: callers decide zero first.)
     pub(crate) fn sign_of_nonzero(&self, q: &Poly) -> Sign {
+        if let Some(s) = self.sign_by_enclosure(q) {
+            return s;
+        }
         let r = self.snapshot();
         match r.sign_of(q) {
             Some(s) => s,
@@ -563,8 +594,9 @@ impl AlgebraicReal {
     /// A float approximation (for display and sampling only, never for a decision).
     ///
     /// Newton's method safeguarded by bisection, in floating point, inside the isolating
-    /// interval (where the float signs of `poly` at the ends differ as the exact ones do);
-    /// otherwise the midpoint of an exactly refined interval of width `2⁻⁶⁰`.
+    /// interval (where the float signs of `poly` at the ends differ as the exact ones do),
+    /// kept where its rounding bound or two exact signs at `x ± |x|·2⁻⁴²` prove it that
+    /// close; otherwise the midpoint of an exactly refined interval of width `2⁻⁶⁰`.
     /// A certified float enclosure, when it is that accurate, is the answer without work.
     pub fn to_f64(&self) -> f64 {
         if let Some((c, r)) = self.enclosure {
@@ -574,8 +606,10 @@ impl AlgebraicReal {
         }
         if let RootInterval::Open(lo, hi) = &self.snapshot().interval {
             let (l, h) = (lo.to_f64().value(), hi.to_f64().value());
-            if let Some(x) = newton_in(self.poly(), l, h) {
-                return x;
+            match newton_in(self.poly(), l, h) {
+                Some((x, true)) => return x,
+                Some((x, false)) if brackets(self.poly(), lo, hi, x) => return x,
+                _ => {}
             }
         }
         let iv = self.refined_interval(&RBig::from_parts_signed(1.into(), IBig::ONE << 60));
@@ -690,10 +724,11 @@ pub fn sign_on_interval(q: &Poly, lo: &RBig, hi: &RBig) -> Option<Sign> {
 }
 
 /// A root of `p` in `[lo, hi]` by Newton's method kept inside a bracket by bisection, all in
-/// floating point; `None` unless the float values of `p` at the ends have opposite signs and
-/// the root is well conditioned: the rounding bound of Horner's rule `2n·ε·Σ|cᵢ||x|ⁱ` over
-/// `|p′(x)|` within `2⁻⁴²·|x|` (about 12 digits: display and sampling).
-fn newton_in(p: &Poly, lo: f64, hi: f64) -> Option<f64> {
+/// floating point; `None` unless the float values of `p` at the ends have opposite signs.
+/// With it whether the root is well conditioned: the rounding bound of Horner's rule
+/// `2n·ε·Σ|cᵢ||x|ⁱ` over `|p′(x)|` within `2⁻⁴²·|x|` (about 12 digits: display and
+/// sampling); where it is not, [`brackets`] may still prove the float that close.
+fn newton_in(p: &Poly, lo: f64, hi: f64) -> Option<(f64, bool)> {
     let c: Vec<f64> = p.coeffs().iter().map(|v| v.to_f64().value()).collect();
     if !(c.iter().all(|x| x.is_finite()) && lo.is_finite() && hi.is_finite() && lo <= hi) {
         return None;
@@ -705,16 +740,16 @@ fn newton_in(p: &Poly, lo: f64, hi: f64) -> Option<f64> {
     };
     let (fl, fh) = (eval(lo).0, eval(hi).0);
     if lo == hi || fl * fh >= 0.0 || !(fl * fh).is_finite() {
-        return (lo == hi).then_some(lo);
+        return (lo == hi).then_some((lo, true));
     }
-    let conditioned = |x: f64| -> Option<f64> {
+    let conditioned = |x: f64| -> Option<(f64, bool)> {
         let (_, df) = eval(x);
         let bound = c
             .iter()
             .rev()
             .fold(0.0, |acc: f64, &v| acc * x.abs() + v.abs());
         let err = 2.0 * c.len() as f64 * f64::EPSILON * bound / df.abs();
-        (err.is_finite() && err <= x.abs() * 2f64.powi(-42)).then_some(x)
+        Some((x, err.is_finite() && err <= x.abs() * 2f64.powi(-42)))
     };
     let (mut a, mut b) = (lo, hi);
     let mut x = 0.5 * (a + b);
@@ -743,6 +778,19 @@ fn newton_in(p: &Poly, lo: f64, hi: f64) -> Option<f64> {
         x = next;
     }
     None
+}
+
+/// `true` if the root of `p` in the isolating interval `(lo, hi)` is within `|x|·2⁻⁴²` of
+/// `x` (`x ≠ 0`): the ends `x ± |x|·2⁻⁴²` lie in the interval and `p` has opposite exact
+/// signs there (an odd number of roots between them, so the one root of the interval).
+/// What makes a float root certain where the float evaluation's error bound is too coarse
+/// (close roots, a small derivative), at the cost of two exact evaluations.
+fn brackets(p: &Poly, lo: &RBig, hi: &RBig, x: f64) -> bool {
+    let delta = x.abs() * 2f64.powi(-42);
+    let (Ok(a), Ok(b)) = (RBig::try_from(x - delta), RBig::try_from(x + delta)) else {
+        return false;
+    };
+    x != 0.0 && lo < &a && &b < hi && p.sign_at(&a) * p.sign_at(&b) == Sign::Negative
 }
 
 /// `⌊v·2^k⌋`.

@@ -81,6 +81,45 @@ pub fn certified_sign_poly(c: &[f64], x: f64) -> Option<Sign> {
     certified_sign(acc, bound)
 }
 
+/// The certified sign of `p(α)` for an `α` known only by a float enclosure `|α − x| ≤ r`,
+/// from coefficients each rounded once (as [`certified_sign_poly`]); `None` if it cannot
+/// decide (a value not finite, `r` negative or not finite, or `p(α)` too close to zero).
+///
+/// `p(α) = p(x) + (α − x)·p′(ξ)` for some `ξ` within `r` of `x`, so on top of the rounding
+/// bound of `p(x)` the value may move by `r·Σ i|cᵢ|(|x| + r)ⁱ⁻¹` (the exact coefficients are
+/// within `u` of the rounded ones; that sum's own rounding is covered by a factor
+/// `1 + 2⁻³⁰`, far above its `(4n + 2)·u`).
+///
+/// ```
+/// # use qsic_algebra::{filter::certified_sign_poly_near, Sign};
+/// // x² − 2 near √2 ≈ 1.41421356: decided away from the root, not at it
+/// assert_eq!(certified_sign_poly_near(&[-2.0, 0.0, 1.0], 1.5, 0.01), Some(Sign::Positive));
+/// assert_eq!(certified_sign_poly_near(&[-2.0, 0.0, 1.0], 1.4142135, 1e-6), None);
+/// assert_eq!(certified_sign_poly_near(&[-1.0, 1.0], 1.4142135, 1e-6), Some(Sign::Positive)); // x − 1
+/// ```
+pub fn certified_sign_poly_near(c: &[f64], x: f64, r: f64) -> Option<Sign> {
+    if !(r >= 0.0 && r.is_finite()) {
+        return None;
+    }
+    let mut acc = 0.0;
+    let mut mag = 0.0;
+    let mut powers = 0.0;
+    let ax = x.abs();
+    let far = ax + r;
+    // Σ i|cᵢ| farⁱ⁻¹ by Horner on the derivative's magnitudes, alongside
+    let (mut slope, mut outer) = (0.0, 0.0);
+    for &ci in c.iter().rev() {
+        acc = acc * x + ci;
+        mag = mag * ax + ci.abs();
+        powers = powers * ax + 1.0;
+        slope = slope * far + outer;
+        outer = outer * far + ci.abs();
+    }
+    let rounding = sum_of_products_bound(c.len(), c.len(), mag) + UNDERFLOW_UNIT * powers;
+    let moved = r * slope * (1.0 + 2f64.powi(-30)) * (1.0 + 2.0 * U);
+    certified_sign(acc, rounding + moved)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -324,6 +363,38 @@ mod tests {
                 let exact = Poly::from_i64s(&c).sign_at(&RBig::try_from(x).expect("finite"));
                 prop_assert_eq!(s, exact);
             }
+        }
+    }
+
+    proptest! {
+        /// A sign certified from an enclosure is the exact sign at the enclosed number `α`,
+        /// for `p = (t − β)·q` with a root `β` placed among `α`, the float `x` and the radius
+        /// (`β` between `α` and `x` makes `p(x)` and `p(α)` differ in sign: without the term
+        /// for the distance the float value at `x` is certified with the wrong sign); and an
+        /// enclosure far from every root decides.
+        #[test]
+        fn enclosure_signs_are_exact(
+            q in prop::collection::vec(-1000i64..1000, 1..4),
+            b in -(1i64 << 22)..(1i64 << 22),
+            da in -1000i64..1000,
+            dx in -1000i64..1000,
+            widen in prop::sample::select(vec![1.0, 1.5, 4.0]),
+        ) {
+            // β = b·2⁻²⁰, α = β + da·2⁻³⁰, x = β + dx·2⁻³⁰ (exact floats), r ≥ |x − α|
+            let unit = pow2(-30);
+            let beta = b as f64 * pow2(-20);
+            let (alpha, x) = (beta + da as f64 * unit, beta + dx as f64 * unit);
+            let r = (x - alpha).abs() * widen;
+            let p = &Poly::from_i64s(&[-b, 1 << 20]) * &Poly::from_i64s(&q);
+            let cf: Vec<f64> = p.coeffs().iter().map(|v| v.to_f64().value()).collect();
+            let exact = p.sign_at(&exact(alpha));
+            if let Some(s) = certified_sign_poly_near(&cf, x, r) {
+                prop_assert_eq!(s, exact);
+            }
+            // a constant is decided whatever the radius; a line far from its root too
+            let c0 = cf[cf.len() - 1];
+            prop_assert_eq!(certified_sign_poly_near(&[c0], x, r), Some(float_sign(c0)).filter(|_| c0 != 0.0));
+            prop_assert_eq!(certified_sign_poly_near(&[1.0 + 1e3 * r - x, 1.0], x, r), Some(Sign::Positive));
         }
     }
 

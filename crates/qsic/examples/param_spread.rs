@@ -10,7 +10,8 @@
 //! ```
 //!
 //! Dump `k` is pair `k − 1` (the first also holds the set-up); the pairs are those of
-//! `param_cost`, in the same order.
+//! `param_cost`, in the same order. A second argument `k` runs pair `k` alone and prints its
+//! two quadrics (`param_spread 1000 857`), to profile one costly pair.
 
 use qsic::param::parameterize;
 use qsic::param::sample::{sample, SampleOptions};
@@ -39,7 +40,16 @@ fn main() {
         .nth(1)
         .and_then(|s| s.parse().ok())
         .unwrap_or(400);
-    let pairs = generic_pairs(n);
+    let mut pairs = generic_pairs(n);
+    if let Some(k) = std::env::args()
+        .nth(2)
+        .and_then(|s| s.parse::<usize>().ok())
+    {
+        pairs = pairs.into_iter().skip(k).take(1).collect();
+        for (a, b) in &pairs {
+            println!("{}\n{}", a.to_polynomial_string(), b.to_polynomial_string());
+        }
+    }
     let pieces: usize = pairs.iter().map(|(a, b)| one(a, b)).sum();
     println!("{} pairs, {pieces} pieces", pairs.len());
 }

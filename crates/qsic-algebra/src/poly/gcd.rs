@@ -17,11 +17,14 @@ impl Poly {
     /// assert_eq!(a.gcd(&b), Poly::from_roots(&[2, 3]));
     /// ```
     pub fn gcd(&self, other: &Poly) -> Poly {
-        // Coprime inputs with big coefficients (a square-free characteristic polynomial and
-        // its derivative) are recognised modulo a prime instead of through a PRS whose
-        // coefficients grow to millions of bits.
-        if self.max_bits().max(other.max_bits()) > 128 && coprime_modular(self, other) {
-            return Poly::constant(IBig::ONE);
+        // Modulo a prime first (a square-free polynomial and its derivative, the removable
+        // factor two forms share): the image's degree bounds the gcd's, and a lifted
+        // candidate that divides both is the gcd. The subresultant PRS, whose coefficients
+        // grow with the degrees and sizes, only where that does not conclude.
+        if self.degree().unwrap_or(0) >= 2 && other.degree().unwrap_or(0) >= 2 {
+            if let Some(g) = gcd_modular(self, other) {
+                return g;
+            }
         }
         gcd_subresultant(self, other)
     }
@@ -56,16 +59,19 @@ fn inv_mod(a: u64) -> u64 {
     r
 }
 
-/// Coefficients modulo [`PRIME`], trailing zeros removed.
+/// Coefficients modulo [`PRIME`], trailing zeros removed (in machine words where they fit).
 fn reduce(p: &Poly) -> Vec<u64> {
     let m = IBig::from(PRIME);
     let mut c: Vec<u64> = p
         .coeffs()
         .iter()
-        .map(|v| {
-            let r = v % &m;
-            let r = if r < IBig::ZERO { r + &m } else { r };
-            u64::try_from(r).expect("a residue modulo a 61-bit prime fits in u64")
+        .map(|v| match i128::try_from(v) {
+            Ok(w) => w.rem_euclid(i128::from(PRIME)) as u64,
+            Err(_) => {
+                let r = v % &m;
+                let r = if r < IBig::ZERO { r + &m } else { r };
+                u64::try_from(r).expect("a residue modulo a 61-bit prime fits in u64")
+            }
         })
         .collect();
     while c.last() == Some(&0) {
@@ -74,25 +80,23 @@ fn reduce(p: &Poly) -> Vec<u64> {
     c
 }
 
-/// `true` only if `a` and `b` are certainly coprime over ℚ: the prime divides neither
-/// leading coefficient and the gcd of the reductions is a constant. (Reduction can only
-/// raise the degree of the gcd when the leading coefficients survive it.) `false` means
-/// "not known" (always so when one of them is zero).
-pub fn coprime_modular(a: &Poly, b: &Poly) -> bool {
-    let (mut f, mut g) = (reduce(a), reduce(b));
-    if f.len() != a.coeffs().len() || g.len() != b.coeffs().len() {
-        return false;
-    }
-    // Euclid over 𝔽_p
+/// The gcd of two residue vectors (lowest degree first, no trailing zeros) by Euclid's
+/// algorithm over 𝔽_p: a constant (one entry) when they are coprime, not monic. Each step
+/// cancels the top of `f` by `lc(g)·f − lc(f)·xᵏ·g` (a pseudo-remainder: no inverse, which
+/// would cost a 61-bit exponentiation, in the loop).
+fn euclid_mod(mut f: Vec<u64>, mut g: Vec<u64>) -> Vec<u64> {
     while g.len() > 1 {
-        let inv = inv_mod(*g.last().expect("g is nonzero"));
+        let lead = *g.last().expect("g is nonzero");
         while f.len() >= g.len() {
             let shift = f.len() - g.len();
-            let k = mul_mod(*f.last().expect("f is nonzero"), inv);
+            let k = *f.last().expect("f is nonzero");
+            for x in &mut f[..shift] {
+                *x = mul_mod(*x, lead);
+            }
             for (j, gj) in g.iter().enumerate() {
-                let t = mul_mod(k, *gj);
-                let x = f[shift + j] + PRIME - t;
-                f[shift + j] = if x >= PRIME { x - PRIME } else { x };
+                let (x, t) = (mul_mod(f[shift + j], lead), mul_mod(k, *gj));
+                let d = x + PRIME - t;
+                f[shift + j] = if d >= PRIME { d - PRIME } else { d };
             }
             while f.last() == Some(&0) {
                 f.pop();
@@ -100,7 +104,60 @@ pub fn coprime_modular(a: &Poly, b: &Poly) -> bool {
         }
         std::mem::swap(&mut f, &mut g);
     }
-    g.len() == 1
+    if g.len() == 1 {
+        g
+    } else {
+        f
+    }
+}
+
+/// `true` only if `a` and `b` are certainly coprime over ℚ: the prime divides neither
+/// leading coefficient and the gcd of the reductions is a constant. (Reduction can only
+/// raise the degree of the gcd when the leading coefficients survive it.) `false` means
+/// "not known" (always so when one of them is zero).
+pub fn coprime_modular(a: &Poly, b: &Poly) -> bool {
+    let (f, g) = (reduce(a), reduce(b));
+    if f.len() != a.coeffs().len() || g.len() != b.coeffs().len() {
+        return false;
+    }
+    euclid_mod(f, g).len() == 1
+}
+
+/// The gcd of `a` and `b` (nonzero) from its image modulo [`PRIME`], or `None` when that
+/// does not settle it. With `p` dividing neither leading coefficient, the image `h` has at
+/// least the degree of the gcd `G`; `G·γ/lc(G)` for `γ = gcd(lc a, lc b)` has integer
+/// coefficients and is `γ·h/lc(h)` modulo `p` when `p` is lucky, so the symmetric lift of
+/// the latter, made primitive, is a candidate of degree ≥ deg G, and it is `G` exactly
+/// when it divides both (checked by exact division). `None` when `p` divides a leading
+/// coefficient, the lifted coefficients do not fit below `p/2`, or a division fails.
+fn gcd_modular(a: &Poly, b: &Poly) -> Option<Poly> {
+    let (f, g) = (reduce(a), reduce(b));
+    if f.len() != a.coeffs().len() || g.len() != b.coeffs().len() {
+        return None;
+    }
+    let h = euclid_mod(f, g);
+    if h.len() == 1 {
+        return Some(Poly::constant(IBig::ONE));
+    }
+    let gamma = crate::int_gcd(&a.leading(), &b.leading());
+    let scale = mul_mod(
+        reduce(&Poly::constant(gamma)).first().copied()?,
+        inv_mod(*h.last().expect("h is nonzero")),
+    );
+    let half = PRIME / 2;
+    let lifted: Vec<IBig> = h
+        .iter()
+        .map(|&c| {
+            let v = mul_mod(scale, c);
+            if v > half {
+                -IBig::from(PRIME - v)
+            } else {
+                IBig::from(v)
+            }
+        })
+        .collect();
+    let candidate = Poly::new(lifted).primitive_part();
+    (a.div_exact(&candidate).is_some() && b.div_exact(&candidate).is_some()).then_some(candidate)
 }
 
 /// Gcd by the subresultant PRS ([`Poly::gcd_domain`]) on the primitive parts.
@@ -179,6 +236,48 @@ mod modular_tests {
         assert!(coprime_modular(&five, &b) && coprime_modular(&b, &five));
         assert!(!coprime_modular(&Poly::zero(), &b) && !coprime_modular(&b, &Poly::zero()));
     }
+
+    /// The lifted candidate: the gcd itself where its coefficients (scaled to the leading
+    /// coefficient `γ`) fit below `p/2`; `None`, never a wrong gcd, where they do not, where
+    /// the prime is unlucky or divides a leading coefficient.
+    #[test]
+    fn modular_gcd_is_the_gcd_or_nothing() {
+        let c = Poly::from_i64s(&[-3, 5, 7]); // 7x² + 5x − 3
+        let a = &c * &Poly::from_i64s(&[11, 0, -2, 9]);
+        let b = &c * &Poly::from_i64s(&[1, 4, 4]);
+        assert_eq!(gcd_modular(&a, &b), Some(c.clone()));
+        // the leading coefficient γ = gcd(63, 28) = 7 is lc(G): no larger scale needed
+        assert_eq!(
+            gcd_modular(&(&a * &Poly::from_i64s(&[3])), &b),
+            Some(c.clone())
+        );
+        // coprime: the constant 1
+        let d = Poly::from_i64s(&[1, 4, 4]);
+        assert_eq!(
+            gcd_modular(&Poly::from_i64s(&[11, 0, -2, 9]), &d),
+            Some(Poly::constant(IBig::ONE))
+        );
+        // a common factor with a 70-bit coefficient: the lift cannot recover it
+        let big = Poly::new(vec![IBig::ONE << 70, IBig::from(3), IBig::ONE]);
+        let (a, b) = (
+            &big * &Poly::from_i64s(&[2, 1, 1]),
+            &big * &Poly::from_i64s(&[5, 0, 1]),
+        );
+        assert_eq!(gcd_modular(&a, &b), None);
+        assert_eq!(a.gcd(&b), big);
+        // an unlucky prime: x² + 1 and x² + 1 + p share nothing over ℚ, everything mod p;
+        // the candidate x² + 1 divides one only
+        let p = IBig::from(PRIME);
+        let (e, f) = (
+            Poly::from_i64s(&[1, 0, 1]),
+            Poly::new(vec![IBig::ONE + &p, IBig::ZERO, IBig::ONE]),
+        );
+        assert_eq!(gcd_modular(&e, &f), None);
+        assert_eq!(e.gcd(&f), Poly::constant(IBig::ONE));
+        // the prime divides a leading coefficient: not tried
+        let lead = Poly::new(vec![IBig::ONE, IBig::ZERO, p]);
+        assert_eq!(gcd_modular(&lead, &e), None);
+    }
 }
 
 #[cfg(test)]
@@ -215,7 +314,22 @@ mod tests {
         prop::collection::vec(-20i64..20, 1..6).prop_map(|v| Poly::from_i64s(&v))
     }
 
+    /// A polynomial of degree 2 to 4 with coefficients up to about 2⁴⁰, and so products
+    /// whose coefficients pass the prime: the modular route with its lift and checks.
+    fn wide_poly() -> impl Strategy<Value = Poly> {
+        prop::collection::vec(-(1i64 << 40)..(1i64 << 40), 3..6).prop_map(|v| Poly::from_i64s(&v))
+    }
+
     proptest! {
+        #[test]
+        fn gcd_agrees_with_primitive_prs(a in wide_poly(), b in small_poly(), c in wide_poly(), e in small_poly()) {
+            prop_assume!(!c.is_zero());
+            let (a, b) = (&(&a * &c) * &e, &(&b * &c) * &e);
+            let g = a.gcd(&b);
+            prop_assert_eq!(&g, &gcd_primitive_prs(&a, &b));
+            prop_assert!(g.div_exact(&c.primitive_part()).is_some());
+        }
+
         #[test]
         fn subresultant_agrees_with_primitive_prs(a in small_poly(), b in small_poly(), c in small_poly()) {
             let a = &a * &c;

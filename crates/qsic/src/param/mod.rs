@@ -44,7 +44,7 @@ use qsic_algebra::roots::{
     isolate_squarefree_real_roots, rational_between, simplest_between, RootInterval,
 };
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Sign};
-use surface::{parameterize_cone, parameterize_doubly_ruled, poly_form, q, to_quadratic};
+use surface::{parameterize_cone, parameterize_doubly_ruled_with, poly_form, q, to_quadratic};
 
 /// The kind of a real ruled member of the pencil.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -1260,28 +1260,54 @@ fn choose_surface_full(
     b: &[[RBig; 4]; 4],
     analysis: &PencilAnalysis,
 ) -> Result<ParameterizationSurface, Error> {
-    let (mut candidates, irrational_cones) = primary_candidates(analysis);
+    let (primary, irrational_cones) = primary_candidates(analysis);
+    // the primary candidates first without searching for a point where none is small (a
+    // rational cone is then found before a (2, 2) member's sections are searched), then
+    // again with the search those that gave nothing; more rationals of the (2, 2) arcs only
+    // when all that gives no ruling. Each try: (λ, kind, search, its first try's index).
+    let mut tries: Vec<(Option<RBig>, SurfaceKind, bool, usize)> = primary
+        .into_iter()
+        .enumerate()
+        .map(|(i, (l, kind))| (l, kind, false, i))
+        .collect();
+    let cheap = tries.len();
+    let again: Vec<_> = tries
+        .iter()
+        .filter(|t| matches!(t.1, SurfaceKind::DoublyRuled))
+        .map(|t| (t.0.clone(), t.1, true, t.3))
+        .collect();
+    tries.extend(again);
+    let primary = tries.len();
+    let mut empty = vec![false; cheap];
     let mut best: Option<ParameterizationSurface> = None;
-    let primary = candidates.len();
     let mut k = 0;
     loop {
         if k == primary {
             if best.is_some() {
                 break;
             }
-            // more rationals of the (2, 2) arcs, tried only when the first ones give no ruling
-            candidates.extend(more_candidates(analysis));
+            let more = more_candidates(analysis).into_iter();
+            tries.extend(more.map(|(l, kind)| (l, kind, true, usize::MAX)));
         }
-        let Some((lambda, kind)) = candidates.get(k).cloned() else {
+        let Some((lambda, kind, search, first)) = tries.get(k).cloned() else {
             break;
         };
         k += 1;
+        if search && first < cheap && !empty[first] {
+            // its first try gave a ruling: searching gives the same
+            continue;
+        }
         let matrix = member(a, b, lambda.as_ref());
         let ruling = match kind {
-            SurfaceKind::DoublyRuled => parameterize_doubly_ruled(&matrix)?,
+            SurfaceKind::DoublyRuled => parameterize_doubly_ruled_with(&matrix, search)?,
             SurfaceKind::Cone => parameterize_cone(&matrix)?,
         };
-        let Some(ruling) = ruling else { continue };
+        let Some(ruling) = ruling else {
+            if !search {
+                empty[first] = true;
+            }
+            continue;
+        };
         let candidate = ParameterizationSurface {
             lambda,
             matrix,
@@ -1771,6 +1797,7 @@ fn discriminant_roots(s: &Poly<Quadratic>) -> DiscriminantRoots {
 
 #[cfg(test)]
 mod tests {
+    use super::surface::parameterize_doubly_ruled;
     use super::*;
     use crate::classify::classify;
     use qsic_algebra::Ring;

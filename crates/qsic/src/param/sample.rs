@@ -2311,33 +2311,7 @@ fn exact_crossings_of(exact: &ExactParam, h: &[RBig; 4]) -> Option<Vec<Crossing>
                 })
             };
             let mut out: Vec<Crossing> = Vec::new();
-            // a removable zero needs every norm to vanish: the roots of their gcd with n (none,
-            // the common case), isolated apart from the rest of n (whose rational roots are
-            // then rare: the removable zeros are the usual ones)
-            let nz = n.squarefree_part();
-            let common = norms.iter().try_fold(nz.clone(), |g, m| {
-                let g = if m.is_zero() { g } else { g.gcd(m) };
-                if g.is_constant() {
-                    None
-                } else {
-                    Some(g)
-                }
-            });
-            let isolate = |p: &Poly| {
-                AlgebraicReal::certified_real_roots_of(p)
-                    .unwrap_or_else(|| AlgebraicReal::real_roots_of(p))
-            };
-            let mut rs: Vec<(AlgebraicReal, bool)> = Vec::new();
-            match &common {
-                Some(g) => {
-                    let rest = nz.div_exact(g).expect("a divisor of n");
-                    rs.extend(isolate(&rest).into_iter().map(|r| (r, false)));
-                    rs.extend(isolate(g).into_iter().map(|r| (r, true)));
-                    rs.sort_by(|x, y| x.0.cmp(&y.0));
-                }
-                None => rs.extend(isolate(&nz).into_iter().map(|r| (r, false))),
-            }
-            let (rs, removable): (Vec<AlgebraicReal>, Vec<bool>) = rs.into_iter().unzip();
+            let (rs, removable) = crossing_roots(&n, &norms);
             // the signs at every root at once (one gcd per polynomial, not per root)
             let signs = |p: &Poly| -> Vec<Sign> {
                 if p.is_zero() {
@@ -2390,6 +2364,42 @@ fn exact_crossings_of(exact: &ExactParam, h: &[RBig; 4]) -> Option<Vec<Crossing>
             Some(out)
         }
     }
+}
+
+/// The real roots of `n` (the crossings' polynomial of [`exact_crossings_of`]), each with
+/// whether it may be a removable zero (a root of every nonzero norm `aᵢ² − dᵢ²·s`).
+///
+/// First by floats: `n` square-free with its roots certified, and at each root some norm
+/// whose sign the certified interval decides nonzero — the generic crossing, with no gcd and
+/// no square-free factorization. Otherwise exactly: the roots of the gcd of `n`'s
+/// square-free part with the norms (none, the common case) isolated apart from the rest.
+fn crossing_roots(n: &Poly, norms: &[Poly]) -> (Vec<AlgebraicReal>, Vec<bool>) {
+    // a removable zero needs every norm to vanish: the roots of their gcd with n (none,
+    // the common case), isolated apart from the rest of n (whose rational roots are
+    // then rare: the removable zeros are the usual ones)
+    let nz = n.squarefree_part();
+    let common = norms.iter().try_fold(nz.clone(), |g, m| {
+        let g = if m.is_zero() { g } else { g.gcd(m) };
+        if g.is_constant() {
+            None
+        } else {
+            Some(g)
+        }
+    });
+    let isolate = |p: &Poly| {
+        AlgebraicReal::certified_real_roots_of(p).unwrap_or_else(|| AlgebraicReal::real_roots_of(p))
+    };
+    let mut rs: Vec<(AlgebraicReal, bool)> = Vec::new();
+    match &common {
+        Some(g) => {
+            let rest = nz.div_exact(g).expect("a divisor of n");
+            rs.extend(isolate(&rest).into_iter().map(|r| (r, false)));
+            rs.extend(isolate(g).into_iter().map(|r| (r, true)));
+            rs.sort_by(|x, y| x.0.cmp(&y.0));
+        }
+        None => rs.extend(isolate(&nz).into_iter().map(|r| (r, false))),
+    }
+    rs.into_iter().unzip()
 }
 
 /// The integer polynomials `L·vᵢ` for the least common denominator `L > 0` of every

@@ -444,6 +444,16 @@ where
 pub(crate) fn parameterize_doubly_ruled(
     s: &[[RBig; 4]; 4],
 ) -> Result<Option<RuledParameterization>, Error> {
+    parameterize_doubly_ruled_with(s, true)
+}
+
+/// [`parameterize_doubly_ruled`]; with `search` false only through a small point (`Ok(None)`
+/// where there is none, before the hyperplane sections of [`points_on`], which cost about
+/// a million instructions each when no section has a rational point).
+pub(crate) fn parameterize_doubly_ruled_with(
+    s: &[[RBig; 4]; 4],
+    search: bool,
+) -> Result<Option<RuledParameterization>, Error> {
     let small = small_integer_matrix(s);
     let points: Vec<Vec4> = match small.as_ref().and_then(small_point_of) {
         Some(p) => {
@@ -453,6 +463,7 @@ pub(crate) fn parameterize_doubly_ruled(
             }
             vec![std::array::from_fn(|i| q(&RBig::from(p[i])))]
         }
+        None if !search => return Ok(None),
         // the lines through a point over ℚ(√e) are over ℚ(√e) only when det S is a square
         // there: the other points would fail after their forms (the biquadratic route)
         None => points_on(s)?
