@@ -339,11 +339,23 @@ pub(crate) fn exact_sqrt(n: i128) -> Option<i128> {
     if (0x0202_0212_0203_0213u64 >> (n & 63)) & 1 == 0 {
         return None;
     }
-    let approx = match u64::try_from(n) {
-        Ok(v) => v as f64,
-        Err(_) => n as f64,
-    };
-    let mut r = approx.sqrt() as i128;
+    if let Ok(v) = u64::try_from(n) {
+        // squares are 16 of the 63 residues modulo 63 (bit k of the mask: k a square)
+        if (0x0402_4830_1245_0293u64 >> (v % 63)) & 1 == 0 {
+            return None;
+        }
+        // the float root is within one of ⌊√v⌋; the products in u128, one multiplication
+        let sq = |r: u64| u128::from(r) * u128::from(r);
+        let mut r = (v as f64).sqrt() as u64;
+        while sq(r) > u128::from(v) {
+            r -= 1;
+        }
+        while sq(r + 1) <= u128::from(v) {
+            r += 1;
+        }
+        return (sq(r) == u128::from(v)).then_some(i128::from(r));
+    }
+    let mut r = (n as f64).sqrt() as i128;
     while r * r > n {
         r -= 1;
     }
@@ -1469,8 +1481,24 @@ mod tests {
         let big = (1i128 << 50) + 3;
         assert_eq!(exact_sqrt(big * big), Some(big));
         assert_eq!(exact_sqrt(big * big + 1), None);
-        // random symmetric integer matrices: every small point is on the quadric, and the
-        // rulings through it (the fraction-free route) lie on it too
+        // squares and their neighbours on both sides of 2⁶⁴ (the u64 route and the i128 one),
+        // where the float root is off by one
+        for r in [
+            (1i128 << 32) - 1,
+            1 << 32,
+            (1 << 32) + 1,
+            3_037_000_499,
+            4_294_967_291,
+        ] {
+            assert_eq!(exact_sqrt(r * r), Some(r), "{r}²");
+            assert_eq!(exact_sqrt(r * r - 1), None, "{r}² − 1");
+            assert_eq!(exact_sqrt(r * r + 1), None, "{r}² + 1");
+        }
+        let top = (1i128 << 32) - 1; // the largest root below 2⁶⁴
+        assert_eq!(exact_sqrt(i128::from(u64::MAX)), None);
+        assert_eq!(exact_sqrt(top * top + 2 * top), None); // (top + 1)² − 1 = 2⁶⁴ − 1
+                                                           // random symmetric integer matrices: every small point is on the quadric, and the
+                                                           // rulings through it (the fraction-free route) lie on it too
         let mut state = 0x2545_f491_4f6c_dd1du64;
         let mut next = || {
             state ^= state << 13;
