@@ -2128,7 +2128,16 @@ fn rational_poly(p: &NumberPoly) -> Option<Poly<RBig>> {
     Some(Poly::new(c))
 }
 
+/// `true` if every coefficient of `p` is rational (a numerator of degree 0 at most): the
+/// check before [`rational_poly`], which allocates.
+fn is_rational(p: &NumberPoly) -> bool {
+    p.coeffs().iter().all(|c| c.numerator().len() <= 1)
+}
+
 fn rational_vector(v: &[NumberPoly; 4]) -> Option<[Poly<RBig>; 4]> {
+    if !v.iter().all(is_rational) {
+        return None;
+    }
     let mut out: [Poly<RBig>; 4] = Default::default();
     for i in 0..4 {
         out[i] = rational_poly(&v[i])?;
@@ -2162,9 +2171,14 @@ impl ExactParam {
                     .unwrap_or(0)
                     .max(d.iter().map(deg).max().unwrap_or(0) + 2)
                     .max(*degree);
-                match (rational_vector(a), rational_vector(d), rational_poly(s)) {
-                    (Some(a), Some(d), Some(s)) => Some(ExactParam::Levin { a, d, s, degree }),
-                    _ => None,
+                // the conversions only where all is rational (not for ℚ(√δ), the usual case)
+                if a.iter().chain(d).all(is_rational) && is_rational(s) {
+                    match (rational_vector(a), rational_vector(d), rational_poly(s)) {
+                        (Some(a), Some(d), Some(s)) => Some(ExactParam::Levin { a, d, s, degree }),
+                        _ => None,
+                    }
+                } else {
+                    None
                 }
             }
         };
