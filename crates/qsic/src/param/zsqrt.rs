@@ -62,8 +62,18 @@ impl Zq {
     }
 
     pub(crate) fn mul(&self, o: &Zq, delta: &IBig) -> Zq {
-        if self.b.is_zero() && o.b.is_zero() {
-            return Zq::int(&self.a * &o.a);
+        // an integer factor: two products, no multiple of δ
+        if self.b.is_zero() {
+            return Zq {
+                a: &self.a * &o.a,
+                b: &self.a * &o.b,
+            };
+        }
+        if o.b.is_zero() {
+            return Zq {
+                a: &self.a * &o.a,
+                b: &self.b * &o.a,
+            };
         }
         Zq {
             a: &self.a * &o.a + &self.b * &o.b * delta,
@@ -165,13 +175,38 @@ pub(crate) fn poly_mul(x: &[Zq], y: &[Zq], delta: &IBig) -> ZPoly {
     if x.is_empty() || y.is_empty() {
         return Vec::new();
     }
-    let mut out = vec![Zq::default(); x.len() + y.len() - 1];
-    for (i, a) in x.iter().enumerate() {
-        if a.is_zero() {
+    // the products of the √δ parts summed apart, times δ once a coefficient (δ is often the
+    // largest number here: one product by it instead of one a term)
+    let n = x.len() + y.len() - 1;
+    let mut out = vec![Zq::default(); n];
+    let mut radical = vec![IBig::ZERO; n];
+    for (i, p) in x.iter().enumerate() {
+        if p.is_zero() {
             continue;
         }
-        for (j, b) in y.iter().enumerate() {
-            out[i + j].add_mul(a, b, delta);
+        for (j, q) in y.iter().enumerate() {
+            let o = &mut out[i + j];
+            if !p.a.is_zero() {
+                if !q.a.is_zero() {
+                    o.a += &p.a * &q.a;
+                }
+                if !q.b.is_zero() {
+                    o.b += &p.a * &q.b;
+                }
+            }
+            if !p.b.is_zero() {
+                if !q.a.is_zero() {
+                    o.b += &p.b * &q.a;
+                }
+                if !q.b.is_zero() {
+                    radical[i + j] += &p.b * &q.b;
+                }
+            }
+        }
+    }
+    for (o, r) in out.iter_mut().zip(radical) {
+        if !r.is_zero() {
+            o.a += r * delta;
         }
     }
     out
@@ -201,7 +236,13 @@ pub(crate) fn poly_form(m: &[[IBig; 4]; 4], x: &[ZPoly; 4], y: &[ZPoly; 4], delt
             }
         }
         let prod = poly_mul(&x[i], &row, delta);
-        poly_add_scaled(&mut acc, &Zq::int(IBig::ONE), &prod, delta);
+        if acc.len() < prod.len() {
+            acc.resize(prod.len(), Zq::default());
+        }
+        for (o, c) in acc.iter_mut().zip(prod) {
+            o.a += c.a;
+            o.b += c.b;
+        }
     }
     acc
 }
@@ -2185,6 +2226,38 @@ mod tests {
             fixed > 100 && declined > 10 && shifted > 50 && too_far > 10,
             "{fixed} fixed, {declined} declined, {shifted} shifted, {too_far} too far"
         );
+    }
+
+    /// Products over ℤ[√δ] equal those of the same polynomials over ℚ(√δ) (`Poly<Quadratic>`,
+    /// another implementation): both parts irrational, one side rational, zero coefficients
+    /// among them; and `Zq::mul` with an integer on either side.
+    #[test]
+    fn products_equal_those_over_the_field() {
+        let mut rng = SplitMix(23);
+        for delta in [2i64, 3, 1_000_003] {
+            let delta = IBig::from(delta) << 130; // δ far past the machine words
+            let delta = &delta + IBig::from(3); // not a square
+            for k in 0..60 {
+                let (lx, ly) = (1 + k % 4, 1 + (k / 4) % 5);
+                let mut x = random_poly(&mut rng, 90, k % 3 != 0, lx);
+                let y = random_poly(&mut rng, 90, k % 5 != 0, ly);
+                if k % 7 == 0 {
+                    x[0] = Zq::default();
+                }
+                let want = &to_poly(&x, &delta) * &to_poly(&y, &delta);
+                assert_eq!(
+                    to_poly(&poly_mul(&x, &y, &delta), &delta),
+                    want,
+                    "{x:?} {y:?}"
+                );
+                let (p, q) = (&x[lx - 1], &y[ly - 1]);
+                let r = Zq::int(q.a.clone());
+                for (u, v) in [(p, q), (p, &r), (&r, p)] {
+                    let want = &u.to_quadratic(&delta) * &v.to_quadratic(&delta);
+                    assert_eq!(u.mul(v, &delta).to_quadratic(&delta), want);
+                }
+            }
+        }
     }
 
     /// The machine-integer forms equal the big-integer ones: without checks (bounded), checked
