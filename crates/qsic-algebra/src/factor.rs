@@ -130,33 +130,46 @@ pub fn factorize(n: &IBig) -> Result<Factorization, FactorError> {
     let primes = small_primes();
     // trial division in big integers while the cofactor has more than 128 bits, then in
     // machine words (one division instruction a prime below 2⁶⁴)
+    // (four primes at a time: one big remainder by their product, below 2⁶⁴, then words)
     let mut next = 0;
-    let mut m = loop {
+    let mut m = 'big: loop {
         if let Ok(m) = u128::try_from(&big) {
             break m;
         }
-        let Some(&p) = primes.get(next) else {
+        if next >= primes.len() {
             return Err(FactorError::TooLarge {
                 bits: big.bit_len(),
             });
-        };
-        next += 1;
-        if &big % p != 0u32 {
-            continue;
         }
-        let (pb, mut e) = (UBig::from(p), 0);
-        while &big % p == 0u32 {
-            big /= &pb;
-            e += 1;
+        let chunk = &primes[next..(next + 4).min(primes.len())];
+        let product: u64 = chunk.iter().map(|&p| u64::from(p)).product();
+        let r: u64 = &big % product;
+        for &p in chunk {
+            next += 1;
+            if r % u64::from(p) != 0 {
+                continue;
+            }
+            let (pb, mut e) = (UBig::from(p), 0);
+            while &big % p == 0u32 {
+                big /= &pb;
+                e += 1;
+            }
+            factors.push((p as u128, e));
+            if let Ok(m) = u128::try_from(&big) {
+                break 'big m;
+            }
         }
-        factors.push((p as u128, e));
     };
+    // `m mod p` in 64-bit divisions (one instruction each; a 128-bit remainder is a call of
+    // some 60): `p < 2¹⁶`, so `(hi mod p)·2³²` fits, twice, for `m = hi·2⁶⁴ + lo`
     let rem = |m: u128, p: u128| -> u128 {
-        if m >> 64 == 0 {
-            u128::from(m as u64 % p as u64)
-        } else {
-            m % p
+        let p = p as u64;
+        let (hi, lo) = ((m >> 64) as u64, m as u64);
+        if hi == 0 {
+            return u128::from(lo % p);
         }
+        let h = (((hi % p) << 32) % p) << 32;
+        u128::from(((h % p) + lo % p) % p)
     };
     for &p in &primes[next..] {
         let p = u128::from(p);
@@ -701,6 +714,13 @@ mod tests {
             IBig::from(4_294_967_291u64) * IBig::from(4_294_967_279u64) * IBig::from(101),
             IBig::from((1u128 << 89) - 1),
             IBig::from(999_999_000_001u64).pow(2),
+            // small primes met while the cofactor is above 2⁶⁴ (the remainders by words)
+            IBig::from(65521u64).pow(2) * IBig::from(40009u64) * IBig::from((1u128 << 89) - 1),
+            IBig::from(3u64) * IBig::from(65519u64) * IBig::from((1u128 << 107) - 1),
+            // and above 2¹²⁸ (four primes a big remainder), the last one leaving it mid-chunk
+            IBig::from(2).pow(130) * IBig::from(3u64).pow(7) * IBig::from(40009u64),
+            IBig::from(13u64) * IBig::from(65519u64).pow(3) * IBig::from((1u128 << 89) - 1),
+            IBig::from(65521u64).pow(4) * IBig::from(17u64) * IBig::from((1u128 << 89) - 1),
         ];
         for n in cases {
             let f = factorize(&n).unwrap();
@@ -712,6 +732,34 @@ mod tests {
             );
         }
         assert_eq!(factorize(&IBig::ZERO), Err(FactorError::Zero));
+    }
+
+    /// Random products of primes below the trial limit and a prime above 2⁶¹: the factors
+    /// found are the ones multiplied, whatever the size of the cofactor when each is met.
+    #[test]
+    fn small_factors_of_wide_cofactors() {
+        let mut rng = crate::testing::SplitMix(29);
+        let primes = small_primes();
+        for _ in 0..200 {
+            let mut want: Vec<(u128, u32)> = Vec::new();
+            for _ in 0..(1 + rng.next_u64() % 4) {
+                let p = u128::from(primes[(rng.next_u64() as usize) % primes.len()]);
+                let e = 1 + (rng.next_u64() % 3) as u32;
+                match want.iter_mut().find(|(q, _)| *q == p) {
+                    Some((_, f)) => *f += e,
+                    None => want.push((p, e)),
+                }
+            }
+            want.push(((1 << 61) - 1, 1));
+            want.sort_unstable();
+            let n = want.iter().fold(IBig::ONE, |acc, &(p, e)| {
+                acc * IBig::from(p).pow(e as usize)
+            });
+            if n.bit_len() > 128 {
+                continue;
+            }
+            assert_eq!(factorize(&n).unwrap().factors, want, "{n}");
+        }
     }
 
     #[test]
