@@ -2215,7 +2215,7 @@ mod tests {
             let den = RBig::from(lambda.as_ref().expect("finite λ").denominator().clone());
             surface::integer_entries(&m.clone().map(|row| row.map(|v| v * &den)))
         };
-        let (mut small, mut total, mut hard) = (0, 0, 0);
+        let (mut small, mut total, mut hard, mut searched) = (0, 0, 0, 0);
         for (seed, bound) in [(4u64, 10i64), (5, 1000), (6, 2), (7, 30)] {
             for (a, b) in smooth_pairs(seed, 40, bound) {
                 let analysis = analyze_pencil(&a, &b).expect("regular");
@@ -2243,6 +2243,14 @@ mod tests {
                         let want = surface::member_radicand(&mi).expect("radicand");
                         assert_eq!(r.delta.clone().unwrap_or(IBig::ONE), want);
                         with_point.push(r.delta);
+                    } else {
+                        // without the search (the first pass of `choose_surface_full`), a
+                        // member without a small point gives nothing; with it, often a ruling
+                        let quick = surface::parameterize_doubly_ruled_with(&m, false);
+                        assert!(matches!(quick, Ok(None)), "searched without the search");
+                        if let Ok(Some(_)) = surface::parameterize_doubly_ruled_with(&m, true) {
+                            searched += 1;
+                        }
                     }
                 }
                 let fast = choose_surface_small(&am, &bm, &analysis).expect("no error");
@@ -2268,8 +2276,8 @@ mod tests {
             }
         }
         assert!(
-            small * 2 >= total && hard > 0,
-            "{small} small, {hard} hard of {total}"
+            small * 2 >= total && hard > 0 && searched > 0,
+            "{small} small, {hard} hard of {total}, {searched} ruled by the search"
         );
         // pairs without a small point on any primary candidate: from more seeds
         let mut seed = 100;
