@@ -781,8 +781,8 @@ fn newton_in(p: &Poly, lo: f64, hi: f64) -> Option<(f64, bool)> {
 }
 
 /// `true` if the root of `p` in the isolating interval `(lo, hi)` is within `|x|·2⁻⁴²` of
-/// `x` (`x ≠ 0`): the ends `x ± |x|·2⁻⁴²` lie in the interval and `p` has opposite exact
-/// signs there (an odd number of roots between them, so the one root of the interval).
+/// `x` (never for `x = 0`, where the two ends coincide): the ends `x ± |x|·2⁻⁴²` lie in the
+/// interval and `p` has opposite exact signs there (an odd number of roots between them, so the one root of the interval).
 /// What makes a float root certain where the float evaluation's error bound is too coarse
 /// (close roots, a small derivative), at the cost of two exact evaluations.
 fn brackets(p: &Poly, lo: &RBig, hi: &RBig, x: f64) -> bool {
@@ -790,7 +790,7 @@ fn brackets(p: &Poly, lo: &RBig, hi: &RBig, x: f64) -> bool {
     let (Ok(a), Ok(b)) = (RBig::try_from(x - delta), RBig::try_from(x + delta)) else {
         return false;
     };
-    x != 0.0 && lo < &a && &b < hi && p.sign_at(&a) * p.sign_at(&b) == Sign::Negative
+    lo < &a && &b < hi && p.sign_at(&a) * p.sign_at(&b) == Sign::Negative
 }
 
 /// `⌊v·2^k⌋`.
@@ -1287,6 +1287,49 @@ mod tests {
             }
         }
         assert!(zeros >= 10, "{zeros} zeros");
+    }
+
+    /// `brackets` proves a float within `|x|·2⁻⁴²` of the interval's root and nothing
+    /// farther: at √2 and off it, at one of two roots `10⁻³` apart, and not for an `x` whose
+    /// bracket leaves the interval or for `x = 0`. `to_f64` of each close root (Newton's
+    /// rounding bound too coarse there) is within that distance of the exact root.
+    #[test]
+    fn float_roots_bracketed_by_two_exact_signs() {
+        let r = |n: i64, d: i64| RBig::from_parts_signed(n.into(), d.into());
+        let p = Poly::from_i64s(&[-2, 0, 1]);
+        assert!(brackets(&p, &r(1, 1), &r(2, 1), std::f64::consts::SQRT_2));
+        assert!(!brackets(&p, &r(1, 1), &r(2, 1), 1.414));
+        assert!(!brackets(
+            &p,
+            &r(14142, 10000),
+            &r(141421356237, 100000000000),
+            std::f64::consts::SQRT_2
+        ));
+        // (1000x − 1001)(1000x − 1002): roots 1.001 and 1.002
+        let q = &Poly::from_i64s(&[-1001, 1000]) * &Poly::from_i64s(&[-1002, 1000]);
+        let (lo, hi) = (r(10005, 10000), r(10015, 10000));
+        assert!(brackets(&q, &lo, &hi, 1.001));
+        assert!(!brackets(&q, &lo, &hi, 1.0012));
+        assert!(!brackets(
+            &Poly::from_i64s(&[0, 1]),
+            &r(-1, 1),
+            &r(1, 1),
+            0.0
+        ));
+        // close roots of a product with large coefficients: Newton's bound fails, the
+        // bracket holds, and the float is that close to the root
+        let big =
+            &Poly::from_i64s(&[-1_000_001, 1_000_000]) * &Poly::from_i64s(&[-1_000_002, 1_000_000]);
+        let wide = &big * &Poly::from_i64s(&[-3_000_000_000, 0, 1_000_000_000]);
+        for root in AlgebraicReal::real_roots_of(&wide) {
+            let x = root.to_f64();
+            let exact = root.refined_interval(&r(1, 1 << 62));
+            let mid = (exact.lo().to_f64().value() + exact.hi().to_f64().value()) / 2.0;
+            assert!(
+                (x - mid).abs() <= mid.abs() * 2f64.powi(-41),
+                "{x} vs {mid}"
+            );
+        }
     }
 
     #[test]
