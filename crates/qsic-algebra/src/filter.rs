@@ -330,9 +330,44 @@ mod tests {
         let c = [0.0, -24.0 * TINY, -39.0 * TINY, 17.0 * TINY, 13.0 * TINY];
         assert_eq!(exact_sign_poly(&c, 1.5), Sign::Negative);
         assert_ne!(certified_sign_poly(&c, 1.5), Some(Sign::Positive));
+        // the enclosure version at radius 0 keeps the underflow term
+        assert_ne!(certified_sign_poly_near(&c, 1.5, 0.0), Some(Sign::Positive));
         // and the same polynomial scaled up by 2⁶⁰ is decided, with the right sign
         let big: Vec<f64> = c.iter().map(|v| v * pow2(60)).collect();
         assert_eq!(certified_sign_poly(&big, 1.5), Some(Sign::Negative));
+        assert_eq!(
+            certified_sign_poly_near(&big, 1.5, 0.0),
+            Some(Sign::Negative)
+        );
+    }
+
+    /// The enclosure version: at radius 0 it decides what `certified_sign_poly` decides on the
+    /// adversarial polynomials above (nothing wrong), a radius that is negative, infinite or
+    /// NaN decides nothing, and the radius' term is `r` times the slope bound, not more.
+    #[test]
+    fn enclosure_signs_at_the_edges() {
+        for &(c, num) in &WRONG_FLOAT_POLYS {
+            let c: Vec<f64> = c.iter().map(|&v| v as f64).collect();
+            assert_eq!(
+                certified_sign_poly_near(&c, num as f64 / pow2(51), 0.0),
+                None
+            );
+        }
+        for r in [-1.0, f64::INFINITY, f64::NAN] {
+            assert_eq!(certified_sign_poly_near(&[1.0], 0.0, r), None, "{r}");
+        }
+        // x − 1 at 1.5 ± 0.25: decided (0.5 against 0.25 and the rounding)
+        assert_eq!(
+            certified_sign_poly_near(&[-1.0, 1.0], 1.5, 0.25),
+            Some(Sign::Positive)
+        );
+        assert_eq!(certified_sign_poly_near(&[-1.0, 1.0], 1.5, 0.5), None);
+        // subnormal coefficients whose Horner products underflow: not decided at radius 0
+        let t = [34, 8, -4, 10, 21, -3].map(|v| v as f64 * TINY);
+        assert_eq!(
+            certified_sign_poly_near(&t, 7.5, 0.0),
+            certified_sign_poly(&t, 7.5)
+        );
     }
 
     #[test]
@@ -386,6 +421,7 @@ mod tests {
             let (alpha, x) = (beta + da as f64 * unit, beta + dx as f64 * unit);
             let r = (x - alpha).abs() * widen;
             let p = &Poly::from_i64s(&[-b, 1 << 20]) * &Poly::from_i64s(&q);
+            prop_assume!(!p.is_zero());
             let cf: Vec<f64> = p.coeffs().iter().map(|v| v.to_f64().value()).collect();
             let exact = p.sign_at(&exact(alpha));
             if let Some(s) = certified_sign_poly_near(&cf, x, r) {
