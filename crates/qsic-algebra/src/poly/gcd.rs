@@ -59,21 +59,22 @@ fn inv_mod(a: u64) -> u64 {
     r
 }
 
-/// Coefficients modulo [`PRIME`], trailing zeros removed (in machine words where they fit).
+/// `v` modulo [`PRIME`], in `0..PRIME` (in machine words where it fits).
+fn residue(v: &IBig) -> u64 {
+    match i128::try_from(v) {
+        Ok(w) => w.rem_euclid(i128::from(PRIME)) as u64,
+        Err(_) => {
+            let m = IBig::from(PRIME);
+            let r = v % &m;
+            let r = if r < IBig::ZERO { r + &m } else { r };
+            u64::try_from(r).expect("a residue modulo a 61-bit prime fits in u64")
+        }
+    }
+}
+
+/// Coefficients modulo [`PRIME`], trailing zeros removed.
 fn reduce(p: &Poly) -> Vec<u64> {
-    let m = IBig::from(PRIME);
-    let mut c: Vec<u64> = p
-        .coeffs()
-        .iter()
-        .map(|v| match i128::try_from(v) {
-            Ok(w) => w.rem_euclid(i128::from(PRIME)) as u64,
-            Err(_) => {
-                let r = v % &m;
-                let r = if r < IBig::ZERO { r + &m } else { r };
-                u64::try_from(r).expect("a residue modulo a 61-bit prime fits in u64")
-            }
-        })
-        .collect();
+    let mut c: Vec<u64> = p.coeffs().iter().map(residue).collect();
     while c.last() == Some(&0) {
         c.pop();
     }
@@ -140,10 +141,11 @@ fn gcd_modular(a: &Poly, b: &Poly) -> Option<Poly> {
         return Some(Poly::constant(IBig::ONE));
     }
     let gamma = crate::int_gcd(&a.leading(), &b.leading());
-    let scale = mul_mod(
-        reduce(&Poly::constant(gamma)).first().copied()?,
-        inv_mod(*h.last().expect("h is nonzero")),
-    );
+    let g = residue(&gamma);
+    if g == 0 {
+        return None;
+    }
+    let scale = mul_mod(g, inv_mod(*h.last().expect("h is nonzero")));
     let half = PRIME / 2;
     let lifted: Vec<IBig> = h
         .iter()

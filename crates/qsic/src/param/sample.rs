@@ -2298,15 +2298,7 @@ fn exact_crossings_of(exact: &ExactParam, h: &[RBig; 4]) -> Option<Vec<Crossing>
                 // a quartic is not planar: h(a) = ±h(d)√s identically cannot hold
                 return Some(Vec::new());
             }
-            // h(a) + σ·h(d)·√s = 0: σ = −sign(h(a)·h(d)); both sheets where √s = 0 or h(d) = 0
-            let sheets = |sa: Sign, sd: Sign, ss: Sign| -> Vec<Sheet> {
-                match (ss, sd) {
-                    (Sign::Negative, _) => Vec::new(),
-                    (Sign::Zero, _) | (_, Sign::Zero) => vec![Sheet::Plus, Sheet::Minus],
-                    _ if sa == sd => vec![Sheet::Minus],
-                    _ => vec![Sheet::Plus],
-                }
-            };
+            let sheets = crossing_sheets;
             // a_i² − d_i²·s: X_σ is the zero vector where every one vanishes and the signs
             // of a_i and d_i match σ (a removable zero of Levin's form, where c₂ = 0: not a
             // point of the plane, whatever h is)
@@ -2377,6 +2369,18 @@ fn exact_crossings_of(exact: &ExactParam, h: &[RBig; 4]) -> Option<Vec<Crossing>
             }
             Some(out)
         }
+    }
+}
+
+/// The sheets of Levin's form through a root of `h(a)² − h(d)²·s` with the signs `sa`, `sd`,
+/// `ss` of `h(a)`, `h(d)`, `s` there: `h(a) + σ·h(d)·√s = 0` for `σ = −sign(h(a)·h(d))`; both
+/// where `√s = 0` or `h(d) = 0`, none where `s < 0`.
+fn crossing_sheets(sa: Sign, sd: Sign, ss: Sign) -> Vec<Sheet> {
+    match (ss, sd) {
+        (Sign::Negative, _) => Vec::new(),
+        (Sign::Zero, _) | (_, Sign::Zero) => vec![Sheet::Plus, Sheet::Minus],
+        _ if sa == sd => vec![Sheet::Minus],
+        _ => vec![Sheet::Plus],
     }
 }
 
@@ -3753,14 +3757,7 @@ mod tests {
             let norms: Vec<Poly<RBig>> = (0..4)
                 .map(|i| &(&a[i] * &a[i]) - &(&(&d[i] * &d[i]) * s))
                 .collect();
-            let sheets = |sa: Sign, sd: Sign, ss: Sign| -> Vec<Sheet> {
-                match (ss, sd) {
-                    (Sign::Negative, _) => Vec::new(),
-                    (Sign::Zero, _) | (_, Sign::Zero) => vec![Sheet::Plus, Sheet::Minus],
-                    _ if sa == sd => vec![Sheet::Minus],
-                    _ => vec![Sheet::Plus],
-                }
-            };
+            let sheets = crossing_sheets;
             let keep = |sheet: Sheet,
                         sa: &dyn Fn(usize) -> Sign,
                         sd: &dyn Fn(usize) -> Sign,
