@@ -14,6 +14,7 @@
 //! | [`param`] | `qsic param`: the exact curve as JSON and text |
 //! | [`mod@sample`] | `qsic sample`: real points as JSON, CSV, OBJ |
 //! | [`plot`] | `qsic plot`: the curve in a 3D view and the eigencurve, as SVG |
+//! | `plot_common` | the common surfaces in a plot (`A ∝ B`, a common plane): what is drawn, where the cube goes |
 //! | [`svg`] | SVG helpers shared by the pictures: escaping, palette, panels |
 
 pub mod affine;
@@ -26,5 +27,6 @@ pub mod motion_plot;
 pub mod output;
 pub mod param;
 pub mod plot;
+mod plot_common;
 pub mod sample;
 pub mod svg;

@@ -738,7 +738,11 @@ fn run_sample(args: &SampleArgs) -> ExitCode {
         Ok(pair) => pair,
         Err(code) => return code,
     };
-    let (curve, sampled) = match sample::sample_of(qa.as_ref(), qb.as_ref(), &options) {
+    let sample::Sampling {
+        curve,
+        sampled,
+        surfaces,
+    } = match sample::sample_of(qa.as_ref(), qb.as_ref(), &options) {
         Ok(r) => r,
         Err(message) => {
             eprintln!("error: {message}");
@@ -765,7 +769,9 @@ fn run_sample(args: &SampleArgs) -> ExitCode {
             let affine = (!args.projective).then_some(&ctx);
             format!(
                 "{{{}}}\n",
-                param::fields_of(&sample::SampleJson::with_affine(&curve, &sampled, affine))
+                param::fields_of(&sample::SampleJson::with_affine(
+                    &curve, &sampled, &surfaces, affine
+                ))
             )
         }
         Format::Csv => sample::to_csv(&sampled, &options),

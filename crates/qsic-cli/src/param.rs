@@ -10,7 +10,8 @@
 
 use crate::batch::Answer;
 use crate::output::ClassificationJson;
-use qsic::affine::{affine_conic, affine_view_of_curve, Chart};
+use qsic::affine::{affine_conic, affine_view_of_curve, common_surfaces, Chart};
+use qsic::classify::ComponentKind;
 use qsic::param::expr::{NamedNumber, Names};
 use qsic::param::{parameterize, ComponentParam, Curve};
 use qsic::{Error, Quadric};
@@ -96,8 +97,16 @@ pub struct ComponentParamJson {
     pub multiplicity: u32,
     /// Real or not.
     pub real: bool,
-    /// The parameterization, `null` for a non-real component.
+    /// The parameterization, `null` for a non-real component (and, for now, a surface).
     pub param: Option<ParamFormJson>,
+    /// A plane component's equation `[a, b, c, d]` (`ax + by + cz + dw = 0`), exact; absent
+    /// for other components.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plane: Option<[String; 4]>,
+    /// A real common surface's affine name (`plane`, `plane_at_infinity`, `sphere`, …: see
+    /// `qsic::affine::common_surfaces`); absent for curves and with `--projective`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub name: Option<&'static str>,
     /// A real conic's type, centre or vertex, axes ([`crate::affine::conic_json`]); absent
     /// for other components and with `--projective`.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -177,10 +186,17 @@ impl ParamJson {
     pub fn new(curve: &Curve, affine: Option<&AffineContext>) -> Self {
         let c = ClassificationJson::from(&curve.classification);
         let mut names = Names::new();
+        let surfaces = match affine {
+            Some(AffineContext {
+                a: Some(a), chart, ..
+            }) => common_surfaces(curve, a, chart),
+            _ => Vec::new(),
+        };
         let components = curve
             .components
             .iter()
-            .map(|comp| ComponentParamJson {
+            .enumerate()
+            .map(|(k, comp)| ComponentParamJson {
                 kind: comp.kind.key(),
                 multiplicity: comp.multiplicity,
                 real: comp.real,
@@ -197,6 +213,15 @@ impl ParamJson {
                         s: names.poly(s),
                     },
                 }),
+                plane: comp
+                    .plane
+                    .as_ref()
+                    .filter(|_| comp.kind == ComponentKind::Plane)
+                    .map(|l| std::array::from_fn(|i| names.number(&l[i]))),
+                name: surfaces
+                    .iter()
+                    .find(|(i, _)| *i == k)
+                    .and_then(|(_, s)| s.name),
                 affine: affine.and_then(|ctx| {
                     let conic = affine_conic(comp, ctx.chart);
                     match conic {
@@ -294,8 +319,15 @@ pub fn human_report(json: &ParamJson) -> String {
             "component {k}: {} (multiplicity {}){}\n",
             c.kind,
             c.multiplicity,
-            if c.real { "" } else { ", not real" }
+            match (c.real, c.name) {
+                (false, _) => ", not real".to_owned(),
+                (true, Some(name)) => format!(", {name}"),
+                (true, None) => String::new(),
+            }
         ));
+        if let Some(l) = &c.plane {
+            out.push_str(&format!("  plane ({})·(x, y, z, w) = 0\n", l.join(", ")));
+        }
         match &c.param {
             None => {}
             Some(ParamFormJson::Point { point }) => {

@@ -24,6 +24,7 @@
 //! and the legend says so.
 
 use crate::param::curve_of;
+use crate::plot_common::{anchor, common_of, Common};
 use crate::svg::{colour, document, push_text, push_title, wrap, Panel};
 use qsic::affine::{affine_view, AffineView, Chart};
 use qsic::classify::analyze_pencil;
@@ -238,6 +239,8 @@ enum Region {
     Unbounded,
     /// No real point in ℝ³: around the surfaces.
     Surfaces,
+    /// Only a common surface (no curve in ℝ³): around a point of it.
+    Common,
 }
 
 fn norm(p: &[f64; 3]) -> f64 {
@@ -250,6 +253,7 @@ fn region_of(
     singular: &[(&'static str, Option<[f64; 3]>)],
     view: &AffineView,
     surfaces: &[[[f64; 4]; 4]; 2],
+    common: &[Common],
 ) -> (Cube, Region) {
     let finite = |p: &[f64; 3]| p.iter().all(|v| v.is_finite());
     let mut bounded: Vec<[f64; 3]> = singular.iter().filter_map(|s| s.1).collect();
@@ -288,6 +292,13 @@ fn region_of(
         return (Cube { centre: mean, half }, Region::Unbounded);
     }
     let mut corners = Vec::new();
+    let ellipsoids = view
+        .surfaces
+        .iter()
+        .any(|s| s.is_some_and(|s| s.is_ellipsoid()));
+    if let (Some((centre, half)), false) = (anchor(common), ellipsoids) {
+        return (Cube { centre, half }, Region::Common);
+    }
     for (k, name) in view.surfaces.iter().enumerate() {
         if name.is_some_and(|s| s.is_ellipsoid()) {
             if let Some((lo, hi)) = ellipsoid_box(&surfaces[k]) {
@@ -345,6 +356,8 @@ struct Scene {
     singular: Vec<(&'static str, Option<[f64; 3]>)>,
     /// The surfaces' matrices in the chart's coordinates.
     surfaces: [[[f64; 4]; 4]; 2],
+    /// The common surfaces (`A ∝ B`, a common plane), drawn after the pieces' colours.
+    common: Vec<Common>,
     texts: [String; 2],
     cube: Cube,
     region: Region,
@@ -372,7 +385,8 @@ impl Scene {
         let first = sample(&curve, &sample_options).map_err(|e| e.to_string())?;
         let surfaces = [a, b].map(|q| float_matrix(&chart.matrix_in_chart(q.matrix())));
         let singular = singular_points(&view);
-        let (cube, region) = region_of(&first, &singular, &view, &surfaces);
+        let common = common_of(&curve, &view, a, &chart, float_matrix);
+        let (cube, region) = region_of(&first, &singular, &view, &surfaces, &common);
         sample_options.tolerance = Some(cube.half / 300.0);
         let sampled = sample(&curve, &sample_options).unwrap_or(first);
         Ok(Scene {
@@ -381,6 +395,7 @@ impl Scene {
             view,
             singular,
             surfaces,
+            common,
             texts: [a, b].map(Quadric::to_polynomial_string),
             cube,
             region,
@@ -395,6 +410,7 @@ impl Scene {
             .pieces
             .iter()
             .all(|p| p.affine.at_infinity || p.affine.branches.is_empty())
+            && self.common.iter().all(|c| c.matrix.is_none())
     }
 }
 
@@ -826,7 +842,7 @@ fn curve_panel(scene: &Scene) -> Panel {
     );
     draw_scene(&mut body, scene, DRAW, true);
     if scene.is_empty() {
-        let message = if scene.sampled.pieces.is_empty() {
+        let message = if scene.sampled.pieces.is_empty() && scene.common.is_empty() {
             "no real point: the real curve is empty"
         } else {
             "no real point in ℝ³: the real curve lies at infinity"
@@ -962,6 +978,29 @@ fn draw_scene(body: &mut String, scene: &Scene, rect: (f64, f64, f64, f64), labe
         body.push_str("</g>\n");
     }
 
+    // the common surfaces, in the colours after the pieces'
+    let pieces = scene.sampled.pieces.len();
+    for (k, c) in scene.common.iter().enumerate() {
+        let Some(m) = &c.matrix else { continue };
+        let _ = write!(
+            body,
+            "<g class=\"piece common\" data-piece=\"{}\" data-kind=\"surface\" data-name=\"{}\" stroke=\"{}\">",
+            pieces + k,
+            c.name,
+            colour(pieces + k)
+        );
+        let _ = write!(
+            body,
+            "<title>common {}</title><path class=\"branch\" d=\"",
+            c.name
+        );
+        for line in &surface_sections(m, cube, 7) {
+            push_path_data(body, &camera, line);
+            body.push(' ');
+        }
+        body.push_str("\"/></g>\n");
+    }
+
     // the singular points in ℝ³
     for (kind, at) in &scene.singular {
         let Some(p) = at else { continue };
@@ -1035,7 +1074,7 @@ fn push_legend(body: &mut String, scene: &Scene) -> f64 {
     );
     y += 6.0;
     line(&mut y, body, "legend-head", 0.0, "Real pieces (colours):");
-    if scene.sampled.pieces.is_empty() {
+    if scene.sampled.pieces.is_empty() && scene.common.is_empty() {
         line(
             &mut y,
             body,
@@ -1073,6 +1112,26 @@ fn push_legend(body: &mut String, scene: &Scene) -> f64 {
         );
         line(&mut y, body, "legend", 24.0, &format!("{}: {what}", k + 1));
     }
+    let pieces = scene.sampled.pieces.len();
+    for (k, c) in scene.common.iter().enumerate() {
+        let what = match c.matrix {
+            Some(_) => format!("the common {}, drawn by its sections", c.name),
+            None => format!("the common {}, at infinity (not drawn)", c.name),
+        };
+        let _ = writeln!(
+            body,
+            "<rect class=\"swatch\" x=\"{LEGEND_X}\" y=\"{:.1}\" width=\"18\" height=\"5\" fill=\"{}\"/>",
+            y - 6.0,
+            colour(pieces + k)
+        );
+        line(
+            &mut y,
+            body,
+            "legend",
+            24.0,
+            &format!("{}: {what}", pieces + k + 1),
+        );
+    }
     let finite: Vec<_> = scene
         .singular
         .iter()
@@ -1107,7 +1166,9 @@ fn push_legend(body: &mut String, scene: &Scene) -> f64 {
     let around = match scene.region {
         Region::Bounded => "around the bounded pieces, isolated and singular points",
         Region::Unbounded => "around the unbounded branches' points nearest the origin",
+        Region::Surfaces if !scene.common.is_empty() => "around the surfaces",
         Region::Surfaces => "around the surfaces (no real point in ℝ³)",
+        Region::Common => "around a point of the common surface",
     };
     let unbounded = scene
         .sampled

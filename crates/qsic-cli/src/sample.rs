@@ -10,7 +10,7 @@
 use crate::batch::Answer;
 use crate::output::ClassificationJson;
 use crate::param::{curve_of, fields_of, AffineContext};
-use qsic::affine::Chart;
+use qsic::affine::{common_surfaces, AffineComponent, Chart};
 use qsic::io::{parse_rational_function, Variable};
 use qsic::param::sample::{sample, verify_on_quadrics, SampleOptions, Sampled};
 use qsic::param::Curve;
@@ -70,7 +70,10 @@ pub struct PieceJson {
     pub kind: &'static str,
     /// The component's multiplicity.
     pub multiplicity: u32,
-    /// Polylines of unit vectors `[x, y, z, w]`.
+    /// A common surface's affine name (`plane`, `sphere`, …); absent for curves and points.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub name: Option<&'static str>,
+    /// Polylines of unit vectors `[x, y, z, w]` (none yet for a common surface).
     pub branches: Vec<Vec<[f64; 4]>>,
     /// The affine view.
     pub affine: AffineJson,
@@ -97,10 +100,16 @@ pub struct SampleJson {
 }
 
 impl SampleJson {
-    /// The object for `curve` and its points.
-    pub fn new(curve: &Curve, sampled: &Sampled) -> SampleJson {
+    /// The object for `curve`, its points and its common surfaces
+    /// ([`qsic::affine::common_surfaces`]: listed after the pieces, each a connected
+    /// component of its own, without points).
+    pub fn new(
+        curve: &Curve,
+        sampled: &Sampled,
+        surfaces: &[(usize, AffineComponent)],
+    ) -> SampleJson {
         let c = ClassificationJson::from(&curve.classification);
-        let components = sampled
+        let mut components: Vec<PieceJson> = sampled
             .pieces
             .iter()
             .map(|p| {
@@ -108,6 +117,7 @@ impl SampleJson {
                 PieceJson {
                     kind: if p.isolated { "point" } else { comp.kind.key() },
                     multiplicity: comp.multiplicity,
+                    name: None,
                     branches: p.branches(),
                     affine: AffineJson {
                         branches: p.affine.branches.clone(),
@@ -117,13 +127,28 @@ impl SampleJson {
                 }
             })
             .collect();
+        let mut connected = curve.connected.clone();
+        for (k, surface) in surfaces {
+            connected.push(vec![components.len()]);
+            components.push(PieceJson {
+                kind: surface.kind.key(),
+                multiplicity: curve.components[*k].multiplicity,
+                name: surface.name,
+                branches: Vec::new(),
+                affine: AffineJson {
+                    branches: Vec::new(),
+                    bounded: surface.bounded == Some(true),
+                    points_at_infinity: Vec::new(),
+                },
+            });
+        }
         SampleJson {
             pencil: c.pencil,
             case: c.case,
             complex_type: c.complex_type,
             real_type: c.real_type,
             components,
-            connected_components: curve.connected.clone(),
+            connected_components: connected,
             affine: None,
         }
     }
@@ -132,16 +157,18 @@ impl SampleJson {
     pub fn with_affine(
         curve: &Curve,
         sampled: &Sampled,
+        surfaces: &[(usize, AffineComponent)],
         affine: Option<&AffineContext>,
     ) -> SampleJson {
         SampleJson {
             affine: affine.map(|ctx| ctx.view_json(curve)),
-            ..SampleJson::new(curve, sampled)
+            ..SampleJson::new(curve, sampled, surfaces)
         }
     }
 }
 
-/// The curve of `a`, `b` and its points, or an error message.
+/// The curve of `a`, `b`, its points and its common surfaces in the options' chart, or an
+/// error message.
 ///
 /// # Errors
 /// The message (`not yet: …` for a class not covered).
@@ -149,13 +176,30 @@ pub fn sample_of(
     a: Option<&Quadric>,
     b: Option<&Quadric>,
     options: &SampleOptions,
-) -> Result<(Curve, Sampled), String> {
+) -> Result<Sampling, String> {
     let curve = curve_of(a, b)?;
     let sampled = sample(&curve, options).map_err(|e| e.to_string())?;
+    let mut surfaces = Vec::new();
     if let (Some(a), Some(b)) = (a, b) {
         verify_on_quadrics(&sampled, a, b).map_err(|e| e.to_string())?;
+        let chart = Chart::new(options.chart.clone()).map_err(|e| e.to_string())?;
+        surfaces = common_surfaces(&curve, a, &chart);
     }
-    Ok((curve, sampled))
+    Ok(Sampling {
+        curve,
+        sampled,
+        surfaces,
+    })
+}
+
+/// What `sample` answers: the curve, its points, its common surfaces.
+pub struct Sampling {
+    /// The exact curve.
+    pub curve: Curve,
+    /// Its points.
+    pub sampled: Sampled,
+    /// Its common surfaces ([`qsic::affine::common_surfaces`]).
+    pub surfaces: Vec<(usize, AffineComponent)>,
 }
 
 /// The batch answer of `qsic sample` (JSON).
@@ -175,7 +219,11 @@ impl Answer for Sample {
         b: Option<&Quadric>,
         planes: [bool; 2],
     ) -> Result<String, String> {
-        let (curve, sampled) = sample_of(a, b, &self.options)?;
+        let Sampling {
+            curve,
+            sampled,
+            surfaces,
+        } = sample_of(a, b, &self.options)?;
         let affine = if self.projective_only {
             None
         } else {
@@ -191,6 +239,7 @@ impl Answer for Sample {
         Ok(fields_of(&SampleJson::with_affine(
             &curve,
             &sampled,
+            &surfaces,
             ctx.as_ref(),
         )))
     }

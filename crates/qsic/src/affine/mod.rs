@@ -5,6 +5,8 @@
 //! | [`Chart`] | the plane at infinity `ℓ(X) = 0` (default `w = 0`) and the change of coordinates making it `w = 0` |
 //! | [`AffineSurface`], [`surface_name`] | the affine name of a quadric (sphere, elliptic cylinder, …), exactly |
 //! | [`affine_curve`] | the curve in ℝ³: bounded and unbounded pieces, points and singular points at infinity, conic names |
+//! | [`common_surfaces`] | a common plane, or the quadric when `A ∝ B`, with its affine name |
+//! | [`affine_view`], [`AffineView`] | the surfaces' names, the curve, the solids, the summary in words |
 //! | [`affine_conic`] | a conic component's type, centre or vertex, axes, radius, exactly |
 //! | [`fast_affine_curve`], [`conic_real_intersections`] | the same without the curve where the class and the conics at infinity decide it (nonsingular quartics) |
 //!
@@ -22,10 +24,10 @@ mod fast;
 mod view;
 
 pub use conic::{affine_conic, approx, AffineConic, Axis, ConicShape, Direction, Surd};
-pub use curve::{affine_curve, AffineComponent, AffineCurve, AffineSingularPoint};
+pub use curve::{affine_curve, common_surfaces, AffineComponent, AffineCurve, AffineSingularPoint};
 pub(crate) use curve::{chart_value, params_of_point};
 pub use fast::{conic_real_intersections, fast_affine_curve};
-pub use view::affine_view_of_curve;
+pub use view::{affine_view, affine_view_of_curve, AffineView};
 
 use crate::error::Error;
 use crate::param::{Number, Point};
@@ -458,102 +460,4 @@ mod tests {
         assert_eq!(surface_name(&q, &chart), HyperboloidTwoSheets);
         assert!(Chart::new([0, 0, 0, 0].map(RBig::from)).is_err());
     }
-}
-
-/// Everything the affine view says about a pair: the surfaces' names, the curve in ℝ³ when
-/// its exact components are available, and the relation of two solid ellipsoids.
-#[derive(Clone, Debug)]
-pub struct AffineView {
-    /// The affine names of `A` and `B` (`None` for the zero form).
-    pub surfaces: [Option<AffineSurface>; 2],
-    /// The curve in ℝ³, or why it is not available (a class whose curve is not built yet).
-    pub curve: Result<AffineCurve, Error>,
-    /// The relation of the solids when both surfaces are ellipsoids (spheres included).
-    pub solids: Option<crate::solids::SolidRelation>,
-}
-
-impl AffineView {
-    /// A one-line summary in affine words, e.g. `"sphere and circular_cylinder: 2 bounded
-    /// curves in ℝ³; no point at infinity"`.
-    pub fn summary(&self) -> String {
-        let name = |s: &Option<AffineSurface>| s.map_or("zero form", AffineSurface::key);
-        let mut out = format!(
-            "{} and {}",
-            name(&self.surfaces[0]),
-            name(&self.surfaces[1])
-        );
-        match &self.curve {
-            Ok(c) => {
-                let mut parts = Vec::new();
-                let plural =
-                    |n: usize, what: &str| format!("{n} {what}{}", if n == 1 { "" } else { "s" });
-                if c.curves_bounded + c.curves_unbounded + c.isolated_points == 0 {
-                    parts.push("no common point in ℝ³".to_owned());
-                } else {
-                    if c.curves_bounded > 0 {
-                        parts.push(plural(c.curves_bounded, "bounded curve"));
-                    }
-                    if c.curves_unbounded > 0 {
-                        parts.push(plural(c.curves_unbounded, "unbounded curve"));
-                    }
-                    if c.isolated_points > 0 {
-                        parts.push(plural(c.isolated_points, "isolated point"));
-                    }
-                }
-                out.push_str(": ");
-                out.push_str(&parts.join(", "));
-                let in_plane = c
-                    .components
-                    .iter()
-                    .filter(|k| k.at_infinity && k.name.is_some())
-                    .count();
-                if in_plane > 0 {
-                    out.push_str(&format!(
-                        "; {} in the plane at infinity",
-                        plural(in_plane, "real component")
-                    ));
-                }
-                if c.points_at_infinity > 0 {
-                    out.push_str(&format!(
-                        "; {} at infinity",
-                        plural(c.points_at_infinity, "point")
-                    ));
-                }
-                if c.singular_at_infinity > 0 {
-                    out.push_str(&format!(
-                        "; {} at infinity",
-                        plural(c.singular_at_infinity, "singular point")
-                    ));
-                }
-                if in_plane + c.points_at_infinity + c.singular_at_infinity == 0 {
-                    out.push_str("; no point at infinity");
-                }
-            }
-            Err(_) => out.push_str(": the curve in ℝ³ is not available for this class yet"),
-        }
-        if let Some(s) = self.solids {
-            out.push_str("; solids ");
-            out.push_str(s.key());
-        }
-        out
-    }
-}
-
-/// The affine view of `a` and `b` (either may be the zero form, `None`) in `chart`;
-/// `planes[i]` marks an input given as a plane (its quadric the double plane): its name is
-/// `plane`.
-pub fn affine_view(
-    a: Option<&Quadric>,
-    b: Option<&Quadric>,
-    chart: &Chart,
-    planes: [bool; 2],
-) -> AffineView {
-    let curve = match (a, b) {
-        (Some(a), Some(b)) => match fast_affine_curve(a, b, chart) {
-            Some(c) => Ok(c),
-            None => crate::param::parameterize(a, b).and_then(|c| affine_curve(&c, a, b, chart)),
-        },
-        _ => Err(Error::Unsupported("a single quadric: no curve".into())),
-    };
-    view::assemble(a, b, chart, planes, curve)
 }

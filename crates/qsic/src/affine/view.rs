@@ -1,14 +1,174 @@
-//! The affine view of a pair whose curve is already built (`qsic param`, `qsic sample`): no
-//! second parameterization.
+//! The affine view of a pair: the surfaces' names, the curve in ℝ³, the solids' relation, and
+//! the one-line summary in words. [`affine_view`] builds the curve (the fast route first);
+//! [`affine_view_of_curve`] reads a curve already built (`qsic param`, `qsic sample`).
+//!
+//! What the two quadrics share beyond a curve is part of the answer: when `A ∝ B` the view
+//! says so ([`AffineView::same`]) and the summary reads "the two are the same sphere"; a
+//! common plane is a component of kind `plane` named `plane` (or `plane_at_infinity`).
 
 use super::{
-    affine_curve, fast_affine_curve, surface_name, AffineCurve, AffineSurface, AffineView, Chart,
+    affine_curve, fast_affine_curve, surface_name, AffineComponent, AffineCurve, AffineSurface,
+    Chart,
 };
+use crate::classify::ComponentKind;
 use crate::error::Error;
 use crate::param::Curve;
 use crate::quadric::Quadric;
+use qsic_algebra::IBig;
 
-/// [`super::affine_view`] of `a` and `b` with their curve given (`None` when either is the
+/// Everything the affine view says about a pair: the surfaces' names, the curve in ℝ³ when
+/// its exact components are available, and the relation of two solid ellipsoids.
+#[derive(Clone, Debug)]
+pub struct AffineView {
+    /// The affine names of `A` and `B` (`None` for the zero form).
+    pub surfaces: [Option<AffineSurface>; 2],
+    /// `A ∝ B`: the two are one quadric, which is then all they have in common.
+    pub same: bool,
+    /// The curve in ℝ³, or why it is not available (a class whose curve is not built yet).
+    pub curve: Result<AffineCurve, Error>,
+    /// The relation of the solids when both surfaces are ellipsoids (spheres included).
+    pub solids: Option<crate::solids::SolidRelation>,
+}
+
+impl AffineView {
+    /// A one-line summary in affine words, e.g. `"sphere and circular_cylinder: 2 bounded
+    /// curves in ℝ³; no point at infinity"`, `"sphere and sphere: the two are the same sphere;
+    /// solids equal"`, `"intersecting_planes and intersecting_planes: a common plane, 1
+    /// unbounded curve; 1 point at infinity on the curve"`.
+    pub fn summary(&self) -> String {
+        let name = |s: &Option<AffineSurface>| s.map_or("zero form", AffineSurface::key);
+        let mut out = format!(
+            "{} and {}",
+            name(&self.surfaces[0]),
+            name(&self.surfaces[1])
+        );
+        match &self.curve {
+            Ok(c) => {
+                out.push_str(": ");
+                let same = self.surfaces[0].filter(|_| self.same);
+                out.push_str(&curve_summary(c, same));
+            }
+            Err(_) => out.push_str(": the curve in ℝ³ is not available for this class yet"),
+        }
+        if let Some(s) = self.solids {
+            out.push_str("; solids ");
+            out.push_str(s.key());
+        }
+        out
+    }
+}
+
+/// A surface in words: its key with spaces, the two names that do not read as a surface made
+/// explicit.
+fn words(s: AffineSurface) -> String {
+    match s {
+        AffineSurface::Empty => "plane at infinity".into(),
+        AffineSurface::Imaginary => "imaginary quadric".into(),
+        s => s.key().replace('_', " "),
+    }
+}
+
+fn is_surface(k: &AffineComponent) -> bool {
+    matches!(k.kind, ComponentKind::Plane | ComponentKind::Quadric)
+}
+
+/// The summary's part after the names: the common surface (`same`: `A ∝ B`, this one), the
+/// curves and points in ℝ³, then what lies at infinity.
+fn curve_summary(c: &AffineCurve, same: Option<AffineSurface>) -> String {
+    let plural = |n: usize, what: &str| format!("{n} {what}{}", if n == 1 { "" } else { "s" });
+    let surfaces: Vec<&AffineComponent> = c
+        .components
+        .iter()
+        .filter(|k| is_surface(k) && k.name.is_some())
+        .collect();
+    let mut parts = Vec::new();
+    match same {
+        Some(s) => parts.push(format!("the two are the same {}", words(s))),
+        None => {
+            for k in &surfaces {
+                parts.push(if k.at_infinity {
+                    "the plane at infinity in common".to_owned()
+                } else {
+                    "a common plane".to_owned()
+                });
+            }
+        }
+    }
+    let finite_surface = surfaces.iter().any(|k| !k.at_infinity);
+    if c.curves_bounded + c.curves_unbounded + c.isolated_points == 0 {
+        if !finite_surface {
+            parts.push("no common point in ℝ³".to_owned());
+        }
+    } else {
+        if c.curves_bounded > 0 {
+            parts.push(plural(c.curves_bounded, "bounded curve"));
+        }
+        if c.curves_unbounded > 0 {
+            parts.push(plural(c.curves_unbounded, "unbounded curve"));
+        }
+        if c.isolated_points > 0 {
+            parts.push(plural(c.isolated_points, "isolated point"));
+        }
+    }
+    let mut out = parts.join(", ");
+    let in_plane = c
+        .components
+        .iter()
+        .filter(|k| {
+            // points at infinity are counted as such below
+            k.at_infinity && k.name.is_some() && !is_surface(k) && k.kind != ComponentKind::Point
+        })
+        .count();
+    // a common surface has points at infinity of its own: the counts are the curve's
+    let on_curve = if surfaces.is_empty() {
+        ""
+    } else {
+        " on the curve"
+    };
+    if in_plane > 0 {
+        out.push_str(&format!(
+            "; {} in the plane at infinity",
+            plural(in_plane, "real component")
+        ));
+    }
+    if c.points_at_infinity > 0 {
+        out.push_str(&format!(
+            "; {} at infinity{on_curve}",
+            plural(c.points_at_infinity, "point")
+        ));
+    }
+    if c.singular_at_infinity > 0 {
+        out.push_str(&format!(
+            "; {} at infinity{on_curve}",
+            plural(c.singular_at_infinity, "singular point")
+        ));
+    }
+    if in_plane + c.points_at_infinity + c.singular_at_infinity == 0 && surfaces.is_empty() {
+        out.push_str("; no point at infinity");
+    }
+    out
+}
+
+/// The affine view of `a` and `b` (either may be the zero form, `None`) in `chart`;
+/// `planes[i]` marks an input given as a plane (its quadric the double plane): its name is
+/// `plane`.
+pub fn affine_view(
+    a: Option<&Quadric>,
+    b: Option<&Quadric>,
+    chart: &Chart,
+    planes: [bool; 2],
+) -> AffineView {
+    let curve = match (a, b) {
+        (Some(a), Some(b)) => match fast_affine_curve(a, b, chart) {
+            Some(c) => Ok(c),
+            None => crate::param::parameterize(a, b).and_then(|c| affine_curve(&c, a, b, chart)),
+        },
+        _ => Err(Error::Unsupported("a single quadric: no curve".into())),
+    };
+    assemble(a, b, chart, planes, curve)
+}
+
+/// [`affine_view`] of `a` and `b` with their curve given (`None` when either is the
 /// zero form): the surfaces' names, [`affine_curve`] of `curve`, and the solids' relation of
 /// two ellipsoids in the default chart.
 ///
@@ -37,9 +197,21 @@ pub fn affine_view_of_curve(
     assemble(a, b, chart, planes, curve)
 }
 
+/// Whether `a ∝ b` (their primitive integer matrices agree up to sign).
+fn proportional(a: &Quadric, b: &Quadric) -> bool {
+    let (ma, mb) = (a.integer_matrix().entries(), b.integer_matrix().entries());
+    let Some((i, j)) = (0..16)
+        .map(|k| (k / 4, k % 4))
+        .find(|&(i, j)| ma[i][j] != IBig::ZERO)
+    else {
+        return false;
+    };
+    (0..4).all(|k| (0..4).all(|l| &ma[k][l] * &mb[i][j] == &mb[k][l] * &ma[i][j]))
+}
+
 /// The view from its curve part: the surfaces' names, and the solids' relation of two
 /// ellipsoids in the default chart.
-pub(super) fn assemble(
+fn assemble(
     a: Option<&Quadric>,
     b: Option<&Quadric>,
     chart: &Chart,
@@ -66,6 +238,7 @@ pub(super) fn assemble(
     };
     AffineView {
         surfaces,
+        same: matches!((a, b), (Some(a), Some(b)) if proportional(a, b)),
         curve,
         solids,
     }

@@ -1,6 +1,6 @@
 //! Levin's parameterization of the intersection curve, exactly (enhanced-Levin paper, §1.3,
 //! Appendix A, Theorem 12): nonsingular quartics (cases 1–4) here, curves on a plane pair
-//! of the pencil (cases 13–35, singular pencils) and the single quadric in `planar`.
+//! of the pencil (cases 13–35, singular pencils) in `planar`, the single quadric in `single`.
 //!
 //! | entry point | what |
 //! |---|---|
@@ -22,6 +22,7 @@ mod line_cubic;
 mod nodal;
 mod planar;
 pub mod sample;
+mod single;
 mod surface;
 mod zsqrt;
 
@@ -760,7 +761,7 @@ pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
         (PencilKind::Regular, Some(13..=35)) | (PencilKind::Singular, _) => {
             planar::plane_pair_curve(classification, a, b)
         }
-        (PencilKind::Single, _) => Ok(planar::single_curve(classification, a)),
+        (PencilKind::Single, _) => Ok(single::single_curve(classification, a)),
         (PencilKind::Regular, Some(case)) => Err(Error::Unsupported(format!(
             "the curve of case {case} (not yet)"
         ))),

@@ -1,10 +1,9 @@
 //! Curves made of conics and lines: the intersections that lie on a pair of planes of the
-//! pencil (cases 13–35, singular pencils), and the single quadric.
+//! pencil (cases 13–35, singular pencils).
 //!
 //! | entry point | what |
 //! |---|---|
 //! | [`plane_pair_curve`] | a member `P` of rank ≤ 2 at a rational λ, split into its planes; each plane cut by another member |
-//! | [`single_curve`] | `A ∝ B`: the quadric itself |
 //! | [`concurrent_lines_curve`] | no rational plane pair: four concurrent lines, the cone over two conics' meeting points |
 //! | [`conjugate_pair_curve`] | no rational plane pair: the skew quadrilateral at conjugate quadratic λ (real: kernels; complex: [`ruled_member_curve`]) |
 //!
@@ -1500,26 +1499,6 @@ fn coordinates_on(x: &[Quadratic], v: &[Vq; 2]) -> (Quadratic, Quadratic) {
         }
     }
     unreachable!("v₀, v₁ span a line")
-}
-
-/// The single quadric (`A ∝ B`): one component of kind `quadric`, real when it has real
-/// points (it is not definite), without a parameterization (a surface).
-pub(crate) fn single_curve(classification: Classification, q: &Quadric) -> Curve {
-    let inertia = q.integer_matrix().inertia();
-    let real = inertia.positive > 0 && inertia.negative > 0 || inertia.rank() < 4;
-    Curve {
-        classification,
-        components: vec![Component {
-            kind: ComponentKind::Quadric,
-            multiplicity: 1,
-            real,
-            param: None,
-            plane: None,
-        }],
-        singular_points: Vec::new(),
-        pieces: Vec::new(),
-        connected: Vec::new(),
-    }
 }
 
 #[cfg(test)]
