@@ -18,13 +18,15 @@
 //! has `Q`'s characteristic polynomial `x(x² − E₁x + E₂)` with `E₁² = 4E₂`; a circular cone has
 //! a cubic characteristic polynomial with zero discriminant.
 
+mod common;
 mod conic;
 mod curve;
 mod fast;
 mod view;
 
+pub use common::common_surfaces;
 pub use conic::{affine_conic, approx, AffineConic, Axis, ConicShape, Direction, Surd};
-pub use curve::{affine_curve, common_surfaces, AffineComponent, AffineCurve, AffineSingularPoint};
+pub use curve::{affine_curve, AffineComponent, AffineCurve, AffineSingularPoint};
 pub(crate) use curve::{chart_value, params_of_point};
 pub use fast::{conic_real_intersections, fast_affine_curve};
 pub use view::{affine_view, affine_view_of_curve, AffineView};
