@@ -536,15 +536,44 @@ fn arc_samples(finite: &[&AlgebraicReal], sign: &impl Fn(&Poly, &RBig) -> Sign) 
     let (lo, _) = floor_and_ceil(first.interval(), first.poly(), sign);
     out.push(RBig::from(lo - IBig::ONE));
     for w in finite.windows(2) {
+        let (a, b) = separated(w[0], w[1]);
         out.push(dyadic_between_isolated(
-            (w[0].interval(), w[0].poly()),
-            (w[1].interval(), w[1].poly()),
+            (a.interval(), a.poly()),
+            (b.interval(), b.poly()),
             sign,
         ));
     }
     let (_, hi) = floor_and_ceil(last.interval(), last.poly(), sign);
     out.push(RBig::from(hi + IBig::ONE));
     out
+}
+
+/// `α < β` with isolating intervals no wider than the gap between them, by quadratic
+/// refinement (`O(log log)` steps each once isolated): [`between_roots`] then needs a few
+/// picks where wide intervals would cost one halving per bit of the gap (a root `10⁻³⁰⁰⁰`
+/// beside `0`: 10 000 picks). The answer does not depend on the intervals.
+fn separated(alpha: &AlgebraicReal, beta: &AlgebraicReal) -> (AlgebraicReal, AlgebraicReal) {
+    let (mut a, mut b) = (alpha.clone(), beta.clone());
+    loop {
+        let (ia, ib) = (a.interval(), b.interval());
+        let gap = ib.lo() - ia.hi();
+        let wide = |iv: &RootInterval| iv.hi() - iv.lo() > gap;
+        match (gap > RBig::ZERO, wide(ia), wide(ib)) {
+            (true, false, false) => return (a, b),
+            (false, _, _) => {
+                a.refine();
+                b.refine();
+            }
+            (true, wa, wb) => {
+                if wa {
+                    a.refine();
+                }
+                if wb {
+                    b.refine();
+                }
+            }
+        }
+    }
 }
 
 /// The inertia at a simple finite root: exactly one eigenvalue crosses zero there, so the
@@ -1071,6 +1100,31 @@ mod tests {
         // a root, and the analysis decides; the random families are all answered
         assert!(simple >= 100 && hard >= 20, "{simple}, {hard}");
         assert!(answered >= simple - hard, "{answered} of {simple}");
+    }
+
+    /// Roots `10⁻ᵏ` beside `0` (the pencil of `diag(10ᵏ, 1, 1, −1)` and a cone): given the
+    /// wide isolating interval `(10⁻²ᵏ, 1)`, `separated` narrows it below the gap, and the
+    /// sample between them is the least dyadic there, `2⁻ᵐ` with `2ᵐ > 10ᵏ ≥ 2ᵐ⁻¹`.
+    #[test]
+    fn tiny_roots_are_separated_before_the_sample_is_picked() {
+        for k in [1usize, 30, 3000] {
+            let big = IBig::from(10).pow(k);
+            // (10ᵏλ − 1)·λ
+            let p = Poly::new(vec![IBig::ZERO, -IBig::ONE, big.clone()]);
+            let zero = AlgebraicReal::from_isolating_interval(&p, &RootInterval::Exact(RBig::ZERO))
+                .unwrap();
+            let lo = RBig::from_parts_signed(IBig::ONE, &big * &big);
+            let wide = RootInterval::Open(lo, RBig::ONE);
+            let tiny = AlgebraicReal::from_isolating_interval(&p, &wide).unwrap();
+            let (a, b) = separated(&zero, &tiny);
+            let gap = b.interval().lo() - a.interval().hi();
+            assert!(gap > RBig::ZERO);
+            assert!(b.interval().hi() - b.interval().lo() <= gap, "10^-{k}");
+            let m = (0..).find(|&m| IBig::ONE << m > big).unwrap();
+            let want = RBig::from_parts_signed(IBig::ONE, IBig::ONE << m);
+            let sign = |p: &Poly, x: &RBig| p.sign_at(x);
+            assert_eq!(arc_samples(&[&zero, &tiny], &sign)[1], want, "10^-{k}");
+        }
     }
 
     /// The arcs' samples depend on the roots only: from the certified intervals, from the
