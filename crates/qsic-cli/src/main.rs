@@ -768,7 +768,7 @@ fn run_sample(args: &SampleArgs) -> ExitCode {
                 param::fields_of(&sample::SampleJson::with_affine(&curve, &sampled, affine))
             )
         }
-        Format::Csv => sample::to_csv(&sampled, &options),
+        Format::Csv => sample::to_csv(&sampled),
         Format::Obj => sample::to_obj(&sampled),
     };
     write_out(&text)
