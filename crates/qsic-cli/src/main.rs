@@ -216,8 +216,8 @@ struct SampleArgs {
     #[arg(long, value_name = "N", default_value_t = 64)]
     points: usize,
 
-    /// Largest chord deviation in the affine chart.
-    #[arg(long, value_name = "T")]
+    /// Largest chord deviation in the affine chart: a positive finite number.
+    #[arg(long, value_name = "T", value_parser = sample::parse_tolerance)]
     tolerance: Option<f64>,
 
     /// The plane at infinity, "a*x+b*y+c*z+d*w" (default "w").

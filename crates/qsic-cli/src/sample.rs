@@ -3,6 +3,7 @@
 //! | entry point | gives |
 //! |---|---|
 //! | [`parse_chart`] | the plane at infinity from `"a*x+b*y+c*z+d*w"` |
+//! | [`parse_tolerance`] | `--tolerance`: a positive finite number |
 //! | [`SampleJson`] | the result object |
 //! | [`Sample`] | the batch answer |
 //! | [`to_csv`], [`to_obj`] | the other formats ([`csv_branches`]: the CSV's rows) |
@@ -50,6 +51,21 @@ pub fn parse_chart(text: &str) -> Result<[RBig; 4], String> {
         return Err("chart: the zero form is not a plane".into());
     }
     Ok(out)
+}
+
+/// `--tolerance T`: a positive finite number (the largest chord deviation in the chart).
+///
+/// # Errors
+/// A message giving the accepted range, for text that is not a number or a number that is
+/// zero, negative, infinite or NaN.
+pub fn parse_tolerance(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(t) if t.is_finite() && t > 0.0 => Ok(t),
+        _ => Err(format!(
+            "the tolerance must be a positive finite number (the largest chord deviation \
+             in the chart, e.g. 0.001), not {text}"
+        )),
+    }
 }
 
 /// A piece in the affine chart.

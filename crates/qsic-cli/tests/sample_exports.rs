@@ -3,7 +3,8 @@
 //! classify`'s affine view; no affine coordinates for them, none huge for a finite point
 //! that floats would put at infinity), a point near infinity but exactly finite keeps its
 //! coordinates, the CSV's branches are the JSON's (same pieces, branches, order and points,
-//! on every corpus curve) and never jump.
+//! on every corpus curve) and never jump, and `--tolerance` outside its range is a usage
+//! error that says so.
 
 #[path = "common/run.rs"]
 mod run;
@@ -362,4 +363,30 @@ fn a_point_near_infinity_but_finite_keeps_its_coordinates() {
         let radius2 = p[0] * p[0] + p[1] * p[1];
         assert!((radius2 / 1e40 - 1.0).abs() < 1e-9 && p[2] == 0.0, "{p:?}");
     }
+}
+
+/// `--tolerance` outside (0, ∞) — zero, negative, NaN, infinite, not a number — is a usage
+/// error (exit 2) naming the flag and the range, for single queries and batches; a positive
+/// tolerance is taken.
+#[test]
+fn tolerance_outside_its_range_is_a_usage_error_that_says_so() {
+    let (a, b) = ("x^2+y^2+z^2-1", "x^2+y^2-x");
+    for t in ["0", "-1", "-0", "nan", "NaN", "inf", "-inf", "1e999", "abc"] {
+        for args in [
+            vec!["sample", "--tolerance", t, a, b],
+            vec!["sample", "--format", "csv", "--tolerance", t, a, b],
+            vec!["sample", "--batch", "-", "--tolerance", t],
+        ] {
+            let out = qsic(&args, "{\"A\": \"x^2+y^2-1\", \"B\": \"z\"}\n");
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+            assert!(out.stdout.is_empty(), "{args:?}");
+            assert!(
+                err.contains("--tolerance") && err.contains("positive finite number"),
+                "{args:?}: {err}"
+            );
+        }
+    }
+    let out = qsic(&["sample", "--tolerance", "0.001", a, b], "");
+    assert_eq!(out.status.code(), Some(0));
 }

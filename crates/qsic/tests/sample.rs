@@ -330,7 +330,30 @@ fn a_user_chart_moves_the_points_at_infinity() {
         points: 0,
         ..SampleOptions::default()
     };
-    assert!(sample(&curve, &none).is_err());
+    assert!(matches!(sample(&curve, &none), Err(Error::InvalidOption(_))));
+}
+
+/// A tolerance that is not a positive finite number is an invalid option whose message says
+/// which option, the range and the value (the Python binding shows it as it is).
+#[test]
+fn a_tolerance_outside_its_range_is_an_invalid_option() {
+    let a = parse_quadric("x^2+y^2+z^2-1").unwrap();
+    let b = parse_quadric("2*x^2+4*y^2-1").unwrap();
+    let curve = parameterize(&a, &b).unwrap();
+    for t in [0.0, -0.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        let options = SampleOptions {
+            tolerance: Some(t),
+            ..SampleOptions::default()
+        };
+        match sample(&curve, &options) {
+            Err(e @ Error::InvalidOption(_)) => {
+                let m = e.to_string();
+                assert!(m.contains("tolerance") && m.contains("positive finite"), "{m}");
+                assert!(m.ends_with(&format!("not {t}")), "{m}");
+            }
+            other => panic!("tolerance {t}: {other:?}"),
+        }
+    }
 }
 
 /// A line over ℚ(√5) of a disguised skew quadrilateral (QI entry 67 under an integer change of

@@ -210,7 +210,8 @@ pub struct Sampled {
 ///
 /// # Errors
 /// [`Error::Limit`] when more than [`MAX_POINTS`] points are requested or needed;
-/// [`Error::InvalidShape`] for a zero chart, a non-positive tolerance or zero points;
+/// [`Error::InvalidShape`] for a zero chart; [`Error::InvalidOption`] for a tolerance that
+/// is not a positive finite number or zero points;
 /// [`Error::Algebra`] when a coefficient is beyond the range of `f64`, a piece has no
 /// parameterization (or one of degree above 8), or the refinement does not converge within
 /// [`MAX_DEPTH`].
@@ -232,8 +233,8 @@ pub struct Sampled {
 /// ```
 pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> {
     if options.points == 0 {
-        return Err(Error::InvalidShape(
-            "at least one point per piece is asked for (--points ≥ 1)".into(),
+        return Err(Error::InvalidOption(
+            "the points per piece must be a positive integer, not 0".into(),
         ));
     }
     if options.points > MAX_POINTS {
@@ -242,8 +243,11 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
             limit: MAX_POINTS,
         });
     }
-    if options.tolerance.is_some_and(|t| t.is_nan() || t <= 0.0) {
-        return Err(Error::InvalidShape("the tolerance must be positive".into()));
+    if let Some(t) = options.tolerance.filter(|t| !(t.is_finite() && *t > 0.0)) {
+        return Err(Error::InvalidOption(format!(
+            "the tolerance (the largest chord deviation in the chart) must be a positive \
+             finite number, not {t}"
+        )));
     }
     let chart = options.chart()?;
     let approx = Approximations::default();
