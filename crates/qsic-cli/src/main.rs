@@ -562,7 +562,7 @@ fn run_motion(args: &MotionArgs) -> ExitCode {
     });
     if let (Ok((m, Some((ma, mb)))), Some(path)) = (&result, &args.plot) {
         let svg = qsic_cli::motion_plot::motion_with_snapshots_to_svg(m, &range, ma, mb);
-        if let Err(e) = std::fs::write(path, svg) {
+        if let Err(e) = qsic_cli::file::write_atomically(path, svg.as_bytes()) {
             return io_failure(&format!("writing the plot {}", path.display()), &e);
         }
     }
@@ -810,7 +810,7 @@ fn run_plot(args: &PlotArgs) -> ExitCode {
             return ExitCode::from(1);
         }
     };
-    match std::fs::write(&args.output, svg) {
+    match qsic_cli::file::write_atomically(&args.output, svg.as_bytes()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => io_failure(&format!("writing the plot {}", args.output.display()), &e),
     }
