@@ -157,7 +157,10 @@ mod tests {
         let link = dir.join("link.svg");
         std::os::unix::fs::symlink(&real, &link).unwrap();
         write_atomically(&link, b"new").unwrap();
-        assert!(fs::symlink_metadata(&link).unwrap().file_type().is_symlink());
+        assert!(fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink());
         assert_eq!(fs::read_to_string(&real).unwrap(), "new");
         fs::remove_dir_all(&dir).unwrap();
     }

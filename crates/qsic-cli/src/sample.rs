@@ -289,7 +289,12 @@ pub fn csv_branches(p: &SampledPiece) -> Vec<Vec<CsvRow>> {
         if let Some(k) = start.and_then(before).filter(|&k| at_infinity(k)) {
             rows.push((p.points[k], None));
         }
-        rows.extend(indices.iter().zip(points).map(|(&k, a)| (p.points[k], Some(*a))));
+        rows.extend(
+            indices
+                .iter()
+                .zip(points)
+                .map(|(&k, a)| (p.points[k], Some(*a))),
+        );
         if let Some(k) = end.and_then(after).filter(|&k| at_infinity(k)) {
             rows.push((p.points[k], None));
         }

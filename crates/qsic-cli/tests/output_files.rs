@@ -61,8 +61,15 @@ fn check_whole_or_nothing(name: &str, command: &[&str]) {
     let out = qsic(&args, false);
     assert_eq!(out.status.code(), Some(0), "{name}: {out:?}");
     let full = fs::read_to_string(&path).unwrap();
-    assert!(full.trim_end().ends_with("</svg>"), "{name}: not a whole SVG");
-    assert!(full.len() as u64 > 2 * 1024 * LIMIT_BLOCKS, "{name}: {}", full.len());
+    assert!(
+        full.trim_end().ends_with("</svg>"),
+        "{name}: not a whole SVG"
+    );
+    assert!(
+        full.len() as u64 > 2 * 1024 * LIMIT_BLOCKS,
+        "{name}: {}",
+        full.len()
+    );
     assert_eq!(entries(&dir), ["out.svg"]);
     // over an older file, and with none
     for older in [Some("older"), None] {

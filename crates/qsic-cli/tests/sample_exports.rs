@@ -75,7 +75,10 @@ fn floats<const N: usize>(v: &Value) -> [f64; N] {
 
 /// The symmetric matrix of a quadric text, as floats.
 fn matrix(text: &str) -> [[f64; 4]; 4] {
-    let m = qsic_cli::input::surface_from_arg(text).unwrap().quadric.unwrap();
+    let m = qsic_cli::input::surface_from_arg(text)
+        .unwrap()
+        .quadric
+        .unwrap();
     let m = m.matrix();
     std::array::from_fn(|i| std::array::from_fn(|j| m[i][j].to_f64().value()))
 }
@@ -106,7 +109,11 @@ fn same_point(x: &[f64; 4], y: &[f64; 4], tol: f64) -> bool {
 fn check_csv_is_the_json(csv: &[Vec<Vec<Row>>], json: &Value) -> Result<(), String> {
     let comps = json["components"].as_array().unwrap();
     if csv.len() != comps.len() {
-        return Err(format!("{} pieces in the CSV, {} in the JSON", csv.len(), comps.len()));
+        return Err(format!(
+            "{} pieces in the CSV, {} in the JSON",
+            csv.len(),
+            comps.len()
+        ));
     }
     for (k, (branches, comp)) in csv.iter().zip(comps).enumerate() {
         let affine = &comp["affine"];
@@ -122,12 +129,19 @@ fn check_csv_is_the_json(csv: &[Vec<Vec<Row>>], json: &Value) -> Result<(), Stri
             let proj = comp["branches"].as_array().unwrap();
             let point = aff_branches.first().map(|b| floats::<3>(&b[0]));
             if branches.len() != proj.len() {
-                return Err(format!("piece {k}: {} branches, JSON {}", branches.len(), proj.len()));
+                return Err(format!(
+                    "piece {k}: {} branches, JSON {}",
+                    branches.len(),
+                    proj.len()
+                ));
             }
             for (rows, want) in branches.iter().zip(proj) {
                 let want: Vec<[f64; 4]> = want.as_array().unwrap().iter().map(floats).collect();
                 let same = rows.len() == want.len()
-                    && rows.iter().zip(&want).all(|(r, w)| same_point(&r.x, w, 0.0));
+                    && rows
+                        .iter()
+                        .zip(&want)
+                        .all(|(r, w)| same_point(&r.x, w, 0.0));
                 if !same || rows.iter().any(|r| r.a != point) {
                     return Err(format!("piece {k}: not the JSON's projective branch"));
                 }
@@ -145,7 +159,9 @@ fn check_csv_is_the_json(csv: &[Vec<Vec<Row>>], json: &Value) -> Result<(), Stri
                 let want: Vec<[f64; 3]> = want.as_array().unwrap().iter().map(floats).collect();
                 let cells: Vec<[f64; 3]> = rows.iter().filter_map(|r| r.a).collect();
                 if cells != want {
-                    return Err(format!("piece {k} branch {b}: not the JSON's affine points"));
+                    return Err(format!(
+                        "piece {k} branch {b}: not the JSON's affine points"
+                    ));
                 }
                 for (i, r) in rows.iter().enumerate() {
                     if r.a.is_some() {
@@ -195,17 +211,26 @@ fn the_cone_and_plane_csv_has_no_affine_point_at_infinity_and_two_branches() {
     let ms = [matrix(a), matrix(b)];
     assert_eq!(csv.len(), 1);
     let branches = &csv[0];
-    assert_eq!(branches.len(), view["curves_unbounded"].as_u64().unwrap() as usize);
+    assert_eq!(
+        branches.len(),
+        view["curves_unbounded"].as_u64().unwrap() as usize
+    );
     let mut at_infinity: Vec<[f64; 4]> = Vec::new();
     for rows in branches {
         let (first, last) = (&rows[0], &rows[rows.len() - 1]);
-        assert!(first.a.is_none() && last.a.is_none(), "a branch of a hyperbola ends at infinity");
+        assert!(
+            first.a.is_none() && last.a.is_none(),
+            "a branch of a hyperbola ends at infinity"
+        );
         for r in &rows[1..rows.len() - 1] {
             let a = r.a.expect("a finite point between the ends");
             // not at infinity to float precision: w well above its rounding
             assert!(r.x[3].abs() > 1e-13, "{:?} -> {a:?}", r.x);
             for m in &ms {
-                assert!(residual(m, &[a[0], a[1], a[2], 1.0]) < 1e-9, "{a:?} off a quadric");
+                assert!(
+                    residual(m, &[a[0], a[1], a[2], 1.0]) < 1e-9,
+                    "{a:?} off a quadric"
+                );
             }
         }
         for r in [first, last] {
@@ -217,7 +242,10 @@ fn the_cone_and_plane_csv_has_no_affine_point_at_infinity_and_two_branches() {
             }
         }
     }
-    assert_eq!(at_infinity.len(), view["points_at_infinity"].as_u64().unwrap() as usize);
+    assert_eq!(
+        at_infinity.len(),
+        view["points_at_infinity"].as_u64().unwrap() as usize
+    );
     // OBJ: the JSON's affine branches as polylines, no vertex at infinity
     let obj = stdout_of(&["sample", "--format", "obj", a, b]);
     let vertices: Vec<[f64; 3]> = obj
@@ -266,8 +294,13 @@ fn viviani_csv_has_the_json_branches() {
     assert_eq!(csv[0].len(), 2 * nodes.len());
     for rows in &csv[0] {
         let ends = [rows[0].a.unwrap(), rows[rows.len() - 1].a.unwrap()];
-        assert!(ends.iter().all(|p| dist(p) < 1e-12), "a loop from the node to it");
-        assert!(rows[1..rows.len() - 1].iter().all(|r| dist(&r.a.unwrap()) > 1e-6));
+        assert!(
+            ends.iter().all(|p| dist(p) < 1e-12),
+            "a loop from the node to it"
+        );
+        assert!(rows[1..rows.len() - 1]
+            .iter()
+            .all(|r| dist(&r.a.unwrap()) > 1e-6));
     }
 }
 
@@ -282,9 +315,17 @@ fn csv_and_obj_are_the_json_on_the_corpus() {
     for name in ["cases.jsonl", "seed_examples.jsonl", "qi-quadrics.jsonl"] {
         let path = format!("{}/../qsic/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
         let text = std::fs::read_to_string(&path).unwrap();
-        for (i, raw) in text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty()) {
+        for (i, raw) in text
+            .lines()
+            .enumerate()
+            .filter(|(_, l)| !l.trim().is_empty())
+        {
             let line: Value = serde_json::from_str(raw).unwrap();
-            pairs.push((format!("{name}:{}", i + 1), line["A"].clone(), line["B"].clone()));
+            pairs.push((
+                format!("{name}:{}", i + 1),
+                line["A"].clone(),
+                line["B"].clone(),
+            ));
         }
     }
     for (a, b) in [
@@ -339,7 +380,9 @@ fn csv_and_obj_are_the_json_on_the_corpus() {
                 failures.push(format!("{id} (chart {chart_text}): OBJ vertices"));
             }
             if let Some(v) = vertices.iter().find(|v| v.iter().any(|c| c.abs() >= 1e13)) {
-                failures.push(format!("{id} (chart {chart_text}): a vertex at infinity {v:?}"));
+                failures.push(format!(
+                    "{id} (chart {chart_text}): a vertex at infinity {v:?}"
+                ));
             }
         }
     }

@@ -216,7 +216,8 @@ fn points_at_infinity_are_the_exact_crossings_of_the_plane() {
             // the count of `affine_curve` is of the curve pieces (an acnode is a point)
             for x in at.into_iter().filter(|_| !p.isolated) {
                 let seen = &mut marked[p.component];
-                let near = |y: &[f64; 4], sign: f64| (0..4).all(|i| (x[i] - sign * y[i]).abs() < 1e-9);
+                let near =
+                    |y: &[f64; 4], sign: f64| (0..4).all(|i| (x[i] - sign * y[i]).abs() < 1e-9);
                 let same = |y: &[f64; 4]| near(y, 1.0) || near(y, -1.0);
                 if !seen.iter().any(same) {
                     seen.push(x);
@@ -238,7 +239,10 @@ fn points_at_infinity_are_the_exact_crossings_of_the_plane() {
                         fail(format!("affine point {v:?} is not X/w of point {i}"));
                     }
                     if x[3].abs() <= 1e-13 {
-                        fail(format!("affine point {v:?} (w = {:e}) is at infinity", x[3]));
+                        fail(format!(
+                            "affine point {v:?} (w = {:e}) is at infinity",
+                            x[3]
+                        ));
                     }
                 }
             }
@@ -330,7 +334,10 @@ fn a_user_chart_moves_the_points_at_infinity() {
         points: 0,
         ..SampleOptions::default()
     };
-    assert!(matches!(sample(&curve, &none), Err(Error::InvalidOption(_))));
+    assert!(matches!(
+        sample(&curve, &none),
+        Err(Error::InvalidOption(_))
+    ));
 }
 
 /// A tolerance that is not a positive finite number is an invalid option whose message says
@@ -348,7 +355,10 @@ fn a_tolerance_outside_its_range_is_an_invalid_option() {
         match sample(&curve, &options) {
             Err(e @ Error::InvalidOption(_)) => {
                 let m = e.to_string();
-                assert!(m.contains("tolerance") && m.contains("positive finite"), "{m}");
+                assert!(
+                    m.contains("tolerance") && m.contains("positive finite"),
+                    "{m}"
+                );
                 assert!(m.ends_with(&format!("not {t}")), "{m}");
             }
             other => panic!("tolerance {t}: {other:?}"),

@@ -110,8 +110,10 @@ impl SampleOptions {
         })
     }
 
-    /// The affine coordinates of `x` in the chart (module docs), `None` at infinity or for
-    /// a zero chart.
+    /// The affine coordinates `X/h(X)` of the float point `x` in the chart (module docs),
+    /// `None` where the float `h(x)` is zero or the chart is zero. A float `h` does not say
+    /// whether a sampled point is at infinity: the sampler's exact marks do
+    /// ([`SampledPiece::infinity`], and [`AffinePiece::branches`] leaves those points out).
     ///
     /// ```
     /// use qsic::param::sample::SampleOptions;
