@@ -267,25 +267,28 @@ pub fn csv_branches(p: &SampledPiece) -> Vec<Vec<CsvRow>> {
         }
         return out;
     }
+    // the points in the order of the walk; a closed piece repeats point 0 as its last
     let n = p.points.len();
-    // a closed piece repeats its first point: index n − 1 is point 0 again
-    let last = if p.closed { n.saturating_sub(1) } else { n };
-    let at_infinity = |k: usize| p.infinity.binary_search(&(k % last.max(1))).is_ok();
+    let distinct = if p.closed {
+        n.saturating_sub(1).max(1)
+    } else {
+        n
+    };
+    let at_infinity = |k: usize| p.infinity.binary_search(&(k % distinct)).is_ok();
     let before = |k: usize| match k {
-        0 if p.closed => last.checked_sub(1),
+        0 if p.closed => distinct.checked_sub(1),
         0 => None,
         k => Some(k - 1),
     };
     let after = |k: usize| match k + 1 {
-        j if p.closed && j > last => Some(1),
+        j if p.closed && j > distinct => Some(1),
         j if j < n => Some(j),
         _ => None,
     };
     let mut out = Vec::with_capacity(affine.branches.len());
     for (points, indices) in affine.branches.iter().zip(&affine.indices) {
         let mut rows: Vec<CsvRow> = Vec::with_capacity(points.len() + 2);
-        let ends = [indices.first(), indices.last()];
-        let [start, end] = ends.map(|k| k.copied());
+        let (start, end) = (indices.first().copied(), indices.last().copied());
         if let Some(k) = start.and_then(before).filter(|&k| at_infinity(k)) {
             rows.push((p.points[k], None));
         }
