@@ -7,6 +7,7 @@
 //! | [`input`] | reading a quadric from an argument or a JSON value, exactly |
 //! | [`output`] | the JSON result object ([`output::classification_to_json`]) and the text report |
 //! | [`mod@line`] | the fields of one batch line, borrowed from its text (a strict fast reader, then `serde_json`) |
+//! | [`file`] | output files written whole or not at all (a temporary renamed into place) |
 //! | [`contact`] | `qsic contact`: first contact of two moving quadrics and the relation of moving solid ellipsoids |
 //! | [`batch`] | `--batch`: bounded, ordered, parallel JSON Lines processing, for any [`batch::Answer`] or line answer |
 //! | [`motion`] | `qsic motion`: moving quadrics in, their timeline out (text, JSON, batch lines) |
@@ -20,6 +21,7 @@
 pub mod affine;
 pub mod batch;
 pub mod contact;
+pub mod file;
 pub mod input;
 pub mod line;
 pub mod motion;

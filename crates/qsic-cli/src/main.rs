@@ -216,8 +216,8 @@ struct SampleArgs {
     #[arg(long, value_name = "N", default_value_t = 64)]
     points: usize,
 
-    /// Largest chord deviation in the affine chart.
-    #[arg(long, value_name = "T")]
+    /// Largest chord deviation in the affine chart: a positive finite number.
+    #[arg(long, value_name = "T", value_parser = sample::parse_tolerance)]
     tolerance: Option<f64>,
 
     /// The plane at infinity, "a*x+b*y+c*z+d*w" (default "w").
@@ -562,7 +562,7 @@ fn run_motion(args: &MotionArgs) -> ExitCode {
     });
     if let (Ok((m, Some((ma, mb)))), Some(path)) = (&result, &args.plot) {
         let svg = qsic_cli::motion_plot::motion_with_snapshots_to_svg(m, &range, ma, mb);
-        if let Err(e) = std::fs::write(path, svg) {
+        if let Err(e) = qsic_cli::file::write_atomically(path, svg.as_bytes()) {
             return io_failure(&format!("writing the plot {}", path.display()), &e);
         }
     }
@@ -774,7 +774,7 @@ fn run_sample(args: &SampleArgs) -> ExitCode {
                 ))
             )
         }
-        Format::Csv => sample::to_csv(&sampled, &options),
+        Format::Csv => sample::to_csv(&sampled),
         Format::Obj => sample::to_obj(&sampled),
     };
     write_out(&text)
@@ -816,7 +816,7 @@ fn run_plot(args: &PlotArgs) -> ExitCode {
             return ExitCode::from(1);
         }
     };
-    match std::fs::write(&args.output, svg) {
+    match qsic_cli::file::write_atomically(&args.output, svg.as_bytes()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => io_failure(&format!("writing the plot {}", args.output.display()), &e),
     }

@@ -3,16 +3,17 @@
 //! | entry point | gives |
 //! |---|---|
 //! | [`parse_chart`] | the plane at infinity from `"a*x+b*y+c*z+d*w"` |
+//! | [`parse_tolerance`] | `--tolerance`: a positive finite number |
 //! | [`SampleJson`] | the result object |
 //! | [`Sample`] | the batch answer |
-//! | [`to_csv`], [`to_obj`] | the other formats |
+//! | [`to_csv`], [`to_obj`] | the other formats ([`csv_branches`]: the CSV's rows) |
 
 use crate::batch::Answer;
 use crate::output::ClassificationJson;
 use crate::param::{curve_of, fields_of, AffineContext};
 use qsic::affine::{common_surfaces, AffineComponent, Chart};
 use qsic::io::{parse_rational_function, Variable};
-use qsic::param::sample::{sample, verify_on_quadrics, SampleOptions, Sampled};
+use qsic::param::sample::{sample, verify_on_quadrics, SampleOptions, Sampled, SampledPiece};
 use qsic::param::Curve;
 use qsic::Quadric;
 use qsic_algebra::RBig;
@@ -50,6 +51,21 @@ pub fn parse_chart(text: &str) -> Result<[RBig; 4], String> {
         return Err("chart: the zero form is not a plane".into());
     }
     Ok(out)
+}
+
+/// `--tolerance T`: a positive finite number (the largest chord deviation in the chart).
+///
+/// # Errors
+/// A message giving the accepted range, for text that is not a number or a number that is
+/// zero, negative, infinite or NaN.
+pub fn parse_tolerance(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(t) if t.is_finite() && t > 0.0 => Ok(t),
+        _ => Err(format!(
+            "the tolerance must be a positive finite number (the largest chord deviation \
+             in the chart, e.g. 0.001), not {text}"
+        )),
+    }
 }
 
 /// A piece in the affine chart.
@@ -245,22 +261,97 @@ impl Answer for Sample {
     }
 }
 
-/// One row per point: `piece,branch,index,x,y,z,w,ax,ay,az` (affine columns empty at
-/// infinity), with a header.
-pub fn to_csv(sampled: &Sampled, options: &SampleOptions) -> String {
+/// One row per point: `piece,branch,index,x,y,z,w,ax,ay,az`, with a header: the branches of
+/// [`csv_branches`], numbered within each piece, the affine columns empty at infinity.
+pub fn to_csv(sampled: &Sampled) -> String {
     let mut out = String::from("piece,branch,index,x,y,z,w,ax,ay,az\n");
     for (k, p) in sampled.pieces.iter().enumerate() {
-        for (i, x) in p.points.iter().enumerate() {
-            let x = x.map(plus_zero);
-            let _ = write!(out, "{k},0,{i},{},{},{},{}", x[0], x[1], x[2], x[3]);
-            match options.affine_coordinates(&x) {
-                Some(a) => {
-                    let a = a.map(plus_zero);
-                    let _ = writeln!(out, ",{},{},{}", a[0], a[1], a[2]);
+        for (b, rows) in csv_branches(p).iter().enumerate() {
+            for (i, (x, a)) in rows.iter().enumerate() {
+                let x = x.map(plus_zero);
+                let _ = write!(out, "{k},{b},{i},{},{},{},{}", x[0], x[1], x[2], x[3]);
+                match a {
+                    Some(a) => {
+                        let a = a.map(plus_zero);
+                        let _ = writeln!(out, ",{},{},{}", a[0], a[1], a[2]);
+                    }
+                    None => out.push_str(",,,\n"),
                 }
-                None => out.push_str(",,,\n"),
             }
         }
+    }
+    out
+}
+
+/// A row of [`csv_branches`]: the unit vector and its affine coordinates (`None` at
+/// infinity).
+pub type CsvRow = ([f64; 4], Option<[f64; 3]>);
+
+/// The branches of a piece as the JSON lists them, each with its projective points: for a
+/// piece in the chart, the affine branches (`affine.branches`, in order, the same points),
+/// each with the point at infinity it starts from or ends at (no affine coordinates) before
+/// or after it; for a piece lying in the plane at infinity, its projective `branches`; an
+/// isolated point, one row. Whether a point is at infinity is the sampler's exact mark
+/// ([`SampledPiece::infinity`]), never its float `h`. Signs are continuous along a branch.
+pub fn csv_branches(p: &SampledPiece) -> Vec<Vec<CsvRow>> {
+    let orient = |rows: &mut Vec<CsvRow>| {
+        for i in 1..rows.len() {
+            let prev = rows[i - 1].0;
+            let x = &mut rows[i].0;
+            if (0..4).map(|j| prev[j] * x[j]).sum::<f64>() < 0.0 {
+                *x = x.map(|v| -v);
+            }
+        }
+    };
+    let affine = &p.affine;
+    if p.isolated || affine.at_infinity {
+        let first = affine.branches.first().and_then(|b| b.first()).copied();
+        let mut out: Vec<Vec<CsvRow>> = p
+            .branches()
+            .into_iter()
+            .map(|b| b.into_iter().map(|x| (x, first)).collect())
+            .collect();
+        for rows in &mut out {
+            orient(rows);
+        }
+        return out;
+    }
+    // the points in the order of the walk; a closed piece repeats point 0 as its last
+    let n = p.points.len();
+    let distinct = if p.closed {
+        n.saturating_sub(1).max(1)
+    } else {
+        n
+    };
+    let at_infinity = |k: usize| p.infinity.binary_search(&(k % distinct)).is_ok();
+    let before = |k: usize| match k {
+        0 if p.closed => distinct.checked_sub(1),
+        0 => None,
+        k => Some(k - 1),
+    };
+    let after = |k: usize| match k + 1 {
+        j if p.closed && j > distinct => Some(1),
+        j if j < n => Some(j),
+        _ => None,
+    };
+    let mut out = Vec::with_capacity(affine.branches.len());
+    for (points, indices) in affine.branches.iter().zip(&affine.indices) {
+        let mut rows: Vec<CsvRow> = Vec::with_capacity(points.len() + 2);
+        let (start, end) = (indices.first().copied(), indices.last().copied());
+        if let Some(k) = start.and_then(before).filter(|&k| at_infinity(k)) {
+            rows.push((p.points[k], None));
+        }
+        rows.extend(
+            indices
+                .iter()
+                .zip(points)
+                .map(|(&k, a)| (p.points[k], Some(*a))),
+        );
+        if let Some(k) = end.and_then(after).filter(|&k| at_infinity(k)) {
+            rows.push((p.points[k], None));
+        }
+        orient(&mut rows);
+        out.push(rows);
     }
     out
 }

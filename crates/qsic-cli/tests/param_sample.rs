@@ -296,7 +296,7 @@ fn batches_keep_order_and_answer_unsupported_classes_with_error_lines() {
         qsic(&["sample", "--tolerance", "-1", SPHERE, CYLINDER], "")
             .status
             .code(),
-        Some(1)
+        Some(2)
     );
     assert_eq!(qsic(&["param", "x^2"], "").status.code(), Some(2));
 }

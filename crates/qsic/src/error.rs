@@ -94,6 +94,11 @@ pub enum Error {
     /// An invalid parameter of a shape constructor (e.g. a non-positive squared radius).
     #[error("invalid shape parameter: {0}")]
     InvalidShape(String),
+    /// An option of a computation outside its range (e.g. a chord tolerance of
+    /// [`crate::param::sample::sample`] that is not a positive finite number): says which
+    /// option, the range and the value.
+    #[error("invalid option: {0}")]
+    InvalidOption(String),
     /// An affine chart that is not one (e.g. the zero form as the plane at infinity).
     #[error("invalid chart: {0}")]
     InvalidChart(String),

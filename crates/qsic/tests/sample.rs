@@ -188,6 +188,83 @@ fn every_sampled_point_is_on_both_quadrics_and_branches_are_continuous() {
     );
 }
 
+/// The points at infinity are the exact crossings of the plane at infinity, never a float `w`
+/// near zero: on every corpus curve (rational components over ℚ and over number fields
+/// included) the marked points of each component are the exact points at infinity of
+/// [`qsic::affine::affine_curve`] (an independent route: roots of `w(u)` by the norm), no
+/// affine point is at infinity to float precision (`|w| ≤ 10⁻¹³`: `w`'s rounding), and each
+/// affine point is `X/w` of the point its index names. (A pair of conics over ℚ(α), α of
+/// degree 4, once had a point with `w ≈ 4·10⁻¹⁸` at affine distance 5·10¹⁵.)
+#[test]
+fn points_at_infinity_are_the_exact_crossings_of_the_plane() {
+    let chart = qsic::affine::Chart::default();
+    let mut failures = Vec::new();
+    let mut crossed = 0;
+    for (id, a, b, curve) in &curves() {
+        let Ok(view) = qsic::affine::affine_curve(curve, a, b, &chart) else {
+            continue;
+        };
+        let s = sample(curve, &SampleOptions::default()).unwrap_or_else(|e| panic!("{id}: {e}"));
+        // per component: the distinct projective points marked at infinity
+        let mut marked: Vec<Vec<[f64; 4]>> = vec![Vec::new(); curve.components.len()];
+        for (k, p) in s.pieces.iter().enumerate() {
+            let mut fail = |why: String| failures.push(format!("{id} piece {k}: {why}"));
+            let at: Vec<[f64; 4]> = p.infinity.iter().map(|&i| p.points[i]).collect();
+            if at != p.affine.points_at_infinity {
+                fail("the marks are not the points at infinity".into());
+            }
+            // the count of `affine_curve` is of the curve pieces (an acnode is a point)
+            for x in at.into_iter().filter(|_| !p.isolated) {
+                let seen = &mut marked[p.component];
+                let near =
+                    |y: &[f64; 4], sign: f64| (0..4).all(|i| (x[i] - sign * y[i]).abs() < 1e-9);
+                let same = |y: &[f64; 4]| near(y, 1.0) || near(y, -1.0);
+                if !seen.iter().any(same) {
+                    seen.push(x);
+                }
+            }
+            if p.affine.indices.len() != p.affine.branches.len() {
+                fail("one index list per affine branch".into());
+            }
+            for (branch, indices) in p.affine.branches.iter().zip(&p.affine.indices) {
+                if branch.len() != indices.len() {
+                    fail("one index per affine point".into());
+                }
+                for (v, &i) in branch.iter().zip(indices) {
+                    let x = p.points[i];
+                    let a = [x[0] / x[3], x[1] / x[3], x[2] / x[3]];
+                    // an isolated point's are exact, rounded once
+                    let off = |k: usize| (v[k] - a[k]).abs() > 1e-12 * (1.0 + a[k].abs());
+                    if if p.isolated { (0..3).any(off) } else { v != &a } {
+                        fail(format!("affine point {v:?} is not X/w of point {i}"));
+                    }
+                    if x[3].abs() <= 1e-13 {
+                        fail(format!(
+                            "affine point {v:?} (w = {:e}) is at infinity",
+                            x[3]
+                        ));
+                    }
+                }
+            }
+        }
+        for (c, comp) in view.components.iter().enumerate() {
+            if comp.at_infinity || comp.name.is_none() {
+                continue;
+            }
+            crossed += usize::from(comp.points_at_infinity > 0);
+            if marked[c].len() != comp.points_at_infinity {
+                failures.push(format!(
+                    "{id} component {c}: {} points at infinity marked, {} exactly",
+                    marked[c].len(),
+                    comp.points_at_infinity
+                ));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(crossed > 20, "{crossed} components through infinity");
+}
+
 #[test]
 fn tolerance_bounds_the_affine_chord_deviation() {
     // two ellipses (a sphere and an elliptic cylinder): bounded, so every chord counts
@@ -257,7 +334,36 @@ fn a_user_chart_moves_the_points_at_infinity() {
         points: 0,
         ..SampleOptions::default()
     };
-    assert!(sample(&curve, &none).is_err());
+    assert!(matches!(
+        sample(&curve, &none),
+        Err(Error::InvalidOption(_))
+    ));
+}
+
+/// A tolerance that is not a positive finite number is an invalid option whose message says
+/// which option, the range and the value (the Python binding shows it as it is).
+#[test]
+fn a_tolerance_outside_its_range_is_an_invalid_option() {
+    let a = parse_quadric("x^2+y^2+z^2-1").unwrap();
+    let b = parse_quadric("2*x^2+4*y^2-1").unwrap();
+    let curve = parameterize(&a, &b).unwrap();
+    for t in [0.0, -0.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        let options = SampleOptions {
+            tolerance: Some(t),
+            ..SampleOptions::default()
+        };
+        match sample(&curve, &options) {
+            Err(e @ Error::InvalidOption(_)) => {
+                let m = e.to_string();
+                assert!(
+                    m.contains("tolerance") && m.contains("positive finite"),
+                    "{m}"
+                );
+                assert!(m.ends_with(&format!("not {t}")), "{m}");
+            }
+            other => panic!("tolerance {t}: {other:?}"),
+        }
+    }
 }
 
 /// A line over ℚ(√5) of a disguised skew quadrilateral (QI entry 67 under an integer change of

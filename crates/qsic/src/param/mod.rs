@@ -18,6 +18,7 @@
 mod biquadratic;
 pub mod curve;
 pub mod expr;
+mod infinity;
 mod line_cubic;
 mod nodal;
 mod planar;

@@ -41,11 +41,14 @@
 //! of a grid segment and [`MAX_POINTS`] points per call: beyond either, an error.
 //!
 //! # The chart
-//! `h(X) = aX₀ + bX₁ + cX₂ + dX₃` (default `w`) is the plane at infinity. Where every
-//! coefficient of a component is rational, the crossings are the exact real roots of `h(X(u))`
-//! (for Levin's form of `h(a)² − h(d)²s`, the sheet from the signs of `h(a)` and `h(d)`),
-//! tangential touches included; otherwise the sign changes of `h` along the polyline,
-//! located by regula falsi (Illinois). Affine coordinates are those of `X/h(X)` without the last
+//! `h(X) = aX₀ + bX₁ + cX₂ + dX₃` (default `w`) is the plane at infinity. The crossings of
+//! a rational `X(u)` are the exact real roots of `h(X(u))` (over a number field by the norm:
+//! [`super::infinity`]), those of Levin's form with rational coefficients the roots of
+//! `h(a)² − h(d)²s` (the sheet from the signs of `h(a)` and `h(d)`), tangential touches
+//! included; they are marked on the polyline ([`SampledPiece::infinity`]), and a point is at
+//! infinity iff it is marked, whatever its float `h`. On Levin's form with irrational
+//! coefficients they are the sign changes of `h` along the polyline, located by regula falsi
+//! (Illinois). Affine coordinates are those of `X/h(X)` without the last
 //! coordinate whose coefficient in `h` is nonzero (`(x/w, y/w, z/w)` for the default); `h` is
 //! computed once per point during the walk and kept with the polyline, and the affine view
 //! is cut from it in stretches of one sign.
@@ -107,8 +110,10 @@ impl SampleOptions {
         })
     }
 
-    /// The affine coordinates of `x` in the chart (module docs), `None` at infinity or for
-    /// a zero chart.
+    /// The affine coordinates `X/h(X)` of the float point `x` in the chart (module docs),
+    /// `None` where the float `h(x)` is zero or the chart is zero. A float `h` does not say
+    /// whether a sampled point is at infinity: the sampler's exact marks do
+    /// ([`SampledPiece::infinity`], and [`AffinePiece::branches`] leaves those points out).
     ///
     /// ```
     /// use qsic::param::sample::SampleOptions;
@@ -132,6 +137,8 @@ pub struct AffinePiece {
     pub points_at_infinity: Vec<[f64; 4]>,
     /// The piece lies in the plane at infinity: no point in the chart.
     pub at_infinity: bool,
+    /// For each branch, the index into [`SampledPiece::points`] of each of its points.
+    pub indices: Vec<Vec<usize>>,
 }
 
 /// The points of one [`RealPiece`].
@@ -151,6 +158,12 @@ pub struct SampledPiece {
     /// node of the piece itself appears twice. For a closed piece, index 0 stands for the
     /// repeated last point too.
     pub breaks: Vec<usize>,
+    /// Indices into `points` of the points on the chart's plane at infinity, ascending, in the
+    /// order of [`AffinePiece::points_at_infinity`] (none for a piece lying in the plane): the
+    /// exact real roots of `h(X(u))` (module docs), never a float `h` near zero, except on
+    /// Levin's form with irrational coefficients, where they are the sign changes of `h`. For
+    /// a closed piece, index 0 stands for the repeated last point too.
+    pub infinity: Vec<usize>,
     /// The view in the affine chart.
     pub affine: AffinePiece,
 }
@@ -199,7 +212,8 @@ pub struct Sampled {
 ///
 /// # Errors
 /// [`Error::Limit`] when more than [`MAX_POINTS`] points are requested or needed;
-/// [`Error::InvalidShape`] for a zero chart, a non-positive tolerance or zero points;
+/// [`Error::InvalidShape`] for a zero chart; [`Error::InvalidOption`] for a tolerance that
+/// is not a positive finite number or zero points;
 /// [`Error::Algebra`] when a coefficient is beyond the range of `f64`, a piece has no
 /// parameterization (or one of degree above 8), or the refinement does not converge within
 /// [`MAX_DEPTH`].
@@ -221,8 +235,8 @@ pub struct Sampled {
 /// ```
 pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> {
     if options.points == 0 {
-        return Err(Error::InvalidShape(
-            "at least one point per piece is asked for (--points ≥ 1)".into(),
+        return Err(Error::InvalidOption(
+            "the points per piece must be a positive integer, not 0".into(),
         ));
     }
     if options.points > MAX_POINTS {
@@ -231,8 +245,11 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
             limit: MAX_POINTS,
         });
     }
-    if options.tolerance.is_some_and(|t| t.is_nan() || t <= 0.0) {
-        return Err(Error::InvalidShape("the tolerance must be positive".into()));
+    if let Some(t) = options.tolerance.filter(|t| !(t.is_finite() && *t > 0.0)) {
+        return Err(Error::InvalidOption(format!(
+            "the tolerance (the largest chord deviation in the chart) must be a positive \
+             finite number, not {t}"
+        )));
     }
     let chart = options.chart()?;
     let approx = Approximations::default();
@@ -278,7 +295,7 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
                         crossings: if lies_in_plane(param, &chart.exact) {
                             Crossings::InPlane
                         } else {
-                            exact_crossings(&ExactParam::new(param), &chart.exact)
+                            exact_crossings(param, &ExactParam::new(param), &chart.exact)
                         },
                         singular: singular_params(curve, param, &chart.exact),
                         chart: &chart,
@@ -664,10 +681,23 @@ fn point_piece(
             bounded: false,
             points_at_infinity: vec![x],
             at_infinity: true,
+            indices: Vec::new(),
         }
     } else {
+        // `X/h(X)` exactly, then rounded: finite however small the float `h` is
+        let inv = qsic_algebra::Field::inv(&h).ok_or_else(|| Error::Algebra("h ≠ 0".into()))?;
+        let mut a = [0.0; 3];
+        for (a, &k) in a.iter_mut().zip(&chart.keep) {
+            *a = to_f64(&point[k].mul(&inv)).unwrap_or(f64::NAN);
+        }
+        let branches = if a.iter().all(|v| v.is_finite()) {
+            vec![vec![a]]
+        } else {
+            Vec::new()
+        };
         AffinePiece {
-            branches: chart.affine(&x).into_iter().map(|p| vec![p]).collect(),
+            indices: branches.iter().map(|_| vec![0]).collect(),
+            branches,
             bounded: true,
             points_at_infinity: Vec::new(),
             at_infinity: false,
@@ -679,6 +709,7 @@ fn point_piece(
         points: vec![x],
         closed: false,
         breaks: Vec::new(),
+        infinity: if h.is_zero() { vec![0] } else { Vec::new() },
         affine,
     })
 }
@@ -2242,10 +2273,23 @@ fn lies_in_plane(param: &ComponentParam, h: &[RBig; 4]) -> bool {
         .is_zero()
 }
 
-/// The exact crossings of the component with the plane `h = 0`.
-fn exact_crossings(exact: &ExactParam, h: &[RBig; 4]) -> Crossings {
-    match exact_crossings_of(exact, h) {
-        None if matches!(exact, ExactParam::Irrational) => Crossings::Unknown,
+/// The exact crossings of the component with the plane `h = 0`: over a number field those of
+/// a rational parameterization ([`super::infinity`]), none known of Levin's form.
+fn exact_crossings(param: &ComponentParam, exact: &ExactParam, h: &[RBig; 4]) -> Crossings {
+    let found = match (exact, param) {
+        (ExactParam::Irrational, ComponentParam::Rational { x, .. }) => {
+            super::infinity::plane_crossings(x, h).map(|values| {
+                let only = |value| Crossing {
+                    value,
+                    sheets: vec![Sheet::Only],
+                };
+                values.into_iter().map(only).collect()
+            })
+        }
+        (ExactParam::Irrational, _) => return Crossings::Unknown,
+        _ => exact_crossings_of(exact, h),
+    };
+    match found {
         None => Crossings::InPlane,
         Some(c) => Crossings::Exact(c),
     }
@@ -3291,6 +3335,7 @@ impl<'a> Sampler<'a> {
                 bounded: false,
                 points_at_infinity: Vec::new(),
                 at_infinity: true,
+                indices: Vec::new(),
             }
         } else {
             let affine = self.affine(&line, closed);
@@ -3303,6 +3348,11 @@ impl<'a> Sampler<'a> {
             affine
         };
         let breaks = line.marks.iter().filter(|m| m.2).map(|m| m.0).collect();
+        let infinity = if affine.at_infinity {
+            Vec::new()
+        } else {
+            line.marks.iter().filter(|m| m.1).map(|m| m.0).collect()
+        };
         let mut pts = line.x;
         if closed && !pts.is_empty() {
             let first = pts[0];
@@ -3319,6 +3369,7 @@ impl<'a> Sampler<'a> {
             points: pts,
             closed,
             breaks,
+            infinity,
             affine,
         })
     }
@@ -3403,6 +3454,9 @@ impl<'a> Sampler<'a> {
             special,
         } = AffineSteps::new(line, closed);
         let mut current: Vec<[f64; 3]> = Vec::with_capacity(count);
+        // the index into `x` of each point of `current`, and of each branch's points
+        let mut current_at: Vec<usize> = Vec::with_capacity(count);
+        let mut indices = Vec::new();
         // the line is oriented, but a loop may come back reversed at its start: `sign`
         // orients along the walk from there on; `prev_h` is h of the previous point so
         // oriented (`None` after a crossing)
@@ -3455,6 +3509,7 @@ impl<'a> Sampler<'a> {
                             let [k0, k1, k2] = keep.map(|k| k.min(3));
                             current.extend(run.map(|(p, &h)| [p[k0] / h, p[k1] / h, p[k2] / h]));
                         }
+                        current_at.extend(k0 + from..k0 + i);
                         prev_h = Some(sign * hs[i - 1]);
                         restarted = false;
                         continue;
@@ -3467,10 +3522,12 @@ impl<'a> Sampler<'a> {
                             &mut current,
                             Vec::with_capacity(count - j - i),
                         ));
+                        indices.push(std::mem::take(&mut current_at));
                     }
                     prev_h = Some(hx);
                     if let Some(a) = self.chart.affine_with(p, h) {
                         current.push(a);
+                        current_at.push(k0 + i);
                         restarted = false;
                     }
                     i += 1;
@@ -3503,8 +3560,10 @@ impl<'a> Sampler<'a> {
                         &mut current,
                         Vec::with_capacity(count - j + 1),
                     ));
+                    indices.push(std::mem::take(&mut current_at));
                 }
                 current.clear();
+                current_at.clear();
                 restarted = false;
                 prev_h = None;
                 sign = 1.0;
@@ -3519,10 +3578,12 @@ impl<'a> Sampler<'a> {
                     &mut current,
                     Vec::with_capacity(count - j + 1),
                 ));
+                indices.push(std::mem::take(&mut current_at));
             }
             prev_h = Some(hx);
             if let Some(a) = self.chart.affine_with(p, h) {
                 current.push(a);
+                current_at.push(k);
                 if singular {
                     // the branch ends at the singular point and the next one starts there
                     if current.len() > 1 {
@@ -3530,9 +3591,12 @@ impl<'a> Sampler<'a> {
                             &mut current,
                             Vec::with_capacity(count - j + 1),
                         ));
+                        indices.push(std::mem::take(&mut current_at));
                     }
                     current.clear();
                     current.push(a);
+                    current_at.clear();
+                    current_at.push(k);
                     restarted = true;
                 } else {
                     restarted = false;
@@ -3541,15 +3605,19 @@ impl<'a> Sampler<'a> {
         }
         if closed && first_cut.is_none() && !current.is_empty() {
             current.push(current[0]);
+            // the repeated first point (after the last of `x` where it is point 0)
+            current_at.push(if current_at[0] == 0 { n } else { current_at[0] });
         }
         if !current.is_empty() && !restarted {
             branches.push(current);
+            indices.push(current_at);
         }
         AffinePiece {
             bounded: points_at_infinity.is_empty() && !branches.is_empty(),
             branches,
             points_at_infinity,
             at_infinity: false,
+            indices,
         }
     }
 
@@ -3569,6 +3637,8 @@ impl<'a> Sampler<'a> {
             special,
         } = AffineSteps::new(line, closed);
         let mut current: Vec<[f64; 3]> = Vec::with_capacity(count);
+        let mut current_at: Vec<usize> = Vec::with_capacity(count);
+        let mut indices = Vec::new();
         // the line is oriented, but a loop may come back reversed at its start: `sign`
         // orients along the walk from there on; `prev_h` is h of the previous point so
         // oriented (`None` after a crossing)
@@ -3588,7 +3658,7 @@ impl<'a> Sampler<'a> {
                 } else {
                     j + first
                 };
-                for p in &x[k0..k0 + (stop - j)] {
+                for (k, p) in x.iter().enumerate().take(k0 + (stop - j)).skip(k0) {
                     let h = self.chart.value(p);
                     let hx = sign * h;
                     if prev_h.is_some_and(|hp| (hp > 0.0) != (hx > 0.0)) {
@@ -3597,10 +3667,12 @@ impl<'a> Sampler<'a> {
                             &mut current,
                             Vec::with_capacity(count - j),
                         ));
+                        indices.push(std::mem::take(&mut current_at));
                     }
                     prev_h = Some(hx);
                     if let Some(a) = self.chart.affine_with(p, h) {
                         current.push(a);
+                        current_at.push(k);
                         restarted = false;
                     }
                 }
@@ -3632,8 +3704,10 @@ impl<'a> Sampler<'a> {
                         &mut current,
                         Vec::with_capacity(count - j + 1),
                     ));
+                    indices.push(std::mem::take(&mut current_at));
                 }
                 current.clear();
+                current_at.clear();
                 restarted = false;
                 prev_h = None;
                 sign = 1.0;
@@ -3648,10 +3722,12 @@ impl<'a> Sampler<'a> {
                     &mut current,
                     Vec::with_capacity(count - j + 1),
                 ));
+                indices.push(std::mem::take(&mut current_at));
             }
             prev_h = Some(hx);
             if let Some(a) = self.chart.affine_with(p, h) {
                 current.push(a);
+                current_at.push(k);
                 if singular {
                     // the branch ends at the singular point and the next one starts there
                     if current.len() > 1 {
@@ -3659,9 +3735,12 @@ impl<'a> Sampler<'a> {
                             &mut current,
                             Vec::with_capacity(count - j + 1),
                         ));
+                        indices.push(std::mem::take(&mut current_at));
                     }
                     current.clear();
                     current.push(a);
+                    current_at.clear();
+                    current_at.push(k);
                     restarted = true;
                 } else {
                     restarted = false;
@@ -3670,15 +3749,18 @@ impl<'a> Sampler<'a> {
         }
         if closed && first_cut.is_none() && !current.is_empty() {
             current.push(current[0]);
+            current_at.push(if current_at[0] == 0 { n } else { current_at[0] });
         }
         if !current.is_empty() && !restarted {
             branches.push(current);
+            indices.push(current_at);
         }
         AffinePiece {
             bounded: points_at_infinity.is_empty() && !branches.is_empty(),
             branches,
             points_at_infinity,
             at_infinity: false,
+            indices,
         }
     }
 }
