@@ -258,23 +258,27 @@ fn classify(
 }
 
 /// One side of a batch: `N` matrices as the native bytes of an `int64` or `float64` array of
-/// shape `(N, 4, 4)`, or `16·N` exact number texts.
+/// shape `(N, 4, 4)`, or `16·N` exact number texts with the messages of the rows the Python
+/// half could not read (their texts are placeholders).
 enum Side<'a> {
     Int(&'a [u8]),
     Float(&'a [u8]),
-    Text(Vec<String>),
+    Text {
+        texts: Vec<String>,
+        errors: HashMap<usize, String>,
+    },
 }
 
 impl Side<'_> {
     fn len(&self) -> usize {
         match self {
             Side::Int(b) | Side::Float(b) => b.len() / 128,
-            Side::Text(t) => t.len() / 16,
+            Side::Text { texts, .. } => texts.len() / 16,
         }
     }
 
-    /// The quadric of row `k` (`None`: the zero form).
-    fn quadric(&self, k: usize) -> Result<Option<Quadric>, Error> {
+    /// The quadric of row `k` (`None`: the zero form), or why it cannot be read.
+    fn quadric(&self, k: usize) -> Result<Option<Quadric>, String> {
         fn words(bytes: &[u8], k: usize) -> [[[u8; 8]; 4]; 4] {
             let row = &bytes[128 * k..128 * (k + 1)];
             std::array::from_fn(|i| {
@@ -284,7 +288,7 @@ impl Side<'_> {
                 })
             })
         }
-        match self {
+        let read = match self {
             Side::Int(bytes) => {
                 let m = words(bytes, k).map(|r| r.map(i64::from_ne_bytes));
                 allow_zero(Quadric::from_integers(m))
@@ -293,11 +297,15 @@ impl Side<'_> {
                 let m = words(bytes, k).map(|r| r.map(f64::from_ne_bytes));
                 allow_zero(Quadric::from_f64(m))
             }
-            Side::Text(texts) => {
+            Side::Text { texts, errors } => {
+                if let Some(message) = errors.get(&k) {
+                    return Err(message.clone());
+                }
                 let rows = rows_of(&texts[16 * k..16 * (k + 1)]).expect("16 texts");
                 allow_zero(qsic::io::quadric_from_array(&rows))
             }
-        }
+        };
+        read.map_err(|e| e.to_string())
     }
 }
 
@@ -314,11 +322,14 @@ fn side<'a>(kind: &str, data: &'a Bound<'_, PyAny>) -> PyResult<Side<'a>> {
         "int64" => Ok(Side::Int(bytes()?)),
         "float64" => Ok(Side::Float(bytes()?)),
         "text" => {
-            let texts: Vec<String> = data.extract()?;
+            let (texts, errors): (Vec<String>, HashMap<usize, String>) = data.extract()?;
             if texts.len() % 16 != 0 {
                 return Err(err("16 entries per matrix"));
             }
-            Ok(Side::Text(texts))
+            if errors.keys().any(|&k| k >= texts.len() / 16) {
+                return Err(err("an error for a row beyond the batch"));
+            }
+            Ok(Side::Text { texts, errors })
         }
         _ => Err(err(format!("unknown kind '{kind}'"))),
     }
@@ -642,6 +653,7 @@ fn first_contact(
 #[pymodule]
 fn _qsic(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("QsicError", m.py().get_type::<QsicError>())?;
+    m.add("MAX_NUMBER_DIGITS", qsic::limits::MAX_NUMBER_DIGITS)?;
     m.add_class::<NativeQuadric>()?;
     m.add_function(wrap_pyfunction!(quadric_from_text, m)?)?;
     m.add_function(wrap_pyfunction!(quadric_from_entries, m)?)?;
