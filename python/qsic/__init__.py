@@ -36,6 +36,7 @@ __all__ = [
     "motion",
     "first_contact",
     "FIELDS",
+    "MAX_THREADS",
 ]
 
 #: The fields of a classification, in the order of the JSON result object.
@@ -262,6 +263,28 @@ def _side_native(name: str, q: Any) -> Optional[_qsic.NativeQuadric]:
         raise QsicError(f"{name}: {e}") from None
 
 
+#: The most threads ``classify_many`` takes (256): beyond the cores threads only add start-up
+#: and scheduling cost, and 256 is above the hardware threads of common machines while
+#: starting them takes milliseconds (the bound is argued at ``MAX_THREADS`` in src/lib.rs).
+MAX_THREADS: int = _qsic.MAX_THREADS
+
+
+def _thread_count(threads: Any) -> Optional[int]:
+    """``threads`` checked: None, or an integer from 1 to :data:`MAX_THREADS`."""
+    if threads is None:
+        return None
+    wanted = f"threads must be an integer from 1 to {MAX_THREADS}"
+    if isinstance(threads, (bool, np.bool_)):
+        raise QsicError(f"{wanted}, got {threads!r}")
+    try:
+        t = operator.index(threads)
+    except TypeError:
+        raise QsicError(f"{wanted}, got {_inputs.describe(threads)}") from None
+    if not 1 <= t <= MAX_THREADS:
+        raise QsicError(f"{wanted}, got {t}")
+    return t
+
+
 def classify_many(
     A: Any,
     B: Any,
@@ -290,13 +313,15 @@ def classify_many(
     finite real number or a number string (``A: entry (0,1) is None, not a number``: None,
     bytes, complex, NaN, an object that cannot be read), a number beyond the library's limits.
 
-    ``threads``: the number of threads (default: all cores).
+    ``threads``: the number of threads, an integer from 1 to :data:`MAX_THREADS` (256);
+    default: all cores.
 
     Raises:
         TypeError: ``A`` or ``B`` is not a sequence of matrices.
-        QsicError: an array whose shape is not ``(N, 4, 4)``, or lengths that differ;
-            nothing is computed then.
+        QsicError: an array whose shape is not ``(N, 4, 4)``, lengths that differ, or
+            ``threads`` out of range or not an integer; nothing is computed then.
     """
+    threads = _thread_count(threads)
     ka, da, na = _inputs.batch_side("A", A)
     kb, db, nb = _inputs.batch_side("B", B)
     if na != nb:

@@ -3,6 +3,7 @@ NumPy arrays and Python numbers and turn them into what these take."""
 
 from typing import Dict, List, Optional, Tuple, Union
 
+MAX_THREADS: int
 MAX_NUMBER_DIGITS: int
 
 class QsicError(ValueError):

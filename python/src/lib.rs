@@ -353,6 +353,25 @@ fn classify_row(a: &Side<'_>, b: &Side<'_>, k: usize, affine: Option<&(Chart, St
     .and_then(|r| r)
 }
 
+/// The most threads [`classify_many`] takes: beyond the cores threads only add start-up and
+/// scheduling cost; 256 is above the hardware threads of common machines and starts in a few
+/// milliseconds, so no accepted value stalls the call on creating threads (`2³¹` threads
+/// would exhaust the process's resources, `10⁵` take minutes to start).
+const MAX_THREADS: usize = 256;
+
+/// `threads` checked against `1..=MAX_THREADS`.
+fn thread_count(threads: Option<i64>) -> PyResult<Option<usize>> {
+    match threads {
+        None => Ok(None),
+        Some(t) => match usize::try_from(t) {
+            Ok(t) if (1..=MAX_THREADS).contains(&t) => Ok(Some(t)),
+            _ => Err(err(format!(
+                "threads must be an integer from 1 to {MAX_THREADS}, got {t}"
+            ))),
+        },
+    }
+}
+
 /// Python strings for the `&'static str` keys of the results, each made once per batch.
 struct Strings<'py> {
     py: Python<'py>,
@@ -378,7 +397,8 @@ impl<'py> Strings<'py> {
 }
 
 /// Classifies row `k` of `a` against row `k` of `b` for every `k`, in parallel with the GIL
-/// released (on `threads` threads, all cores by default), and returns the columns: lists for
+/// released (on `threads` threads, 1 to [`MAX_THREADS`], all cores by default; checked before
+/// anything starts), and returns the columns: lists for
 /// the string, list and error columns, the native bytes of an `int8` array for `case` (0:
 /// none), and the `"affine"` objects as JSON texts when `affine`.
 #[pyfunction]
@@ -392,8 +412,9 @@ fn classify_many<'py>(
     b: &Bound<'py, PyAny>,
     affine: bool,
     chart: Option<&str>,
-    threads: Option<usize>,
+    threads: Option<i64>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let threads = thread_count(threads)?;
     let a = side(a_kind, a)?;
     let b = side(b_kind, b)?;
     let n = a.len();
@@ -414,7 +435,7 @@ fn classify_many<'py>(
         .detach(|| match threads {
             None => Ok(work()),
             Some(t) => rayon::ThreadPoolBuilder::new()
-                .num_threads(t.max(1))
+                .num_threads(t)
                 .build()
                 .map(|pool| pool.install(work))
                 .map_err(|e| e.to_string()),
@@ -653,6 +674,7 @@ fn first_contact(
 #[pymodule]
 fn _qsic(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("QsicError", m.py().get_type::<QsicError>())?;
+    m.add("MAX_THREADS", MAX_THREADS)?;
     m.add("MAX_NUMBER_DIGITS", qsic::limits::MAX_NUMBER_DIGITS)?;
     m.add_class::<NativeQuadric>()?;
     m.add_function(wrap_pyfunction!(quadric_from_text, m)?)?;
