@@ -3,12 +3,13 @@
 //! | item | does |
 //! |---|---|
 //! | [`run`] | the whole batch: read a chunk, classify it in parallel, write it in order, repeat |
-//! | [`LineReader`] | bounded line reading: a line never holds more than its limit in memory |
+//! | [`LineReader`] | bounded line reading (module [`crate::reader`]): a line never holds more than its limit in memory |
 //! | [`answer_line`] | one input line to one output line |
 //!
 //! Every non-blank input line yields exactly one output line, in input order: the result
 //! object with the line's `id`, or `{"id": …, "error": {"line": n, "message": …}}`.
 //! Blank (ASCII-whitespace-only) lines yield nothing but are counted in line numbers.
+//! A UTF-8 byte-order mark at the very start of the input is skipped.
 //! Memory is bounded by the chunk limits, whatever the input: a line longer than
 //! [`MAX_LINE_BYTES`] is skipped without being stored and answered with an error.
 //!
@@ -19,11 +20,12 @@
 use crate::input::{surface_from_form, JsonForm};
 use crate::line::{read_line, Line};
 use crate::output::{write_classification_fields, write_json_string};
+pub use crate::reader::{Content, LineReader, RawLine};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use qsic::{classify_allowing_zero, Quadric};
 use rayon::prelude::*;
 use serde_json::Value;
-use std::io::{self, BufRead, BufReader, Read, Write};
+use std::io::{self, Read, Write};
 use std::panic::{self, AssertUnwindSafe};
 use std::time::Duration;
 
@@ -37,158 +39,6 @@ pub const CHUNK_LINES: usize = 4096;
 
 /// Most bytes of input held in one chunk (64 MiB).
 pub const CHUNK_BYTES: usize = 64 << 20;
-
-/// Size of the input buffer.
-const READ_BUFFER_BYTES: usize = 256 << 10;
-
-/// The content of one input line.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Content {
-    /// The bytes of the line without its terminator (`\n` or `\r\n`).
-    Text(Vec<u8>),
-    /// A line longer than the limit; only its length (terminator included) is kept.
-    TooLong {
-        /// Bytes read for this line.
-        bytes: u64,
-    },
-}
-
-/// One input line with its 1-based number.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct RawLine {
-    /// 1-based line number, blank lines included.
-    pub number: u64,
-    /// What the line holds.
-    pub content: Content,
-}
-
-impl RawLine {
-    /// Whether the line holds only ASCII whitespace (an empty line included).
-    fn is_blank(&self) -> bool {
-        matches!(&self.content, Content::Text(t) if t.iter().all(u8::is_ascii_whitespace))
-    }
-
-    /// Bytes held in memory.
-    fn held_bytes(&self) -> usize {
-        match &self.content {
-            Content::Text(t) => t.len(),
-            Content::TooLong { .. } => 0,
-        }
-    }
-}
-
-/// Reads lines of at most `max_line_bytes` bytes; longer lines are consumed up to their
-/// end without being stored. Memory use is the buffer plus one line.
-pub struct LineReader<R> {
-    inner: BufReader<R>,
-    max_line_bytes: usize,
-    lines_read: u64,
-}
-
-impl<R: Read> LineReader<R> {
-    /// A reader of lines of at most `max_line_bytes` bytes.
-    pub fn new(inner: R, max_line_bytes: usize) -> Self {
-        LineReader {
-            inner: BufReader::with_capacity(READ_BUFFER_BYTES, inner),
-            max_line_bytes,
-            lines_read: 0,
-        }
-    }
-
-    /// Lines read so far, blank ones included.
-    pub fn lines_read(&self) -> u64 {
-        self.lines_read
-    }
-
-    /// Whether everything read from the source so far has been consumed, so that the
-    /// next line may have to wait for the source (an interactive producer).
-    pub fn drained(&self) -> bool {
-        self.inner.buffer().is_empty()
-    }
-
-    /// The next line, `None` at the end of the input. A last line without a newline is
-    /// a line.
-    ///
-    /// # Errors
-    /// Any read error of the source other than [`io::ErrorKind::Interrupted`].
-    pub fn next_line(&mut self) -> io::Result<Option<RawLine>> {
-        let mut text = Vec::new();
-        let mut total: u64 = 0;
-        let mut too_long = false;
-        loop {
-            let available = match self.inner.fill_buf() {
-                Ok(bytes) => bytes,
-                Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
-                Err(e) => return Err(e),
-            };
-            if available.is_empty() {
-                if total == 0 {
-                    return Ok(None);
-                }
-                break;
-            }
-            let (take, ends) = match find_newline(available) {
-                Some(i) => (i + 1, true),
-                None => (available.len(), false),
-            };
-            let piece = &available[..take - usize::from(ends)];
-            if !too_long {
-                if text.len() + piece.len() > self.max_line_bytes + 1 {
-                    // (+1 leaves room for the '\r' of a "\r\n" terminator)
-                    too_long = true;
-                    text = Vec::new();
-                } else if text.is_empty() {
-                    // The usual case, a whole line in the buffer: one exact allocation.
-                    text = piece.to_vec();
-                } else {
-                    text.extend_from_slice(piece);
-                }
-            }
-            total += take as u64;
-            self.inner.consume(take);
-            if ends {
-                break;
-            }
-        }
-        self.lines_read += 1;
-        if text.last() == Some(&b'\r') {
-            text.pop();
-        }
-        let content = if too_long || text.len() > self.max_line_bytes {
-            Content::TooLong { bytes: total }
-        } else {
-            Content::Text(text)
-        };
-        Ok(Some(RawLine {
-            number: self.lines_read,
-            content,
-        }))
-    }
-}
-
-/// The index of the first `\n` in `b`, eight bytes at a time (a word has a zero byte iff
-/// `(x − 0x01…01) & !x & 0x80…80` is nonzero; the lowest such bit marks the first one).
-fn find_newline(b: &[u8]) -> Option<usize> {
-    const ONES: u64 = 0x0101_0101_0101_0101;
-    const HIGH: u64 = 0x8080_8080_8080_8080;
-    let mut chunks = b.chunks_exact(8);
-    let mut offset = 0;
-    for chunk in &mut chunks {
-        let mut word = [0u8; 8];
-        word.copy_from_slice(chunk);
-        let x = u64::from_le_bytes(word) ^ (ONES * u64::from(b'\n'));
-        let found = x.wrapping_sub(ONES) & !x & HIGH;
-        if found != 0 {
-            return Some(offset + (found.trailing_zeros() / 8) as usize);
-        }
-        offset += 8;
-    }
-    chunks
-        .remainder()
-        .iter()
-        .position(|&c| c == b'\n')
-        .map(|i| offset + i)
-}
 
 /// Why a line failed, with its `id` as written once it is known.
 pub(crate) struct LineFailure<'a> {
@@ -497,66 +347,11 @@ fn progress_bar(visible: bool) -> ProgressBar {
 mod tests {
     use super::*;
 
-    fn lines_of(input: &[u8], limit: usize) -> Vec<RawLine> {
-        let mut reader = LineReader::new(input, limit);
-        let mut lines = Vec::new();
-        while let Some(line) = reader.next_line().expect("in-memory reads succeed") {
-            lines.push(line);
-        }
-        lines
-    }
-
     fn text(number: u64, s: &str) -> RawLine {
         RawLine {
             number,
             content: Content::Text(s.as_bytes().to_vec()),
         }
-    }
-
-    #[test]
-    fn line_reader_bounds_lines_and_strips_terminators() {
-        let input = b"ab\r\n\n0123456789\nabcde\nlast";
-        assert_eq!(
-            lines_of(input, 5),
-            vec![
-                text(1, "ab"),
-                text(2, ""),
-                RawLine {
-                    number: 3,
-                    content: Content::TooLong { bytes: 11 }
-                },
-                text(4, "abcde"),
-                text(5, "last"),
-            ]
-        );
-        assert!(lines_of(b"", 5).is_empty());
-        assert_eq!(lines_of(b"\n", 5), vec![text(1, "")]);
-    }
-
-    #[test]
-    fn find_newline_finds_the_first() {
-        for len in 0..20 {
-            for at in 0..=len {
-                let mut b = vec![b'a'; len];
-                b.extend_from_slice(&[0x8a, 0x0b, 0x09, 0x00, 0xff]);
-                if at < len {
-                    b[at] = b'\n';
-                    b.push(b'\n');
-                }
-                let want = b.iter().position(|&c| c == b'\n');
-                assert_eq!(find_newline(&b), want, "{b:?}");
-            }
-        }
-    }
-
-    #[test]
-    fn over_long_line_longer_than_the_buffer_is_skipped() {
-        let mut input = vec![b'x'; 3 * READ_BUFFER_BYTES];
-        input.extend_from_slice(b"\n{}\n");
-        let lines = lines_of(&input, 1000);
-        assert_eq!(lines.len(), 2);
-        assert!(matches!(lines[0].content, Content::TooLong { .. }));
-        assert_eq!(lines[1], text(2, "{}"));
     }
 
     fn run_on(input: &str) -> (Vec<Value>, Summary) {

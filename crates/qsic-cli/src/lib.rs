@@ -6,6 +6,7 @@
 //! | [`affine`] | the `"affine"` object of `qsic classify`: the pair in ℝ³ |
 //! | [`input`] | reading a quadric from an argument or a JSON value, exactly |
 //! | [`output`] | the JSON result object ([`output::classification_to_json`]) and the text report |
+//! | [`reader`] | the lines of a batch input, bounded (terminators and a leading byte-order mark stripped) |
 //! | [`mod@line`] | the fields of one batch line, borrowed from its text (a strict fast reader, then `serde_json`) |
 //! | [`contact`] | `qsic contact`: first contact of two moving quadrics and the relation of moving solid ellipsoids |
 //! | [`batch`] | `--batch`: bounded, ordered, parallel JSON Lines processing, for any [`batch::Answer`] or line answer |
@@ -26,5 +27,6 @@ pub mod motion_plot;
 pub mod output;
 pub mod param;
 pub mod plot;
+pub mod reader;
 pub mod sample;
 pub mod svg;
