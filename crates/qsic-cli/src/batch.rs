@@ -167,7 +167,7 @@ fn not_an_object(text: &str) -> LineFailure<'static> {
 }
 
 /// The fields of a line: errors for an over-long line, invalid UTF-8, a value that is not
-/// an object, invalid JSON.
+/// an object, invalid JSON, a repeated `id`, `A` or `B`.
 pub(crate) fn read_record(line: &RawLine) -> Result<Line<'_>, LineFailure<'_>> {
     let bytes = match &line.content {
         Content::Text(bytes) => bytes,
@@ -189,7 +189,16 @@ pub(crate) fn read_record(line: &RawLine) -> Result<Line<'_>, LineFailure<'_>> {
     {
         return Err(not_an_object(text));
     }
-    read_line(text).map_err(|e| LineFailure::without_id(format!("invalid JSON: {e}")))
+    let record =
+        read_line(text).map_err(|e| LineFailure::without_id(format!("invalid JSON: {e}")))?;
+    match record.repeated {
+        None => Ok(record),
+        Some(field) => Err(LineFailure {
+            // a repeated id is not the line's: none is written
+            id: if field == "id" { None } else { record.id },
+            message: format!("duplicate field \"{field}\""),
+        }),
+    }
 }
 
 /// The line's quadrics `A`, `B` answered by `answer`.
@@ -447,6 +456,13 @@ mod tests {
                 )
             }
         };
+        if let Some(key) = first_repeated_field(text) {
+            let id = match key.as_str() {
+                "id" => Value::Null,
+                _ => object.get("id").cloned().unwrap_or(Value::Null),
+            };
+            return error(id, format!("duplicate field \"{key}\""));
+        }
         let id = object.get("id").cloned().unwrap_or(Value::Null);
         let read = |name: &str| match object.get(name) {
             None => Err(format!("missing field \"{name}\"")),
@@ -468,6 +484,97 @@ mod tests {
         }
     }
 
+    /// `id` if it comes twice among the top-level keys of an object, else the first of `A`,
+    /// `B` to, from the list of all its keys (not the line reader).
+    fn first_repeated_field(text: &str) -> Option<String> {
+        use serde::de::{Deserialize, Deserializer, IgnoredAny, MapAccess, Visitor};
+        struct Keys(Vec<String>);
+        impl<'de> Deserialize<'de> for Keys {
+            fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+                struct KeysVisitor;
+                impl<'de> Visitor<'de> for KeysVisitor {
+                    type Value = Keys;
+                    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                        f.write_str("an object")
+                    }
+                    fn visit_map<M: MapAccess<'de>>(self, mut map: M) -> Result<Keys, M::Error> {
+                        let mut keys = Vec::new();
+                        while let Some(key) = map.next_key::<String>()? {
+                            map.next_value::<IgnoredAny>()?;
+                            keys.push(key);
+                        }
+                        Ok(Keys(keys))
+                    }
+                }
+                d.deserialize_map(KeysVisitor)
+            }
+        }
+        let keys = serde_json::from_str::<Keys>(text).ok()?.0;
+        if keys.iter().filter(|k| *k == "id").count() > 1 {
+            return Some("id".to_string());
+        }
+        let mut seen = std::collections::HashSet::new();
+        keys.into_iter()
+            .find(|k| matches!(k.as_str(), "A" | "B") && !seen.insert(k.clone()))
+    }
+
+    #[test]
+    fn duplicate_fields_are_error_lines_naming_the_field() {
+        let sphere = "x^2+y^2+z^2-w^2";
+        let cases = [
+            (
+                format!(r#"{{"id": 1, "A": "x^2", "A": "{sphere}", "B": "y^2"}}"#),
+                "1",
+                "A",
+            ),
+            (
+                format!(
+                    r#"{{"id": 1, "A": "{sphere}", "B": "y^2", "B": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]}}"#
+                ),
+                "1",
+                "B",
+            ),
+            (
+                format!(r#"{{"id": 1, "A": "{sphere}", "id": 2, "B": "y^2"}}"#),
+                "null",
+                "id",
+            ),
+            // escaped keys are the same keys (the serde_json route)
+            (
+                format!(r#"{{"\u0041": "x^2", "A": "{sphere}", "id": "e", "B": "y^2"}}"#),
+                "\"e\"",
+                "A",
+            ),
+            // the first field to come again is named, but a repeated id always (none is written)
+            (
+                format!(r#"{{"B": "y^2", "A": "{sphere}", "B": "y^2", "A": "x^2", "id": 3}}"#),
+                "3",
+                "B",
+            ),
+            (
+                format!(r#"{{"A": "{sphere}", "A": "x^2", "id": 3, "B": "y^2", "id": 3}}"#),
+                "null",
+                "id",
+            ),
+        ];
+        for (line, id, key) in &cases {
+            let (answer, ok) = answer_line(&text(7, line));
+            assert!(!ok, "{line}");
+            let want = format!(
+                r#"{{"id":{id},"error":{{"line":7,"message":"duplicate field \"{key}\""}}}}"#
+            );
+            assert_eq!(answer, want, "{line}");
+        }
+        // repeated fields that are not read are not checked, and nested keys are another object's
+        for line in [
+            format!(r#"{{"x": 1, "x": 2, "A": "{sphere}", "B": "y^2"}}"#),
+            format!(r#"{{"extra": {{"A": 1, "A": 2}}, "A": "{sphere}", "B": "y^2"}}"#),
+        ] {
+            let (answer, ok) = answer_line(&text(1, &line));
+            assert!(ok, "{line}: {answer}");
+        }
+    }
+
     #[test]
     fn borrowed_reader_answers_as_the_value_tree_did() {
         let identity = "[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1]]";
@@ -476,6 +583,9 @@ mod tests {
             format!(r#"{{"id": {{"k": [1, {{"z": 2, "a": null}}]}}, "A": "{sphere}", "B": "2*x^2+4*y^2-w^2"}}"#),
             format!(r#"{{"\u0069d": "esc\u0041ped", "\u0041": "x^2\u002by^2+z^2-w^2", "B": {identity}}}"#),
             format!(r#"{{"id": 1, "A": "x^2", "A": "{sphere}", "B": {identity}, "B": "x^2+2*y^2-w^2"}}"#),
+            format!(r#"{{"id": 1, "B": {identity}, "A": "{sphere}", "id": [2], "x": 1, "x": 2}}"#),
+            format!(r#"{{"\u0042": {identity}, "A": "{sphere}", "B": "x^2"}}"#),
+            format!(r#"{{"id": 1, "A": "{sphere}", "A": "x^2", "B": "y^2"}} trailing"#),
             format!(r#"  {{"id": 1.50, "B": [[1E5,0,0,0],[0,-0.0,0,0],[0,0,"1/2",0],[0,0,0,"-1e-3"]], "A": "{sphere}", "extra": [1, {{"A": 3}}]}}"#),
             format!(r#"{{"id": 2, "A": [["1\u002f2",0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1]], "B": "{sphere}"}}"#),
             format!(r#"{{"id": 3, "A": [[1,0,0,0],[0,null,0,0],[0,0,1,0],[0,0,0,1]], "B": "{sphere}"}}"#),

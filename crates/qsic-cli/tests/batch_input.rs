@@ -1,6 +1,6 @@
 //! What every `--batch` command reads, through the binary: a byte-order mark at the start of
-//! the input (standard input or a file), and the line limit at its boundary with either
-//! terminator.
+//! the input (standard input or a file), repeated fields, and the line limit at its boundary
+//! with either terminator.
 
 #[path = "common/run.rs"]
 mod run;
@@ -65,6 +65,25 @@ fn a_byte_order_mark_at_the_start_is_skipped_on_stdin_and_in_files() {
         assert!(message.starts_with("invalid JSON"), "{command}: {message}");
     }
     std::fs::remove_dir_all(&dir).expect("the temporary directory is removed");
+}
+
+#[test]
+fn repeated_fields_are_error_lines_for_every_batch_command() {
+    for (command, line) in commands() {
+        let twice_b = line.replacen(r#""B""#, r#""B": "x^2", "B""#, 1);
+        let twice_id = line.replacen(r#""id": 1"#, r#""id": 1, "id": 2"#, 1);
+        let out = qsic(
+            &[command, "--batch", "-"],
+            &format!("{twice_b}\n{twice_id}\n{line}\n"),
+        );
+        let lines = answers(&out.stdout);
+        assert_eq!(out.status.code(), Some(1), "{command}");
+        assert_eq!(lines.len(), 3, "{command}");
+        let want = |id: Value, line: u64, key: &str| serde_json::json!({"id": id, "error": {"line": line, "message": format!("duplicate field \"{key}\"")}});
+        assert_eq!(lines[0], want(1.into(), 1, "B"), "{command}");
+        assert_eq!(lines[1], want(Value::Null, 2, "id"), "{command}");
+        assert!(lines[2].get("error").is_none(), "{command}: {}", lines[2]);
+    }
 }
 
 /// A batch line of exactly `len` bytes: the pair, padded with spaces inside the object.
