@@ -5,13 +5,16 @@
 use serde_json::Value;
 
 /// `qsic classify --batch` answers every line: one output line per non-blank input line
-/// (blank: only ASCII whitespace), each a JSON object with an `id`.
+/// (blank: only ASCII whitespace, after a byte-order mark at the start), each a JSON object
+/// with an `id`.
 pub fn batch_lines(data: &[u8]) {
     let mut out = Vec::new();
     if let Err(e) = qsic_cli::batch::run(data, &mut out, false) {
         panic!("a batch from memory into memory failed: {e:?}");
     }
-    let non_blank = data
+    // a byte-order mark at the very start is skipped
+    let lines = data.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(data);
+    let non_blank = lines
         .split(|&b| b == b'\n')
         .filter(|line| !line.iter().all(u8::is_ascii_whitespace))
         .count();

@@ -22,7 +22,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
-from . import _qsic
+from . import _inputs, _qsic
 from ._qsic import QsicError
 
 __all__ = [
@@ -36,6 +36,7 @@ __all__ = [
     "motion",
     "first_contact",
     "FIELDS",
+    "MAX_THREADS",
 ]
 
 #: The fields of a classification, in the order of the JSON result object.
@@ -53,39 +54,6 @@ FIELDS = (
 )
 
 
-def _entry_text(x: Any) -> str:
-    """An exact text for one number: ``str`` as written, integers in full, anything with
-    ``as_integer_ratio`` (float, Fraction, Decimal, NumPy scalars) as ``p/q``; a non-finite
-    float as ``nan``/``inf``, which the library refuses with the entry's position."""
-    if isinstance(x, str):
-        return x
-    if isinstance(x, (bool, np.bool_)):
-        raise QsicError(f"a matrix entry must be a number or a string, found {x!r}")
-    if isinstance(x, int):
-        return str(x)
-    try:
-        return str(operator.index(x))
-    except TypeError:
-        pass
-    ratio = getattr(x, "as_integer_ratio", None)
-    if ratio is None:
-        raise QsicError(
-            f"a matrix entry must be a number or a string, found {type(x).__name__}"
-        )
-    try:
-        p, q = ratio()
-    except (ValueError, OverflowError):
-        return str(x)  # nan, inf: refused by the library's number reader
-    return str(p) if q == 1 else f"{p}/{q}"
-
-
-def _matrix_texts(m: Any) -> List[str]:
-    arr = np.asarray(m, dtype=object)
-    if arr.shape != (4, 4):
-        raise QsicError(f"a quadric matrix must be 4x4, got shape {arr.shape}")
-    return [_entry_text(x) for x in arr.ravel()]
-
-
 QuadricLike = Union["Quadric", str, Sequence[Sequence[Any]], np.ndarray]
 
 
@@ -95,11 +63,7 @@ def _native(q: Any) -> Optional[_qsic.NativeQuadric]:
         return q._native
     if isinstance(q, str):
         return _qsic.quadric_from_text(q)
-    return _qsic.quadric_from_entries(_matrix_texts(q))
-
-
-def _vector(v: Any) -> List[str]:
-    return [_entry_text(x) for x in np.asarray(v, dtype=object).ravel()]
+    return _qsic.quadric_from_entries(_inputs.matrix_texts(q))
 
 
 class Quadric:
@@ -134,7 +98,7 @@ class Quadric:
     def matrix(self) -> np.ndarray:
         """The symmetric matrix, a 4×4 object array of ``Fraction``s (as given, not rescaled)."""
         return np.array(
-            [Fraction(t) for t in self._native.entries()], dtype=object
+            [_inputs.fraction(t) for t in self._native.entries()], dtype=object
         ).reshape(4, 4)
 
     @property
@@ -164,7 +128,10 @@ class Quadric:
     @classmethod
     def _shape(cls, name: str, *args: Any) -> "Quadric":
         texts = [
-            _vector(a) if np.ndim(a) > 0 else [_entry_text(a)] for a in args
+            _inputs.vector(a, f"argument {k} of {name}")
+            if np.ndim(a) > 0
+            else [_inputs.number_text(a, f"argument {k} of {name}")]
+            for k, a in enumerate(args)
         ]
         return cls._of(_qsic.quadric_from_shape(name, texts))
 
@@ -296,22 +263,26 @@ def _side_native(name: str, q: Any) -> Optional[_qsic.NativeQuadric]:
         raise QsicError(f"{name}: {e}") from None
 
 
-_I64_MAX = np.iinfo(np.int64).max
+#: The most threads ``classify_many`` takes (256): beyond the cores threads only add start-up
+#: and scheduling cost, and 256 is above the hardware threads of common machines while
+#: starting them takes milliseconds (the bound is argued at ``MAX_THREADS`` in src/lib.rs).
+MAX_THREADS: int = _qsic.MAX_THREADS
 
 
-def _batch_side(name: str, m: Any) -> Tuple[str, Any, int]:
-    arr = np.asarray(m)
-    if arr.ndim != 3 or arr.shape[1:] != (4, 4):
-        raise QsicError(f"{name}: expected an array of shape (N, 4, 4), got {arr.shape}")
-    n = arr.shape[0]
-    kind = arr.dtype.kind
-    if kind in "iub" and not (kind == "u" and arr.size and arr.max() > _I64_MAX):
-        return "int64", np.ascontiguousarray(arr, dtype=np.int64).tobytes(), n
-    if kind == "f":
-        return "float64", np.ascontiguousarray(arr, dtype=np.float64).tobytes(), n
-    if kind in "OUSu":
-        return "text", [_entry_text(x) for x in arr.astype(object).ravel()], n
-    raise QsicError(f"{name}: unsupported dtype {arr.dtype}")
+def _thread_count(threads: Any) -> Optional[int]:
+    """``threads`` checked: None, or an integer from 1 to :data:`MAX_THREADS`."""
+    if threads is None:
+        return None
+    wanted = f"threads must be an integer from 1 to {MAX_THREADS}"
+    if isinstance(threads, (bool, np.bool_)):
+        raise QsicError(f"{wanted}, got {threads!r}")
+    try:
+        t = operator.index(threads)
+    except TypeError:
+        raise QsicError(f"{wanted}, got {_inputs.describe(threads)}") from None
+    if not 1 <= t <= MAX_THREADS:
+        raise QsicError(f"{wanted}, got {t}")
+    return t
 
 
 def classify_many(
@@ -324,9 +295,11 @@ def classify_many(
 ) -> Dict[str, np.ndarray]:
     """Classifies ``A[k]`` against ``B[k]`` for every ``k``, on all cores with the GIL released.
 
-    ``A`` and ``B`` have shape ``(N, 4, 4)``: ``int64`` (or any integer type), ``float64``
-    (floats converted exactly), or ``object`` arrays of ints, ``Fraction``s, floats and number
-    strings. A zero matrix is the zero form (allowed on one side, as in the CLI).
+    ``A`` and ``B`` are ``(N, 4, 4)`` arrays: ``int64`` (or any integer type), ``float64``
+    (or a narrower float; floats converted exactly), or any other array or sequence of N
+    4×4 matrices whose entries are ints, floats, ``Fraction``s, ``Decimal``s and number
+    strings, read entry by entry as ``Quadric()`` reads them (exact, slower than the machine
+    arrays). A zero matrix is the zero form (allowed on one side, as in the CLI).
 
     Returns a dict of NumPy arrays of length N, in the order of the JSON result object:
     ``pencil``, ``segre``, ``signature``, ``index_sequence``, ``complex_type``,
@@ -334,15 +307,23 @@ def classify_many(
     where the pencil has no case), ``components``, ``singular_points`` (object arrays of
     lists of dicts), ``affine`` (dicts, only with ``affine=True``: the ``"affine"`` object of
     ``qsic classify``, costly) and ``error``: None, or the message of the row's error
-    (``A: …``, ``B: …``, as in ``qsic classify --batch``); a bad row never raises.
+    (``A: …``, ``B: …``, as in ``qsic classify --batch``; the other columns None, ``case``
+    0). A bad row never raises, whatever it holds: a matrix that is not symmetric, a row that
+    is not a 4×4 matrix (``A: a quadric matrix must be 4x4, got …``), an entry that is not a
+    finite real number or a number string (``A: entry (0,1) is None, not a number``: None,
+    bytes, complex, NaN, an object that cannot be read), a number beyond the library's limits.
 
-    ``threads``: the number of threads (default: all cores).
+    ``threads``: the number of threads, an integer from 1 to :data:`MAX_THREADS` (256);
+    default: all cores.
 
     Raises:
-        QsicError: only for arrays of the wrong shape or dtype, or lengths that differ.
+        TypeError: ``A`` or ``B`` is not a sequence of matrices.
+        QsicError: an array whose shape is not ``(N, 4, 4)``, lengths that differ, or
+            ``threads`` out of range or not an integer; nothing is computed then.
     """
-    ka, da, na = _batch_side("A", A)
-    kb, db, nb = _batch_side("B", B)
+    threads = _thread_count(threads)
+    ka, da, na = _inputs.batch_side("A", A)
+    kb, db, nb = _inputs.batch_side("B", B)
     if na != nb:
         raise QsicError(f"A holds {na} matrices and B {nb}: the lengths must be equal")
     cols = _qsic.classify_many(ka, da, kb, db, affine=affine, chart=chart, threads=threads)
@@ -427,7 +408,7 @@ def _moving(name: str, m: Any) -> List[str]:
     if isinstance(m, str):
         return [m]
     try:
-        return _matrix_texts(m)
+        return _inputs.matrix_texts(m)
     except QsicError as e:
         raise QsicError(f"{name}: {e}") from None
 
@@ -437,8 +418,8 @@ def _range(r: Optional[Tuple[Any, Any]]) -> Tuple[Optional[str], Optional[str]]:
         return None, None
     t0, t1 = r
     return (
-        None if t0 is None else _entry_text(t0),
-        None if t1 is None else _entry_text(t1),
+        None if t0 is None else _inputs.number_text(t0, "range start"),
+        None if t1 is None else _inputs.number_text(t1, "range end"),
     )
 
 

@@ -7,6 +7,7 @@ import numpy as np
 from ._qsic import QsicError as QsicError
 
 FIELDS: Tuple[str, ...]
+MAX_THREADS: int
 
 Number = Union[int, float, str, Any]  # also Fraction, Decimal, NumPy scalars
 QuadricLike = Union["Quadric", str, Sequence[Sequence[Number]], np.ndarray]

@@ -3,6 +3,9 @@ NumPy arrays and Python numbers and turn them into what these take."""
 
 from typing import Dict, List, Optional, Tuple, Union
 
+MAX_THREADS: int
+MAX_NUMBER_DIGITS: int
+
 class QsicError(ValueError):
     """Bad input: the library's message."""
 
@@ -23,9 +26,9 @@ def classify(
 ) -> Tuple[str, str]: ...
 def classify_many(
     a_kind: str,
-    a: Union[bytes, List[str]],
+    a: Union[bytes, Tuple[List[str], Dict[int, str]]],
     b_kind: str,
-    b: Union[bytes, List[str]],
+    b: Union[bytes, Tuple[List[str], Dict[int, str]]],
     affine: bool = False,
     chart: Optional[str] = None,
     threads: Optional[int] = None,

@@ -258,23 +258,27 @@ fn classify(
 }
 
 /// One side of a batch: `N` matrices as the native bytes of an `int64` or `float64` array of
-/// shape `(N, 4, 4)`, or `16·N` exact number texts.
+/// shape `(N, 4, 4)`, or `16·N` exact number texts with the messages of the rows the Python
+/// half could not read (their texts are placeholders).
 enum Side<'a> {
     Int(&'a [u8]),
     Float(&'a [u8]),
-    Text(Vec<String>),
+    Text {
+        texts: Vec<String>,
+        errors: HashMap<usize, String>,
+    },
 }
 
 impl Side<'_> {
     fn len(&self) -> usize {
         match self {
             Side::Int(b) | Side::Float(b) => b.len() / 128,
-            Side::Text(t) => t.len() / 16,
+            Side::Text { texts, .. } => texts.len() / 16,
         }
     }
 
-    /// The quadric of row `k` (`None`: the zero form).
-    fn quadric(&self, k: usize) -> Result<Option<Quadric>, Error> {
+    /// The quadric of row `k` (`None`: the zero form), or why it cannot be read.
+    fn quadric(&self, k: usize) -> Result<Option<Quadric>, String> {
         fn words(bytes: &[u8], k: usize) -> [[[u8; 8]; 4]; 4] {
             let row = &bytes[128 * k..128 * (k + 1)];
             std::array::from_fn(|i| {
@@ -284,7 +288,7 @@ impl Side<'_> {
                 })
             })
         }
-        match self {
+        let read = match self {
             Side::Int(bytes) => {
                 let m = words(bytes, k).map(|r| r.map(i64::from_ne_bytes));
                 allow_zero(Quadric::from_integers(m))
@@ -293,11 +297,15 @@ impl Side<'_> {
                 let m = words(bytes, k).map(|r| r.map(f64::from_ne_bytes));
                 allow_zero(Quadric::from_f64(m))
             }
-            Side::Text(texts) => {
+            Side::Text { texts, errors } => {
+                if let Some(message) = errors.get(&k) {
+                    return Err(message.clone());
+                }
                 let rows = rows_of(&texts[16 * k..16 * (k + 1)]).expect("16 texts");
                 allow_zero(qsic::io::quadric_from_array(&rows))
             }
-        }
+        };
+        read.map_err(|e| e.to_string())
     }
 }
 
@@ -314,11 +322,14 @@ fn side<'a>(kind: &str, data: &'a Bound<'_, PyAny>) -> PyResult<Side<'a>> {
         "int64" => Ok(Side::Int(bytes()?)),
         "float64" => Ok(Side::Float(bytes()?)),
         "text" => {
-            let texts: Vec<String> = data.extract()?;
+            let (texts, errors): (Vec<String>, HashMap<usize, String>) = data.extract()?;
             if texts.len() % 16 != 0 {
                 return Err(err("16 entries per matrix"));
             }
-            Ok(Side::Text(texts))
+            if errors.keys().any(|&k| k >= texts.len() / 16) {
+                return Err(err("an error for a row beyond the batch"));
+            }
+            Ok(Side::Text { texts, errors })
         }
         _ => Err(err(format!("unknown kind '{kind}'"))),
     }
@@ -340,6 +351,25 @@ fn classify_row(a: &Side<'_>, b: &Side<'_>, k: usize, affine: Option<&(Chart, St
         Ok((ClassificationJson::from(&c), view))
     })
     .and_then(|r| r)
+}
+
+/// The most threads [`classify_many`] takes: beyond the cores threads only add start-up and
+/// scheduling cost; 256 is above the hardware threads of common machines and starts in a few
+/// milliseconds, so no accepted value stalls the call on creating threads (`2³¹` threads
+/// would exhaust the process's resources, `10⁵` take minutes to start).
+const MAX_THREADS: usize = 256;
+
+/// `threads` checked against `1..=MAX_THREADS`.
+fn thread_count(threads: Option<i64>) -> PyResult<Option<usize>> {
+    match threads {
+        None => Ok(None),
+        Some(t) => match usize::try_from(t) {
+            Ok(t) if (1..=MAX_THREADS).contains(&t) => Ok(Some(t)),
+            _ => Err(err(format!(
+                "threads must be an integer from 1 to {MAX_THREADS}, got {t}"
+            ))),
+        },
+    }
 }
 
 /// Python strings for the `&'static str` keys of the results, each made once per batch.
@@ -367,7 +397,8 @@ impl<'py> Strings<'py> {
 }
 
 /// Classifies row `k` of `a` against row `k` of `b` for every `k`, in parallel with the GIL
-/// released (on `threads` threads, all cores by default), and returns the columns: lists for
+/// released (on `threads` threads, 1 to [`MAX_THREADS`], all cores by default; checked before
+/// anything starts), and returns the columns: lists for
 /// the string, list and error columns, the native bytes of an `int8` array for `case` (0:
 /// none), and the `"affine"` objects as JSON texts when `affine`.
 #[pyfunction]
@@ -381,8 +412,9 @@ fn classify_many<'py>(
     b: &Bound<'py, PyAny>,
     affine: bool,
     chart: Option<&str>,
-    threads: Option<usize>,
+    threads: Option<i64>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let threads = thread_count(threads)?;
     let a = side(a_kind, a)?;
     let b = side(b_kind, b)?;
     let n = a.len();
@@ -403,7 +435,7 @@ fn classify_many<'py>(
         .detach(|| match threads {
             None => Ok(work()),
             Some(t) => rayon::ThreadPoolBuilder::new()
-                .num_threads(t.max(1))
+                .num_threads(t)
                 .build()
                 .map(|pool| pool.install(work))
                 .map_err(|e| e.to_string()),
@@ -642,6 +674,8 @@ fn first_contact(
 #[pymodule]
 fn _qsic(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("QsicError", m.py().get_type::<QsicError>())?;
+    m.add("MAX_THREADS", MAX_THREADS)?;
+    m.add("MAX_NUMBER_DIGITS", qsic::limits::MAX_NUMBER_DIGITS)?;
     m.add_class::<NativeQuadric>()?;
     m.add_function(wrap_pyfunction!(quadric_from_text, m)?)?;
     m.add_function(wrap_pyfunction!(quadric_from_entries, m)?)?;

@@ -66,7 +66,7 @@ def test_big_integers_and_unsigned_arrays():
         assert got[key][0] == qsic.classify_many(huge.astype(object), B)[key][0], key
 
 
-@pytest.mark.parametrize("bad", [np.zeros((2, 4, 3)), np.zeros((4, 4)), np.zeros((1, 4, 4), dtype=complex)])
+@pytest.mark.parametrize("bad", [np.zeros((2, 4, 3)), np.zeros((4, 4)), np.zeros(5), np.zeros((2, 16))])
 def test_bad_array_shapes_and_types_raise(bad):
     with pytest.raises(qsic.QsicError):
         qsic.classify_many(bad, bad)

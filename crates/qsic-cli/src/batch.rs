@@ -3,12 +3,13 @@
 //! | item | does |
 //! |---|---|
 //! | [`run`] | the whole batch: read a chunk, classify it in parallel, write it in order, repeat |
-//! | [`LineReader`] | bounded line reading: a line never holds more than its limit in memory |
+//! | [`LineReader`] | bounded line reading (module [`crate::reader`]): a line never holds more than its limit in memory |
 //! | [`answer_line`] | one input line to one output line |
 //!
 //! Every non-blank input line yields exactly one output line, in input order: the result
 //! object with the line's `id`, or `{"id": …, "error": {"line": n, "message": …}}`.
 //! Blank (ASCII-whitespace-only) lines yield nothing but are counted in line numbers.
+//! A UTF-8 byte-order mark at the very start of the input is skipped.
 //! Memory is bounded by the chunk limits, whatever the input: a line longer than
 //! [`MAX_LINE_BYTES`] is skipped without being stored and answered with an error.
 //!
@@ -19,11 +20,12 @@
 use crate::input::{surface_from_form, JsonForm};
 use crate::line::{read_line, Line};
 use crate::output::{write_classification_fields, write_json_string};
+pub use crate::reader::{Content, LineReader, RawLine};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use qsic::{classify_allowing_zero, Quadric};
 use rayon::prelude::*;
 use serde_json::Value;
-use std::io::{self, BufRead, BufReader, Read, Write};
+use std::io::{self, Read, Write};
 use std::panic::{self, AssertUnwindSafe};
 use std::time::Duration;
 
@@ -37,158 +39,6 @@ pub const CHUNK_LINES: usize = 4096;
 
 /// Most bytes of input held in one chunk (64 MiB).
 pub const CHUNK_BYTES: usize = 64 << 20;
-
-/// Size of the input buffer.
-const READ_BUFFER_BYTES: usize = 256 << 10;
-
-/// The content of one input line.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Content {
-    /// The bytes of the line without its terminator (`\n` or `\r\n`).
-    Text(Vec<u8>),
-    /// A line longer than the limit; only its length (terminator included) is kept.
-    TooLong {
-        /// Bytes read for this line.
-        bytes: u64,
-    },
-}
-
-/// One input line with its 1-based number.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct RawLine {
-    /// 1-based line number, blank lines included.
-    pub number: u64,
-    /// What the line holds.
-    pub content: Content,
-}
-
-impl RawLine {
-    /// Whether the line holds only ASCII whitespace (an empty line included).
-    fn is_blank(&self) -> bool {
-        matches!(&self.content, Content::Text(t) if t.iter().all(u8::is_ascii_whitespace))
-    }
-
-    /// Bytes held in memory.
-    fn held_bytes(&self) -> usize {
-        match &self.content {
-            Content::Text(t) => t.len(),
-            Content::TooLong { .. } => 0,
-        }
-    }
-}
-
-/// Reads lines of at most `max_line_bytes` bytes; longer lines are consumed up to their
-/// end without being stored. Memory use is the buffer plus one line.
-pub struct LineReader<R> {
-    inner: BufReader<R>,
-    max_line_bytes: usize,
-    lines_read: u64,
-}
-
-impl<R: Read> LineReader<R> {
-    /// A reader of lines of at most `max_line_bytes` bytes.
-    pub fn new(inner: R, max_line_bytes: usize) -> Self {
-        LineReader {
-            inner: BufReader::with_capacity(READ_BUFFER_BYTES, inner),
-            max_line_bytes,
-            lines_read: 0,
-        }
-    }
-
-    /// Lines read so far, blank ones included.
-    pub fn lines_read(&self) -> u64 {
-        self.lines_read
-    }
-
-    /// Whether everything read from the source so far has been consumed, so that the
-    /// next line may have to wait for the source (an interactive producer).
-    pub fn drained(&self) -> bool {
-        self.inner.buffer().is_empty()
-    }
-
-    /// The next line, `None` at the end of the input. A last line without a newline is
-    /// a line.
-    ///
-    /// # Errors
-    /// Any read error of the source other than [`io::ErrorKind::Interrupted`].
-    pub fn next_line(&mut self) -> io::Result<Option<RawLine>> {
-        let mut text = Vec::new();
-        let mut total: u64 = 0;
-        let mut too_long = false;
-        loop {
-            let available = match self.inner.fill_buf() {
-                Ok(bytes) => bytes,
-                Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
-                Err(e) => return Err(e),
-            };
-            if available.is_empty() {
-                if total == 0 {
-                    return Ok(None);
-                }
-                break;
-            }
-            let (take, ends) = match find_newline(available) {
-                Some(i) => (i + 1, true),
-                None => (available.len(), false),
-            };
-            let piece = &available[..take - usize::from(ends)];
-            if !too_long {
-                if text.len() + piece.len() > self.max_line_bytes + 1 {
-                    // (+1 leaves room for the '\r' of a "\r\n" terminator)
-                    too_long = true;
-                    text = Vec::new();
-                } else if text.is_empty() {
-                    // The usual case, a whole line in the buffer: one exact allocation.
-                    text = piece.to_vec();
-                } else {
-                    text.extend_from_slice(piece);
-                }
-            }
-            total += take as u64;
-            self.inner.consume(take);
-            if ends {
-                break;
-            }
-        }
-        self.lines_read += 1;
-        if text.last() == Some(&b'\r') {
-            text.pop();
-        }
-        let content = if too_long || text.len() > self.max_line_bytes {
-            Content::TooLong { bytes: total }
-        } else {
-            Content::Text(text)
-        };
-        Ok(Some(RawLine {
-            number: self.lines_read,
-            content,
-        }))
-    }
-}
-
-/// The index of the first `\n` in `b`, eight bytes at a time (a word has a zero byte iff
-/// `(x − 0x01…01) & !x & 0x80…80` is nonzero; the lowest such bit marks the first one).
-fn find_newline(b: &[u8]) -> Option<usize> {
-    const ONES: u64 = 0x0101_0101_0101_0101;
-    const HIGH: u64 = 0x8080_8080_8080_8080;
-    let mut chunks = b.chunks_exact(8);
-    let mut offset = 0;
-    for chunk in &mut chunks {
-        let mut word = [0u8; 8];
-        word.copy_from_slice(chunk);
-        let x = u64::from_le_bytes(word) ^ (ONES * u64::from(b'\n'));
-        let found = x.wrapping_sub(ONES) & !x & HIGH;
-        if found != 0 {
-            return Some(offset + (found.trailing_zeros() / 8) as usize);
-        }
-        offset += 8;
-    }
-    chunks
-        .remainder()
-        .iter()
-        .position(|&c| c == b'\n')
-        .map(|i| offset + i)
-}
 
 /// Why a line failed, with its `id` as written once it is known.
 pub(crate) struct LineFailure<'a> {
@@ -317,7 +167,7 @@ fn not_an_object(text: &str) -> LineFailure<'static> {
 }
 
 /// The fields of a line: errors for an over-long line, invalid UTF-8, a value that is not
-/// an object, invalid JSON.
+/// an object, invalid JSON, a repeated `id`, `A` or `B`.
 pub(crate) fn read_record(line: &RawLine) -> Result<Line<'_>, LineFailure<'_>> {
     let bytes = match &line.content {
         Content::Text(bytes) => bytes,
@@ -339,7 +189,16 @@ pub(crate) fn read_record(line: &RawLine) -> Result<Line<'_>, LineFailure<'_>> {
     {
         return Err(not_an_object(text));
     }
-    read_line(text).map_err(|e| LineFailure::without_id(format!("invalid JSON: {e}")))
+    let record =
+        read_line(text).map_err(|e| LineFailure::without_id(format!("invalid JSON: {e}")))?;
+    match record.repeated {
+        None => Ok(record),
+        Some(field) => Err(LineFailure {
+            // a repeated id is not the line's: none is written
+            id: if field == "id" { None } else { record.id },
+            message: format!("duplicate field \"{field}\""),
+        }),
+    }
 }
 
 /// The line's quadrics `A`, `B` answered by `answer`.
@@ -497,66 +356,11 @@ fn progress_bar(visible: bool) -> ProgressBar {
 mod tests {
     use super::*;
 
-    fn lines_of(input: &[u8], limit: usize) -> Vec<RawLine> {
-        let mut reader = LineReader::new(input, limit);
-        let mut lines = Vec::new();
-        while let Some(line) = reader.next_line().expect("in-memory reads succeed") {
-            lines.push(line);
-        }
-        lines
-    }
-
     fn text(number: u64, s: &str) -> RawLine {
         RawLine {
             number,
             content: Content::Text(s.as_bytes().to_vec()),
         }
-    }
-
-    #[test]
-    fn line_reader_bounds_lines_and_strips_terminators() {
-        let input = b"ab\r\n\n0123456789\nabcde\nlast";
-        assert_eq!(
-            lines_of(input, 5),
-            vec![
-                text(1, "ab"),
-                text(2, ""),
-                RawLine {
-                    number: 3,
-                    content: Content::TooLong { bytes: 11 }
-                },
-                text(4, "abcde"),
-                text(5, "last"),
-            ]
-        );
-        assert!(lines_of(b"", 5).is_empty());
-        assert_eq!(lines_of(b"\n", 5), vec![text(1, "")]);
-    }
-
-    #[test]
-    fn find_newline_finds_the_first() {
-        for len in 0..20 {
-            for at in 0..=len {
-                let mut b = vec![b'a'; len];
-                b.extend_from_slice(&[0x8a, 0x0b, 0x09, 0x00, 0xff]);
-                if at < len {
-                    b[at] = b'\n';
-                    b.push(b'\n');
-                }
-                let want = b.iter().position(|&c| c == b'\n');
-                assert_eq!(find_newline(&b), want, "{b:?}");
-            }
-        }
-    }
-
-    #[test]
-    fn over_long_line_longer_than_the_buffer_is_skipped() {
-        let mut input = vec![b'x'; 3 * READ_BUFFER_BYTES];
-        input.extend_from_slice(b"\n{}\n");
-        let lines = lines_of(&input, 1000);
-        assert_eq!(lines.len(), 2);
-        assert!(matches!(lines[0].content, Content::TooLong { .. }));
-        assert_eq!(lines[1], text(2, "{}"));
     }
 
     fn run_on(input: &str) -> (Vec<Value>, Summary) {
@@ -652,6 +456,13 @@ mod tests {
                 )
             }
         };
+        if let Some(key) = first_repeated_field(text) {
+            let id = match key.as_str() {
+                "id" => Value::Null,
+                _ => object.get("id").cloned().unwrap_or(Value::Null),
+            };
+            return error(id, format!("duplicate field \"{key}\""));
+        }
         let id = object.get("id").cloned().unwrap_or(Value::Null);
         let read = |name: &str| match object.get(name) {
             None => Err(format!("missing field \"{name}\"")),
@@ -673,6 +484,97 @@ mod tests {
         }
     }
 
+    /// `id` if it comes twice among the top-level keys of an object, else the first of `A`,
+    /// `B` to, from the list of all its keys (not the line reader).
+    fn first_repeated_field(text: &str) -> Option<String> {
+        use serde::de::{Deserialize, Deserializer, IgnoredAny, MapAccess, Visitor};
+        struct Keys(Vec<String>);
+        impl<'de> Deserialize<'de> for Keys {
+            fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+                struct KeysVisitor;
+                impl<'de> Visitor<'de> for KeysVisitor {
+                    type Value = Keys;
+                    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                        f.write_str("an object")
+                    }
+                    fn visit_map<M: MapAccess<'de>>(self, mut map: M) -> Result<Keys, M::Error> {
+                        let mut keys = Vec::new();
+                        while let Some(key) = map.next_key::<String>()? {
+                            map.next_value::<IgnoredAny>()?;
+                            keys.push(key);
+                        }
+                        Ok(Keys(keys))
+                    }
+                }
+                d.deserialize_map(KeysVisitor)
+            }
+        }
+        let keys = serde_json::from_str::<Keys>(text).ok()?.0;
+        if keys.iter().filter(|k| *k == "id").count() > 1 {
+            return Some("id".to_string());
+        }
+        let mut seen = std::collections::HashSet::new();
+        keys.into_iter()
+            .find(|k| matches!(k.as_str(), "A" | "B") && !seen.insert(k.clone()))
+    }
+
+    #[test]
+    fn duplicate_fields_are_error_lines_naming_the_field() {
+        let sphere = "x^2+y^2+z^2-w^2";
+        let cases = [
+            (
+                format!(r#"{{"id": 1, "A": "x^2", "A": "{sphere}", "B": "y^2"}}"#),
+                "1",
+                "A",
+            ),
+            (
+                format!(
+                    r#"{{"id": 1, "A": "{sphere}", "B": "y^2", "B": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]}}"#
+                ),
+                "1",
+                "B",
+            ),
+            (
+                format!(r#"{{"id": 1, "A": "{sphere}", "id": 2, "B": "y^2"}}"#),
+                "null",
+                "id",
+            ),
+            // escaped keys are the same keys (the serde_json route)
+            (
+                format!(r#"{{"\u0041": "x^2", "A": "{sphere}", "id": "e", "B": "y^2"}}"#),
+                "\"e\"",
+                "A",
+            ),
+            // the first field to come again is named, but a repeated id always (none is written)
+            (
+                format!(r#"{{"B": "y^2", "A": "{sphere}", "B": "y^2", "A": "x^2", "id": 3}}"#),
+                "3",
+                "B",
+            ),
+            (
+                format!(r#"{{"A": "{sphere}", "A": "x^2", "id": 3, "B": "y^2", "id": 3}}"#),
+                "null",
+                "id",
+            ),
+        ];
+        for (line, id, key) in &cases {
+            let (answer, ok) = answer_line(&text(7, line));
+            assert!(!ok, "{line}");
+            let want = format!(
+                r#"{{"id":{id},"error":{{"line":7,"message":"duplicate field \"{key}\""}}}}"#
+            );
+            assert_eq!(answer, want, "{line}");
+        }
+        // repeated fields that are not read are not checked, and nested keys are another object's
+        for line in [
+            format!(r#"{{"x": 1, "x": 2, "A": "{sphere}", "B": "y^2"}}"#),
+            format!(r#"{{"extra": {{"A": 1, "A": 2}}, "A": "{sphere}", "B": "y^2"}}"#),
+        ] {
+            let (answer, ok) = answer_line(&text(1, &line));
+            assert!(ok, "{line}: {answer}");
+        }
+    }
+
     #[test]
     fn borrowed_reader_answers_as_the_value_tree_did() {
         let identity = "[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1]]";
@@ -681,6 +583,9 @@ mod tests {
             format!(r#"{{"id": {{"k": [1, {{"z": 2, "a": null}}]}}, "A": "{sphere}", "B": "2*x^2+4*y^2-w^2"}}"#),
             format!(r#"{{"\u0069d": "esc\u0041ped", "\u0041": "x^2\u002by^2+z^2-w^2", "B": {identity}}}"#),
             format!(r#"{{"id": 1, "A": "x^2", "A": "{sphere}", "B": {identity}, "B": "x^2+2*y^2-w^2"}}"#),
+            format!(r#"{{"id": 1, "B": {identity}, "A": "{sphere}", "id": [2], "x": 1, "x": 2}}"#),
+            format!(r#"{{"\u0042": {identity}, "A": "{sphere}", "B": "x^2"}}"#),
+            format!(r#"{{"id": 1, "A": "{sphere}", "A": "x^2", "B": "y^2"}} trailing"#),
             format!(r#"  {{"id": 1.50, "B": [[1E5,0,0,0],[0,-0.0,0,0],[0,0,"1/2",0],[0,0,0,"-1e-3"]], "A": "{sphere}", "extra": [1, {{"A": 3}}]}}"#),
             format!(r#"{{"id": 2, "A": [["1\u002f2",0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1]], "B": "{sphere}"}}"#),
             format!(r#"{{"id": 3, "A": [[1,0,0,0],[0,null,0,0],[0,0,1,0],[0,0,0,1]], "B": "{sphere}"}}"#),

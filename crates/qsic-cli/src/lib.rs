@@ -6,6 +6,7 @@
 //! | [`affine`] | the `"affine"` object of `qsic classify`: the pair in ℝ³ |
 //! | [`input`] | reading a quadric from an argument or a JSON value, exactly |
 //! | [`output`] | the JSON result object ([`output::classification_to_json`]) and the text report |
+//! | [`reader`] | the lines of a batch input, bounded (terminators and a leading byte-order mark stripped) |
 //! | [`mod@line`] | the fields of one batch line, borrowed from its text (a strict fast reader, then `serde_json`) |
 //! | [`file`] | output files written whole or not at all (a temporary renamed into place) |
 //! | [`contact`] | `qsic contact`: first contact of two moving quadrics and the relation of moving solid ellipsoids |
@@ -30,5 +31,6 @@ pub mod output;
 pub mod param;
 pub mod plot;
 mod plot_common;
+pub mod reader;
 pub mod sample;
 pub mod svg;

@@ -12,8 +12,9 @@ use serde::de::{self, Deserialize, Deserializer, IgnoredAny, MapAccess, Visitor}
 use serde_json::value::RawValue;
 use std::fmt;
 
-/// The fields a batch line is read for. Other fields are skipped; of repeated fields the
-/// last counts (as in a JSON object read into a map).
+/// The fields a batch line is read for. Other fields are skipped (repeated or not); a field
+/// read that comes twice is noted in `repeated` (the values are then the last ones), and a
+/// batch answers such a line with an error.
 #[derive(Debug)]
 pub struct Line<'a> {
     /// The `id` value exactly as written, if present.
@@ -22,6 +23,33 @@ pub struct Line<'a> {
     pub a: Option<JsonForm<'a>>,
     /// The `B` value.
     pub b: Option<JsonForm<'a>>,
+    /// `id` if it comes a second time, else the first of `A`, `B` to, if one does.
+    pub repeated: Option<&'static str>,
+}
+
+impl Line<'_> {
+    fn empty() -> Self {
+        Line {
+            id: None,
+            a: None,
+            b: None,
+            repeated: None,
+        }
+    }
+}
+
+/// `*slot = Some(value)`; if the slot held a value already, `name` is noted in `repeated`
+/// unless an earlier field was — except that `id` is always noted: a line whose id comes
+/// twice has no id to copy into its error line.
+fn store<T>(
+    slot: &mut Option<T>,
+    value: T,
+    repeated: &mut Option<&'static str>,
+    name: &'static str,
+) {
+    if slot.replace(value).is_some() && (repeated.is_none() || name == "id") {
+        *repeated = Some(name);
+    }
 }
 
 /// Reads a line that starts (after whitespace) with `{`.
@@ -79,16 +107,15 @@ impl<'de> Deserialize<'de> for Line<'de> {
                 f.write_str("a JSON object")
             }
             fn visit_map<M: MapAccess<'de>>(self, mut map: M) -> Result<Line<'de>, M::Error> {
-                let mut line = Line {
-                    id: None,
-                    a: None,
-                    b: None,
-                };
+                let mut line = Line::empty();
                 while let Some(field) = map.next_key::<Field>()? {
                     match field {
-                        Field::Id => line.id = Some(map.next_value::<&RawValue>()?.get()),
-                        Field::A => line.a = Some(map.next_value()?),
-                        Field::B => line.b = Some(map.next_value()?),
+                        Field::Id => {
+                            let id = map.next_value::<&RawValue>()?.get();
+                            store(&mut line.id, id, &mut line.repeated, "id");
+                        }
+                        Field::A => store(&mut line.a, map.next_value()?, &mut line.repeated, "A"),
+                        Field::B => store(&mut line.b, map.next_value()?, &mut line.repeated, "B"),
                         Field::Other => {
                             map.next_value::<IgnoredAny>()?;
                         }
@@ -275,11 +302,7 @@ impl<'a> Scanner<'a> {
 /// `true`, `false` or `null`; whitespace anywhere JSON allows it.
 pub fn scan_plain(text: &str) -> Option<Line<'_>> {
     let mut s = Scanner { text, pos: 0 };
-    let mut line = Line {
-        id: None,
-        a: None,
-        b: None,
-    };
+    let mut line = Line::empty();
     s.expect(b'{')?;
     s.skip();
     if s.peek()? == b'}' {
@@ -291,9 +314,9 @@ pub fn scan_plain(text: &str) -> Option<Line<'_>> {
             s.expect(b':')?;
             s.skip();
             match Field::of(key) {
-                Field::Id => line.id = Some(s.scalar()?),
-                Field::A => line.a = Some(s.form()?),
-                Field::B => line.b = Some(s.form()?),
+                Field::Id => store(&mut line.id, s.scalar()?, &mut line.repeated, "id"),
+                Field::A => store(&mut line.a, s.form()?, &mut line.repeated, "A"),
+                Field::B => store(&mut line.b, s.form()?, &mut line.repeated, "B"),
                 Field::Other => {
                     s.scalar()?;
                 }
@@ -319,13 +342,18 @@ mod tests {
     use crate::input::quadric_from_form;
     use proptest::prelude::*;
 
-    /// What a line reads to, comparable: the id and the quadric (or error) of A and B.
-    fn summary(line: &Line<'_>) -> (Option<String>, [String; 2]) {
+    /// What a line reads to, comparable: the id, the quadric (or error) of A and B, and the
+    /// field repeated.
+    fn summary(line: &Line<'_>) -> (Option<String>, [String; 2], Option<&'static str>) {
         let form = |f: &Option<JsonForm<'_>>| match f {
             None => "missing".to_string(),
             Some(f) => format!("{:?}", quadric_from_form(f).map_err(|e| e.to_string())),
         };
-        (line.id.map(str::to_string), [form(&line.a), form(&line.b)])
+        (
+            line.id.map(str::to_string),
+            [form(&line.a), form(&line.b)],
+            line.repeated,
+        )
     }
 
     /// Where the scanner answers, `serde_json` must read the same line the same way.
@@ -349,10 +377,19 @@ mod tests {
             r#"{"id": "é ∞", "A": "x^2", "B": "y^2"}"#.to_string(),
             r#"{}"#.to_string(),
             r#"{"id": 1}"#.to_string(),
+            r#"{"id": 1, "id": 2, "A": "x^2", "A": "y^2", "B": "z^2"}"#.to_string(),
         ];
         for text in &plain {
             assert!(assert_scanner_agrees(text), "{text:?} should be scanned");
         }
+        let repeated = |text: &str| scan_plain(text).and_then(|line| line.repeated);
+        assert_eq!(repeated(&plain[2]), Some("A"));
+        assert_eq!(repeated(&plain[6]), Some("id"));
+        assert_eq!(repeated(&plain[0]), None);
+        assert_eq!(
+            repeated(r#"{"x": 1, "x": 2, "B": "y^2", "A": "x^2"}"#),
+            None
+        );
         let declined = [
             r#"{"id": {"k": 1}, "A": "x^2", "B": "y^2"}"#,
             r#"{"id": [1], "A": "x^2", "B": "y^2"}"#,
@@ -410,13 +447,19 @@ mod tests {
             a in form(),
             b in form(),
             extra in plain_value(),
-            order in 0usize..4,
+            order in 0usize..5,
+            repeat in 0usize..6,
             cut in any::<prop::sample::Index>(),
             insert in prop_oneof![Just(""), Just(" "), Just(","), Just("\""), Just("\\"), Just("]"), Just("0"), Just("{")],
         ) {
             let fields = [format!("\"id\": {id}"), format!("\"A\": {a}"), format!("\"B\": {b}"), format!("\"x\": {extra}")];
             let mut parts = fields.to_vec();
-            parts.rotate_left(order);
+            // a second id, A or B (half the time): the scanner notes it as serde_json does
+            if repeat < 3 {
+                parts.push(fields[repeat].clone());
+            }
+            let n = parts.len();
+            parts.rotate_left(order % n);
             let text = format!("{{{}}}", parts.join(", "));
             prop_assert!(assert_scanner_agrees(&text), "{} should be scanned", text);
             // The same line with one character inserted: the scanner agrees or declines.
