@@ -21,9 +21,10 @@ use crate::input::{surface_from_form, JsonForm};
 use crate::line::{read_line, Line};
 use crate::output::{write_classification_fields, write_json_string};
 pub use crate::reader::{Content, LineReader, RawLine};
+use crate::stream::stream;
+pub use crate::stream::Window;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use qsic::{classify_allowing_zero, Quadric};
-use rayon::prelude::*;
 use serde_json::Value;
 use std::io::{self, Read, Write};
 use std::panic::{self, AssertUnwindSafe};
@@ -34,11 +35,11 @@ use std::time::Duration;
 /// length limit, fit well within it.
 pub const MAX_LINE_BYTES: usize = 1 << 20;
 
-/// Most lines classified in one parallel chunk.
-pub const CHUNK_LINES: usize = 4096;
+/// Most lines read and not yet written: the reader waits while this many are pending.
+pub const PENDING_LINES: usize = 4096;
 
-/// Most bytes of input held in one chunk (64 MiB).
-pub const CHUNK_BYTES: usize = 64 << 20;
+/// Most bytes of pending input lines and finished answers waiting to be written (64 MiB).
+pub const PENDING_BYTES: usize = 64 << 20;
 
 /// Why a line failed, with its `id` as written once it is known.
 pub(crate) struct LineFailure<'a> {
@@ -249,14 +250,19 @@ pub enum BatchError {
 }
 
 /// Classifies JSON Lines from `input` and writes one JSON line per non-blank input line
-/// to `output`, in order. Lines are taken in chunks of at most [`CHUNK_LINES`] lines and
-/// [`CHUNK_BYTES`] bytes, or fewer when the input has nothing more ready; each chunk is
-/// classified on all cores, written, and flushed before the next is read. With
-/// `progress`, a spinner on stderr counts the lines done.
+/// to `output`, in order, each as soon as it and every line before it are answered
+/// ([`crate::stream`]); lines are answered on all cores, and no new line is read while
+/// [`PENDING_LINES`] lines or [`PENDING_BYTES`] bytes wait to be written. With `progress`, a
+/// spinner on stderr counts the lines done.
 ///
 /// # Errors
-/// [`BatchError`] if reading or writing fails; every chunk read before is answered.
-pub fn run<R: Read, W: Write>(input: R, output: W, progress: bool) -> Result<Summary, BatchError> {
+/// [`BatchError`] if reading or writing fails; every line read before a read error is
+/// answered, every answer before a write error written.
+pub fn run<R: Read, W: Write + Send>(
+    input: R,
+    output: W,
+    progress: bool,
+) -> Result<Summary, BatchError> {
     run_with(input, output, progress, answer_line)
 }
 
@@ -264,7 +270,7 @@ pub fn run<R: Read, W: Write>(input: R, output: W, progress: bool) -> Result<Sum
 ///
 /// # Errors
 /// As [`run`].
-pub fn run_answer<R: Read, W: Write, A: Answer + ?Sized>(
+pub fn run_answer<R: Read, W: Write + Send, A: Answer + ?Sized>(
     input: R,
     output: W,
     progress: bool,
@@ -280,63 +286,45 @@ pub fn run_answer<R: Read, W: Write, A: Answer + ?Sized>(
 ///
 /// # Errors
 /// As [`run`].
-pub fn run_with<R: Read, W: Write, F: Fn(&RawLine) -> (String, bool) + Sync>(
+pub fn run_with<R: Read, W: Write + Send, F: Fn(&RawLine) -> (String, bool) + Sync>(
     input: R,
-    mut output: W,
+    output: W,
     progress: bool,
     answer: F,
 ) -> Result<Summary, BatchError> {
-    let mut reader = LineReader::new(input, MAX_LINE_BYTES);
+    let window = Window {
+        lines: PENDING_LINES,
+        bytes: PENDING_BYTES,
+    };
+    run_in_window(input, output, progress, window, answer)
+}
+
+/// [`run_with`] with another window of pending lines and bytes.
+///
+/// # Errors
+/// As [`run`].
+pub fn run_in_window<R: Read, W: Write + Send, F: Fn(&RawLine) -> (String, bool) + Sync>(
+    input: R,
+    output: W,
+    progress: bool,
+    window: Window,
+    answer: F,
+) -> Result<Summary, BatchError> {
     let bar = progress_bar(progress);
-    let mut summary = Summary::default();
-    let mut read_error = None;
-    loop {
-        let mut chunk = Vec::new();
-        let mut bytes = 0;
-        let mut at_end = false;
-        while chunk.len() < CHUNK_LINES && bytes < CHUNK_BYTES {
-            match reader.next_line() {
-                Ok(Some(line)) if line.is_blank() => {}
-                Ok(Some(line)) => {
-                    bytes += line.held_bytes();
-                    chunk.push(line);
-                }
-                Ok(None) => {
-                    at_end = true;
-                    break;
-                }
-                Err(e) => {
-                    read_error = Some(e);
-                    break;
-                }
-            }
-            // Answer what we have rather than wait for a slow producer.
-            if !chunk.is_empty() && reader.drained() {
-                break;
-            }
-        }
-        let answers: Vec<(String, bool)> = chunk.par_iter().map(&answer).collect();
-        for (text, ok) in &answers {
-            output
-                .write_all(text.as_bytes())
-                .map_err(BatchError::Write)?;
-            output.write_all(b"\n").map_err(BatchError::Write)?;
-            summary.answered += 1;
-            summary.failed += u64::from(!ok);
-        }
-        output.flush().map_err(BatchError::Write)?;
-        summary.lines = reader.lines_read();
-        bar.set_position(summary.lines);
-        if let Some(e) = read_error {
-            bar.finish_and_clear();
-            return Err(BatchError::Read(e));
-        }
-        if at_end {
-            break;
-        }
-    }
+    let reader = LineReader::new(input, MAX_LINE_BYTES);
+    let done = stream(reader, output, window, &bar, &answer);
     bar.finish_and_clear();
-    Ok(summary)
+    if let Some(e) = done.write_error {
+        return Err(BatchError::Write(e));
+    }
+    if let Some(e) = done.read_error {
+        return Err(BatchError::Read(e));
+    }
+    Ok(Summary {
+        lines: done.lines,
+        answered: done.answered,
+        failed: done.failed,
+    })
 }
 
 fn progress_bar(visible: bool) -> ProgressBar {

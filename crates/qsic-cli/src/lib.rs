@@ -17,6 +17,7 @@
 //! | [`mod@sample`] | `qsic sample`: real points as JSON, CSV, OBJ |
 //! | [`plot`] | `qsic plot`: the curve in a 3D view and the eigencurve, as SVG |
 //! | `plot_common` | the common surfaces in a plot (`A ∝ B`, a common plane): what is drawn, where the cube goes |
+//! | [`stream`] | ordered streaming: answers in parallel, written in input order as soon as they and their predecessors are done, a bounded window of pending lines |
 //! | [`svg`] | SVG helpers shared by the pictures: escaping, palette, panels |
 
 pub mod affine;
@@ -33,4 +34,5 @@ pub mod plot;
 mod plot_common;
 pub mod reader;
 pub mod sample;
+pub mod stream;
 pub mod svg;

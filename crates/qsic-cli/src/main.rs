@@ -591,7 +591,7 @@ fn run_batch<F: Fn(&batch::RawLine) -> (String, bool) + Sync>(
     answer: F,
 ) -> ExitCode {
     let progress = io::stderr().is_terminal();
-    let stdout = io::BufWriter::with_capacity(1 << 20, io::stdout().lock());
+    let stdout = io::BufWriter::with_capacity(1 << 20, io::stdout());
     let result = if path.as_os_str() == "-" {
         batch::run_with(io::stdin().lock(), stdout, progress, answer)
     } else {
