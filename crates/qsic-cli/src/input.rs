@@ -13,6 +13,7 @@
 //! `123456789012345678901234567890` keeps every digit.
 
 use qsic::io::{parse_quadric, quadric_from_array, quadric_from_rows};
+use qsic::error::shorten_numbers;
 use qsic::{Error, Quadric};
 use serde::de::{self, Deserialize, Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor};
 use serde_json::value::RawValue;
@@ -40,8 +41,12 @@ impl fmt::Display for InputError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             InputError::Quadric(e) => write!(f, "{e}"),
-            InputError::Json(e) => write!(f, "invalid JSON matrix: {e}"),
-            InputError::Type(message) => f.write_str(message),
+            InputError::Json(e) => write!(
+                f,
+                "invalid JSON matrix: {}",
+                shorten_numbers(&e.to_string())
+            ),
+            InputError::Type(message) => f.write_str(&shorten_numbers(message)),
             InputError::TooLong(len) => write!(
                 f,
                 "matrix argument of {len} bytes exceeds the limit of {MAX_MATRIX_ARG_BYTES} bytes"
