@@ -80,7 +80,8 @@ pub enum Error {
         /// The allowed variables, as a list: `x, y, z, w`.
         allowed: String,
     },
-    /// A term whose degree is not allowed: above 2, or, in a form that uses `w`, not exactly 2.
+    /// A term whose degree is not allowed: above 2, or, in a form that uses `w`, not that of
+    /// the form (2 for a quadric, 1 for a plane).
     #[error("{}", shorten_numbers(.message))]
     Degree {
         /// Which term and why.

@@ -3,7 +3,7 @@
 
 use super::expression::{read, Grammar, RationalFunction, Variable};
 use super::number::excerpt;
-use super::polynomial::quadratic_part;
+use super::polynomial::{form_in_xyzw, square_of_plane, XyzwForm};
 use super::{check_shape, parse_rational_function};
 use crate::error::Error;
 use crate::limits::{MAX_DEGREE, MAX_MOVING_MATRIX_BITS};
@@ -168,13 +168,15 @@ pub fn moving_matrix_from_rows<S: AsRef<str>>(rows: &[Vec<S>]) -> Result<MovingM
 /// grammar as [`parse_rational_function`] with the variables `x, y, z, w, t`, divisions
 /// by expressions in `t` only. As in [`parse_quadric`](super::parse_quadric), a form
 /// that uses `w` must be homogeneous of degree 2 in `x, y, z, w`; one that does not is
-/// an affine equation in `x, y, z`, homogenised with `w`.
+/// an affine equation in `x, y, z`, homogenised with `w`; and a form of degree 1 in
+/// `x, y, z, w` (`z - t`, `x - t*w`) is a moving plane `ℓ(t)`, read as its double plane
+/// `ℓ(t)²`.
 ///
 /// # Errors
 /// - as [`parse_rational_function`] ([`Error::Syntax`] for a division by an expression in
 ///   `x, y, z, w`);
 /// - [`Error::Degree`] naming a term of degree above 2 in `x, y, z, w`, or, in a form
-///   using `w`, not exactly 2;
+///   using `w`, of another degree than the others;
 /// - [`Error::Limit`] if the coefficients have more than [`MAX_MOVING_MATRIX_BITS`] bits;
 /// - [`Error::ZeroQuadric`] if the form is zero.
 ///
@@ -209,13 +211,22 @@ pub fn moving_matrix_from_polynomial(text: &str) -> Result<MovingMatrix, Error> 
         return Err(Error::ZeroQuadric);
     }
     let t = Variable::T.index();
-    let form = quadratic_part(f.numerator())?
+    // A plane ℓ(t) = n/d is the double plane ℓ(t)² = n²/d².
+    let (form, denominator) = match form_in_xyzw(f.numerator())? {
+        XyzwForm::Quadric(form) => (form.into_owned(), f.denominator().clone()),
+        XyzwForm::Plane(l) => {
+            let (n, d) = (square_of_plane(&l)?, f.denominator() * f.denominator());
+            check_moving_size(size_in_bits(&n) + size_in_bits(&d))?;
+            (n, d)
+        }
+    };
+    let form = form
         .quadratic_form(&[0, 1, 2, 3])
         .ok_or_else(|| Error::Degree {
             message: "a quadric is a form of degree 2".into(),
         })?;
     let numerators = std::array::from_fn(|i| std::array::from_fn(|j| dense(&form[i][j], t)));
-    Ok(canonical(numerators, integer_poly(f.denominator(), t)))
+    Ok(canonical(numerators, integer_poly(&denominator, t)))
 }
 
 /// Bits of all the coefficients of `p`.
@@ -476,6 +487,23 @@ mod tests {
         let affine = moving_matrix_from_polynomial("x^2 + t*x").expect("an affine form");
         assert_eq!(affine.numerators()[0][3], Poly::from_i64s(&[0, 1]));
         assert_eq!(affine.numerators()[0][0], Poly::from_i64s(&[2]));
+        // Degree 1 in x, y, z, w: the double plane ℓ(t)², affine or homogeneous.
+        let square = moving_matrix_from_polynomial("(z - t)^2").expect("a double plane");
+        for plane in ["z - t", "z - t*w", "(z - t)*(1 + t^2)/(1 + t^2)"] {
+            assert_eq!(
+                moving_matrix_from_polynomial(plane),
+                Ok(square.clone()),
+                "{plane}"
+            );
+        }
+        assert_eq!(
+            moving_matrix_from_polynomial("x/(1 - t)"),
+            moving_matrix_from_polynomial("x^2/(1 - t)^2")
+        );
+        assert!(matches!(
+            moving_matrix_from_polynomial("x + t*w + 1"),
+            Err(Error::Degree { .. })
+        ));
         match moving_matrix_from_polynomial("x^2 + y/(x - t)") {
             Err(Error::Syntax { column: 8, message }) => assert_eq!(
                 message,
