@@ -35,19 +35,21 @@ use std::borrow::Cow;
 /// precedence (power over sign over product over sum):
 ///
 /// ```text
-/// sum     := term (('+' | '-') term)*
-/// term    := sign* power (('*' | '/' | ε) sign* power)*     ε: juxtaposition before a variable or '('
-/// power   := atom (('^' | '**') integer)?
-/// atom    := number | 'x' | 'y' | 'z' | 'w' | '(' sum ')'
+/// sum      := term (('+' | '-') term)*
+/// term     := sign* power (('*' | '/' | ε) sign* power)*     ε: juxtaposition before a variable or '('
+/// power    := atom (('^' | '**') exponent)?
+/// exponent := integer | '-' integer | '(' ('+' | '-')? integer ')'
+/// atom     := number | 'x' | 'y' | 'z' | 'w' | '(' sum ')'
 /// ```
 ///
 /// Variables are lower case. Numbers are unsigned numerals as in
 /// [`parse_number`](super::parse_number) (`3`, `0.25`, `1e-3`); a fraction is
-/// a division (`1/2*x^2`), and only division by a nonzero number is allowed.
+/// a division (`1/2*x^2`), and only division by a nonzero number is allowed, so a
+/// negative power only of a nonzero number (`2^-1*x^2` is `x^2/2`; `x^-1` is an error).
 /// Juxtaposition is a product of the same precedence as `*`, so `2x^2` is
 /// `2*x^2`, `3 x*y` is `3*x*y`, `(x+1)(x-1)` a product, and `1/2x` is
 /// `(1/2)*x`; a number after a factor (`x 2`) is an error. A sign binds looser
-/// than a power: `-x^2` is `-(x^2)`. Exponents are integers from 0 to
+/// than a power: `-x^2` is `-(x^2)`. Exponents are integers of absolute value at most
 /// [`MAX_POWER_EXPONENT`](crate::limits::MAX_POWER_EXPONENT); chained powers `x^2^2` are refused as ambiguous.
 ///
 /// Parentheses are expanded exactly. A product or power whose degree exceeds 2
