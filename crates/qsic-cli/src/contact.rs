@@ -2,22 +2,23 @@
 //! ellipsoids, the relation of the solids along the motion, as JSON or text.
 //!
 //! JSON (one object):
-//! `{"range": [from|null, to|null], "first_contact": null | "-inf" | instant,
-//! "solids": null | {"first_meeting": null | "-inf" | instant | {"error": "..."},
+//! `{"range": [from|null, to|null], "first_contact": null | "-oo" | instant,
+//! "solids": null | {"first_meeting": null | "-oo" | instant | {"error": "..."},
 //! "intervals": [{"from", "to", "sample_t", "relation", "inner", "note"}],
 //! "instants": [{"t", "relation", "inner", "note"}]}}` with an instant `"p/q"` or
 //! `{"poly": "t^2 - 8", "interval": ["a", "b"], "approx": "-2.828…"}`, `from`/`to` null for
 //! `∓∞`; `relation` a [`SolidRelation`](qsic::solids::SolidRelation) key, `not_ellipsoids`
 //! or `undetermined`; `inner` `"A"`/`"B"` for `inside` and `touching_internally`.
 //! `solids` is null when the two are never both solid ellipsoids.
+//!
+//! The moving quadrics are read as by `qsic motion` ([`crate::motion::moving_from_arg`]),
+//! and the range too ([`TimeRange::parse`]).
 
-use qsic::io::{
-    moving_matrix_from_polynomial, moving_matrix_from_rows, parse_number, MovingMatrix,
-};
+use qsic::io::MovingMatrix;
 use qsic::motion::contact::{
     first_contact_in, solid_motion_of, FirstContact, SolidMotion, SolidState, TimeRange,
 };
-use qsic::motion::MovingPencil;
+use qsic::motion::{MovingPencil, MINUS_INFINITY, PLUS_INFINITY};
 use qsic::Error;
 use qsic_algebra::{AlgebraicReal, RBig};
 use serde_json::{json, Value};
@@ -35,49 +36,6 @@ pub struct ContactReport {
     pub solids: Option<SolidMotion>,
     /// The affine first contact in the range (solids no longer separated), or why not.
     pub first_meeting: Option<Result<Option<FirstContact>, Error>>,
-}
-
-/// Reads a moving quadric: a JSON 4×4 array of numbers or strings (rational functions of
-/// `t`), or a quadratic form in `x, y, z, w` with coefficients rational in `t`.
-///
-/// # Errors
-/// The reader's error, or a JSON syntax error as [`Error::Syntax`].
-pub fn moving_from_arg(text: &str) -> Result<MovingMatrix, Error> {
-    if !text.trim_start().starts_with('[') {
-        return moving_matrix_from_polynomial(text);
-    }
-    let value: Value = serde_json::from_str(text).map_err(|e| Error::Syntax {
-        column: e.column(),
-        message: format!("bad JSON matrix: {e}"),
-    })?;
-    let rows: Vec<Vec<String>> = value
-        .as_array()
-        .map(|rows| {
-            rows.iter()
-                .map(|r| {
-                    r.as_array()
-                        .map(|r| {
-                            r.iter()
-                                .map(|x| x.as_str().map_or_else(|| x.to_string(), str::to_owned))
-                                .collect()
-                        })
-                        .unwrap_or_default()
-                })
-                .collect()
-        })
-        .unwrap_or_default();
-    moving_matrix_from_rows(&rows)
-}
-
-/// A range end: a rational number, or `oo`/`-oo` (also `inf`/`-inf`, `none`) for an open end.
-///
-/// # Errors
-/// As [`parse_number`].
-pub fn range_end(text: &str) -> Result<Option<RBig>, Error> {
-    match text.trim() {
-        "inf" | "+inf" | "-inf" | "oo" | "+oo" | "-oo" | "none" => Ok(None),
-        t => parse_number(t).map(Some),
-    }
 }
 
 /// First contact in `range` and the relation of the solids.
@@ -132,7 +90,7 @@ pub fn instant_json(t: &AlgebraicReal) -> Value {
 fn contact_json(c: &Option<FirstContact>) -> Value {
     match c {
         None => Value::Null,
-        Some(FirstContact::FromMinusInfinity) => Value::String("-inf".into()),
+        Some(FirstContact::FromMinusInfinity) => Value::String(MINUS_INFINITY.into()),
         Some(FirstContact::At(t)) => instant_json(t),
     }
 }
@@ -203,7 +161,7 @@ fn instant_text(t: &AlgebraicReal) -> String {
 fn contact_text(c: &Option<FirstContact>, none: &str) -> String {
     match c {
         None => none.to_string(),
-        Some(FirstContact::FromMinusInfinity) => "from t = -inf".to_string(),
+        Some(FirstContact::FromMinusInfinity) => format!("from t = {MINUS_INFINITY}"),
         Some(FirstContact::At(t)) => format!("t = {}", instant_text(t)),
     }
 }
@@ -226,8 +184,8 @@ pub fn human_report(r: &ContactReport) -> String {
     let _ = writeln!(
         s,
         "range: [{}, {}]",
-        end(r.range.from(), "-inf"),
-        end(r.range.to(), "+inf")
+        end(r.range.from(), MINUS_INFINITY),
+        end(r.range.to(), PLUS_INFINITY)
     );
     let _ = writeln!(
         s,
@@ -258,8 +216,8 @@ pub fn human_report(r: &ContactReport) -> String {
         let _ = writeln!(
             s,
             "  ({}, {}): {}",
-            t_or(&i.from, "-inf"),
-            t_or(&i.to, "+inf"),
+            t_or(&i.from, MINUS_INFINITY),
+            t_or(&i.to, PLUS_INFINITY),
             state_text(&i.state)
         );
         if let Some(at) = m.instants.get(k) {
@@ -277,6 +235,8 @@ pub fn human_report(r: &ContactReport) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::motion::moving_from_arg;
+    use qsic::io::parse_number;
 
     /// The report of the sphere through a sphere, as JSON: every instant and relation.
     #[test]
@@ -322,12 +282,12 @@ mod tests {
     }
 
     /// An irrational instant is written with its polynomial, an interval holding it and a
-    /// decimal; ranges read `inf`.
+    /// decimal; ranges read `-inf`.
     #[test]
     fn irrational_instant_and_ranges() {
         let a = moving_from_arg("x^2 + y^2 + z^2 - 4").unwrap();
         let b = moving_from_arg("(x - t)^2 + (y - 1)^2 + z^2 - 1").unwrap();
-        let range = TimeRange::new(range_end("-inf").unwrap(), range_end("10").unwrap()).unwrap();
+        let range = TimeRange::parse("-inf", "10").unwrap();
         let v = report_to_json(&contact(a, b, range).unwrap());
         let t = &v["first_contact"];
         assert_eq!(t["poly"], "t^2 - 8");
@@ -337,7 +297,7 @@ mod tests {
         let hi = parse_number(t["interval"][1].as_str().unwrap()).unwrap();
         assert!(lo < hi && &lo * &lo > RBig::from(8) && &hi * &hi < RBig::from(8));
         assert_eq!(v["range"], json!([null, "10"]));
-        assert!(range_end("1/0").is_err());
+        assert!(TimeRange::parse("1/0", "1").is_err());
     }
 
     /// Cylinders are not solids: the first contact only, `solids` null.

@@ -72,7 +72,7 @@ fn text_report_and_matrix_argument() {
     );
 }
 
-/// Bad input exits 1 naming the argument; usage errors exit 2.
+/// Bad input exits 1 naming the argument; usage errors (a bad or empty range too) exit 2.
 #[test]
 fn errors_name_the_argument() {
     let cases: [(&[&str], i32, &str); 4] = [
@@ -87,8 +87,8 @@ fn errors_name_the_argument() {
                 "2",
                 "1",
             ],
-            1,
-            "--range",
+            2,
+            "--range: invalid time range: the start 2 is above the end 1",
         ),
         (&["contact", "x^2"], 2, "B"),
     ];

@@ -158,7 +158,8 @@ pub enum Error {
     /// separates the rank conditions; not expected).
     #[error("moving pencil not supported: {}", shorten_numbers(.0))]
     UnsupportedMotion(String),
-    /// A time range `[t0, t1]` with `t0 > t1`; the message gives both.
+    /// A time range that cannot be read or is empty (`t0 > t1`, a start at `+∞`, an end
+    /// at `−∞`): says which end and why ([`crate::motion::TimeRange`]).
     #[error("invalid time range: {}", shorten_numbers(.0))]
     InvalidRange(String),
     /// A quadric that does not bound a solid ellipsoid where one is needed

@@ -18,6 +18,7 @@
 //!   solids are no longer separated.
 
 use super::instants::pencil_entries;
+pub use super::range::TimeRange;
 use super::{irrational, InstantType, Motion, MovingPencil};
 use crate::classify::Classification;
 use crate::error::Error;
@@ -26,57 +27,6 @@ use crate::solids::{
     ellipsoid_orientation, leading_minors, relation_from_signs, solid_relation, SolidRelation,
 };
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring};
-
-/// A closed range `[from, to]` of `t` with rational ends; `None` for `∓∞`.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct TimeRange {
-    from: Option<RBig>,
-    to: Option<RBig>,
-}
-
-impl TimeRange {
-    /// The whole real line.
-    pub fn all() -> TimeRange {
-        TimeRange::default()
-    }
-
-    /// `[from, to]`.
-    ///
-    /// # Errors
-    /// [`Error::UnsupportedMotion`] if `from > to`.
-    pub fn new(from: Option<RBig>, to: Option<RBig>) -> Result<TimeRange, Error> {
-        if let (Some(a), Some(b)) = (&from, &to) {
-            if a > b {
-                return Err(Error::UnsupportedMotion(format!(
-                    "the range [{a}, {b}] is empty"
-                )));
-            }
-        }
-        Ok(TimeRange { from, to })
-    }
-
-    /// The start, `None` for `−∞`.
-    pub fn from(&self) -> Option<&RBig> {
-        self.from.as_ref()
-    }
-
-    /// The end, `None` for `+∞`.
-    pub fn to(&self) -> Option<&RBig> {
-        self.to.as_ref()
-    }
-
-    fn after_start(&self, t: &AlgebraicReal) -> bool {
-        self.from
-            .as_ref()
-            .is_none_or(|a| *t > AlgebraicReal::from_rational(a.clone()))
-    }
-
-    fn not_after_end(&self, t: &AlgebraicReal) -> bool {
-        self.to
-            .as_ref()
-            .is_none_or(|b| *t <= AlgebraicReal::from_rational(b.clone()))
-    }
-}
 
 /// The least `t` of a range where a closed condition holds.
 #[derive(Clone, Debug, PartialEq, Eq)]

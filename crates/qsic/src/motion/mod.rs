@@ -26,13 +26,16 @@
 //! whose type equals that of both neighbours and merges the intervals around them.
 //!
 //! [`contact`]: the first contact of the two quadrics in a range, and the relation of two
-//! moving solid ellipsoids along the motion.
+//! moving solid ellipsoids along the motion. [`TimeRange`]: the range of `t`, and its one
+//! reading from text (`-oo`/`oo` for an open side).
 
 pub mod contact;
 mod instants;
 mod irrational;
+mod range;
 
-pub use contact::{first_contact, solid_motion, FirstContact, SolidMotion, SolidState, TimeRange};
+pub use contact::{first_contact, solid_motion, FirstContact, SolidMotion, SolidState};
+pub use range::{TimeRange, MINUS_INFINITY, PLUS_INFINITY};
 
 use crate::classify::{classify_allowing_zero, Classification};
 use crate::error::Error;
@@ -363,10 +366,8 @@ impl MovingPencil {
     pub fn variations_in(&self, from: Option<&RBig>, to: Option<&RBig>) -> Result<Motion, Error> {
         let exact = |v: &RBig| AlgebraicReal::from_rational(v.clone());
         let (lo, hi) = (from.map(exact), to.map(exact));
+        range::check_order(from, to)?;
         if let (Some(a), Some(b)) = (from, to) {
-            if a > b {
-                return Err(Error::InvalidRange(format!("from {a} is above to {b}")));
-            }
             if a == b {
                 let t = exact(a);
                 return Ok(Motion {
