@@ -467,7 +467,7 @@ def first_contact(
     """The first ``t`` in ``range`` where moving quadrics have a real common point, and the
     relation of the solids along the motion where both are ellipsoids: the JSON object of
     ``qsic contact --json`` (``range``, ``first_contact``: None, ``"-oo"``, ``"p/q"`` or
-    ``{"poly", "interval", "approx"}``, ``solids``).
+    ``{"poly", "interval", "approx"}``, ``solids``: the relation on the range only).
     ``range = (t0, t1)`` as for :func:`motion`.
 
     Raises:

@@ -1,5 +1,5 @@
 //! `qsic contact A B`: the first contact of two moving quadrics and, where both are solid
-//! ellipsoids, the relation of the solids along the motion, as JSON or text.
+//! ellipsoids, the relation of the solids along the motion in the range, as JSON or text.
 //!
 //! JSON (one object):
 //! `{"range": [from|null, to|null], "first_contact": null | "-oo" | instant,
@@ -9,14 +9,15 @@
 //! `{"poly": "t^2 - 8", "interval": ["a", "b"], "approx": "-2.828…"}`, `from`/`to` null for
 //! `∓∞`; `relation` a [`SolidRelation`](qsic::solids::SolidRelation) key, `not_ellipsoids`
 //! or `undetermined`; `inner` `"A"`/`"B"` for `inside` and `touching_internally`.
-//! `solids` is null when the two are never both solid ellipsoids.
+//! `solids` covers the range only ([`solid_motion_in`]), and is null when the two are never
+//! both solid ellipsoids there.
 //!
 //! The moving quadrics are read as by `qsic motion` ([`crate::motion::moving_from_arg`]),
 //! and the range too ([`TimeRange::parse`]).
 
 use qsic::io::MovingMatrix;
 use qsic::motion::contact::{
-    first_contact_in, solid_motion_of, FirstContact, SolidMotion, SolidState, TimeRange,
+    first_contact_in, solid_motion_in, FirstContact, SolidMotion, SolidState, TimeRange,
 };
 use qsic::motion::{MovingPencil, MINUS_INFINITY, PLUS_INFINITY};
 use qsic::Error;
@@ -31,23 +32,23 @@ pub struct ContactReport {
     pub range: TimeRange,
     /// The first `t` with a real common point (real projective space).
     pub first_contact: Option<FirstContact>,
-    /// The relation of the solids along the whole motion; `None` if they are never both
-    /// solid ellipsoids.
+    /// The relation of the solids along the range; `None` if they are never both solid
+    /// ellipsoids there.
     pub solids: Option<SolidMotion>,
     /// The affine first contact in the range (solids no longer separated), or why not.
     pub first_meeting: Option<Result<Option<FirstContact>, Error>>,
 }
 
-/// First contact in `range` and the relation of the solids.
+/// First contact in `range` and the relation of the solids on it.
 ///
 /// # Errors
 /// As [`qsic::motion::contact::first_contact`] and
-/// [`qsic::motion::contact::solid_motion`].
+/// [`qsic::motion::contact::solid_motion_in`].
 pub fn contact(a: MovingMatrix, b: MovingMatrix, range: TimeRange) -> Result<ContactReport, Error> {
     let pencil = MovingPencil::new(a, b)?;
     let motion = pencil.variations()?;
     let first = first_contact_in(&pencil, &motion, &range)?;
-    let solids = solid_motion_of(&pencil)?;
+    let solids = solid_motion_in(&pencil, &range)?;
     let any_relation = solids
         .intervals
         .iter()
@@ -177,7 +178,7 @@ fn state_text(s: &SolidState) -> String {
     }
 }
 
-/// The text report: first contact, then the timeline of the solids.
+/// The text report: first contact, then the timeline of the solids in the range.
 pub fn human_report(r: &ContactReport) -> String {
     let end = |v: Option<&RBig>, inf: &str| v.map_or(inf.to_string(), rational);
     let mut s = String::new();
@@ -193,7 +194,7 @@ pub fn human_report(r: &ContactReport) -> String {
         contact_text(&r.first_contact, "none in the range")
     );
     let Some(m) = &r.solids else {
-        let _ = writeln!(s, "solids: not both solid ellipsoids at any t");
+        let _ = writeln!(s, "solids: not both solid ellipsoids at any t in the range");
         return s;
     };
     match &r.first_meeting {
@@ -212,7 +213,22 @@ pub fn human_report(r: &ContactReport) -> String {
     let _ = writeln!(s, "solids along the motion:");
     let t_or =
         |t: &Option<AlgebraicReal>, inf: &str| t.as_ref().map_or(inf.to_string(), instant_text);
-    for (k, i) in m.intervals.iter().enumerate() {
+    // The instants up to each interval's start (the range's start first), then the interval;
+    // then the instants after the last one.
+    let mut next = 0;
+    let mut instants_up_to = |s: &mut String, limit: Option<&AlgebraicReal>| {
+        while let Some(i) = m.instants.get(next) {
+            if limit.is_some_and(|l| i.t > *l) {
+                break;
+            }
+            let _ = writeln!(s, "  t = {}: {}", instant_text(&i.t), state_text(&i.state));
+            next += 1;
+        }
+    };
+    for i in &m.intervals {
+        if let Some(from) = &i.from {
+            instants_up_to(&mut s, Some(from));
+        }
         let _ = writeln!(
             s,
             "  ({}, {}): {}",
@@ -220,15 +236,8 @@ pub fn human_report(r: &ContactReport) -> String {
             t_or(&i.to, PLUS_INFINITY),
             state_text(&i.state)
         );
-        if let Some(at) = m.instants.get(k) {
-            let _ = writeln!(
-                s,
-                "  t = {}: {}",
-                instant_text(&at.t),
-                state_text(&at.state)
-            );
-        }
     }
+    instants_up_to(&mut s, None);
     s
 }
 

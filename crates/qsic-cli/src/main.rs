@@ -158,8 +158,8 @@ struct PlotArgs {
     after_help = "A and B: read as by 'qsic motion': quadratic forms in x, y, z, w (or affine \
 x, y, z) whose coefficients are rational functions of t, e.g. \"(x - t)^2 + y^2 + z^2 - 1\" (a \
 linear one is a moving plane, read as its double plane), or 4x4 JSON arrays of numbers and \
-such functions as strings. --range as for 'qsic motion'. Instants are exact: rationals, or \
-roots of a polynomial in t.\n\
+such functions as strings. --range as for 'qsic motion'; the solids' relation is reported on \
+the range only. Instants are exact: rationals, or roots of a polynomial in t.\n\
 Example: qsic contact \"x^2+y^2+z^2-4\" \"(x-t)^2+y^2+z^2-1\" --range -10 10"
 )]
 struct ContactArgs {
