@@ -631,7 +631,7 @@ fn first_contact(
     py.detach(|| {
         catch_panic(|| {
             qsic_cli::contact::contact(ma, mb, range)
-                .map(|r| qsic_cli::contact::report_to_json(&r).to_string())
+                .map(|r| qsic_cli::contact::report_to_json_line(&r))
                 .map_err(|e| format!("A and B: {e}"))
         })
         .and_then(|r| r)

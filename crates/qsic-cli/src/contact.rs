@@ -1,7 +1,7 @@
 //! `qsic contact A B`: the first contact of two moving quadrics and, where both are solid
 //! ellipsoids, the relation of the solids along the motion in the range, as JSON or text.
 //!
-//! JSON (one object):
+//! JSON (one object, keys in this order):
 //! `{"range": [from|null, to|null], "first_contact": null | "-oo" | instant,
 //! "solids": null | {"first_meeting": null | "-oo" | instant | {"error": "..."},
 //! "intervals": [{"from", "to", "sample_t", "relation", "inner", "note"}],
@@ -15,6 +15,7 @@
 //! The moving quadrics are read as by `qsic motion` ([`crate::motion::moving_from_arg`]),
 //! and the range too ([`TimeRange::parse`]).
 
+use crate::output::write_json_string;
 use qsic::io::MovingMatrix;
 use qsic::motion::contact::{
     first_contact_in, solid_motion_in, FirstContact, SolidMotion, SolidState, TimeRange,
@@ -22,7 +23,6 @@ use qsic::motion::contact::{
 use qsic::motion::{MovingPencil, MINUS_INFINITY, PLUS_INFINITY};
 use qsic::Error;
 use qsic_algebra::{AlgebraicReal, RBig};
-use serde_json::{json, Value};
 use std::fmt::Write as _;
 
 /// What `qsic contact` reports.
@@ -73,79 +73,122 @@ fn rational(v: &RBig) -> String {
     v.to_string()
 }
 
-/// An instant as JSON: `"p/q"` or `{"poly", "interval", "approx"}`.
-pub fn instant_json(t: &AlgebraicReal) -> Value {
-    match t.as_rational() {
-        Some(v) => Value::String(rational(v)),
-        None => {
-            let iv = t.refined_interval(&RBig::from_parts(1u8.into(), (1u64 << 40).into()));
-            json!({
-                "poly": t.poly().to_string().replace('x', "t"),
-                "interval": [rational(iv.lo()), rational(iv.hi())],
-                "approx": format!("{:.15}", t.to_f64()),
-            })
+/// Appends an instant as JSON: `"p/q"` or `{"poly", "interval", "approx"}`.
+pub fn write_instant(out: &mut String, t: &AlgebraicReal) {
+    if let Some(v) = t.as_rational() {
+        write_json_string(out, &rational(v));
+        return;
+    }
+    let iv = t.refined_interval(&RBig::from_parts(1u8.into(), (1u64 << 40).into()));
+    out.push_str("{\"poly\":");
+    write_json_string(out, &t.poly().to_string().replace('x', "t"));
+    out.push_str(",\"interval\":[");
+    write_json_string(out, &rational(iv.lo()));
+    out.push(',');
+    write_json_string(out, &rational(iv.hi()));
+    out.push_str("],\"approx\":");
+    write_json_string(out, &format!("{:.15}", t.to_f64()));
+    out.push('}');
+}
+
+/// Appends `null`, an instant, or `-oo`.
+fn write_contact(out: &mut String, c: &Option<FirstContact>) {
+    match c {
+        None => out.push_str("null"),
+        Some(FirstContact::FromMinusInfinity) => write_json_string(out, MINUS_INFINITY),
+        Some(FirstContact::At(t)) => write_instant(out, t),
+    }
+}
+
+/// Appends an instant or `null` (an open end).
+fn write_end(out: &mut String, t: Option<&AlgebraicReal>) {
+    match t {
+        Some(t) => write_instant(out, t),
+        None => out.push_str("null"),
+    }
+}
+
+/// Appends `,"relation":…,"inner":…,"note":…`.
+fn write_state(out: &mut String, s: &SolidState) {
+    out.push_str(",\"relation\":");
+    write_json_string(out, s.key());
+    out.push_str(",\"inner\":");
+    match s.relation().and_then(|r| r.inner()) {
+        Some(i) => write_json_string(out, i.key()),
+        None => out.push_str("null"),
+    }
+    out.push_str(",\"note\":");
+    match s {
+        SolidState::NotEllipsoids(why) => write_json_string(out, why),
+        _ => out.push_str("null"),
+    }
+}
+
+/// Appends the `"solids"` object (module docs).
+fn write_solids(
+    out: &mut String,
+    m: &SolidMotion,
+    meeting: &Option<Result<Option<FirstContact>, Error>>,
+) {
+    out.push_str("{\"first_meeting\":");
+    match meeting {
+        Some(Ok(c)) => write_contact(out, c),
+        Some(Err(e)) => {
+            out.push_str("{\"error\":");
+            write_json_string(out, &e.to_string());
+            out.push('}');
+        }
+        None => out.push_str("null"),
+    }
+    out.push_str(",\"intervals\":[");
+    for (k, i) in m.intervals.iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        out.push_str("{\"from\":");
+        write_end(out, i.from.as_ref());
+        out.push_str(",\"to\":");
+        write_end(out, i.to.as_ref());
+        out.push_str(",\"sample_t\":");
+        write_json_string(out, &rational(&i.sample));
+        write_state(out, &i.state);
+        out.push('}');
+    }
+    out.push_str("],\"instants\":[");
+    for (k, i) in m.instants.iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        out.push_str("{\"t\":");
+        write_instant(out, &i.t);
+        write_state(out, &i.state);
+        out.push('}');
+    }
+    out.push_str("]}");
+}
+
+/// The report as one JSON object on one line, keys in the documented order (module docs).
+pub fn report_to_json_line(r: &ContactReport) -> String {
+    let mut out = String::with_capacity(1024);
+    out.push_str("{\"range\":[");
+    for (k, end) in [r.range.from(), r.range.to()].into_iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        match end {
+            Some(v) => write_json_string(&mut out, &rational(v)),
+            None => out.push_str("null"),
         }
     }
-}
-
-fn contact_json(c: &Option<FirstContact>) -> Value {
-    match c {
-        None => Value::Null,
-        Some(FirstContact::FromMinusInfinity) => Value::String(MINUS_INFINITY.into()),
-        Some(FirstContact::At(t)) => instant_json(t),
+    out.push_str("],\"first_contact\":");
+    write_contact(&mut out, &r.first_contact);
+    out.push_str(",\"solids\":");
+    match &r.solids {
+        Some(m) => write_solids(&mut out, m, &r.first_meeting),
+        None => out.push_str("null"),
     }
-}
-
-fn state_fields(s: &SolidState, out: &mut serde_json::Map<String, Value>) {
-    out.insert("relation".into(), s.key().into());
-    let inner = s.relation().and_then(|r| r.inner()).map(|i| i.key());
-    out.insert("inner".into(), inner.map_or(Value::Null, Value::from));
-    let note = match s {
-        SolidState::NotEllipsoids(why) => Value::String(why.clone()),
-        _ => Value::Null,
-    };
-    out.insert("note".into(), note);
-}
-
-/// The report as one JSON object (module docs).
-pub fn report_to_json(r: &ContactReport) -> Value {
-    let end = |v: Option<&RBig>| v.map_or(Value::Null, |v| Value::String(rational(v)));
-    let solids = r.solids.as_ref().map_or(Value::Null, |m| {
-        let t_or_null = |t: &Option<AlgebraicReal>| t.as_ref().map_or(Value::Null, instant_json);
-        let intervals: Vec<Value> = m
-            .intervals
-            .iter()
-            .map(|i| {
-                let mut o = serde_json::Map::new();
-                o.insert("from".into(), t_or_null(&i.from));
-                o.insert("to".into(), t_or_null(&i.to));
-                o.insert("sample_t".into(), rational(&i.sample).into());
-                state_fields(&i.state, &mut o);
-                Value::Object(o)
-            })
-            .collect();
-        let instants: Vec<Value> = m
-            .instants
-            .iter()
-            .map(|i| {
-                let mut o = serde_json::Map::new();
-                o.insert("t".into(), instant_json(&i.t));
-                state_fields(&i.state, &mut o);
-                Value::Object(o)
-            })
-            .collect();
-        let meeting = match &r.first_meeting {
-            Some(Ok(c)) => contact_json(c),
-            Some(Err(e)) => json!({ "error": e.to_string() }),
-            None => Value::Null,
-        };
-        json!({ "first_meeting": meeting, "intervals": intervals, "instants": instants })
-    });
-    json!({
-        "range": [end(r.range.from()), end(r.range.to())],
-        "first_contact": contact_json(&r.first_contact),
-        "solids": solids,
-    })
+    out.push('}');
+    out
 }
 
 fn instant_text(t: &AlgebraicReal) -> String {
@@ -246,6 +289,11 @@ mod tests {
     use super::*;
     use crate::motion::moving_from_arg;
     use qsic::io::parse_number;
+    use serde_json::{json, Value};
+
+    fn report_to_json(r: &ContactReport) -> Value {
+        serde_json::from_str(&report_to_json_line(r)).expect("one JSON object")
+    }
 
     /// The report of the sphere through a sphere, as JSON: every instant and relation.
     #[test]

@@ -444,7 +444,7 @@ fn run_contact(args: &ContactArgs) -> ExitCode {
         }
     };
     let text = if args.json {
-        contact::report_to_json(&report).to_string() + "\n"
+        contact::report_to_json_line(&report) + "\n"
     } else {
         contact::human_report(&report)
     };
