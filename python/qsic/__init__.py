@@ -447,8 +447,9 @@ def first_contact(
 ) -> Dict[str, Any]:
     """The first ``t`` in ``range`` where moving quadrics have a real common point, and the
     relation of the solids along the motion where both are ellipsoids: the JSON object of
-    ``qsic contact --json`` (``range``, ``first_contact``: None, ``"-inf"``, ``"p/q"`` or
-    ``{"poly", "interval", "approx"}``, ``solids``).
+    ``qsic contact --json`` (``range``, ``first_contact``: None, ``"-oo"``, ``"p/q"`` or
+    ``{"poly", "interval", "approx"}``, ``solids``: the relation on the range only).
+    ``range = (t0, t1)`` as for :func:`motion`.
 
     Raises:
         QsicError: the reader's or the analysis' message.

@@ -618,6 +618,13 @@ fn moving(name: &str, texts: Vec<String>) -> PyResult<MovingMatrix> {
     m.map_err(|e| err(format!("{name}: {e}")))
 }
 
+/// The range `(t0, t1)` of `motion` and `first_contact`, read as `--range T0 T1` by the
+/// library's one reader (`None`: an open side).
+fn time_range(t0: Option<&str>, t1: Option<&str>) -> PyResult<qsic::motion::TimeRange> {
+    qsic::motion::TimeRange::parse(t0.unwrap_or("-oo"), t1.unwrap_or("oo"))
+        .map_err(|e| err(format!("range: {e}")))
+}
+
 /// The JSON object of `qsic motion --json --range T0 T1` (`None`: an open side).
 #[pyfunction]
 #[pyo3(signature = (a, b, t0 = None, t1 = None))]
@@ -629,8 +636,7 @@ fn motion(
     t1: Option<&str>,
 ) -> PyResult<String> {
     let (ma, mb) = (moving("A", a)?, moving("B", b)?);
-    let range = qsic_cli::motion::TimeRange::parse(t0.unwrap_or("-oo"), t1.unwrap_or("oo"))
-        .map_err(|e| err(e.replace("--range", "range")))?;
+    let range = time_range(t0, t1)?;
     py.detach(|| {
         catch_panic(|| {
             qsic_cli::motion::analyze(ma, mb, &range)
@@ -653,17 +659,11 @@ fn first_contact(
     t1: Option<&str>,
 ) -> PyResult<String> {
     let (ma, mb) = (moving("A", a)?, moving("B", b)?);
-    let end = |t: Option<&str>| {
-        t.map_or(Ok(None), |t| {
-            qsic_cli::contact::range_end(t).map_err(|e| err(format!("range: {e}")))
-        })
-    };
-    let range =
-        qsic::motion::TimeRange::new(end(t0)?, end(t1)?).map_err(|e| err(format!("range: {e}")))?;
+    let range = time_range(t0, t1)?;
     py.detach(|| {
         catch_panic(|| {
             qsic_cli::contact::contact(ma, mb, range)
-                .map(|r| qsic_cli::contact::report_to_json(&r).to_string())
+                .map(|r| qsic_cli::contact::report_to_json_line(&r))
                 .map_err(|e| format!("A and B: {e}"))
         })
         .and_then(|r| r)

@@ -87,3 +87,21 @@ def test_motion_with_a_range_and_first_contact_equal_cli(cli):
     later = qsic.first_contact(a, b, range=(0, None))
     assert later == cli_json(cli, "contact", "--json", "--range", "0", "oo", a, b)
     assert later["first_contact"] == "1"  # inside (no common point) until |t| = 2 − 1
+    # the documented key order, the solids on the range only
+    assert list(later) == ["range", "first_contact", "solids"]
+    assert list(later["solids"]) == ["first_meeting", "intervals", "instants"]
+    assert later["solids"]["intervals"][0]["from"] == "0"
+
+
+def test_inputs_are_read_as_by_the_cli(cli):
+    # a plane is its double plane in motion as in classify; a common factor is cleared
+    planes = qsic.motion("z-1", "x^2+y^2-z^2")
+    assert planes == cli_json(cli, "motion", "--json", "z-1", "x^2+y^2-z^2")
+    assert planes["intervals"][0]["case"] == qsic.classify("z-1", "x^2+y^2-z^2").case == 19
+    sphere = qsic.first_contact("t*x^2+t*y^2+t*z^2-t", "x^2+y^2+z^2-4")
+    assert sphere["solids"]["instants"] == []
+    # one range reader: an empty range is refused with the CLI's message
+    for empty in [(float("inf"), float("-inf")), (2, 1)]:
+        for f in (qsic.motion, qsic.first_contact):
+            with pytest.raises(qsic.QsicError, match="range: invalid time range: .* the range is empty"):
+                f("x^2+y^2+z^2-4", "(x-t)^2+y^2+z^2-1", range=empty)

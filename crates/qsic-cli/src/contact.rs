@@ -1,26 +1,28 @@
 //! `qsic contact A B`: the first contact of two moving quadrics and, where both are solid
-//! ellipsoids, the relation of the solids along the motion, as JSON or text.
+//! ellipsoids, the relation of the solids along the motion in the range, as JSON or text.
 //!
-//! JSON (one object):
-//! `{"range": [from|null, to|null], "first_contact": null | "-inf" | instant,
-//! "solids": null | {"first_meeting": null | "-inf" | instant | {"error": "..."},
+//! JSON (one object, keys in this order):
+//! `{"range": [from|null, to|null], "first_contact": null | "-oo" | instant,
+//! "solids": null | {"first_meeting": null | "-oo" | instant | {"error": "..."},
 //! "intervals": [{"from", "to", "sample_t", "relation", "inner", "note"}],
 //! "instants": [{"t", "relation", "inner", "note"}]}}` with an instant `"p/q"` or
 //! `{"poly": "t^2 - 8", "interval": ["a", "b"], "approx": "-2.828…"}`, `from`/`to` null for
 //! `∓∞`; `relation` a [`SolidRelation`](qsic::solids::SolidRelation) key, `not_ellipsoids`
 //! or `undetermined`; `inner` `"A"`/`"B"` for `inside` and `touching_internally`.
-//! `solids` is null when the two are never both solid ellipsoids.
+//! `solids` covers the range only ([`solid_motion_in`]), and is null when the two are never
+//! both solid ellipsoids there.
+//!
+//! The moving quadrics are read as by `qsic motion` ([`crate::motion::moving_from_arg`]),
+//! and the range too ([`TimeRange::parse`]).
 
-use qsic::io::{
-    moving_matrix_from_polynomial, moving_matrix_from_rows, parse_number, MovingMatrix,
-};
+use crate::output::write_json_string;
+use qsic::io::MovingMatrix;
 use qsic::motion::contact::{
-    first_contact_in, solid_motion_of, FirstContact, SolidMotion, SolidState, TimeRange,
+    first_contact_in, solid_motion_in, FirstContact, SolidMotion, SolidState, TimeRange,
 };
-use qsic::motion::MovingPencil;
+use qsic::motion::{MovingPencil, MINUS_INFINITY, PLUS_INFINITY};
 use qsic::Error;
 use qsic_algebra::{AlgebraicReal, RBig};
-use serde_json::{json, Value};
 use std::fmt::Write as _;
 
 /// What `qsic contact` reports.
@@ -30,66 +32,23 @@ pub struct ContactReport {
     pub range: TimeRange,
     /// The first `t` with a real common point (real projective space).
     pub first_contact: Option<FirstContact>,
-    /// The relation of the solids along the whole motion; `None` if they are never both
-    /// solid ellipsoids.
+    /// The relation of the solids along the range; `None` if they are never both solid
+    /// ellipsoids there.
     pub solids: Option<SolidMotion>,
     /// The affine first contact in the range (solids no longer separated), or why not.
     pub first_meeting: Option<Result<Option<FirstContact>, Error>>,
 }
 
-/// Reads a moving quadric: a JSON 4×4 array of numbers or strings (rational functions of
-/// `t`), or a quadratic form in `x, y, z, w` with coefficients rational in `t`.
-///
-/// # Errors
-/// The reader's error, or a JSON syntax error as [`Error::Syntax`].
-pub fn moving_from_arg(text: &str) -> Result<MovingMatrix, Error> {
-    if !text.trim_start().starts_with('[') {
-        return moving_matrix_from_polynomial(text);
-    }
-    let value: Value = serde_json::from_str(text).map_err(|e| Error::Syntax {
-        column: e.column(),
-        message: format!("bad JSON matrix: {e}"),
-    })?;
-    let rows: Vec<Vec<String>> = value
-        .as_array()
-        .map(|rows| {
-            rows.iter()
-                .map(|r| {
-                    r.as_array()
-                        .map(|r| {
-                            r.iter()
-                                .map(|x| x.as_str().map_or_else(|| x.to_string(), str::to_owned))
-                                .collect()
-                        })
-                        .unwrap_or_default()
-                })
-                .collect()
-        })
-        .unwrap_or_default();
-    moving_matrix_from_rows(&rows)
-}
-
-/// A range end: a rational number, or `oo`/`-oo` (also `inf`/`-inf`, `none`) for an open end.
-///
-/// # Errors
-/// As [`parse_number`].
-pub fn range_end(text: &str) -> Result<Option<RBig>, Error> {
-    match text.trim() {
-        "inf" | "+inf" | "-inf" | "oo" | "+oo" | "-oo" | "none" => Ok(None),
-        t => parse_number(t).map(Some),
-    }
-}
-
-/// First contact in `range` and the relation of the solids.
+/// First contact in `range` and the relation of the solids on it.
 ///
 /// # Errors
 /// As [`qsic::motion::contact::first_contact`] and
-/// [`qsic::motion::contact::solid_motion`].
+/// [`qsic::motion::contact::solid_motion_in`].
 pub fn contact(a: MovingMatrix, b: MovingMatrix, range: TimeRange) -> Result<ContactReport, Error> {
     let pencil = MovingPencil::new(a, b)?;
     let motion = pencil.variations()?;
     let first = first_contact_in(&pencil, &motion, &range)?;
-    let solids = solid_motion_of(&pencil)?;
+    let solids = solid_motion_in(&pencil, &range)?;
     let any_relation = solids
         .intervals
         .iter()
@@ -114,79 +73,122 @@ fn rational(v: &RBig) -> String {
     v.to_string()
 }
 
-/// An instant as JSON: `"p/q"` or `{"poly", "interval", "approx"}`.
-pub fn instant_json(t: &AlgebraicReal) -> Value {
-    match t.as_rational() {
-        Some(v) => Value::String(rational(v)),
-        None => {
-            let iv = t.refined_interval(&RBig::from_parts(1u8.into(), (1u64 << 40).into()));
-            json!({
-                "poly": t.poly().to_string().replace('x', "t"),
-                "interval": [rational(iv.lo()), rational(iv.hi())],
-                "approx": format!("{:.15}", t.to_f64()),
-            })
+/// Appends an instant as JSON: `"p/q"` or `{"poly", "interval", "approx"}`.
+pub fn write_instant(out: &mut String, t: &AlgebraicReal) {
+    if let Some(v) = t.as_rational() {
+        write_json_string(out, &rational(v));
+        return;
+    }
+    let iv = t.refined_interval(&RBig::from_parts(1u8.into(), (1u64 << 40).into()));
+    out.push_str("{\"poly\":");
+    write_json_string(out, &t.poly().to_string().replace('x', "t"));
+    out.push_str(",\"interval\":[");
+    write_json_string(out, &rational(iv.lo()));
+    out.push(',');
+    write_json_string(out, &rational(iv.hi()));
+    out.push_str("],\"approx\":");
+    write_json_string(out, &format!("{:.15}", t.to_f64()));
+    out.push('}');
+}
+
+/// Appends `null`, an instant, or `-oo`.
+fn write_contact(out: &mut String, c: &Option<FirstContact>) {
+    match c {
+        None => out.push_str("null"),
+        Some(FirstContact::FromMinusInfinity) => write_json_string(out, MINUS_INFINITY),
+        Some(FirstContact::At(t)) => write_instant(out, t),
+    }
+}
+
+/// Appends an instant or `null` (an open end).
+fn write_end(out: &mut String, t: Option<&AlgebraicReal>) {
+    match t {
+        Some(t) => write_instant(out, t),
+        None => out.push_str("null"),
+    }
+}
+
+/// Appends `,"relation":…,"inner":…,"note":…`.
+fn write_state(out: &mut String, s: &SolidState) {
+    out.push_str(",\"relation\":");
+    write_json_string(out, s.key());
+    out.push_str(",\"inner\":");
+    match s.relation().and_then(|r| r.inner()) {
+        Some(i) => write_json_string(out, i.key()),
+        None => out.push_str("null"),
+    }
+    out.push_str(",\"note\":");
+    match s {
+        SolidState::NotEllipsoids(why) => write_json_string(out, why),
+        _ => out.push_str("null"),
+    }
+}
+
+/// Appends the `"solids"` object (module docs).
+fn write_solids(
+    out: &mut String,
+    m: &SolidMotion,
+    meeting: &Option<Result<Option<FirstContact>, Error>>,
+) {
+    out.push_str("{\"first_meeting\":");
+    match meeting {
+        Some(Ok(c)) => write_contact(out, c),
+        Some(Err(e)) => {
+            out.push_str("{\"error\":");
+            write_json_string(out, &e.to_string());
+            out.push('}');
+        }
+        None => out.push_str("null"),
+    }
+    out.push_str(",\"intervals\":[");
+    for (k, i) in m.intervals.iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        out.push_str("{\"from\":");
+        write_end(out, i.from.as_ref());
+        out.push_str(",\"to\":");
+        write_end(out, i.to.as_ref());
+        out.push_str(",\"sample_t\":");
+        write_json_string(out, &rational(&i.sample));
+        write_state(out, &i.state);
+        out.push('}');
+    }
+    out.push_str("],\"instants\":[");
+    for (k, i) in m.instants.iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        out.push_str("{\"t\":");
+        write_instant(out, &i.t);
+        write_state(out, &i.state);
+        out.push('}');
+    }
+    out.push_str("]}");
+}
+
+/// The report as one JSON object on one line, keys in the documented order (module docs).
+pub fn report_to_json_line(r: &ContactReport) -> String {
+    let mut out = String::with_capacity(1024);
+    out.push_str("{\"range\":[");
+    for (k, end) in [r.range.from(), r.range.to()].into_iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        match end {
+            Some(v) => write_json_string(&mut out, &rational(v)),
+            None => out.push_str("null"),
         }
     }
-}
-
-fn contact_json(c: &Option<FirstContact>) -> Value {
-    match c {
-        None => Value::Null,
-        Some(FirstContact::FromMinusInfinity) => Value::String("-inf".into()),
-        Some(FirstContact::At(t)) => instant_json(t),
+    out.push_str("],\"first_contact\":");
+    write_contact(&mut out, &r.first_contact);
+    out.push_str(",\"solids\":");
+    match &r.solids {
+        Some(m) => write_solids(&mut out, m, &r.first_meeting),
+        None => out.push_str("null"),
     }
-}
-
-fn state_fields(s: &SolidState, out: &mut serde_json::Map<String, Value>) {
-    out.insert("relation".into(), s.key().into());
-    let inner = s.relation().and_then(|r| r.inner()).map(|i| i.key());
-    out.insert("inner".into(), inner.map_or(Value::Null, Value::from));
-    let note = match s {
-        SolidState::NotEllipsoids(why) => Value::String(why.clone()),
-        _ => Value::Null,
-    };
-    out.insert("note".into(), note);
-}
-
-/// The report as one JSON object (module docs).
-pub fn report_to_json(r: &ContactReport) -> Value {
-    let end = |v: Option<&RBig>| v.map_or(Value::Null, |v| Value::String(rational(v)));
-    let solids = r.solids.as_ref().map_or(Value::Null, |m| {
-        let t_or_null = |t: &Option<AlgebraicReal>| t.as_ref().map_or(Value::Null, instant_json);
-        let intervals: Vec<Value> = m
-            .intervals
-            .iter()
-            .map(|i| {
-                let mut o = serde_json::Map::new();
-                o.insert("from".into(), t_or_null(&i.from));
-                o.insert("to".into(), t_or_null(&i.to));
-                o.insert("sample_t".into(), rational(&i.sample).into());
-                state_fields(&i.state, &mut o);
-                Value::Object(o)
-            })
-            .collect();
-        let instants: Vec<Value> = m
-            .instants
-            .iter()
-            .map(|i| {
-                let mut o = serde_json::Map::new();
-                o.insert("t".into(), instant_json(&i.t));
-                state_fields(&i.state, &mut o);
-                Value::Object(o)
-            })
-            .collect();
-        let meeting = match &r.first_meeting {
-            Some(Ok(c)) => contact_json(c),
-            Some(Err(e)) => json!({ "error": e.to_string() }),
-            None => Value::Null,
-        };
-        json!({ "first_meeting": meeting, "intervals": intervals, "instants": instants })
-    });
-    json!({
-        "range": [end(r.range.from()), end(r.range.to())],
-        "first_contact": contact_json(&r.first_contact),
-        "solids": solids,
-    })
+    out.push('}');
+    out
 }
 
 fn instant_text(t: &AlgebraicReal) -> String {
@@ -203,7 +205,7 @@ fn instant_text(t: &AlgebraicReal) -> String {
 fn contact_text(c: &Option<FirstContact>, none: &str) -> String {
     match c {
         None => none.to_string(),
-        Some(FirstContact::FromMinusInfinity) => "from t = -inf".to_string(),
+        Some(FirstContact::FromMinusInfinity) => format!("from t = {MINUS_INFINITY}"),
         Some(FirstContact::At(t)) => format!("t = {}", instant_text(t)),
     }
 }
@@ -219,15 +221,15 @@ fn state_text(s: &SolidState) -> String {
     }
 }
 
-/// The text report: first contact, then the timeline of the solids.
+/// The text report: first contact, then the timeline of the solids in the range.
 pub fn human_report(r: &ContactReport) -> String {
     let end = |v: Option<&RBig>, inf: &str| v.map_or(inf.to_string(), rational);
     let mut s = String::new();
     let _ = writeln!(
         s,
         "range: [{}, {}]",
-        end(r.range.from(), "-inf"),
-        end(r.range.to(), "+inf")
+        end(r.range.from(), MINUS_INFINITY),
+        end(r.range.to(), PLUS_INFINITY)
     );
     let _ = writeln!(
         s,
@@ -235,7 +237,7 @@ pub fn human_report(r: &ContactReport) -> String {
         contact_text(&r.first_contact, "none in the range")
     );
     let Some(m) = &r.solids else {
-        let _ = writeln!(s, "solids: not both solid ellipsoids at any t");
+        let _ = writeln!(s, "solids: not both solid ellipsoids at any t in the range");
         return s;
     };
     match &r.first_meeting {
@@ -254,29 +256,44 @@ pub fn human_report(r: &ContactReport) -> String {
     let _ = writeln!(s, "solids along the motion:");
     let t_or =
         |t: &Option<AlgebraicReal>, inf: &str| t.as_ref().map_or(inf.to_string(), instant_text);
-    for (k, i) in m.intervals.iter().enumerate() {
+    // The instants up to each interval's start (the range's start first), then the interval;
+    // then the instants after the last one.
+    let mut next = 0;
+    let mut instants_up_to = |s: &mut String, limit: Option<&AlgebraicReal>| {
+        while let Some(i) = m.instants.get(next) {
+            if limit.is_some_and(|l| i.t > *l) {
+                break;
+            }
+            let _ = writeln!(s, "  t = {}: {}", instant_text(&i.t), state_text(&i.state));
+            next += 1;
+        }
+    };
+    for i in &m.intervals {
+        if let Some(from) = &i.from {
+            instants_up_to(&mut s, Some(from));
+        }
         let _ = writeln!(
             s,
             "  ({}, {}): {}",
-            t_or(&i.from, "-inf"),
-            t_or(&i.to, "+inf"),
+            t_or(&i.from, MINUS_INFINITY),
+            t_or(&i.to, PLUS_INFINITY),
             state_text(&i.state)
         );
-        if let Some(at) = m.instants.get(k) {
-            let _ = writeln!(
-                s,
-                "  t = {}: {}",
-                instant_text(&at.t),
-                state_text(&at.state)
-            );
-        }
     }
+    instants_up_to(&mut s, None);
     s
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::motion::moving_from_arg;
+    use qsic::io::parse_number;
+    use serde_json::{json, Value};
+
+    fn report_to_json(r: &ContactReport) -> Value {
+        serde_json::from_str(&report_to_json_line(r)).expect("one JSON object")
+    }
 
     /// The report of the sphere through a sphere, as JSON: every instant and relation.
     #[test]
@@ -322,12 +339,12 @@ mod tests {
     }
 
     /// An irrational instant is written with its polynomial, an interval holding it and a
-    /// decimal; ranges read `inf`.
+    /// decimal; ranges read `-inf`.
     #[test]
     fn irrational_instant_and_ranges() {
         let a = moving_from_arg("x^2 + y^2 + z^2 - 4").unwrap();
         let b = moving_from_arg("(x - t)^2 + (y - 1)^2 + z^2 - 1").unwrap();
-        let range = TimeRange::new(range_end("-inf").unwrap(), range_end("10").unwrap()).unwrap();
+        let range = TimeRange::parse("-inf", "10").unwrap();
         let v = report_to_json(&contact(a, b, range).unwrap());
         let t = &v["first_contact"];
         assert_eq!(t["poly"], "t^2 - 8");
@@ -337,7 +354,7 @@ mod tests {
         let hi = parse_number(t["interval"][1].as_str().unwrap()).unwrap();
         assert!(lo < hi && &lo * &lo > RBig::from(8) && &hi * &hi < RBig::from(8));
         assert_eq!(v["range"], json!([null, "10"]));
-        assert!(range_end("1/0").is_err());
+        assert!(TimeRange::parse("1/0", "1").is_err());
     }
 
     /// Cylinders are not solids: the first contact only, `solids` null.

@@ -12,7 +12,8 @@
 //! [`qsic::io::parse_number`] reads that text exactly, so `0.1` is one tenth and
 //! `123456789012345678901234567890` keeps every digit.
 
-use qsic::io::{parse_quadric, quadric_from_array, quadric_from_rows};
+use qsic::error::shorten_numbers;
+use qsic::io::{parse_quadric, parse_quadric_or_plane, quadric_from_array, quadric_from_rows};
 use qsic::{Error, Quadric};
 use serde::de::{self, Deserialize, Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor};
 use serde_json::value::RawValue;
@@ -40,8 +41,12 @@ impl fmt::Display for InputError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             InputError::Quadric(e) => write!(f, "{e}"),
-            InputError::Json(e) => write!(f, "invalid JSON matrix: {e}"),
-            InputError::Type(message) => f.write_str(message),
+            InputError::Json(e) => write!(
+                f,
+                "invalid JSON matrix: {}",
+                shorten_numbers(&e.to_string())
+            ),
+            InputError::Type(message) => f.write_str(&shorten_numbers(message)),
             InputError::TooLong(len) => write!(
                 f,
                 "matrix argument of {len} bytes exceeds the limit of {MAX_MATRIX_ARG_BYTES} bytes"
@@ -65,8 +70,8 @@ fn allow_zero(result: Result<Quadric, Error>) -> Result<Option<Quadric>, InputEr
     }
 }
 
-/// A quadric as read, and whether it was written as a plane (a polynomial of degree 1, read
-/// as its double plane: see [`qsic::io::parse_plane`]).
+/// A quadric as read, and whether it was written as a plane (a polynomial of degree 1, which
+/// the library reads as its double plane: see [`qsic::io::parse_quadric`]).
 #[derive(Clone, Debug)]
 pub struct Surface {
     /// The quadric, `None` for the zero form.
@@ -75,31 +80,24 @@ pub struct Surface {
     pub plane: bool,
 }
 
-/// A polynomial text: a quadric, or a plane (degree 1) as its double plane. Only a text whose
-/// quadric has a zero quadratic part (an affine degree-1 polynomial reads as `ℓ·w`) is read a
-/// second time for a plane.
+/// A polynomial text: a quadric, or a plane (degree 1) as its double plane, in one reading
+/// ([`parse_quadric_or_plane`]).
 fn polynomial_surface(text: &str) -> Result<Surface, InputError> {
-    let quadric = allow_zero(parse_quadric(text))?;
-    if let Some(q) = &quadric {
-        let m = q.integer_matrix().entries();
-        let flat = (0..3).all(|i| (0..3).all(|j| m[i][j] == qsic_algebra::IBig::ZERO));
-        if flat {
-            if let Some(p) = qsic::io::parse_plane(text).map_err(InputError::Quadric)? {
-                return Ok(Surface {
-                    quadric: Some(qsic::io::plane_as_quadric(&p).map_err(InputError::Quadric)?),
-                    plane: true,
-                });
-            }
-        }
+    match parse_quadric_or_plane(text) {
+        Ok((quadric, plane)) => Ok(Surface {
+            quadric: Some(quadric),
+            plane,
+        }),
+        Err(Error::ZeroQuadric) => Ok(Surface {
+            quadric: None,
+            plane: false,
+        }),
+        Err(e) => Err(InputError::Quadric(e)),
     }
-    Ok(Surface {
-        quadric,
-        plane: false,
-    })
 }
 
-/// [`quadric_from_arg`] with planes: a polynomial of degree 1 is a plane, read as its double
-/// plane (never the plane pair with the plane at infinity).
+/// [`quadric_from_arg`], and whether the argument was a plane (a polynomial of degree 1,
+/// read as its double plane as everywhere).
 ///
 /// # Errors
 /// As [`quadric_from_arg`].

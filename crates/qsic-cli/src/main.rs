@@ -155,9 +155,11 @@ struct PlotArgs {
 /// Arguments of `qsic contact`.
 #[derive(Args, Debug)]
 #[command(
-    after_help = "A and B: quadratic forms in x, y, z, w (or affine x, y, z) whose \
-coefficients are rational functions of t, e.g. \"(x - t)^2 + y^2 + z^2 - 1\", or 4x4 JSON \
-arrays of such functions as strings. Instants are exact: rationals, or roots of a polynomial in t.\n\
+    after_help = "A and B: read as by 'qsic motion': quadratic forms in x, y, z, w (or affine \
+x, y, z) whose coefficients are rational functions of t, e.g. \"(x - t)^2 + y^2 + z^2 - 1\" (a \
+linear one is a moving plane, read as its double plane), or 4x4 JSON arrays of numbers and \
+such functions as strings. --range as for 'qsic motion'; the solids' relation is reported on \
+the range only. Instants are exact: rationals, or roots of a polynomial in t.\n\
 Example: qsic contact \"x^2+y^2+z^2-4\" \"(x-t)^2+y^2+z^2-1\" --range -10 10"
 )]
 struct ContactArgs {
@@ -167,7 +169,7 @@ struct ContactArgs {
     /// Second moving quadric.
     #[arg(value_name = "B", allow_hyphen_values = true)]
     b: String,
-    /// Search the first contact in [T0, T1] (rationals, or -oo / oo, also -inf / inf); default all t.
+    /// Only t in the closed range [T0, T1] (exact numbers, -oo/oo for an open side), as for motion.
     #[arg(long, num_args = 2, value_names = ["T0", "T1"], allow_hyphen_values = true)]
     range: Option<Vec<String>>,
     /// Print one JSON object instead of the text report.
@@ -301,8 +303,10 @@ MOVING QUADRICS:
   A(t), B(t): a quadratic form in x, y, z, w (or affine in x, y, z) whose coefficients are
   rational functions of t, e.g. \"(x - t)^2 + y^2 + z^2 - 1\" or \"x^2 + (1-t^2)/(1+t^2)*y*w\";
   or a symmetric 4x4 JSON array of numbers and strings of rational functions of t, e.g.
-  '[[\"1\",0,0,\"-t\"],[0,1,0,0],[0,0,1,0],[\"-t\",0,0,\"t^2-1\"]]'. Denominators are
-  cleared (at a pole the quadric is the limit), and so is a factor common to all entries.
+  '[[\"1\",0,0,\"-t\"],[0,1,0,0],[0,0,1,0],[\"-t\",0,0,\"t^2-1\"]]'. A form of degree 1
+  in x, y, z, w (\"z - t\") is a moving plane, read as its double plane, as in 'qsic classify'.
+  Denominators are cleared (at a pole the quadric is the limit), and so is a factor common
+  to all entries (\"t*x^2 - t\" is x^2 - w^2 at every t, t = 0 included).
   Bounds (qsic::limits): entries of degree <= 16 in t once denominators are cleared,
   coefficients of <= 512 bits; each number <= 10000 digits.
 
@@ -316,7 +320,9 @@ OUTPUT:
   null for -oo/+oo.
 
 RANGE (--range T0 T1):
-  Analyse the closed range [T0, T1] only (exact numbers; -oo or oo for an open side).
+  Analyse the closed range [T0, T1] only (exact numbers; -oo or oo, also -inf, inf, +oo,
+  +inf, for an open side). A range that cannot be read or is empty (T0 above T1, T0 = oo,
+  T1 = -oo) is a usage error, as for 'qsic contact'.
   The intervals cover (T0, T1): the first starts at T0, the last ends at T1. The instants
   strictly inside are reported as without a range; T0 (T1) is reported as a first (last)
   instant only if its type differs from that of the interval beside it. T0 = T1 gives no
@@ -368,7 +374,7 @@ struct MotionArgs {
     #[arg(long, value_name = "FILE", conflicts_with_all = ["a", "b"])]
     batch: Option<PathBuf>,
 
-    /// Restrict t to the closed range [T0, T1] (exact numbers, -oo/oo for an open side).
+    /// Only t in the closed range [T0, T1] (exact numbers, -oo/oo for an open side).
     #[arg(long, num_args = 2, value_names = ["T0", "T1"], allow_hyphen_values = true)]
     range: Option<Vec<String>>,
 
@@ -424,17 +430,10 @@ fn main() -> ExitCode {
 
 /// `qsic contact A B`: exit 0 with the report, or 1 with the error on stderr.
 fn run_contact(args: &ContactArgs) -> ExitCode {
+    let range = range_arg(args.range.as_deref());
     let result = (|| {
-        let a = contact::moving_from_arg(&args.a).map_err(|e| format!("A: {e}"))?;
-        let b = contact::moving_from_arg(&args.b).map_err(|e| format!("B: {e}"))?;
-        let range = match &args.range {
-            Some(ends) => {
-                let end = |t: &str| contact::range_end(t).map_err(|e| format!("--range: {e}"));
-                qsic::motion::TimeRange::new(end(&ends[0])?, end(&ends[1])?)
-                    .map_err(|e| format!("--range: {e}"))?
-            }
-            None => qsic::motion::TimeRange::all(),
-        };
+        let a = motion::moving_from_arg(&args.a).map_err(|e| format!("A: {e}"))?;
+        let b = motion::moving_from_arg(&args.b).map_err(|e| format!("B: {e}"))?;
         contact::contact(a, b, range).map_err(|e| format!("A and B: {e}"))
     })();
     let report = match result {
@@ -445,7 +444,7 @@ fn run_contact(args: &ContactArgs) -> ExitCode {
         }
     };
     let text = if args.json {
-        contact::report_to_json(&report).to_string() + "\n"
+        contact::report_to_json_line(&report) + "\n"
     } else {
         contact::human_report(&report)
     };
@@ -525,19 +524,29 @@ fn run_single(
     }
 }
 
-/// `qsic motion`: a single pair (exit 0, or 1 with `error: …`) or a batch.
-fn run_motion(args: &MotionArgs) -> ExitCode {
-    let range = match args.range.as_deref() {
+/// `--range T0 T1` of `qsic motion` and `qsic contact`, read by the library's one reader
+/// ([`TimeRange::parse`]); the whole line without it. A range that cannot be read or is
+/// empty is a usage error (exit 2).
+fn range_arg(range: Option<&[String]>) -> TimeRange {
+    match range {
         Some([t0, t1]) => match TimeRange::parse(t0, t1) {
             Ok(r) => r,
-            Err(message) => {
+            Err(e) => {
                 let mut cmd = Cli::command();
-                cmd.error(clap::error::ErrorKind::ValueValidation, message)
-                    .exit()
+                cmd.error(
+                    clap::error::ErrorKind::ValueValidation,
+                    format!("--range: {e}"),
+                )
+                .exit()
             }
         },
-        _ => TimeRange::default(),
-    };
+        _ => TimeRange::all(),
+    }
+}
+
+/// `qsic motion`: a single pair (exit 0, or 1 with `error: …`) or a batch.
+fn run_motion(args: &MotionArgs) -> ExitCode {
+    let range = range_arg(args.range.as_deref());
     if let Some(path) = &args.batch {
         return run_batch(path, |line: &batch::RawLine| {
             motion::answer_motion_line(line, &range)

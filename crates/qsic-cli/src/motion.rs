@@ -4,7 +4,7 @@
 //!
 //! | entry point | does |
 //! |---|---|
-//! | [`TimeRange::parse`] | `--range T0 T1`: exact rationals, `-oo`/`oo` for an open side |
+//! | [`TimeRange::parse`] | `--range T0 T1` (the library's, shared with `qsic contact`): exact rationals, `-oo`/`oo` for an open side |
 //! | [`moving_from_arg`], [`moving_from_form`] | a moving quadric from an argument or a batch field |
 //! | [`analyze`] | the variations of the pair on the range |
 //! | [`motion_to_json_line`], [`write_motion_fields`] | the JSON result (keys `instants`, `intervals`) |
@@ -18,51 +18,13 @@
 use crate::batch::{answer_with, catch_panic, open_record, read_record, LineFailure, RawLine};
 use crate::input::{matrix_texts, InputError, JsonForm};
 use crate::output::write_json_string;
-use qsic::io::{
-    moving_matrix_from_polynomial, moving_matrix_from_rows, parse_number, MovingMatrix,
-};
-use qsic::motion::{Motion, MovingPencil};
+use qsic::io::{moving_matrix_from_polynomial, moving_matrix_from_rows, MovingMatrix};
+pub use qsic::motion::TimeRange;
+use qsic::motion::{Motion, MovingPencil, MINUS_INFINITY, PLUS_INFINITY};
 use qsic::{Classification, Error};
-use qsic_algebra::{AlgebraicReal, RBig};
+use qsic_algebra::AlgebraicReal;
 use serde_json::Value;
 use std::fmt::Write as _;
-
-/// The closed range `[from, to]` of `t` analyzed; `None` for an unbounded side.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct TimeRange {
-    /// Lower end, `None` for `−∞`.
-    pub from: Option<RBig>,
-    /// Upper end, `None` for `+∞`.
-    pub to: Option<RBig>,
-}
-
-impl TimeRange {
-    /// Reads `--range T0 T1`: each an exact number (`1/3`, `0.25`, `-2`) or `-oo` / `oo`
-    /// (`+oo`, `inf`, `-inf`) for an unbounded side.
-    ///
-    /// # Errors
-    /// A message naming the end that cannot be read, or `T0 > T1`.
-    pub fn parse(t0: &str, t1: &str) -> Result<TimeRange, String> {
-        let end = |name: &str, text: &str, infinite: &[&str]| {
-            if infinite.contains(&text.trim()) {
-                return Ok(None);
-            }
-            parse_number(text)
-                .map(Some)
-                .map_err(|e| format!("--range {name}: {e}"))
-        };
-        let range = TimeRange {
-            from: end("T0", t0, &["-oo", "-inf"])?,
-            to: end("T1", t1, &["oo", "+oo", "inf", "+inf"])?,
-        };
-        if let (Some(a), Some(b)) = (&range.from, &range.to) {
-            if a > b {
-                return Err(format!("--range: T0 = {a} is above T1 = {b}"));
-            }
-        }
-        Ok(range)
-    }
-}
 
 /// Reads a moving quadric from a command-line argument: a JSON array of 4 rows of 4 entries
 /// (numbers or strings of rational functions of `t`) if it starts with `[`, otherwise a
@@ -142,7 +104,7 @@ pub fn moving_from_form(form: &JsonForm<'_>) -> Result<MovingMatrix, InputError>
 /// # Errors
 /// As [`MovingPencil::new`] and [`MovingPencil::variations_in`].
 pub fn analyze(a: MovingMatrix, b: MovingMatrix, range: &TimeRange) -> Result<Motion, Error> {
-    MovingPencil::new(a, b)?.variations_in(range.from.as_ref(), range.to.as_ref())
+    MovingPencil::new(a, b)?.variations_in(range.from(), range.to())
 }
 
 /// Appends an instant as JSON: `"p/q"`, or `{"poly", "interval", "approx"}`.
@@ -319,8 +281,8 @@ pub fn human_timeline(m: &Motion) -> String {
         let _ = writeln!(
             out,
             "  t in ({}, {}), sample t = {}: {}",
-            end(&v.from, "-oo"),
-            end(&v.to, "+oo"),
+            end(&v.from, MINUS_INFINITY),
+            end(&v.to, PLUS_INFINITY),
             v.sample,
             type_text(Some(&v.classification))
         );
@@ -363,24 +325,7 @@ fn motion_line<'a>(line: &'a RawLine, range: &TimeRange) -> Result<String, LineF
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn ranges_read_exactly_and_refuse_reversed_ends() {
-        let r = TimeRange::parse("-1/3", "0.25").expect("a range");
-        assert_eq!(
-            r.from,
-            Some(RBig::from_parts_signed((-1).into(), 3u8.into()))
-        );
-        assert_eq!(r.to, Some(RBig::from_parts_signed(1.into(), 4u8.into())));
-        assert_eq!(
-            TimeRange::parse("-oo", "oo").expect("unbounded"),
-            TimeRange::default()
-        );
-        let e = TimeRange::parse("2", "1").expect_err("reversed");
-        assert!(e.contains("above"), "{e}");
-        let e = TimeRange::parse("x", "1").expect_err("not a number");
-        assert!(e.starts_with("--range T0"), "{e}");
-    }
+    use qsic::io::parse_number;
 
     #[test]
     fn json_fields_follow_the_schema() {

@@ -36,8 +36,8 @@ const CHAR: f64 = 7.0;
 /// are finite (widened by 1 on each side when it is a single point); otherwise the span of
 /// the finite ends and instants, widened by a quarter of it (at least 1) on each open side.
 pub fn plot_window(m: &Motion, range: &TimeRange) -> (f64, f64) {
-    let from = range.from.as_ref().map(|r| r.to_f64().value());
-    let to = range.to.as_ref().map(|r| r.to_f64().value());
+    let from = range.from().map(|r| r.to_f64().value());
+    let to = range.to().map(|r| r.to_f64().value());
     if let (Some(a), Some(b)) = (from, to) {
         return if a < b { (a, b) } else { (a - 1.0, b + 1.0) };
     }
@@ -265,8 +265,8 @@ fn timeline_panel(m: &Motion, range: &TimeRange) -> Panel {
     }
 
     // The axis, with arrows and ±∞ at open sides, and the window's ends.
-    let open_left = range.from.is_none();
-    let open_right = range.to.is_none();
+    let open_left = range.from().is_none();
+    let open_right = range.to().is_none();
     let _ = writeln!(
         out,
         "<line class=\"axis\" x1=\"{:.1}\" y1=\"{axis_y:.1}\" x2=\"{:.1}\" y2=\"{axis_y:.1}\" \
@@ -295,19 +295,18 @@ fn timeline_panel(m: &Motion, range: &TimeRange) -> Panel {
             }
         }
     };
-    let point = range.from.is_some() && range.from == range.to;
-    let exact =
-        |e: &Option<qsic_algebra::RBig>| e.as_ref().filter(|_| !point).map(ToString::to_string);
+    let point = range.from().is_some() && range.from() == range.to();
+    let exact = |e: Option<&qsic_algebra::RBig>| e.filter(|_| !point).map(ToString::to_string);
     let end_labels = [
         (
             SIDE - if open_left { 36.0 } else { 6.0 },
             "end",
-            side_label(open_left, "−", exact(&range.from), lo),
+            side_label(open_left, "−", exact(range.from()), lo),
         ),
         (
             WIDTH - SIDE + if open_right { 36.0 } else { 6.0 },
             "start",
-            side_label(open_right, "+", exact(&range.to), hi),
+            side_label(open_right, "+", exact(range.to()), hi),
         ),
     ];
     for (x, anchor, text) in end_labels {
@@ -610,8 +609,8 @@ mod tests {
             }
             // open sides are arrows labelled with infinity
             let axis = texts_of(&svg, "axis-label");
-            assert_eq!(axis.contains(&"−∞".to_string()), range.from.is_none());
-            assert_eq!(axis.contains(&"+∞".to_string()), range.to.is_none());
+            assert_eq!(axis.contains(&"−∞".to_string()), range.from().is_none());
+            assert_eq!(axis.contains(&"+∞".to_string()), range.to().is_none());
         }
     }
 

@@ -15,18 +15,59 @@ fn qsic(args: &[&str]) -> (Option<i32>, String, String) {
 
 /// The ellipsoid `x²/4 + y² + z² ≤ 1` and a thin one moving along the x axis (extents
 /// `[−2, 2]` and `[t − 1, t + 1]`): contact at `−3`, inside for `|t| < 1` (touching at
-/// `±1`), in every range asked.
+/// `±1`); the relation of the solids is given on the range asked only.
 #[test]
 fn ellipsoids_approaching_json() {
     let (a, b) = ("x^2/4 + y^2 + z^2 - 1", "(x - t)^2 + 4*y^2 + 4*z^2 - 1");
-    let cases: [(&[&str], Value, Value); 4] = [
-        (&[], "-3".into(), "-3".into()),
-        (&["--range", "-2", "inf"], "-2".into(), "-2".into()),
-        // nested at 0: the surfaces meet first at the internal touch t = 1
-        (&["--range", "0", "5"], "1".into(), "0".into()),
-        (&["--range", "7/2", "10"], Value::Null, Value::Null),
+    let all: &[&str] = &["-3", "-1", "1", "3"];
+    // (range, first contact of the surfaces, of the solids, the solids' instants, their
+    // intervals' relations)
+    type Case<'a> = (&'a [&'a str], Value, Value, &'a [&'a str], &'a [&'a str]);
+    let whole = [
+        "separated",
+        "overlapping",
+        "inside",
+        "overlapping",
+        "separated",
     ];
-    for (range, surfaces, solids) in cases {
+    let cases: [Case; 5] = [
+        (&[], "-3".into(), "-3".into(), all, &whole),
+        (
+            &["--range", "-2", "inf"],
+            "-2".into(),
+            "-2".into(),
+            &all[1..],
+            &whole[1..],
+        ),
+        // nested at 0: the surfaces meet first at the internal touch t = 1
+        (
+            &["--range", "0", "5"],
+            "1".into(),
+            "0".into(),
+            &all[2..],
+            &whole[2..],
+        ),
+        (
+            &["--range", "7/2", "10"],
+            Value::Null,
+            Value::Null,
+            &[],
+            &["separated"],
+        ),
+        // a range starting at an instant reports it first
+        (
+            &["--range", "-1", "0"],
+            "-1".into(),
+            "-1".into(),
+            &["-1"],
+            &["inside"],
+        ),
+    ];
+    let touching = |t: &str| match t {
+        "-3" | "3" => "touching_externally",
+        _ => "touching_internally",
+    };
+    for (range, surfaces, solids, instants_in_range, intervals) in cases {
         let mut args = vec!["contact", "--json", a, b];
         args.extend_from_slice(range);
         let (code, out, err) = qsic(&args);
@@ -45,13 +86,31 @@ fn ellipsoids_approaching_json() {
                 )
             })
             .collect();
-        let want = [
-            ("\"-3\"", "touching_externally"),
-            ("\"-1\"", "touching_internally"),
-            ("\"1\"", "touching_internally"),
-            ("\"3\"", "touching_externally"),
-        ];
-        assert_eq!(instants, want.map(|(t, r)| (t.to_string(), r.to_string())));
+        let want: Vec<(String, String)> = instants_in_range
+            .iter()
+            .map(|t| (format!("\"{t}\""), touching(t).to_string()))
+            .collect();
+        assert_eq!(instants, want, "{range:?}");
+        let relations: Vec<&str> = v["solids"]["intervals"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|i| i["relation"].as_str().unwrap())
+            .collect();
+        assert_eq!(relations, intervals, "{range:?}");
+        if let [_, t0, t1] = range {
+            let ends = &v["solids"]["intervals"];
+            assert_eq!(ends[0]["from"], *t0, "{range:?}");
+            let last = ends.as_array().unwrap().last().unwrap();
+            assert_eq!(
+                last["to"],
+                if *t1 == "inf" {
+                    Value::Null
+                } else {
+                    (*t1).into()
+                }
+            );
+        }
     }
 }
 
@@ -72,7 +131,7 @@ fn text_report_and_matrix_argument() {
     );
 }
 
-/// Bad input exits 1 naming the argument; usage errors exit 2.
+/// Bad input exits 1 naming the argument; usage errors (a bad or empty range too) exit 2.
 #[test]
 fn errors_name_the_argument() {
     let cases: [(&[&str], i32, &str); 4] = [
@@ -87,8 +146,8 @@ fn errors_name_the_argument() {
                 "2",
                 "1",
             ],
-            1,
-            "--range",
+            2,
+            "--range: invalid time range: the start 2 is above the end 1",
         ),
         (&["contact", "x^2"], 2, "B"),
     ];

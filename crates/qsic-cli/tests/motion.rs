@@ -88,7 +88,16 @@ fn range_restricts_and_reports_the_ends() {
     assert_eq!(intervals.len(), 3);
     assert_eq!(intervals[0]["from"], "-1");
     assert_eq!(intervals[2]["to"], "2");
-    for (args, needle) in [(["2", "1"], "above"), (["a", "1"], "--range T0")] {
+    for (args, needle) in [
+        (
+            ["2", "1"],
+            "--range: invalid time range: the start 2 is above the end 1",
+        ),
+        (
+            ["a", "1"],
+            "--range: invalid time range: the start is not a number",
+        ),
+    ] {
         let (code, _, err) = qsic(&["motion", "--range", args[0], args[1], FIXED, MOVING], "");
         assert_eq!(code, Some(2), "{args:?}");
         assert!(err.contains(needle), "{err}");

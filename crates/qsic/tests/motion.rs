@@ -27,10 +27,12 @@ fn matrix(v: &Value) -> MovingMatrix {
     moving_matrix_from_rows(&rows).unwrap()
 }
 
-/// A polynomial in `t` read through the moving-quadric reader (as the coefficient of `x²`).
+/// A polynomial in `t` with integer coefficients, read as a rational function of `t`.
 fn poly_in_t(text: &str) -> Poly {
-    let m = moving_matrix_from_polynomial(&format!("({text})*x^2")).unwrap();
-    m.numerators()[0][0].clone()
+    let f = qsic::io::parse_rational_function(text, &[qsic::io::Variable::T]).unwrap();
+    let t = qsic::io::Variable::T.index();
+    let coefficients = f.numerator().to_univariate(t).unwrap();
+    Poly::new(coefficients.into_iter().map(|c| c.into_parts().0).collect())
 }
 
 /// The recorded type of an instant or interval.

@@ -167,7 +167,7 @@ fn check_against_entries(name: &str, rows: &[Vec<String>], m: &MovingMatrix) -> 
             for j in 0..4 {
                 assert_eq!(at[i][j], values[i][j], "{name}: entry ({i},{j}) at t = {t}");
                 assert_eq!(
-                    m.numerators()[i][j].eval_rational(&t),
+                    m.numerators()[i][j].eval_rational(&t) * m.factor().eval_rational(&t),
                     &values[i][j] * m.denominator().eval_rational(&t),
                     "{name}: numerator ({i},{j}) at t = {t}"
                 );

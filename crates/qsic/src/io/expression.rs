@@ -196,9 +196,15 @@ fn normalize(n: MPoly, d: Option<MPoly>) -> (MPoly, Option<MPoly>) {
 /// a + b, a - b                 left-associative
 /// a * b, a / b, a b            left-associative; juxtaposition before a variable or '('
 /// +a, -a                       prefix signs: -x^2 is -(x^2), -x*y is (-x)*y
-/// a^n, a**n                    n a non-negative integer literal, at most MAX_POWER_EXPONENT;
-///                              chained powers x^2^2 are refused as ambiguous
+/// a^n, a**n                    n an integer literal of absolute value at most
+///                              MAX_POWER_EXPONENT, written 2, -2, (-2) or (+2); chained
+///                              powers x^2^2 are refused as ambiguous
 /// ```
+///
+/// A negative power is a division: `t^-2` and `t**(-2)` are `1/t^2`, `(1+t)^-1` is
+/// `1/(1+t)`, for any base that may be divided by (of [`parse_rational_function`], any
+/// nonzero one; of a moving quadric, an expression in `t`; of a quadric, a number), within
+/// the same limits as a positive power.
 ///
 /// Atoms are numbers (unsigned numerals as in [`parse_number`](super::parse_number):
 /// `3`, `0.25`, `1e-3`), variables (`x y z w t u`, and `λ` or `lambda`, those of
@@ -208,7 +214,7 @@ fn normalize(n: MPoly, d: Option<MPoly>) -> (MPoly, Option<MPoly>) {
 ///
 /// # Errors
 /// - [`Error::Syntax`] with the 1-based character column for malformed input and for a
-///   division by an expression that is identically zero (`1/(t-t)`);
+///   division by an expression that is identically zero (`1/(t-t)`, `0^-1`);
 /// - [`Error::UnknownVariable`] for a name that is not in `allowed`;
 /// - [`Error::Limit`] beyond the bounds of [`crate::limits`]: input length, digits,
 ///   decimal and power exponents, nesting, degree ([`MAX_DEGREE`], checked before each
@@ -587,7 +593,8 @@ impl Parser<'_> {
         Ok(value)
     }
 
-    /// An atom, then optionally `^n`.
+    /// An atom, then optionally `^n`; a negative `n` divides 1 by `atom^|n|` (so only a
+    /// base the grammar may divide by, and never zero).
     fn power(&mut self) -> Result<Value, Error> {
         let first = self.pos;
         let base = self.atom()?;
@@ -595,16 +602,52 @@ impl Parser<'_> {
             return Ok(base);
         }
         self.advance();
+        let column = self.peek().column;
+        let (negative, n) = self.exponent()?;
+        if matches!(self.peek().tok, Tok::Power) {
+            return Err(Self::syntax(
+                self.peek().column,
+                "chained powers are ambiguous; use parentheses, as in '(x^2)^2'",
+            ));
+        }
+        let value = self.pow(base, n, first)?;
+        if !negative {
+            return Ok(value);
+        }
+        let one = Value::polynomial(MPoly::one());
+        self.div(one, value, column, first).map_err(|e| match e {
+            Error::Syntax { column, message } => Error::Syntax {
+                column,
+                message: format!("a negative power is a division: {message}"),
+            },
+            e => e,
+        })
+    }
+
+    /// The exponent after `^`: an integer literal, `-` and one, or either in parentheses
+    /// with an optional sign (`2`, `-2`, `(-2)`, `(+2)`); whether it is negative, and its
+    /// absolute value, at most [`MAX_POWER_EXPONENT`].
+    fn exponent(&mut self) -> Result<(bool, u32), Error> {
+        let open = matches!(self.peek().tok, Tok::Open).then(|| self.peek().column);
+        if open.is_some() {
+            self.advance();
+        }
+        let mut negative = false;
+        match self.peek().tok {
+            Tok::Minus => {
+                negative = true;
+                self.advance();
+            }
+            Tok::Plus if open.is_some() => self.advance(),
+            _ => {}
+        }
         let t = self.peek();
         let raw = &self.text[t.start..t.end];
         let column = t.column;
         if !matches!(t.tok, Tok::Number(_)) || !raw.bytes().all(|b| b.is_ascii_digit()) {
             return Err(Self::syntax(
                 column,
-                format!(
-                    "the exponent must be a non-negative integer, found {}",
-                    self.describe()
-                ),
+                format!("the exponent must be an integer, found {}", self.describe()),
             ));
         }
         let digits = raw.trim_start_matches('0');
@@ -619,13 +662,19 @@ impl Parser<'_> {
             }
         };
         self.advance();
-        if matches!(self.peek().tok, Tok::Power) {
-            return Err(Self::syntax(
-                self.peek().column,
-                "chained powers are ambiguous; use parentheses, as in '(x^2)^2'",
-            ));
+        if let Some(open) = open {
+            if !matches!(self.peek().tok, Tok::Close) {
+                return Err(Self::syntax(
+                    self.peek().column,
+                    format!(
+                        "expected ')' to close the '(' at column {open}, found {}",
+                        self.describe()
+                    ),
+                ));
+            }
+            self.advance();
         }
-        self.pow(base, n, first)
+        Ok((negative, n))
     }
 
     fn atom(&mut self) -> Result<Value, Error> {
@@ -942,6 +991,14 @@ mod tests {
             ("1e-1*w + 2.5e1/u", q(7, 10) + q(25, 4)),
             ("- -x*-y", q(-6, 1)),
             ("x/(t+1) - x/(t+1)", q(0, 1)),
+            // negative powers: x = 2, t = -1, u = 4
+            ("x**(-2)", q(1, 4)),
+            ("x^-2", q(1, 4)),
+            ("(1+u)^-1", q(1, 5)),
+            ("2^(-3)*u", q(1, 2)),
+            ("(x/u)^(-2)", q(4, 1)),
+            ("t^(+3) + t^(-3)", q(-2, 1)),
+            ("x^-0", q(1, 1)),
         ];
         for (text, want) in table {
             assert_eq!(read_all(text).eval(&at).as_ref(), Some(want), "{text:?}");
@@ -998,17 +1055,28 @@ mod tests {
             ("t 2", 3, "expected an operator before the number '2'"),
             ("1/(t-t)", 2, "division by zero"),
             ("λ + 1/(x - x)^2", 6, "division by zero"),
-            (
-                "t^t",
-                3,
-                "the exponent must be a non-negative integer, found 't'",
-            ),
+            ("t^t", 3, "the exponent must be an integer, found 't'"),
             ("t^2^2", 4, "chained powers are ambiguous"),
+            ("t^-2^2", 5, "chained powers are ambiguous"),
             ("t ? 1", 3, "unexpected character '?'"),
+            ("λ ** - -1", 8, "the exponent must be an integer, found '-'"),
+            ("t^+2", 3, "the exponent must be an integer, found '+'"),
+            ("t^(-t)", 5, "the exponent must be an integer, found 't'"),
+            ("t^(-2", 6, "expected ')' to close the '(' at column 3"),
             (
-                "λ ** -1",
-                6,
-                "the exponent must be a non-negative integer, found '-'",
+                "t^(2.5)",
+                4,
+                "the exponent must be an integer, found the number '2.5'",
+            ),
+            (
+                "0^(-1)",
+                3,
+                "a negative power is a division: division by zero",
+            ),
+            (
+                "(t - t)^-2",
+                9,
+                "a negative power is a division: division by zero",
             ),
         ];
         for (text, column, want) in table {
@@ -1139,7 +1207,7 @@ mod tests {
         Var(usize),
         Neg(Box<Tree>),
         Bin(Box<Tree>, char, Box<Tree>),
-        Pow(Box<Tree>, u32),
+        Pow(Box<Tree>, i32),
     }
 
     impl Tree {
@@ -1151,7 +1219,8 @@ mod tests {
                 Tree::Neg(a) => format!("-({})", a.text()),
                 Tree::Bin(a, '·', b) => format!("({})({})", a.text(), b.text()),
                 Tree::Bin(a, op, b) => format!("({}) {op} ({})", a.text(), b.text()),
-                Tree::Pow(a, n) => format!("({})**{n}", a.text()),
+                Tree::Pow(a, n) if *n < 0 && n % 2 == 0 => format!("({})**({n})", a.text()),
+                Tree::Pow(a, n) => format!("({})^{n}", a.text()),
             }
         }
 
@@ -1171,7 +1240,18 @@ mod tests {
                         _ => a * b,
                     }
                 }
-                Tree::Pow(a, n) => a.eval(at)?.pow(*n as isize),
+                Tree::Pow(a, n) => {
+                    let a = a.eval(at)?;
+                    if *n < 0 && a.is_zero() {
+                        return None;
+                    }
+                    let p = a.pow(n.unsigned_abs() as isize);
+                    if *n < 0 {
+                        RBig::ONE / p
+                    } else {
+                        p
+                    }
+                }
             })
         }
     }
@@ -1190,7 +1270,7 @@ mod tests {
                     inner.clone()
                 )
                     .prop_map(|(a, op, b)| Tree::Bin(Box::new(a), op, Box::new(b))),
-                (inner, 0u32..4).prop_map(|(a, n)| Tree::Pow(Box::new(a), n)),
+                (inner, -3i32..4).prop_map(|(a, n)| Tree::Pow(Box::new(a), n)),
             ]
         })
     }
@@ -1210,7 +1290,9 @@ mod tests {
                     // Printing and reading again gives the same quotient.
                     prop_assert_eq!(read_all(&f.to_string()), f);
                 }
-                Err(Error::Syntax { message, .. }) => prop_assert_eq!(message, "division by zero"),
+                Err(Error::Syntax { message, .. }) => {
+                    prop_assert!(message.ends_with("division by zero"), "{}: {}", text, message)
+                }
                 Err(Error::Limit { .. }) => {}
                 Err(e) => prop_assert!(false, "{}: {}", text, e),
             }

@@ -3,13 +3,14 @@
 //! | entry point | reads |
 //! |---|---|
 //! | [`parse_number`] | one rational number: `-7`, `3/4`, `0.1`, `2.5e-3` |
-//! | [`parse_quadric`] | a polynomial of degree 2 in `x, y, z, w`, affine or homogeneous |
+//! | [`parse_quadric`] | a polynomial of degree 2 in `x, y, z, w`, affine or homogeneous; one of degree 1 (a plane) as its double plane |
+//! | [`parse_quadric_or_plane`] | the same, and whether the polynomial was a plane |
 //! | [`quadric_from_rows`] | a 4×4 matrix of number strings |
 //! | [`quadric_from_array`] | the same as an array `[[S; 4]; 4]` |
 //! | [`quadric_from_f64_rows`] | a 4×4 matrix of `f64`, each converted exactly |
 //! | [`parse_rational_function`] | an expression in chosen variables with any division: a quotient of polynomials |
 //! | [`moving_matrix_from_rows`] | a 4×4 matrix of rational functions of `t`: a [`MovingMatrix`] over one denominator |
-//! | [`moving_matrix_from_polynomial`] | a quadratic form in `x, y, z, w` with coefficients rational in `t`: the same |
+//! | [`moving_matrix_from_polynomial`] | a quadratic form in `x, y, z, w` with coefficients rational in `t` (a linear one as its double plane): the same |
 //!
 //! Polynomials and rational functions are read by one Pratt parser (`expression`); the
 //! quadric reader is that parser in a grammar of degree ≤ 2 in `x, y, z, w`, with a
@@ -29,7 +30,9 @@ pub use expression::{parse_rational_function, RationalFunction, Variable, VARIAB
 pub use moving::{moving_matrix_from_polynomial, moving_matrix_from_rows, MovingMatrix};
 pub use number::parse_number;
 use number::parse_number_small;
-pub use polynomial::{parse_plane, parse_quadric, parse_quadric_big_route, plane_as_quadric};
+pub use polynomial::{
+    parse_plane, parse_quadric, parse_quadric_big_route, parse_quadric_or_plane, plane_as_quadric,
+};
 
 use crate::error::Error;
 use crate::quadric::{Quadric, SmallRational};

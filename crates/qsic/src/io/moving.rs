@@ -3,7 +3,7 @@
 
 use super::expression::{read, Grammar, RationalFunction, Variable};
 use super::number::excerpt;
-use super::polynomial::quadratic_part;
+use super::polynomial::{form_in_xyzw, square_of_plane, XyzwForm};
 use super::{check_shape, parse_rational_function};
 use crate::error::Error;
 use crate::limits::{MAX_DEGREE, MAX_MOVING_MATRIX_BITS};
@@ -13,28 +13,37 @@ use dashu_ratio::RBig;
 use qsic_algebra::mpoly::{bits, MPoly};
 use qsic_algebra::Poly;
 
-/// A moving quadric `A(t) = M(t) / d(t)`: a symmetric matrix `M` of polynomials in `t`
-/// and one common denominator `d`, in canonical form.
+/// A moving quadric `A(t) = g(t)·M(t) / d(t)`: a symmetric matrix `M` of polynomials in `t`
+/// without a common factor, and the scalar `g/d` that the entries of `A` share, in
+/// canonical form.
 ///
-/// Canonical: integer coefficients with no common factor among all 17 polynomials,
-/// `d` with a positive leading coefficient, and no common root of `d` and all the `Mᵢⱼ`
-/// (`gcd(d, M₀₀, …, M₃₃) = 1`); so two moving matrices are equal exactly when they are
-/// the same function of `t`. `d` is then the lcm of the reduced denominators of the
-/// entries: `M` is `A` with its denominators cleared.
+/// Canonical: `M` has integer coefficients and its 16 entries have no common factor in
+/// `ℤ[t]` (no common root, no common integer content); `g` and `d` are coprime integer
+/// polynomials (content included) with positive leading coefficients; so two moving
+/// matrices are equal exactly when they are the same function of `t`, and every reader
+/// clears a factor common to all entries the same way (`t·x² + t·y² − t` is the quadric
+/// `x² + y² − w²` at every `t`, `t = 0` included).
 ///
 /// The quadric at `t` is `M(t)` ([`MovingMatrix::quadric_at`]): the same surface as
-/// `A(t)` where `d(t) ≠ 0` (scaled by `d(t)`, whose sign may flip the inertia), and its
-/// limit where `d(t) = 0`.
+/// `A(t)` where `g(t)/d(t)` is defined and nonzero (scaled by `d(t)/g(t)`, whose sign may
+/// flip the inertia), and its limit where `g(t) = 0` or `d(t) = 0`; it is never the zero
+/// form.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct MovingMatrix {
     numerators: [[Poly; 4]; 4],
+    factor: Poly,
     denominator: Poly,
 }
 
 impl MovingMatrix {
-    /// The symmetric matrix `M(t)` of numerators.
+    /// The symmetric matrix `M(t)`, its entries without a common factor.
     pub fn numerators(&self) -> &[[Poly; 4]; 4] {
         &self.numerators
+    }
+
+    /// The factor `g(t)` common to all the entries of `A(t)·d(t)`.
+    pub fn factor(&self) -> &Poly {
+        &self.factor
     }
 
     /// The common denominator `d(t)`.
@@ -42,22 +51,23 @@ impl MovingMatrix {
         &self.denominator
     }
 
-    /// `A(t) = M(t)/d(t)` at a rational `t`, or `None` where `d(t) = 0`.
+    /// `A(t) = g(t)·M(t)/d(t)` at a rational `t`, or `None` where `d(t) = 0`.
     pub fn at(&self, t: &RBig) -> Option<[[RBig; 4]; 4]> {
         let d = self.denominator.eval_rational(t);
         if d.is_zero() {
             return None;
         }
+        let scale = self.factor.eval_rational(t) / d;
         Some(std::array::from_fn(|i| {
-            std::array::from_fn(|j| self.numerators[i][j].eval_rational(t) / &d)
+            std::array::from_fn(|j| self.numerators[i][j].eval_rational(t) * &scale)
         }))
     }
 
     /// The quadric `M(t)` at a rational `t`.
     ///
     /// # Errors
-    /// [`Error::ZeroQuadric`] at a common root of all the entries of `M` (where `A(t)` is
-    /// zero too).
+    /// None in practice: the entries of `M` have no common root. [`Error::ZeroQuadric`]
+    /// would name that case.
     pub fn quadric_at(&self, t: &RBig) -> Result<Quadric, Error> {
         Quadric::from_matrix(std::array::from_fn(|i| {
             std::array::from_fn(|j| self.numerators[i][j].eval_rational(t))
@@ -90,7 +100,9 @@ impl MovingMatrix {
 /// let rows = [[a, "0", "0", b], ["0", "4", "0", "0"], ["0", "0", "4", "0"], [b, "0", "0", "0"]];
 /// let m = moving_matrix_from_rows(&rows.map(|r| r.to_vec()))?;
 /// assert_eq!(m.denominator(), &Poly::from_i64s(&[16, -24, 9]));
-/// assert_eq!(m.numerators()[0][3], Poly::from_i64s(&[8, -6])); // −2(3t − 4)
+/// // The factor 2 common to all entries of (3t − 4)²·A comes out: A = 2·M/(3t − 4)².
+/// assert_eq!(m.factor(), &Poly::from_i64s(&[2]));
+/// assert_eq!(m.numerators()[0][3], Poly::from_i64s(&[4, -3])); // −(3t − 4)
 /// assert_eq!(m.at(&RBig::from(2)).map(|a| a[0][0].clone()), Some(RBig::ONE));
 /// assert!(m.at(&RBig::from_parts(4.into(), 3u8.into())).is_none()); // a pole
 /// # Ok::<(), qsic::error::Error>(())
@@ -168,13 +180,15 @@ pub fn moving_matrix_from_rows<S: AsRef<str>>(rows: &[Vec<S>]) -> Result<MovingM
 /// grammar as [`parse_rational_function`] with the variables `x, y, z, w, t`, divisions
 /// by expressions in `t` only. As in [`parse_quadric`](super::parse_quadric), a form
 /// that uses `w` must be homogeneous of degree 2 in `x, y, z, w`; one that does not is
-/// an affine equation in `x, y, z`, homogenised with `w`.
+/// an affine equation in `x, y, z`, homogenised with `w`; and a form of degree 1 in
+/// `x, y, z, w` (`z - t`, `x - t*w`) is a moving plane `ℓ(t)`, read as its double plane
+/// `ℓ(t)²`.
 ///
 /// # Errors
 /// - as [`parse_rational_function`] ([`Error::Syntax`] for a division by an expression in
 ///   `x, y, z, w`);
 /// - [`Error::Degree`] naming a term of degree above 2 in `x, y, z, w`, or, in a form
-///   using `w`, not exactly 2;
+///   using `w`, of another degree than the others;
 /// - [`Error::Limit`] if the coefficients have more than [`MAX_MOVING_MATRIX_BITS`] bits;
 /// - [`Error::ZeroQuadric`] if the form is zero.
 ///
@@ -209,13 +223,22 @@ pub fn moving_matrix_from_polynomial(text: &str) -> Result<MovingMatrix, Error> 
         return Err(Error::ZeroQuadric);
     }
     let t = Variable::T.index();
-    let form = quadratic_part(f.numerator())?
+    // A plane ℓ(t) = n/d is the double plane ℓ(t)² = n²/d².
+    let (form, denominator) = match form_in_xyzw(f.numerator())? {
+        XyzwForm::Quadric(form) => (form.into_owned(), f.denominator().clone()),
+        XyzwForm::Plane(l) => {
+            let (n, d) = (square_of_plane(&l)?, f.denominator() * f.denominator());
+            check_moving_size(size_in_bits(&n) + size_in_bits(&d))?;
+            (n, d)
+        }
+    };
+    let form = form
         .quadratic_form(&[0, 1, 2, 3])
         .ok_or_else(|| Error::Degree {
             message: "a quadric is a form of degree 2".into(),
         })?;
     let numerators = std::array::from_fn(|i| std::array::from_fn(|j| dense(&form[i][j], t)));
-    Ok(canonical(numerators, integer_poly(f.denominator(), t)))
+    Ok(canonical(numerators, integer_poly(&denominator, t)))
 }
 
 /// Bits of all the coefficients of `p`.
@@ -260,9 +283,9 @@ fn rational_times(a: &[RBig], b: &Poly) -> Vec<RBig> {
     out
 }
 
-/// The canonical [`MovingMatrix`] of `m / d` (see there), for `d ≠ 0`.
+/// The canonical [`MovingMatrix`] of `m / d` (see there), for `m ≠ 0` and `d ≠ 0`.
 fn canonical(m: [[Vec<RBig>; 4]; 4], d: Poly) -> MovingMatrix {
-    // Clear the denominators of the coefficients of M.
+    // Clear the denominators of the coefficients of m: A = M₀/d₀.
     let mut lcm = UBig::ONE;
     for c in m.iter().flatten().flatten() {
         let den = c.denominator();
@@ -281,40 +304,53 @@ fn canonical(m: [[Vec<RBig>; 4]; 4], d: Poly) -> MovingMatrix {
     };
     let mut numerators: [[Poly; 4]; 4] =
         std::array::from_fn(|i| std::array::from_fn(|j| integer(&m[i][j])));
-    let mut denominator = d.scale(&lcm);
-    // Common roots of d and all the entries.
-    let mut g = denominator.primitive_part();
+    let denominator = d.scale(&lcm);
+    // g: the primitive gcd of the entries (positive leading coefficient), and their
+    // common integer content c, divided out of M₀: A = c·g·M / d₀.
+    let mut g = Poly::zero();
+    let mut content = IBig::ZERO;
     for p in numerators.iter().flatten() {
-        if g.degree() == Some(0) {
-            break;
-        }
-        if !p.is_zero() {
+        if !(g.degree() == Some(0) && content.is_one()) {
             g = g.gcd(p);
+            content = qsic_algebra::int_gcd(&content, &p.content());
         }
     }
-    if g.degree().unwrap_or(0) > 0 {
-        // g is primitive and divides each of them in ℚ[t], so in ℤ[t] (Gauss).
-        denominator = denominator.div_exact(&g).unwrap_or(denominator);
+    // m ≠ 0: g is a nonzero primitive polynomial and c a positive integer.
+    if g.degree().unwrap_or(0) > 0 || !content.is_one() {
+        let divisor = g.scale(&content);
         for p in numerators.iter_mut().flatten() {
-            *p = p.div_exact(&g).unwrap_or_else(|| p.clone());
+            // Gauss: the primitive g divides each entry in ℤ[t], and c its content.
+            *p = p.div_exact(&divisor).unwrap_or_else(|| p.clone());
         }
     }
-    // The common content of all, with the sign of the leading coefficient of d.
-    let mut content = denominator.content();
-    for p in numerators.iter().flatten() {
-        content = qsic_algebra::int_gcd(&content, &p.content());
-    }
+    // Cancel the roots g shares with d₀, then the integer contents of c·g and d₀, and
+    // give d a positive leading coefficient (the sign goes into M).
+    let shared = g.gcd(&denominator);
+    let (g, denominator) = if shared.degree().unwrap_or(0) > 0 {
+        (
+            g.div_exact(&shared).unwrap_or(g),
+            denominator.div_exact(&shared).unwrap_or(denominator),
+        )
+    } else {
+        (g, denominator)
+    };
+    let mut e = denominator.content();
     if denominator.leading() < IBig::ZERO {
-        content = -content;
+        e = -e;
     }
-    if !content.is_one() {
-        denominator = divide_exactly(&denominator, &content);
+    let k = qsic_algebra::int_gcd(&content, &e);
+    let (p, q) = (&content / &k, &e / &k);
+    let negative = q < IBig::ZERO;
+    let (p, q) = if negative { (p, -q) } else { (p, q) };
+    let denominator = divide_exactly(&denominator, &e).scale(&q);
+    if negative {
         for p in numerators.iter_mut().flatten() {
-            *p = divide_exactly(p, &content);
+            *p = -&*p;
         }
     }
     MovingMatrix {
         numerators,
+        factor: g.scale(&p),
         denominator,
     }
 }
@@ -389,6 +425,39 @@ mod tests {
         assert_eq!(c.denominator(), &Poly::from_i64s(&[6]));
         assert_eq!(c.numerators()[0][0], Poly::from_i64s(&[3]));
         assert_eq!(c.numerators()[0][1], Poly::from_i64s(&[2]));
+    }
+
+    /// A factor common to all entries is cleared by every reader, so the quadric at one of
+    /// its roots is the limit, never the zero form; `A(t)` keeps it.
+    #[test]
+    fn a_factor_common_to_all_entries_is_cleared() {
+        let m = moving_matrix_from_polynomial("t*x^2 + t*y^2 + t*z^2 - t").expect("valid");
+        let sphere = moving_matrix_from_polynomial("x^2 + y^2 + z^2 - 1").expect("valid");
+        assert_eq!(m.numerators(), sphere.numerators());
+        assert_eq!(m.factor(), &Poly::from_i64s(&[0, 1]));
+        assert_eq!(m.denominator(), &Poly::from_i64s(&[1]));
+        assert_eq!(m.quadric_at(&RBig::ZERO), sphere.quadric_at(&RBig::ZERO));
+        assert_eq!(m.at(&RBig::ZERO).map(|a| a[0][0].clone()), Some(RBig::ZERO));
+        assert_eq!(m.at(&q(3, 1)).map(|a| a[3][3].clone()), Some(q(-3, 1)));
+        let rows = moving_matrix_from_rows(&rows([
+            ["t", "0", "0", "0"],
+            ["0", "t", "0", "0"],
+            ["0", "0", "t", "0"],
+            ["0", "0", "0", "-t"],
+        ]));
+        assert_eq!(rows, Ok(m));
+        // −2(t² − 1)/(3(t − 1)): the factor −2(t + 1)/3 and the sign in M, d positive.
+        let m = moving_matrix_from_polynomial("(2 - 2t^2)/(3t - 3)*(x^2 - y^2)").expect("valid");
+        assert_eq!(m.factor(), &Poly::from_i64s(&[2, 2]));
+        assert_eq!(m.denominator(), &Poly::from_i64s(&[3]));
+        assert_eq!(m.numerators()[0][0], Poly::from_i64s(&[-1]));
+        assert_eq!(m.at(&q(2, 1)).map(|a| a[0][0].clone()), Some(q(-2, 1)));
+        // (t − 1)²·A over (t − 1): the shared root cancels, the rest stays in the factor.
+        let m = moving_matrix_from_polynomial("(t-1)^2/(t-1)/(t+1)*x^2").expect("valid");
+        assert_eq!(
+            (m.factor(), m.denominator()),
+            (&Poly::from_i64s(&[-1, 1]), &Poly::from_i64s(&[1, 1]))
+        );
     }
 
     #[test]
@@ -476,6 +545,23 @@ mod tests {
         let affine = moving_matrix_from_polynomial("x^2 + t*x").expect("an affine form");
         assert_eq!(affine.numerators()[0][3], Poly::from_i64s(&[0, 1]));
         assert_eq!(affine.numerators()[0][0], Poly::from_i64s(&[2]));
+        // Degree 1 in x, y, z, w: the double plane ℓ(t)², affine or homogeneous.
+        let square = moving_matrix_from_polynomial("(z - t)^2").expect("a double plane");
+        for plane in ["z - t", "z - t*w", "(z - t)*(1 + t^2)/(1 + t^2)"] {
+            assert_eq!(
+                moving_matrix_from_polynomial(plane),
+                Ok(square.clone()),
+                "{plane}"
+            );
+        }
+        assert_eq!(
+            moving_matrix_from_polynomial("x/(1 - t)"),
+            moving_matrix_from_polynomial("x^2/(1 - t)^2")
+        );
+        assert!(matches!(
+            moving_matrix_from_polynomial("x + t*w + 1"),
+            Err(Error::Degree { .. })
+        ));
         match moving_matrix_from_polynomial("x^2 + y/(x - t)") {
             Err(Error::Syntax { column: 8, message }) => assert_eq!(
                 message,

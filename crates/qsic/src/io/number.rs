@@ -3,7 +3,7 @@
 //! [`scan_numeral`] reads one unsigned numeral and is shared with the polynomial
 //! reader; [`parse_number`] adds the sign and the fraction bar.
 
-use crate::error::Error;
+use crate::error::{shorten_numbers, Error};
 use crate::limits::{MAX_DECIMAL_EXPONENT, MAX_NUMBER_DIGITS};
 use crate::quadric::SmallRational;
 use dashu_int::{IBig, UBig};
@@ -378,11 +378,13 @@ pub(crate) fn scan_numeral(s: &str) -> Result<(Numeral<'_>, usize), NumeralError
     ))
 }
 
-/// The text shortened to at most 40 characters, for error messages.
+/// The text for an error message: long numbers shortened ([`shorten_numbers`]), then cut
+/// to at most 40 characters.
 pub(crate) fn excerpt(text: &str) -> String {
     const MAX: usize = 40;
+    let text = shorten_numbers(text);
     match text.char_indices().nth(MAX) {
-        None => text.to_string(),
+        None => text.into_owned(),
         Some((cut, _)) => format!("{}…", &text[..cut]),
     }
 }
@@ -508,6 +510,9 @@ mod tests {
         assert_eq!(excerpt("short"), "short");
         let long = "é".repeat(50);
         assert_eq!(excerpt(&long).chars().count(), 41);
+        // a long number keeps its ends and its digit count, not its first 40 digits
+        let number = format!("{}/0", "1234567890".repeat(300));
+        assert_eq!(excerpt(&number), "1234567890…4567890 (3000 digits)/0");
     }
 
     /// The machine reader must give the value of the exact reader, or decline.

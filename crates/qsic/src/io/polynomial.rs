@@ -5,7 +5,7 @@
 use super::expression::{read, Grammar, Variable, VARIABLE_NAMES};
 use super::number::scan_numeral;
 use crate::error::Error;
-use crate::limits::MAX_INPUT_LEN;
+use crate::limits::{MAX_COEFFICIENT_BITS, MAX_INPUT_LEN};
 use crate::quadric::{Quadric, SmallRational};
 use dashu_ratio::RBig;
 use qsic_algebra::mpoly::{half, MPoly};
@@ -13,35 +13,43 @@ use std::borrow::Cow;
 
 /// Reads a quadric from a polynomial in `x, y, z, w` of degree at most 2.
 ///
-/// Two readings, decided on the expanded polynomial:
+/// Three readings, decided on the expanded polynomial:
 /// - if `w` occurs in a monomial with a nonzero coefficient, the polynomial is a
-///   *projective form* and every monomial must have degree exactly 2;
-/// - otherwise it is an *affine equation* in `x, y, z` of degree ≤ 2,
-///   homogenized with `w`: a constant `c` becomes `c*w^2`, a linear term
-///   `a*x` becomes `a*x*w`. A polynomial without variables such as `5` thus
-///   reads as `5*w^2`, the plane at infinity counted twice.
+///   *projective form* and every monomial must have the same degree, 2 (a quadric) or
+///   1 (a plane, below);
+/// - otherwise, of degree 2 or 0, it is an *affine equation* in `x, y, z`, homogenized
+///   with `w`: a constant `c` becomes `c*w^2`, a linear term `a*x` becomes `a*x*w`. A
+///   polynomial without variables such as `5` thus reads as `5*w^2`, the plane at infinity
+///   counted twice;
+/// - a polynomial of degree exactly 1, affine (`z - 1`, homogenized to `z - w`) or a linear
+///   form using `w` (`z - w`), is a *plane* `ℓ = 0`, read as its double plane `ℓ²`: the
+///   pencil with a quadric `Q` describes the section `Q ∩ {ℓ = 0}` counted twice (never the
+///   plane pair `ℓ·w` with the plane at infinity that homogenizing `ℓ` to degree 2 would
+///   give). [`parse_quadric_or_plane`] also says whether the text was a plane.
 ///
-/// The matrix `A` of the result satisfies `XᵀAX = p(X)`: `A[i][i]` is the
-/// coefficient of `vᵢ²` and `A[i][j] = A[j][i]` half that of `vᵢvⱼ`.
+/// The matrix `A` of the result satisfies `XᵀAX = p(X)` (`ℓ(X)²` for a plane): `A[i][i]`
+/// is the coefficient of `vᵢ²` and `A[i][j] = A[j][i]` half that of `vᵢvⱼ`.
 ///
 /// # Grammar
 /// That of [`parse_rational_function`](super::parse_rational_function), with the usual
 /// precedence (power over sign over product over sum):
 ///
 /// ```text
-/// sum     := term (('+' | '-') term)*
-/// term    := sign* power (('*' | '/' | ε) sign* power)*     ε: juxtaposition before a variable or '('
-/// power   := atom (('^' | '**') integer)?
-/// atom    := number | 'x' | 'y' | 'z' | 'w' | '(' sum ')'
+/// sum      := term (('+' | '-') term)*
+/// term     := sign* power (('*' | '/' | ε) sign* power)*     ε: juxtaposition before a variable or '('
+/// power    := atom (('^' | '**') exponent)?
+/// exponent := integer | '-' integer | '(' ('+' | '-')? integer ')'
+/// atom     := number | 'x' | 'y' | 'z' | 'w' | '(' sum ')'
 /// ```
 ///
 /// Variables are lower case. Numbers are unsigned numerals as in
 /// [`parse_number`](super::parse_number) (`3`, `0.25`, `1e-3`); a fraction is
-/// a division (`1/2*x^2`), and only division by a nonzero number is allowed.
+/// a division (`1/2*x^2`), and only division by a nonzero number is allowed, so a
+/// negative power only of a nonzero number (`2^-1*x^2` is `x^2/2`; `x^-1` is an error).
 /// Juxtaposition is a product of the same precedence as `*`, so `2x^2` is
 /// `2*x^2`, `3 x*y` is `3*x*y`, `(x+1)(x-1)` a product, and `1/2x` is
 /// `(1/2)*x`; a number after a factor (`x 2`) is an error. A sign binds looser
-/// than a power: `-x^2` is `-(x^2)`. Exponents are integers from 0 to
+/// than a power: `-x^2` is `-(x^2)`. Exponents are integers of absolute value at most
 /// [`MAX_POWER_EXPONENT`](crate::limits::MAX_POWER_EXPONENT); chained powers `x^2^2` are refused as ambiguous.
 ///
 /// Parentheses are expanded exactly. A product or power whose degree exceeds 2
@@ -54,10 +62,10 @@ use std::borrow::Cow;
 ///   division by zero or by a non-constant expression;
 /// - [`Error::UnknownVariable`] for any name but `x, y, z, w` (including `X`);
 /// - [`Error::Degree`] for a product or power of degree above 2, or, in a form
-///   using `w`, a monomial of degree 0 or 1;
+///   using `w`, monomials of different degrees (`x^2 + w`, `x + w + 1`);
 /// - [`Error::ZeroQuadric`] if the polynomial expands to zero (`x^2 - x^2`);
 /// - [`Error::Limit`] beyond the bounds of [`crate::limits`] (input length,
-///   digits, exponents, nesting, coefficient size).
+///   digits, exponents, nesting, coefficient size, also of the square of a plane).
 ///
 /// # Examples
 /// ```
@@ -72,10 +80,34 @@ use std::borrow::Cow;
 /// assert_eq!(q.entry(0, 1), &1.into());
 /// assert_eq!(q.entry(3, 3), &2.into());
 ///
+/// // A plane is its double plane, affine or homogeneous.
+/// assert_eq!(parse_quadric("z - 1")?, parse_quadric("(z - 1)^2")?);
+/// assert_eq!(parse_quadric("z - w")?, parse_quadric("(z - 1)^2")?);
+///
 /// assert!(parse_quadric("x^2 + w").is_err()); // a form using w must be homogeneous
+/// assert!(parse_quadric("x + w + 1").is_err());
 /// # Ok::<(), qsic::error::Error>(())
 /// ```
 pub fn parse_quadric(text: &str) -> Result<Quadric, Error> {
+    parse_quadric_or_plane(text).map(|(q, _)| q)
+}
+
+/// [`parse_quadric`], and whether the polynomial had degree 1: a plane, read as its double
+/// plane (`affine.surfaces` of the CLI names such a quadric `plane`).
+///
+/// # Errors
+/// As [`parse_quadric`].
+///
+/// # Examples
+/// ```
+/// use qsic::io::parse_quadric_or_plane;
+/// let (q, plane) = parse_quadric_or_plane("2x - 3")?;
+/// assert!(plane);
+/// assert_eq!(q.to_polynomial_string(), "4*x^2 - 12*x*w + 9*w^2");
+/// assert!(!parse_quadric_or_plane("(2x - 3)^2")?.1);
+/// # Ok::<(), qsic::error::Error>(())
+/// ```
+pub fn parse_quadric_or_plane(text: &str) -> Result<(Quadric, bool), Error> {
     if text.len() > MAX_INPUT_LEN {
         return Err(Error::Limit {
             what: format!("{} bytes in a polynomial string", text.len()),
@@ -83,11 +115,12 @@ pub fn parse_quadric(text: &str) -> Result<Quadric, Error> {
         });
     }
     if text.len() <= MACHINE_READER_MAX_LEN {
+        // The machine reader declines planes: what it answers is a quadric.
         if let Some(q) = read_small(text) {
-            return Ok(q);
+            return Ok((q, false));
         }
     }
-    parse_quadric_big_route(text)
+    read_general(text)
 }
 
 /// [`parse_quadric`] without its machine-arithmetic reader: the general reader, which the
@@ -97,51 +130,53 @@ pub fn parse_quadric(text: &str) -> Result<Quadric, Error> {
 /// As [`parse_quadric`].
 #[doc(hidden)]
 pub fn parse_quadric_big_route(text: &str) -> Result<Quadric, Error> {
-    let grammar = Grammar {
-        variables: &[Variable::X, Variable::Y, Variable::Z, Variable::W],
-        denominator_variables: &[],
-        quadric: true,
-    };
-    quadric_from_poly(read(text, &grammar)?.numerator())
+    read_general(text).map(|(q, _)| q)
+}
+
+/// The quadric grammar of the expression reader: `x, y, z, w`, division by numbers only.
+const QUADRIC_GRAMMAR: Grammar<'static> = Grammar {
+    variables: &[Variable::X, Variable::Y, Variable::Z, Variable::W],
+    denominator_variables: &[],
+    quadric: true,
+};
+
+/// The general route: the expression reader, then [`quadric_from_poly`].
+fn read_general(text: &str) -> Result<(Quadric, bool), Error> {
+    quadric_from_poly(read(text, &QUADRIC_GRAMMAR)?.numerator())
 }
 
 /// Reads a plane `a·x + b·y + c·z + d·w = 0` from a polynomial of degree exactly 1: affine
 /// in `x, y, z` (`x + 2*y - 3`, the constant is `d`) or a linear form using `w`. `None` for
-/// a polynomial of degree 2 (a quadric: [`parse_quadric`] reads it) or 0.
+/// a polynomial of degree 2 (a quadric) or 0.
 ///
-/// A plane is not a quadric; [`plane_as_quadric`] gives the double plane `P²`, whose
-/// pencil with a quadric `Q` meets it in the section `Q ∩ P` counted twice. (Read by
-/// [`parse_quadric`], an affine degree-1 polynomial `ℓ` would be the plane pair `ℓ·w`, the
-/// plane at infinity included.)
+/// [`parse_quadric`] reads the same text as the double plane `P²` ([`plane_as_quadric`]
+/// of this plane), whose pencil with a quadric `Q` meets it in the section `Q ∩ P`
+/// counted twice.
 ///
 /// ```
-/// use qsic::io::{parse_plane, plane_as_quadric};
+/// use qsic::io::{parse_plane, parse_quadric, plane_as_quadric};
 /// let p = parse_plane("z - 1").unwrap().unwrap();
 /// assert_eq!(p, [0, 0, 1, -1].map(Into::into));
 /// assert_eq!(plane_as_quadric(&p).unwrap().to_polynomial_string(), "z^2 - 2*z*w + w^2");
+/// assert_eq!(plane_as_quadric(&p), parse_quadric("z - 1"));
 /// assert_eq!(parse_plane("x^2 - 1").unwrap(), None);
 /// ```
 ///
 /// # Errors
-/// As [`parse_quadric`] for text that is not a polynomial of degree at most 2.
+/// As [`parse_quadric`] for text that is not a polynomial of degree at most 2 (and for a
+/// linear form using `w` with a constant, `x + w + 1`).
 pub fn parse_plane(text: &str) -> Result<Option<[RBig; 4]>, Error> {
-    let grammar = Grammar {
-        variables: &[Variable::X, Variable::Y, Variable::Z, Variable::W],
-        denominator_variables: &[],
-        quadric: true,
-    };
-    let poly = read(text, &grammar)?.numerator().clone();
-    if poly.total_degree() != 1 || poly.is_zero() {
+    let poly = read(text, &QUADRIC_GRAMMAR)?.into_parts().0;
+    if poly.is_zero() {
         return Ok(None);
     }
-    let homogeneous = poly.uses(Variable::W.index());
+    let XyzwForm::Plane(l) = form_in_xyzw(&poly)? else {
+        return Ok(None);
+    };
     let mut plane: [RBig; 4] = Default::default();
-    for (monomial, c) in poly.terms() {
-        let e = monomial.exponents();
-        match (0..4).find(|&v| e[v] == 1) {
-            Some(v) => plane[v] = c.clone(),
-            None if homogeneous => return Ok(None),
-            None => plane[3] = c.clone(),
+    for (monomial, c) in l.terms() {
+        if let Some(v) = (0..4).find(|&v| monomial.exponents()[v] == 1) {
+            plane[v] = c.clone();
         }
     }
     Ok(Some(plane))
@@ -167,7 +202,7 @@ const MACHINE_READER_MAX_LEN: usize = 10_000;
 /// every coefficient fits an `i64` over a `u64`.
 ///
 /// `None` for anything else (parentheses, powers of numbers, unary signs after `*`, errors,
-/// the zero polynomial, overflow): [`parse_quadric_big_route`] then reads the text, and
+/// the zero polynomial, a plane — degree 1 —, overflow): [`parse_quadric_big_route`] then reads the text, and
 /// gives the error if there is one. Where it answers, the answer is that of the general
 /// reader (same grammar, exact arithmetic).
 fn read_small(text: &str) -> Option<Quadric> {
@@ -344,17 +379,19 @@ fn small_sum(a: SmallRational, b: SmallRational) -> Option<SmallRational> {
 /// The quadric of the expanded polynomial `acc` (homogenized as in [`quadric_from_poly`]),
 /// or `None` where that gives an error or a number overflows.
 fn small_quadric(acc: &[SmallRational; N]) -> Option<Quadric> {
-    let mut uses_w = false;
-    let mut not_quadratic = false;
-    let mut any = false;
+    let (mut any, mut uses_w, mut not_quadratic, mut linear) = (false, false, false, false);
     for (k, c) in acc.iter().enumerate() {
         if c.num != 0 {
             any = true;
             uses_w |= MONOMIALS[k][3] > 0;
             not_quadratic |= k < FIRST_QUADRATIC;
+            linear |= (1..FIRST_QUADRATIC).contains(&k);
         }
     }
-    if !any || (uses_w && not_quadratic) {
+    let quadratic = acc[FIRST_QUADRATIC..].iter().any(|c| c.num != 0);
+    // The zero polynomial, a form using w of mixed degrees and a plane (degree 1, read as
+    // its double plane) are left to the general reader.
+    if !any || (uses_w && not_quadratic) || (linear && !quadratic) {
         return None;
     }
     let mut m = [[SmallRational::ZERO; 4]; 4];
@@ -500,41 +537,84 @@ fn first_bad_term(poly: &MPoly, bad: impl Fn(u32) -> bool, why: &str) -> Result<
     }
 }
 
-/// The quadratic form in x, y, z, w of a nonzero polynomial of degree at most 2 in them
-/// (its coefficients may hold other variables): the polynomial itself if it uses `w`,
-/// which must then be homogeneous of degree 2, else its homogenization with `w`.
+/// What a nonzero polynomial of degree at most 2 in x, y, z, w (its coefficients may hold
+/// other variables) is as a form in them: [`form_in_xyzw`].
+#[derive(Debug)]
+pub(crate) enum XyzwForm<'a> {
+    /// A quadratic form: the polynomial itself if it uses `w` (homogeneous of degree 2),
+    /// else its homogenization with `w` (degree 2 or 0: a constant is `c·w²`).
+    Quadric(Cow<'a, MPoly>),
+    /// A plane: a linear form `ℓ` (the polynomial itself if it uses `w`, else its
+    /// homogenization with `w` to degree 1); the quadric is `ℓ²`.
+    Plane(MPoly),
+}
+
+/// The form in x, y, z, w of a nonzero polynomial (see [`XyzwForm`]).
 ///
 /// # Errors
-/// [`Error::Degree`] naming a term of degree above 2, or, if `w` occurs, not 2.
-pub(crate) fn quadratic_part(poly: &MPoly) -> Result<Cow<'_, MPoly>, Error> {
+/// [`Error::Degree`] naming a term of degree above 2, or, if `w` occurs, of a degree other
+/// than the polynomial's.
+pub(crate) fn form_in_xyzw(poly: &MPoly) -> Result<XyzwForm<'_>, Error> {
     let w = Variable::W.index();
+    let xyzw = [0, 1, 2, 3];
     first_bad_term(
         poly,
         |d| d > 2,
         " in x, y, z, w; a quadric has degree at most 2",
     )?;
+    let degree = poly
+        .terms()
+        .iter()
+        .map(|(m, _)| m.degree_in_vars(&xyzw))
+        .max()
+        .unwrap_or(0);
     if poly.uses(w) {
         first_bad_term(
             poly,
-            |d| d != 2,
-            "; a form in x,y,z,w must be homogeneous of degree 2 \
+            |d| d != degree,
+            "; a form in x,y,z,w must be homogeneous, of degree 2 (a quadric) or 1 (a plane) \
              (leave out w to write an affine equation in x, y, z)",
         )?;
-        return Ok(Cow::Borrowed(poly));
+        return Ok(match degree {
+            1 => XyzwForm::Plane(poly.clone()),
+            _ => XyzwForm::Quadric(Cow::Borrowed(poly)),
+        });
     }
     // Every term has degree at most 2 in x, y, z: homogenization cannot fail.
-    Ok(Cow::Owned(
-        poly.homogenize(&[0, 1, 2], w, 2).unwrap_or_default(),
-    ))
+    let homogenized = |d| poly.homogenize(&[0, 1, 2], w, d).unwrap_or_default();
+    Ok(match degree {
+        1 => XyzwForm::Plane(homogenized(1)),
+        _ => XyzwForm::Quadric(Cow::Owned(homogenized(2))),
+    })
 }
 
-/// The quadric of a polynomial in x, y, z, w of degree at most 2 (as read): homogeneity
-/// check or homogenization with `w`, then the matrix of the quadratic form.
-fn quadric_from_poly(poly: &MPoly) -> Result<Quadric, Error> {
+/// `ℓ²` for a plane's linear form `ℓ`, within the coefficient bound of the readers (so that
+/// the quadric prints as a polynomial that reads back).
+///
+/// # Errors
+/// [`Error::Limit`] for a coefficient above [`MAX_COEFFICIENT_BITS`].
+pub(crate) fn square_of_plane(l: &MPoly) -> Result<MPoly, Error> {
+    let square = l * l;
+    let bits = square.max_bits();
+    if bits > MAX_COEFFICIENT_BITS {
+        return Err(Error::Limit {
+            what: format!("a coefficient of {bits} bits in the square of a plane"),
+            limit: MAX_COEFFICIENT_BITS,
+        });
+    }
+    Ok(square)
+}
+
+/// The quadric of a polynomial in x, y, z, w of degree at most 2 (as read), and whether it
+/// was a plane: [`form_in_xyzw`], then the matrix of the quadratic form.
+fn quadric_from_poly(poly: &MPoly) -> Result<(Quadric, bool), Error> {
     if poly.is_zero() {
         return Err(Error::ZeroQuadric);
     }
-    let form = quadratic_part(poly)?;
+    let (form, plane) = match form_in_xyzw(poly)? {
+        XyzwForm::Quadric(form) => (form, false),
+        XyzwForm::Plane(l) => (Cow::Owned(square_of_plane(&l)?), true),
+    };
     // A form in x, y, z, w of degree 2: each term is vᵢ·vⱼ, i ≤ j, for A[i][j] (and A[j][i]).
     let mut m: [[RBig; 4]; 4] = Default::default();
     for (monomial, c) in form.terms() {
@@ -550,7 +630,7 @@ fn quadric_from_poly(poly: &MPoly) -> Result<Quadric, Error> {
             }
         }
     }
-    Quadric::from_matrix(m)
+    Ok((Quadric::from_matrix(m)?, plane))
 }
 
 #[cfg(test)]
@@ -581,13 +661,52 @@ mod tests {
         assert_eq!(plane("2x - 3y + z + 5"), s(["2", "-3", "1", "5"]));
         assert_eq!(plane("x/2 + w"), s(["1/2", "0", "0", "1"]));
         assert_eq!(plane("(x+1)^2 - x^2"), s(["2", "0", "0", "1"]));
-        for not_a_plane in ["3", "x^2 - 1", "x*w", "x + w + 1", "x - x"] {
+        for not_a_plane in ["3", "x^2 - 1", "x*w", "x - x"] {
             assert_eq!(plane(not_a_plane), None, "{not_a_plane}");
         }
         assert!(parse_plane("x +").is_err());
+        assert!(parse_plane("x + w + 1").is_err());
         // the double plane's zero set is the plane: P² = (z − 1)²
         let p = parse_plane("z - 1").unwrap().unwrap();
         assert_eq!(plane_as_quadric(&p).unwrap(), parse("(z-1)^2"));
+    }
+
+    /// A polynomial of degree 1 is its double plane `ℓ²` on both routes, affine or a linear
+    /// form using `w`; the plane pair `ℓ·w` must be written as such.
+    #[test]
+    fn planes_read_as_their_double_planes() {
+        let table = [
+            ("z - 1", "(z - 1)^2", true),
+            ("z - w", "(z - 1)^2", true),
+            ("2x - 3y + z + 5", "(2x - 3y + z + 5)^2", true),
+            ("x/2 + w", "(x/2 + 1)^2", true),
+            ("(x+1)^2 - x^2", "(2x + 1)^2", true),
+            ("x", "x^2", true),
+            ("(z - 1)^2", "z^2 - 2z + 1", false),
+            ("(z - w)*w", "z*w - w^2", false),
+            ("3", "3w^2", false),
+        ];
+        for (text, square, plane) in table {
+            let want = parse(square);
+            assert_eq!(
+                parse_quadric_or_plane(text),
+                Ok((want.clone(), plane)),
+                "{text}"
+            );
+            assert_eq!(parse_quadric_big_route(text), Ok(want), "{text}");
+        }
+        for mixed in ["x + w + 1", "x^2 + w", "x*w + 1"] {
+            assert!(
+                matches!(parse_quadric(mixed), Err(Error::Degree { .. })),
+                "{mixed}"
+            );
+        }
+        // The square keeps the readers' coefficient bound (`(1e9999)^4` has 132 875 bits).
+        assert!(matches!(
+            parse_quadric("(1e9999)^4*x + 1"),
+            Err(Error::Limit { .. })
+        ));
+        assert!(parse_quadric("(1e9999)^3*x + 1").is_ok());
     }
 
     #[test]
@@ -610,7 +729,7 @@ mod tests {
             "2x y + 2 z w",
             "x**2 - - y ^ 2 + 1e-3*z*z",
             "x^0*y^2 + 2z^1*x",
-            "1/3 x - 2.5e1",
+            "1/3 x^2 - 2.5e1",
             "x/2*y + y x/4",
             "x^2 - x^2 + y^2",
         ];
@@ -634,6 +753,9 @@ mod tests {
             "x^2.0",
             "x^2 + w",
             "x^2 - x^2",
+            "1/3 x - 2.5e1",
+            "z - w",
+            "x^2 - x^2 + y",
             "9223372036854775807*x^2 + 9223372036854775807*x^2",
             "x^2 +",
             "x² + y^2",
@@ -791,6 +913,7 @@ mod tests {
             ),
             ("x^2 - w", "term '-w' has degree 1"),
             ("x*w - 1/2", "term '-1/2' has degree 0"),
+            ("x + w + 1", "term '1' has degree 0; a form in x,y,z,w"),
         ];
         for (text, want) in table {
             match parse_quadric(text) {

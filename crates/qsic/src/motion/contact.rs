@@ -7,7 +7,8 @@
 //!   set of such `t` has a least element; it is the range's start or an instant of
 //!   [`MovingPencil::variations`], where the class — hence the emptiness of the real
 //!   intersection, read from the real components of the class — changes.
-//! - [`solid_motion`]: the relation ([`SolidRelation`]) of the solids on every interval
+//! - [`solid_motion`] (on the whole line) and [`solid_motion_in`] (on a range): the relation
+//!   ([`SolidRelation`]) of the solids on every interval
 //!   between the instants where it can change and at those instants: the candidate
 //!   instants of the pencil (a relation changes only where the Segre characteristic or the
 //!   inertias of the pencil change) and the real roots of the leading principal minors of
@@ -18,6 +19,7 @@
 //!   solids are no longer separated.
 
 use super::instants::pencil_entries;
+pub use super::range::TimeRange;
 use super::{irrational, InstantType, Motion, MovingPencil};
 use crate::classify::Classification;
 use crate::error::Error;
@@ -26,57 +28,6 @@ use crate::solids::{
     ellipsoid_orientation, leading_minors, relation_from_signs, solid_relation, SolidRelation,
 };
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring};
-
-/// A closed range `[from, to]` of `t` with rational ends; `None` for `∓∞`.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct TimeRange {
-    from: Option<RBig>,
-    to: Option<RBig>,
-}
-
-impl TimeRange {
-    /// The whole real line.
-    pub fn all() -> TimeRange {
-        TimeRange::default()
-    }
-
-    /// `[from, to]`.
-    ///
-    /// # Errors
-    /// [`Error::UnsupportedMotion`] if `from > to`.
-    pub fn new(from: Option<RBig>, to: Option<RBig>) -> Result<TimeRange, Error> {
-        if let (Some(a), Some(b)) = (&from, &to) {
-            if a > b {
-                return Err(Error::UnsupportedMotion(format!(
-                    "the range [{a}, {b}] is empty"
-                )));
-            }
-        }
-        Ok(TimeRange { from, to })
-    }
-
-    /// The start, `None` for `−∞`.
-    pub fn from(&self) -> Option<&RBig> {
-        self.from.as_ref()
-    }
-
-    /// The end, `None` for `+∞`.
-    pub fn to(&self) -> Option<&RBig> {
-        self.to.as_ref()
-    }
-
-    fn after_start(&self, t: &AlgebraicReal) -> bool {
-        self.from
-            .as_ref()
-            .is_none_or(|a| *t > AlgebraicReal::from_rational(a.clone()))
-    }
-
-    fn not_after_end(&self, t: &AlgebraicReal) -> bool {
-        self.to
-            .as_ref()
-            .is_none_or(|b| *t <= AlgebraicReal::from_rational(b.clone()))
-    }
-}
 
 /// The least `t` of a range where a closed condition holds.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -136,6 +87,7 @@ pub fn first_contact_in(
     motion: &Motion,
     range: &TimeRange,
 ) -> Result<Option<FirstContact>, Error> {
+    // On the whole line interval i + 1 starts at instant i.
     let interval_meets = |i: usize| has_real_points(&motion.intervals[i].classification);
     let instant_meets = |i: usize| -> Result<Option<bool>, Error> {
         match &motion.instants[i].class {
@@ -146,30 +98,46 @@ pub fn first_contact_in(
     first_in_range(
         range,
         motion.instants.iter().map(|m| &m.t),
-        interval_meets,
-        instant_meets,
-        |t| has_real_points(&pencil.classify_at(t)?),
+        Timeline {
+            first_interval: || interval_meets(0),
+            after_instant: |i: usize| interval_meets(i + 1),
+            instant: instant_meets,
+            at_start: |t: &RBig| has_real_points(&pencil.classify_at(t)?),
+        },
     )
 }
 
-/// The least `t` of `range` where a closed condition holds, on a timeline of
-/// `instants.len() + 1` intervals (interval `i` ends at instant `i`); `at_start` decides it at
-/// a finite start. An undecided instant counts by closedness when its right interval holds,
+/// Whether a closed condition holds along a timeline: on the interval from `−∞`, on the
+/// interval right after instant `i` (`false` if there is none), at instant `i` (`None`:
+/// undecided), and at a rational start.
+struct Timeline<F, G, H, S> {
+    first_interval: F,
+    after_instant: G,
+    instant: H,
+    at_start: S,
+}
+
+/// The least `t` of `range` where a closed condition holds, on a timeline with these
+/// `instants`. An undecided instant counts by closedness when the interval after it holds,
 /// and is an error when that does not hold either.
-fn first_in_range<'a>(
+fn first_in_range<'a, F, G, H, S>(
     range: &TimeRange,
     instants: impl Iterator<Item = &'a AlgebraicReal>,
-    interval_holds: impl Fn(usize) -> Result<bool, Error>,
-    instant_holds: impl Fn(usize) -> Result<Option<bool>, Error>,
-    at_start: impl Fn(&RBig) -> Result<bool, Error>,
-) -> Result<Option<FirstContact>, Error> {
+    holds: Timeline<F, G, H, S>,
+) -> Result<Option<FirstContact>, Error>
+where
+    F: Fn() -> Result<bool, Error>,
+    G: Fn(usize) -> Result<bool, Error>,
+    H: Fn(usize) -> Result<Option<bool>, Error>,
+    S: Fn(&RBig) -> Result<bool, Error>,
+{
     match range.from() {
-        Some(t0) if at_start(t0)? => {
+        Some(t0) if (holds.at_start)(t0)? => {
             return Ok(Some(FirstContact::At(AlgebraicReal::from_rational(
                 t0.clone(),
             ))))
         }
-        None if interval_holds(0)? => return Ok(Some(FirstContact::FromMinusInfinity)),
+        None if (holds.first_interval)()? => return Ok(Some(FirstContact::FromMinusInfinity)),
         _ => {}
     }
     for (i, t) in instants.enumerate() {
@@ -179,9 +147,9 @@ fn first_in_range<'a>(
         if !range.not_after_end(t) {
             break;
         }
-        let holds = match instant_holds(i)? {
-            Some(h) => h || interval_holds(i + 1)?,
-            None if interval_holds(i + 1)? => true,
+        let here = match (holds.instant)(i)? {
+            Some(h) => h || (holds.after_instant)(i)?,
+            None if (holds.after_instant)(i)? => true,
             None => {
                 return Err(Error::UnsupportedMotion(format!(
                     "the class at the irrational instant {t} (≈ {:.12}) is not computed \
@@ -190,7 +158,7 @@ fn first_in_range<'a>(
                 )))
             }
         };
-        if holds {
+        if here {
             return Ok(Some(FirstContact::At(t.clone())));
         }
     }
@@ -249,8 +217,11 @@ pub struct SolidInstant {
     pub state: SolidState,
 }
 
-/// The relation of two moving solids along the whole line: `intervals[i]` ends at
-/// `instants[i]`, `intervals[i + 1]` starts there.
+/// The relation of two moving solids along a range of the motion (the whole line for
+/// [`solid_motion`]): the intervals cover the open range, and the instants strictly inside
+/// it separate them (`intervals[i]` ends where `intervals[i + 1]` starts); an end of the
+/// range comes first or last among the instants where its relation differs from the
+/// interval beside it, as in [`MovingPencil::variations_in`].
 #[derive(Clone, Debug)]
 pub struct SolidMotion {
     /// The intervals, increasing.
@@ -269,41 +240,65 @@ impl SolidMotion {
             .all(|s| !matches!(s, SolidState::NotEllipsoids(_)))
     }
 
+    /// The state at `t`: that of the instant `t`, else that of the interval holding `t` (an
+    /// end of the range that is no instant has the state of the interval beside it);
+    /// `None` outside the range analysed.
+    pub fn state_at(&self, t: &AlgebraicReal) -> Option<&SolidState> {
+        if let Some(i) = self.instants.iter().find(|i| i.t == *t) {
+            return Some(&i.state);
+        }
+        let holds = |i: &&SolidInterval| {
+            i.from.as_ref().is_none_or(|a| a <= t) && i.to.as_ref().is_none_or(|b| t <= b)
+        };
+        self.intervals.iter().find(holds).map(|i| &i.state)
+    }
+
     /// The affine first contact: the least `t` of `range` where the closed solids share a
-    /// point (the relation is not [`SolidRelation::Separated`]).
+    /// point (the relation is not [`SolidRelation::Separated`]). `range` lies in the range
+    /// analysed.
     ///
     /// # Errors
     /// [`Error::NotEllipsoid`] if a quadric stops being an ellipsoid in the range before
-    /// the answer; [`Error::UnsupportedMotion`] if it hinges on an undetermined instant.
+    /// the answer; [`Error::UnsupportedMotion`] if it hinges on an undetermined instant;
+    /// [`Error::InvalidRange`] if `range` starts outside the range analysed.
     pub fn first_meeting(&self, range: &TimeRange) -> Result<Option<FirstContact>, Error> {
         let meets = |s: &SolidState| match s {
             SolidState::Relation(r) => Ok(Some(r.solids_meet())),
             SolidState::NotEllipsoids(why) => Err(Error::NotEllipsoid(why.clone())),
             SolidState::Undetermined => Ok(None),
         };
+        let outside = || {
+            Error::InvalidRange("the range starts outside the range of the motion analysed".into())
+        };
         let instants: Vec<AlgebraicReal> = self.instants.iter().map(|i| i.t.clone()).collect();
         first_in_range(
             range,
             instants.iter(),
-            |i| meets(&self.intervals[i].state).map(|m| m.unwrap_or(false)),
-            |i| meets(&self.instants[i].state),
-            |t0| {
-                let at = AlgebraicReal::from_rational(t0.clone());
-                let state = match self.instants.iter().position(|i| i.t == at) {
-                    Some(k) => &self.instants[k].state,
-                    None => {
-                        let k = self.instants.iter().take_while(|i| i.t < at).count();
-                        &self.intervals[k].state
+            Timeline {
+                first_interval: || match self.intervals.first() {
+                    Some(i) if i.from.is_none() => meets(&i.state).map(|m| m.unwrap_or(false)),
+                    _ => Err(outside()),
+                },
+                after_instant: |k: usize| {
+                    let t = Some(&self.instants[k].t);
+                    match self.intervals.iter().find(|i| i.from.as_ref() == t) {
+                        Some(i) => meets(&i.state).map(|m| m.unwrap_or(false)),
+                        None => Ok(false),
                     }
-                };
-                meets(state).map(|m| m.unwrap_or(false))
+                },
+                instant: |k: usize| meets(&self.instants[k].state),
+                at_start: |t0: &RBig| {
+                    let at = AlgebraicReal::from_rational(t0.clone());
+                    let state = self.state_at(&at).ok_or_else(outside)?;
+                    meets(state).map(|m| m.unwrap_or(false))
+                },
             },
         )
     }
 }
 
 /// The relation of two moving solid ellipsoids along the motion (module docs), with the
-/// instants where it changes, exactly.
+/// instants where it changes, exactly: [`solid_motion_in`] on the whole line.
 ///
 /// # Errors
 /// As [`MovingPencil::candidate_instants`].
@@ -330,19 +325,64 @@ pub fn solid_motion(a: &MovingMatrix, b: &MovingMatrix) -> Result<SolidMotion, E
 /// # Errors
 /// As [`solid_motion`].
 pub fn solid_motion_of(pencil: &MovingPencil) -> Result<SolidMotion, Error> {
+    solid_motion_in(pencil, &TimeRange::all())
+}
+
+/// The relation of the solids on `range` only: the intervals cover the open range, the
+/// first starts at its start and the last ends at its end; the instants strictly inside
+/// are those of the whole line, and an end of the range is an instant (first or last) only
+/// where its relation differs from the interval beside it. A range of one point has no
+/// interval and that one instant.
+///
+/// # Errors
+/// As [`solid_motion`].
+///
+/// # Examples
+/// ```
+/// use qsic::io::moving_matrix_from_polynomial as moving;
+/// use qsic::motion::{contact::solid_motion_in, MovingPencil, TimeRange};
+/// let a = moving("x^2 + y^2 + z^2 - 4")?;
+/// let b = moving("(x - t)^2 + y^2 + z^2 - 1")?;
+/// let pencil = MovingPencil::new(a, b)?;
+/// // On [-1, 2]: the inner tangency at -1, inside up to 1, touching, then overlapping.
+/// let m = solid_motion_in(&pencil, &TimeRange::parse("-1", "2")?)?;
+/// let keys: Vec<&str> = m.intervals.iter().map(|i| i.state.key()).collect();
+/// assert_eq!(keys, ["inside", "overlapping"]);
+/// let at: Vec<String> = m.instants.iter().map(|i| i.t.to_string()).collect();
+/// assert_eq!(at, ["-1", "1"]);
+/// assert_eq!(m.intervals[0].from.as_ref().map(|t| t.to_string()), Some("-1".into()));
+/// # Ok::<(), qsic::Error>(())
+/// ```
+pub fn solid_motion_in(pencil: &MovingPencil, range: &TimeRange) -> Result<SolidMotion, Error> {
+    let exact = |v: &RBig| AlgebraicReal::from_rational(v.clone());
+    let (lo, hi) = (range.from().map(exact), range.to().map(exact));
+    if let (Some(a), Some(b)) = (range.from(), range.to()) {
+        if a == b {
+            return Ok(SolidMotion {
+                intervals: Vec::new(),
+                instants: vec![SolidInstant {
+                    t: exact(a),
+                    state: state_at_rational(pencil, a),
+                }],
+            });
+        }
+    }
     let mut polys = pencil.candidate_polynomials()?;
     for m in [pencil.a(), pencil.b()] {
         polys.extend(leading_minors(m.numerators()));
     }
     polys.retain(|p| !p.is_zero());
-    let candidates = super::real_roots_of_all(&polys);
-    let samples = super::samples_between(&candidates, None, None);
+    let candidates: Vec<AlgebraicReal> = super::real_roots_of_all(&polys)
+        .into_iter()
+        .filter(|c| lo.as_ref().is_none_or(|a| a < c) && hi.as_ref().is_none_or(|b| c < b))
+        .collect();
+    let samples = super::samples_between(&candidates, lo.as_ref(), hi.as_ref());
     let mut interval_states = Vec::with_capacity(samples.len());
     for s in &samples {
         interval_states.push(state_at_rational(pencil, s));
     }
     let mut intervals = vec![SolidInterval {
-        from: None,
+        from: lo.clone(),
         to: None,
         sample: samples[0].clone(),
         state: interval_states[0].clone(),
@@ -366,6 +406,25 @@ pub fn solid_motion_of(pencil: &MovingPencil) -> Result<SolidMotion, Error> {
             state: right.clone(),
         });
         instants.push(SolidInstant { t, state });
+    }
+    intervals.last_mut().expect("one interval at least").to = hi;
+    // The ends of the range, where their relation differs from the interval beside them.
+    for (end, first) in [(range.from(), true), (range.to(), false)] {
+        let Some(v) = end else { continue };
+        let state = state_at_rational(pencil, v);
+        let beside = if first {
+            intervals.first()
+        } else {
+            intervals.last()
+        };
+        if beside.is_some_and(|i| i.state != state) {
+            let instant = SolidInstant { t: exact(v), state };
+            if first {
+                instants.insert(0, instant);
+            } else {
+                instants.push(instant);
+            }
+        }
     }
     Ok(SolidMotion {
         intervals,

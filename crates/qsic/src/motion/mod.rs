@@ -2,8 +2,9 @@
 //! and the type on every interval between them and at every instant, exactly.
 //!
 //! The pencil is `λM_A(t) − μM_B(t)` with the numerator matrices of the two
-//! [`MovingMatrix`] values, denominators cleared and the gcd of all entries divided out (so
-//! the quadric at a pole, or at a common root of all entries, is the limit),
+//! [`MovingMatrix`] values, whose canonical form has the denominators cleared and the gcd
+//! of all entries divided out (so the quadric at a pole, or at a common root of all
+//! entries, is the limit),
 //! and `f(λ; t) = det(λM_A − M_B) ∈ ℤ[t][λ]`. Following Jia, Wang, Choi, Mourrain, Tu
 //! (Theorems 3.2–3.12, Algorithms 1–3), the class of a regular pencil is constant wherever
 //! the Segre characteristic is, and that changes only at the real roots of
@@ -25,13 +26,16 @@
 //! whose type equals that of both neighbours and merges the intervals around them.
 //!
 //! [`contact`]: the first contact of the two quadrics in a range, and the relation of two
-//! moving solid ellipsoids along the motion.
+//! moving solid ellipsoids along the motion. [`TimeRange`]: the range of `t`, and its one
+//! reading from text (`-oo`/`oo` for an open side).
 
 pub mod contact;
 mod instants;
 mod irrational;
+mod range;
 
-pub use contact::{first_contact, solid_motion, FirstContact, SolidMotion, SolidState, TimeRange};
+pub use contact::{first_contact, solid_motion, FirstContact, SolidMotion, SolidState};
+pub use range::{TimeRange, MINUS_INFINITY, PLUS_INFINITY};
 
 use crate::classify::{classify_allowing_zero, Classification};
 use crate::error::Error;
@@ -48,11 +52,10 @@ use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
 /// `f(λ; t) = det(λM_A(t) − M_B(t))`.
 #[derive(Clone, Debug)]
 pub struct MovingPencil {
+    /// `A`, `B`; their numerators `M_A`, `M_B` have no common factor (so neither vanishes
+    /// at any `t`).
     a: MovingMatrix,
     b: MovingMatrix,
-    /// `M_A`, `M_B` divided by the gcd of their entries (so neither vanishes at any `t`).
-    ma: [[Poly; 4]; 4],
-    mb: [[Poly; 4]; 4],
     entries: [[TPoly; 4]; 4],
     /// `λM_A(t) − M_B(t)` over ℤ\[t\] with every minor, as polynomials in `λ`.
     pencil: MatrixPencil<Poly>,
@@ -143,10 +146,10 @@ impl MovingPencil {
     /// The pencil of two moving quadrics; computes every minor of `λM_A − M_B` over `ℤ[t]`
     /// once (`MatrixPencil<Poly>`), `f(λ; t)` among them.
     ///
-    /// `M_A`, `M_B` are the numerator matrices divided by the gcd of their 16 entries: a
-    /// common factor `g(t)` of all entries scales the quadric by `g(t)`, which does not
+    /// `M_A`, `M_B` are the numerator matrices ([`MovingMatrix::numerators`]), without the
+    /// factor `g(t)` common to all entries: it scales the quadric by `g(t)`, which does not
     /// change the pencil where `g(t) ≠ 0`, and at a root of `g` the quadric is the limit
-    /// `(M/g)(t)` (as at a pole).
+    /// (as at a pole).
     ///
     /// # Errors
     /// [`Error::Limit`] if an entry of `M_A` or `M_B` (denominators cleared, common factor
@@ -170,19 +173,16 @@ impl MovingPencil {
     /// # Ok::<(), qsic::Error>(())
     /// ```
     pub fn new(a: MovingMatrix, b: MovingMatrix) -> Result<MovingPencil, Error> {
-        let ma = without_common_factor(a.numerators());
-        let mb = without_common_factor(b.numerators());
-        for m in [&ma, &mb] {
+        let (ma, mb) = (a.numerators(), b.numerators());
+        for m in [ma, mb] {
             check_motion_size(m)?;
         }
-        let entries = pencil_entries(&ma, &mb);
+        let entries = pencil_entries(ma, mb);
         let pencil = MatrixPencil::from_entries(ma.clone(), mb.clone());
         let f = pencil.det_poly();
         Ok(MovingPencil {
             a,
             b,
-            ma,
-            mb,
             entries,
             pencil,
             f,
@@ -199,10 +199,10 @@ impl MovingPencil {
         &self.b
     }
 
-    /// `M_A(t)` and `M_B(t)`: the numerator matrices of `A`, `B` divided by the gcd of their
-    /// entries ([`Self::new`]); the pencil at `t` is `λM_A(t) − μM_B(t)`.
+    /// `M_A(t)` and `M_B(t)`: the numerator matrices of `A`, `B`, without a factor common
+    /// to all entries ([`Self::new`]); the pencil at `t` is `λM_A(t) − μM_B(t)`.
     pub fn numerators(&self) -> (&[[Poly; 4]; 4], &[[Poly; 4]; 4]) {
-        (&self.ma, &self.mb)
+        (self.a.numerators(), self.b.numerators())
     }
 
     /// `f(λ; t) = det(λM_A(t) − M_B(t))` in `ℤ[t][λ]` (coefficients in `λ`, each a polynomial
@@ -223,7 +223,7 @@ impl MovingPencil {
                 std::array::from_fn(|j| m[i][j].eval_rational(t))
             })))
         };
-        let (qa, qb) = (at(&self.ma)?, at(&self.mb)?);
+        let (qa, qb) = (at(self.a.numerators())?, at(self.b.numerators())?);
         classify_allowing_zero(qa.as_ref(), qb.as_ref())
     }
 
@@ -287,14 +287,17 @@ impl MovingPencil {
             }
         }
         if rank < 4 {
-            out.push(common_kernel_condition(&self.ma, &self.mb));
+            out.push(common_kernel_condition(
+                self.a.numerators(),
+                self.b.numerators(),
+            ));
         }
         out.push(self.a.denominator().clone());
         out.push(self.b.denominator().clone());
         // M_A ∝ M_B where every 2×2 minor of the pair of coefficient vectors vanishes.
         let (va, vb): (Vec<&Poly>, Vec<&Poly>) = (
-            self.ma.iter().flatten().collect(),
-            self.mb.iter().flatten().collect(),
+            self.a.numerators().iter().flatten().collect(),
+            self.b.numerators().iter().flatten().collect(),
         );
         let mut prop = Poly::zero();
         'pairs: for i in 0..16 {
@@ -363,10 +366,8 @@ impl MovingPencil {
     pub fn variations_in(&self, from: Option<&RBig>, to: Option<&RBig>) -> Result<Motion, Error> {
         let exact = |v: &RBig| AlgebraicReal::from_rational(v.clone());
         let (lo, hi) = (from.map(exact), to.map(exact));
+        range::check_order(from, to)?;
         if let (Some(a), Some(b)) = (from, to) {
-            if a > b {
-                return Err(Error::InvalidRange(format!("from {a} is above to {b}")));
-            }
             if a == b {
                 let t = exact(a);
                 return Ok(Motion {
@@ -487,27 +488,6 @@ fn samples_between(
         out.push(RBig::from(last.interval().hi().ceil() + IBig::ONE));
     }
     out
-}
-
-/// `m` divided by the gcd of its entries in `ℤ[t]` (integer content included, positive
-/// leading coefficient); `m` itself if it is zero.
-fn without_common_factor(m: &[[Poly; 4]; 4]) -> [[Poly; 4]; 4] {
-    let mut g = Poly::zero();
-    for e in m.iter().flatten() {
-        g = g.gcd(e);
-        if g.degree() == Some(0) && g.content().is_one() {
-            return m.clone();
-        }
-    }
-    if g.is_zero() {
-        return m.clone();
-    }
-    if g.leading() < IBig::ZERO {
-        g = -&g;
-    }
-    std::array::from_fn(|i| {
-        std::array::from_fn(|j| m[i][j].div_exact(&g).expect("the gcd divides every entry"))
-    })
 }
 
 /// [`Error::Limit`] if an entry of `m` exceeds [`MAX_MOTION_DEGREE`] or a coefficient
