@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import json
 import operator
+from decimal import Decimal
 from fractions import Fraction
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
@@ -417,10 +418,18 @@ def _range(r: Optional[Tuple[Any, Any]]) -> Tuple[Optional[str], Optional[str]]:
     if r is None:
         return None, None
     t0, t1 = r
-    return (
-        None if t0 is None else _inputs.number_text(t0, "range start"),
-        None if t1 is None else _inputs.number_text(t1, "range end"),
-    )
+    return _range_end(t0, "range start"), _range_end(t1, "range end")
+
+
+def _range_end(t: Any, name: str) -> Optional[str]:
+    """An end of a time range: ``None``, a number, or an infinite float or ``Decimal`` (an
+    open side, ``-oo`` / ``+oo`` as the CLI writes it; NaN is an error)."""
+    if t is None:
+        return None
+    if isinstance(t, (float, np.floating, Decimal)) and not isinstance(t, bool):
+        if t == t and abs(t) == float("inf"):  # not NaN
+            return "+oo" if t > 0 else "-oo"
+    return _inputs.number_text(t, name)
 
 
 def motion(

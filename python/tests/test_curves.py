@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import json
+from decimal import Decimal
 from fractions import Fraction
 
 import numpy as np
@@ -105,3 +106,10 @@ def test_inputs_are_read_as_by_the_cli(cli):
         for f in (qsic.motion, qsic.first_contact):
             with pytest.raises(qsic.QsicError, match="range: invalid time range: .* the range is empty"):
                 f("x^2+y^2+z^2-4", "(x-t)^2+y^2+z^2-1", range=empty)
+    # an infinite float or Decimal is an open side, NaN an error
+    pair = ("x^2+y^2+z^2-4", "(x-t)^2+y^2+z^2-1")
+    open_start = qsic.motion(*pair, range=(None, 1))
+    assert qsic.motion(*pair, range=(Decimal("-Infinity"), 1)) == open_start
+    assert qsic.motion(*pair, range=(float("-inf"), 1)) == open_start
+    with pytest.raises(qsic.QsicError, match="range start is not a finite number"):
+        qsic.motion(*pair, range=(float("nan"), 1))
