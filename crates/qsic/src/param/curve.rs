@@ -148,6 +148,19 @@ pub enum RealPiece {
 }
 
 impl RealPiece {
+    /// The whole of a rational component's real curve: one arc over all of ℝ ∪ {∞}, closed.
+    pub fn whole(component: usize) -> RealPiece {
+        RealPiece::Curve {
+            component,
+            arcs: vec![Arc {
+                range: ParamRange::All,
+                sheet: Sheet::Only,
+                reversed: false,
+            }],
+            closed: true,
+        }
+    }
+
     /// The component the piece belongs to.
     pub fn component(&self) -> usize {
         match self {

@@ -17,7 +17,7 @@
 //!   quadratic: two real roots, a conjugate pair or a double root (tangency) — checked
 //!   against the vertex route (the sign of `D`; the tangency point is `v₁`).
 
-use super::curve::{self, Arc, Component, ComponentParam, Curve, ParamRange, RealPiece, Sheet};
+use super::curve::{self, Component, ComponentParam, Curve, RealPiece};
 use super::nodal::{
     check_against_class, form, primitive, rational_point, segre_blocks, vertex,
     without_common_factor,
@@ -338,16 +338,7 @@ pub(super) fn line_and_cubic_curve(
         }],
     };
     check_against_class(&classification, &singular_points)?;
-    let whole = |component| RealPiece::Curve {
-        component,
-        arcs: vec![Arc {
-            range: ParamRange::All,
-            sheet: Sheet::Only,
-            reversed: false,
-        }],
-        closed: true,
-    };
-    let pieces = vec![whole(0), whole(1)];
+    let pieces = vec![RealPiece::whole(0), RealPiece::whole(1)];
     let connected = match lc.meeting {
         Meeting::Conjugate => vec![vec![0], vec![1]],
         _ => vec![vec![0, 1]],

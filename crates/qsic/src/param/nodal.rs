@@ -10,7 +10,7 @@
 //! `c(u) = PᵀQd(u)` vanishes: two real roots — a crunode, a double root — a cusp, a
 //! conjugate pair — an acnode. When `S₀` is not real (case 7) `P` is the only real point.
 
-use super::curve::{self, Arc, Component, ComponentParam, Curve, ParamRange, RealPiece, Sheet};
+use super::curve::{self, Component, ComponentParam, Curve, RealPiece};
 use super::surface::{parameterize_cone, poly_form, to_quadratic, PolyVector};
 use super::{integer_matrix, member, Point};
 use crate::classify::{analyze_pencil, Classification, ComponentKind, SingularPointKind};
@@ -306,15 +306,7 @@ pub(super) fn singular_quartic_curve(
     });
     let mut pieces = Vec::new();
     if param.is_some() {
-        pieces.push(RealPiece::Curve {
-            component: 0,
-            arcs: vec![Arc {
-                range: ParamRange::All,
-                sheet: Sheet::Only,
-                reversed: false,
-            }],
-            closed: true,
-        });
+        pieces.push(RealPiece::whole(0));
     }
     if sq.kind == SingularPointKind::Acnode {
         pieces.push(RealPiece::Point {

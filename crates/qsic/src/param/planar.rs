@@ -24,8 +24,8 @@
 //! `v = e_a + u·e_b`. ℚ(√δ, √r) is written ℚ(γ) with an explicit primitive element: `γ = √δ + √r`
 //! for a rational `r`, `γ = √r` otherwise (`√δ = (γ² − a)/b` for `r = a + b√δ`).
 
-use super::curve::{self, Arc, Component, ComponentParam, Curve, Number, ParamRange, Point};
-use super::curve::{RealPiece, Sheet, SingularPoint};
+use super::curve::{self, Component, ComponentParam, Curve, Number, Point};
+use super::curve::{RealPiece, SingularPoint};
 use super::surface::{
     parameterize_doubly_ruled, poly_form, sqrt_in_field, to_quadratic, RuledParameterization,
 };
@@ -900,15 +900,7 @@ fn meet(
     for (i, comp) in curve.components.iter().enumerate() {
         if comp.real && comp.param.is_some() {
             piece_of[i] = curve.pieces.len();
-            curve.pieces.push(RealPiece::Curve {
-                component: i,
-                arcs: vec![Arc {
-                    range: ParamRange::All,
-                    sheet: Sheet::Only,
-                    reversed: false,
-                }],
-                closed: true,
-            });
+            curve.pieces.push(RealPiece::whole(i));
         }
     }
     let mut groups: Vec<(usize, Vec<usize>)> = Vec::new();
@@ -1073,15 +1065,7 @@ fn conjugate_pair_curve(
             });
         }
         for component in 0..4 {
-            curve.pieces.push(RealPiece::Curve {
-                component,
-                arcs: vec![Arc {
-                    range: ParamRange::All,
-                    sheet: Sheet::Only,
-                    reversed: false,
-                }],
-                closed: true,
-            });
+            curve.pieces.push(RealPiece::whole(component));
         }
         curve.connected.push(vec![0, 1, 2, 3]);
     } else {
@@ -1252,15 +1236,7 @@ fn concurrent_lines_curve(
             param: Some(line_param(&vn, end)),
             plane: None,
         });
-        curve.pieces.push(RealPiece::Curve {
-            component,
-            arcs: vec![Arc {
-                range: ParamRange::All,
-                sheet: Sheet::Only,
-                reversed: false,
-            }],
-            closed: true,
-        });
+        curve.pieces.push(RealPiece::whole(component));
     }
     for _ in ends.len()..4 {
         curve.components.push(non_real(ComponentKind::Line, 1));
@@ -1472,15 +1448,7 @@ fn ruled_lines(
                 plane: None,
             });
             curve.connected.push(vec![curve.pieces.len()]);
-            curve.pieces.push(RealPiece::Curve {
-                component,
-                arcs: vec![Arc {
-                    range: ParamRange::All,
-                    sheet: Sheet::Only,
-                    reversed: false,
-                }],
-                closed: true,
-            });
+            curve.pieces.push(RealPiece::whole(component));
         }
     }
     Some(curve)

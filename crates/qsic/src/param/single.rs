@@ -16,8 +16,8 @@
 //! parameterization here (`param` is `None`), the point and the line have theirs and a real
 //! piece each.
 
-use super::curve::{self, Arc, Component, ComponentParam, Curve, Number, ParamRange, Point};
-use super::curve::{RealPiece, Sheet};
+use super::curve::RealPiece;
+use super::curve::{self, Component, ComponentParam, Curve, Number, Point};
 use crate::classify::{Classification, ComponentKind};
 use crate::quadric::Quadric;
 use qsic_algebra::field::Quadratic;
@@ -71,15 +71,7 @@ pub(crate) fn single_curve(classification: Classification, q: &Quadric) -> Curve
                 Some(ComponentParam::Rational { x, degree: 1 }),
                 None,
             ));
-            curve.pieces.push(RealPiece::Curve {
-                component: 0,
-                arcs: vec![Arc {
-                    range: ParamRange::All,
-                    sheet: Sheet::Only,
-                    reversed: false,
-                }],
-                closed: true,
-            });
+            curve.pieces.push(RealPiece::whole(0));
             curve.connected.push(vec![0]);
         }
         (1, 1) | (1, 0) => {
