@@ -282,7 +282,8 @@ pub fn run_answer<R: Read, W: Write + Send, A: Answer + ?Sized>(
 }
 
 /// [`run`] with another answer for each line (`qsic motion --batch`): `answer` gives the
-/// output line (without newline) and whether it succeeded, and must not panic.
+/// output line (without newline) and whether it succeeded; a panic (a bug) becomes an
+/// internal-error line in its place.
 ///
 /// # Errors
 /// As [`run`].

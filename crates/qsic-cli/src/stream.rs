@@ -185,7 +185,7 @@ where
                 let tx = tx.clone();
                 jobs.spawn(move |_| {
                     for (n, line) in group {
-                        let (text, ok) = answer(&line);
+                        let (text, ok) = answer_or_error(answer, &line);
                         // the writer only hangs up after every sender is gone
                         let _ = tx.send(Done {
                             seq: n,
@@ -211,6 +211,29 @@ where
         read_error,
         write_error,
     }
+}
+
+/// `answer(line)`, or an error line if it panics (a bug): every line read gets its answer,
+/// so the writer, which waits for each in turn, never waits for one that will not come.
+fn answer_or_error<F: Fn(&RawLine) -> (String, bool)>(
+    answer: &F,
+    line: &RawLine,
+) -> (String, bool) {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| answer(line))).unwrap_or_else(|p| {
+        let why = p
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| p.downcast_ref::<String>().cloned())
+            .unwrap_or_default();
+        let message = serde_json::Value::from(format!("internal error: {why}"));
+        (
+            format!(
+                "{{\"id\":null,\"error\":{{\"line\":{},\"message\":{message}}}}}",
+                line.number
+            ),
+            false,
+        )
+    })
 }
 
 /// The writer: answers back in order, each written once its predecessors are, a flush
@@ -429,6 +452,35 @@ mod tests {
         }
         let want: String = (1..=50).map(|k| format!("a{k}\n")).collect();
         assert_eq!(got, want);
+    }
+
+    /// An answer that panics (a bug) is an error line in its place; the batch goes on.
+    #[test]
+    fn a_panicking_answer_is_an_error_line() {
+        let input = "1\n2\n3\n";
+        let (tx, rx) = mpsc::channel();
+        let answer = |line: &RawLine| {
+            if line.number == 2 {
+                panic!("line two");
+            }
+            (format!("a{}", line.number), true)
+        };
+        let reader = LineReader::new(input.as_bytes(), 1 << 10);
+        let done = stream(reader, Pipe(tx), wide(), &ProgressBar::hidden(), &answer);
+        let got: String = rx
+            .try_iter()
+            .map(|b| String::from_utf8(b).unwrap())
+            .collect();
+        let lines: Vec<&str> = got.lines().collect();
+        assert_eq!(lines.len(), 3, "{got}");
+        assert_eq!((lines[0], lines[2]), ("a1", "a3"));
+        let error: serde_json::Value = serde_json::from_str(lines[1]).unwrap();
+        assert_eq!(error["error"]["line"], 2);
+        assert!(error["error"]["message"]
+            .as_str()
+            .unwrap()
+            .contains("line two"));
+        assert_eq!((done.answered, done.failed), (3, 1));
     }
 
     /// With line 1 held and lines arriving one by one (each its own job), the reader stops
