@@ -16,6 +16,7 @@
 //! | [`param`] | `qsic param`: the exact curve as JSON and text |
 //! | [`mod@sample`] | `qsic sample`: real points as JSON, CSV, OBJ |
 //! | [`plot`] | `qsic plot`: the curve in a 3D view and the eigencurve, as SVG |
+//! | `eigencurve` | the eigencurve panel of `qsic plot --eigencurve` |
 //! | `plot_common` | the common surfaces in a plot (`A ∝ B`, a common plane): what is drawn, where the cube goes |
 //! | [`stream`] | ordered streaming: answers in parallel, written in input order as soon as they and their predecessors are done, a bounded window of pending lines |
 //! | [`svg`] | SVG helpers shared by the pictures: escaping, palette, panels |
@@ -23,6 +24,7 @@
 pub mod affine;
 pub mod batch;
 pub mod contact;
+mod eigencurve;
 pub mod file;
 pub mod input;
 pub mod line;
