@@ -556,3 +556,53 @@ fn points_are_verified_against_the_quadrics() {
     let other = parse_quadric("x^2+y^2+2*z^2-w^2").unwrap();
     assert!(verify_on_quadrics(&s, &a, &other).is_err());
 }
+
+/// Two random pairs whose Levin forms are over ℚ(√δ), where the float sign changes of `h`
+/// once missed crossings of the plane at infinity: one piece (case 4) said bounded with two
+/// of the curve's points at infinity on it, and a pair (case 1) with no point at infinity
+/// where the curve has two. The points at infinity of `sample` are now the exact crossings,
+/// the same count and boundedness as [`qsic::affine::affine_curve`] (an independent route).
+#[test]
+fn crossings_of_levin_forms_over_a_quadratic_field_are_exact() {
+    let q = |m: [[i64; 4]; 4]| Quadric::from_integers(m).unwrap();
+    let pairs = [
+        (
+            q([
+                [-6, 0, -4, -1],
+                [0, 5, 8, 0],
+                [-4, 8, 1, -10],
+                [-1, 0, -10, 7],
+            ]),
+            q([
+                [-9, 9, -4, 3],
+                [9, 3, -5, 8],
+                [-4, -5, -8, -3],
+                [3, 8, -3, 8],
+            ]),
+        ),
+        (
+            q([
+                [8, -9, 8, 8],
+                [-9, -10, -3, -1],
+                [8, -3, -1, -9],
+                [8, -1, -9, -2],
+            ]),
+            q([[6, 2, 0, 5], [2, 3, 8, 9], [0, 8, -2, -7], [5, 9, -7, 0]]),
+        ),
+    ];
+    for (a, b) in &pairs {
+        let curve = parameterize(a, b).unwrap();
+        let view =
+            qsic::affine::affine_curve(&curve, a, b, &qsic::affine::Chart::default()).unwrap();
+        let s = sample(&curve, &SampleOptions::default()).unwrap();
+        let marked: usize = s
+            .pieces
+            .iter()
+            .map(|p| p.affine.points_at_infinity.len())
+            .sum();
+        assert_eq!(marked, view.points_at_infinity);
+        assert!(view.points_at_infinity > 0);
+        let unbounded = s.pieces.iter().filter(|p| !p.affine.bounded).count();
+        assert_eq!(unbounded > 0, view.curves_unbounded > 0);
+    }
+}

@@ -413,6 +413,32 @@ impl InfinityEvents<'_> {
     }
 }
 
+/// The parameters where Levin's form `a ± d√s` (with its `alternate` where it vanishes)
+/// meets the plane `l·X = 0`, exactly, over any number field: each with its sheet, `None`
+/// where `s = 0` (both sheets are one point). In parameter order of the candidates (the real
+/// roots of `(l·a)² − s(l·d)²`, then `u = ∞`); a parameter with both sheets comes twice, once
+/// per sheet, one after the other.
+///
+/// # Errors
+/// [`Error::Unsupported`] where both forms vanish at one parameter.
+pub(crate) fn levin_plane_crossings(
+    l: &[RBig; 4],
+    primary: &LevinForm,
+    s: &NumberPoly,
+    alternate: Option<&LevinForm>,
+) -> Result<Vec<(ParamValue, Option<Sheet>)>, Error> {
+    let mut next_local = 0;
+    let mut inf = InfinityEvents {
+        l,
+        next_local: &mut next_local,
+    };
+    Ok(inf
+        .levin(primary, s, alternate)?
+        .into_iter()
+        .map(|e| (e.at, e.sheet))
+        .collect())
+}
+
 /// The real roots of `r`: those of `h = gcd(r, g)` and those of `r` divided by `h` until
 /// prime to it (disjoint sets).
 fn split_roots(r: &NumberPoly, g: Option<&NumberPoly>) -> Vec<AlgebraicReal> {

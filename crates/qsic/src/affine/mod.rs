@@ -27,7 +27,7 @@ mod view;
 pub use common::common_surfaces;
 pub use conic::{affine_conic, approx, AffineConic, Axis, ConicShape, Direction, Surd};
 pub use curve::{affine_curve, AffineComponent, AffineCurve, AffineSingularPoint};
-pub(crate) use curve::{chart_value, params_of_point};
+pub(crate) use curve::{chart_value, levin_plane_crossings, params_of_point};
 pub use fast::{conic_real_intersections, fast_affine_curve};
 pub use view::{affine_view, affine_view_of_curve, AffineView};
 

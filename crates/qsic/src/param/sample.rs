@@ -47,8 +47,11 @@
 //! `h(a)² − h(d)²s` (the sheet from the signs of `h(a)` and `h(d)`), tangential touches
 //! included; they are marked on the polyline ([`SampledPiece::infinity`]), and a point is at
 //! infinity iff it is marked, whatever its float `h`. On Levin's form with irrational
-//! coefficients they are the sign changes of `h` along the polyline, located by regula falsi
-//! (Illinois). Affine coordinates are those of `X/h(X)` without the last
+//! coefficients they are the affine view's exact crossings
+//! (`affine::levin_plane_crossings`: the roots of `h(a)² − s·h(d)²` by the norm, sheets from
+//! exact signs); only where those fail (both Levin forms vanish at one parameter) are they
+//! the sign changes of `h` along the polyline, located by regula falsi (Illinois). Affine
+//! coordinates are those of `X/h(X)` without the last
 //! coordinate whose coefficient in `h` is nonzero (`(x/w, y/w, z/w)` for the default); `h` is
 //! computed once per point during the walk and kept with the polyline, and the affine view
 //! is cut from it in stretches of one sign.
@@ -160,8 +163,7 @@ pub struct SampledPiece {
     pub breaks: Vec<usize>,
     /// Indices into `points` of the points on the chart's plane at infinity, ascending, in the
     /// order of [`AffinePiece::points_at_infinity`] (none for a piece lying in the plane): the
-    /// exact real roots of `h(X(u))` (module docs), never a float `h` near zero, except on
-    /// Levin's form with irrational coefficients, where they are the sign changes of `h`. For
+    /// exact real roots of `h(X(u))` (module docs), never a float `h` near zero. For
     /// a closed piece, index 0 stands for the repeated last point too.
     pub infinity: Vec<usize>,
     /// The view in the affine chart.
@@ -2286,12 +2288,57 @@ fn exact_crossings(param: &ComponentParam, exact: &ExactParam, h: &[RBig; 4]) ->
                 values.into_iter().map(only).collect()
             })
         }
+        (
+            ExactParam::Irrational,
+            ComponentParam::Levin {
+                a,
+                d,
+                s,
+                degree,
+                alternate,
+            },
+        ) => {
+            let primary = super::LevinForm {
+                a: a.clone(),
+                d: d.clone(),
+                degree: *degree,
+            };
+            match crate::affine::levin_plane_crossings(h, &primary, s, alternate.as_deref()) {
+                Ok(events) => Some(levin_crossings(events)),
+                Err(_) => return Crossings::Unknown,
+            }
+        }
         (ExactParam::Irrational, _) => return Crossings::Unknown,
         _ => exact_crossings_of(exact, h),
     };
     match found {
         None => Crossings::InPlane,
         Some(c) => Crossings::Exact(c),
+    }
+}
+
+/// The crossings of [`crate::affine::levin_plane_crossings`]: the sheets at one parameter
+/// together, both where `s = 0`.
+fn levin_crossings(events: Vec<(ParamValue, Option<Sheet>)>) -> Vec<Crossing> {
+    let mut out: Vec<Crossing> = Vec::new();
+    for (value, sheet) in events {
+        let sheets = match sheet {
+            Some(sheet) => vec![sheet],
+            None => vec![Sheet::Plus, Sheet::Minus],
+        };
+        match out.last_mut() {
+            Some(last) if same_value(&last.value, &value) => last.sheets.extend(sheets),
+            _ => out.push(Crossing { value, sheets }),
+        }
+    }
+    out
+}
+
+fn same_value(a: &ParamValue, b: &ParamValue) -> bool {
+    match (a, b) {
+        (ParamValue::Infinity, ParamValue::Infinity) => true,
+        (ParamValue::Finite(x), ParamValue::Finite(y)) => x == y,
+        _ => false,
     }
 }
 
