@@ -49,9 +49,10 @@
 //! infinity iff it is marked, whatever its float `h`. On Levin's form with irrational
 //! coefficients they are the affine view's exact crossings
 //! (`affine::levin_plane_crossings`: the roots of `h(a)² − s·h(d)²` by the norm, sheets from
-//! exact signs); only where those fail (both Levin forms vanish at one parameter) are they
-//! the sign changes of `h` along the polyline, located by regula falsi (Illinois). Affine
-//! coordinates are those of `X/h(X)` without the last
+//! exact signs); where that route cannot place a crossing (both Levin forms vanish at one
+//! parameter) sampling is an error. The walk's sign changes of `h`, located by regula falsi
+//! (Illinois), are kept only for a curve piece known neither way (none reaches the walk
+//! today). Affine coordinates are those of `X/h(X)` without the last
 //! coordinate whose coefficient in `h` is nonzero (`(x/w, y/w, z/w)` for the default); `h` is
 //! computed once per point during the walk and kept with the polyline, and the affine view
 //! is cut from it in stretches of one sign.
@@ -297,7 +298,7 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
                         crossings: if lies_in_plane(param, &chart.exact) {
                             Crossings::InPlane
                         } else {
-                            exact_crossings(param, &ExactParam::new(param), &chart.exact)
+                            exact_crossings(param, &ExactParam::new(param), &chart.exact)?
                         },
                         singular: singular_params(curve, param, &chart.exact),
                         chart: &chart,
@@ -2277,7 +2278,15 @@ fn lies_in_plane(param: &ComponentParam, h: &[RBig; 4]) -> bool {
 
 /// The exact crossings of the component with the plane `h = 0`: over a number field those of
 /// a rational parameterization ([`super::infinity`]), none known of Levin's form.
-fn exact_crossings(param: &ComponentParam, exact: &ExactParam, h: &[RBig; 4]) -> Crossings {
+///
+/// # Errors
+/// Where the exact route cannot place a crossing on Levin's form (both forms vanish at one
+/// parameter): an error, not a float guess.
+fn exact_crossings(
+    param: &ComponentParam,
+    exact: &ExactParam,
+    h: &[RBig; 4],
+) -> Result<Crossings, Error> {
     let found = match (exact, param) {
         (ExactParam::Irrational, ComponentParam::Rational { x, .. }) => {
             super::infinity::plane_crossings(x, h).map(|values| {
@@ -2303,18 +2312,17 @@ fn exact_crossings(param: &ComponentParam, exact: &ExactParam, h: &[RBig; 4]) ->
                 d: d.clone(),
                 degree: *degree,
             };
-            match crate::affine::levin_plane_crossings(h, &primary, s, alternate.as_deref()) {
-                Ok(events) => Some(levin_crossings(events)),
-                Err(_) => return Crossings::Unknown,
-            }
+            let events =
+                crate::affine::levin_plane_crossings(h, &primary, s, alternate.as_deref())?;
+            Some(levin_crossings(events))
         }
-        (ExactParam::Irrational, _) => return Crossings::Unknown,
+        (ExactParam::Irrational, _) => return Ok(Crossings::Unknown),
         _ => exact_crossings_of(exact, h),
     };
-    match found {
+    Ok(match found {
         None => Crossings::InPlane,
         Some(c) => Crossings::Exact(c),
-    }
+    })
 }
 
 /// The crossings of [`crate::affine::levin_plane_crossings`]: the sheets at one parameter
