@@ -193,6 +193,20 @@ pub struct Curve {
     pub connected: Vec<Vec<usize>>,
 }
 
+impl Curve {
+    /// The curve of `classification` with nothing in it yet: no component, singular point,
+    /// piece or connection (its producer fills them in).
+    pub fn empty(classification: Classification) -> Curve {
+        Curve {
+            classification,
+            components: Vec::new(),
+            singular_points: Vec::new(),
+            pieces: Vec::new(),
+            connected: Vec::new(),
+        }
+    }
+}
+
 /// The rational `v` as a [`Number`].
 pub fn rational(v: RBig) -> Number {
     NumberFieldElement::rational(v)

@@ -998,13 +998,7 @@ fn conjugate_pair_curve(
     }
     let delta = Some(&d);
     let real = |e: &Quadratic| e.sign() == Some(Sign::Positive);
-    let mut curve = Curve {
-        classification,
-        components: Vec::new(),
-        singular_points: Vec::new(),
-        pieces: Vec::new(),
-        connected: Vec::new(),
-    };
+    let mut curve = Curve::empty(classification);
     let reals: Vec<bool> = sides.iter().map(|s| real(&s.2)).collect();
     if reals[0] && reals[1] {
         let (ext, ps) = real_ends(&sides[0], delta);
@@ -1220,13 +1214,7 @@ fn concurrent_lines_curve(
             x.iter().map(|p| curve::rational(p.coeff(2))).collect(),
         ));
     }
-    let mut curve = Curve {
-        classification,
-        components: Vec::new(),
-        singular_points: Vec::new(),
-        pieces: Vec::new(),
-        connected: Vec::new(),
-    };
+    let mut curve = Curve::empty(classification);
     for end in &ends {
         let component = curve.components.len();
         curve.components.push(Component {
@@ -1423,13 +1411,7 @@ fn ruled_lines(
         // four real lines meeting at four real points: the plane-pair routes
         return None;
     }
-    let mut curve = Curve {
-        classification,
-        components: Vec::new(),
-        singular_points: Vec::new(),
-        pieces: Vec::new(),
-        connected: Vec::new(),
-    };
+    let mut curve = Curve::empty(classification);
     for (family, is_real) in families.iter().zip(real) {
         if !is_real {
             for _ in 0..2 {

@@ -34,13 +34,7 @@ pub(crate) fn single_curve(classification: Classification, q: &Quadric) -> Curve
         (inertia.negative, inertia.positive)
     };
     let m = Matrix::from_array(q.matrix().clone());
-    let mut curve = Curve {
-        classification,
-        components: Vec::new(),
-        singular_points: Vec::new(),
-        pieces: Vec::new(),
-        connected: Vec::new(),
-    };
+    let mut curve = Curve::empty(classification);
     let kernel = || -> Vec<Point> {
         m.kernel()
             .into_iter()
