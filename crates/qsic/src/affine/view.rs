@@ -14,7 +14,6 @@ use crate::classify::ComponentKind;
 use crate::error::Error;
 use crate::param::Curve;
 use crate::quadric::Quadric;
-use qsic_algebra::IBig;
 
 /// Everything the affine view says about a pair: the surfaces' names, the curve in ℝ³ when
 /// its exact components are available, and the relation of two solid ellipsoids.
@@ -197,18 +196,6 @@ pub fn affine_view_of_curve(
     assemble(a, b, chart, planes, curve)
 }
 
-/// Whether `a ∝ b` (their primitive integer matrices agree up to sign).
-fn proportional(a: &Quadric, b: &Quadric) -> bool {
-    let (ma, mb) = (a.integer_matrix().entries(), b.integer_matrix().entries());
-    let Some((i, j)) = (0..16)
-        .map(|k| (k / 4, k % 4))
-        .find(|&(i, j)| ma[i][j] != IBig::ZERO)
-    else {
-        return false;
-    };
-    (0..4).all(|k| (0..4).all(|l| &ma[k][l] * &mb[i][j] == &mb[k][l] * &ma[i][j]))
-}
-
 /// The view from its curve part: the surfaces' names, and the solids' relation of two
 /// ellipsoids in the default chart.
 fn assemble(
@@ -238,7 +225,8 @@ fn assemble(
     };
     AffineView {
         surfaces,
-        same: matches!((a, b), (Some(a), Some(b)) if proportional(a, b)),
+        // a quadric is never the zero form, so dependence is proportionality
+        same: matches!((a, b), (Some(a), Some(b)) if a.integer_matrix().is_proportional(b.integer_matrix())),
         curve,
         solids,
     }

@@ -43,6 +43,7 @@ pub(crate) fn single_curve(classification: Classification, q: &Quadric) -> Curve
     };
     match (hi, lo) {
         (3, 0) => {
+            // rank 3 (inertia (3, 0) is exact): the kernel is one vector
             let vertex = kernel().swap_remove(0);
             curve.components.push(component(
                 ComponentKind::Point,
@@ -57,6 +58,7 @@ pub(crate) fn single_curve(classification: Classification, q: &Quadric) -> Curve
             curve.connected.push(vec![0]);
         }
         (2, 0) => {
+            // rank 2: the kernel is two vectors, the real line
             let k = kernel();
             let x = std::array::from_fn(|i| Poly::new(vec![k[0][i].clone(), k[1][i].clone()]));
             curve.components.push(component(
