@@ -38,6 +38,7 @@ __all__ = [
     "first_contact",
     "FIELDS",
     "MAX_THREADS",
+    "DEFAULT_BUDGET",
 ]
 
 #: The fields of a classification, in the order of the JSON result object.
@@ -239,22 +240,50 @@ class Classification:
 
 
 def classify(
-    a: QuadricLike, b: QuadricLike, *, affine: bool = True, chart: Optional[str] = None
+    a: QuadricLike,
+    b: QuadricLike,
+    *,
+    affine: bool = True,
+    chart: Optional[str] = None,
+    budget: Optional[int] = None,
 ) -> Classification:
     """Classifies the intersection of ``a`` and ``b`` (each a :class:`Quadric` or anything
     ``Quadric()`` takes; one of them may be the zero form ``"0"``).
 
     ``affine=False`` leaves out the affine view (like ``--projective``: it builds the exact
     curve, far costlier than the classification); ``chart`` is the plane at infinity of the
-    affine view, a linear form ``"a*x+b*y+c*z+d*w"`` (default ``"w"``).
+    affine view, a linear form ``"a*x+b*y+c*z+d*w"`` (default ``"w"``). ``budget``: the work
+    units the call may spend (:data:`DEFAULT_BUDGET` by default; README, "Work budget").
 
     Raises:
-        QsicError: a bad quadric (message prefixed ``A: ``/``B: ``), or both zero.
+        QsicError: a bad quadric (message prefixed ``A: ``/``B: ``), both zero, a budget
+            that is not a positive integer, or ``over the work budget: …``.
     """
     na = _side_native("A", a)
     nb = _side_native("B", b)
-    line, text = _qsic.classify(na, nb, affine=affine, chart=chart)
+    line, text = _qsic.classify(na, nb, affine=affine, chart=chart, budget=_budget(budget))
     return Classification(json.loads(line), text)
+
+
+#: The work budget of one call, or of one row of :func:`classify_many`, when ``budget`` is
+#: not given: the CLI's ``--line-budget`` default, 10¹² units (README, "Work budget").
+DEFAULT_BUDGET: int = _qsic.DEFAULT_BUDGET
+
+
+def _budget(budget: Any) -> Optional[int]:
+    """``budget`` checked: None, or an integer from 1 to 2⁶⁴ − 1."""
+    if budget is None:
+        return None
+    wanted = "budget must be a positive integer of work units, at most 2**64 - 1"
+    if isinstance(budget, (bool, np.bool_)):
+        raise QsicError(f"{wanted}, got {budget!r}")
+    try:
+        b = operator.index(budget)
+    except TypeError:
+        raise QsicError(f"{wanted}, got {budget!r}") from None
+    if not 1 <= b <= 2**64 - 1:
+        raise QsicError(f"{wanted}, got {b}")
+    return b
 
 
 def _side_native(name: str, q: Any) -> Optional[_qsic.NativeQuadric]:
@@ -293,6 +322,7 @@ def classify_many(
     affine: bool = False,
     chart: Optional[str] = None,
     threads: Optional[int] = None,
+    budget: Optional[int] = None,
 ) -> Dict[str, np.ndarray]:
     """Classifies ``A[k]`` against ``B[k]`` for every ``k``, on all cores with the GIL released.
 
@@ -315,19 +345,23 @@ def classify_many(
     bytes, complex, NaN, an object that cannot be read), a number beyond the library's limits.
 
     ``threads``: the number of threads, an integer from 1 to :data:`MAX_THREADS` (256);
-    default: all cores.
+    default: all cores. ``budget``: the work units each row may spend (a row over it has the
+    error ``over the work budget: …``); default :data:`DEFAULT_BUDGET`.
 
     Raises:
         TypeError: ``A`` or ``B`` is not a sequence of matrices.
         QsicError: an array whose shape is not ``(N, 4, 4)``, lengths that differ, or
-            ``threads`` out of range or not an integer; nothing is computed then.
+            ``threads`` or ``budget`` out of range or not an integer; nothing is computed then.
     """
     threads = _thread_count(threads)
+    budget = _budget(budget)
     ka, da, na = _inputs.batch_side("A", A)
     kb, db, nb = _inputs.batch_side("B", B)
     if na != nb:
         raise QsicError(f"A holds {na} matrices and B {nb}: the lengths must be equal")
-    cols = _qsic.classify_many(ka, da, kb, db, affine=affine, chart=chart, threads=threads)
+    cols = _qsic.classify_many(
+        ka, da, kb, db, affine=affine, chart=chart, threads=threads, budget=budget
+    )
     out: Dict[str, np.ndarray] = {}
     for key in FIELDS:
         if key == "case":
@@ -347,20 +381,32 @@ def _objects(values: List[Any]) -> np.ndarray:
 
 
 def param(
-    a: QuadricLike, b: QuadricLike, *, affine: bool = True, chart: Optional[str] = None
+    a: QuadricLike,
+    b: QuadricLike,
+    *,
+    affine: bool = True,
+    chart: Optional[str] = None,
+    budget: Optional[int] = None,
 ) -> Dict[str, Any]:
     """The exact curve: the JSON object of ``qsic param --json A B`` (README, "qsic param"):
     the classification's fields, ``numbers``, every component's parameterization as strings
     that sympy reads, and the real singular points; with ``affine`` (the default) each real
     conic's ``affine`` data (type, centre or vertex, axes) and the pair's ``affine`` object in
     the chart ``chart = 0`` at infinity (default ``w``), as ``--chart``; ``affine=False`` is
-    ``--projective``.
+    ``--projective``. ``budget``: the work units the call may spend (as :func:`classify`).
 
     Raises:
-        QsicError: a bad quadric, or ``not yet: …`` for a class whose curve is not built.
+        QsicError: a bad quadric, ``not yet: …`` for a class whose curve is not built, or
+            ``over the work budget: …``.
     """
     return json.loads(
-        _qsic.param(_side_native("A", a), _side_native("B", b), affine=affine, chart=chart)
+        _qsic.param(
+            _side_native("A", a),
+            _side_native("B", b),
+            affine=affine,
+            chart=chart,
+            budget=_budget(budget),
+        )
     )
 
 
@@ -372,6 +418,7 @@ def sample(
     tolerance: Optional[float] = None,
     chart: Optional[str] = None,
     affine: bool = True,
+    budget: Optional[int] = None,
 ) -> Dict[str, Any]:
     """Real points on every real piece of the curve: the JSON object of ``qsic sample``, with
     every polyline a NumPy array.
@@ -380,6 +427,7 @@ def sample(
     vectors ``[x, y, z, w]``) and ``affine`` with ``branches`` (``(n, 3)`` arrays in the chart
     ``chart = 0`` at infinity, default ``w``) and ``points_at_infinity`` (a ``(k, 4)`` array).
     At least ``points`` points per piece; with ``tolerance``, chords within it in the chart.
+    ``budget``: the work units the call may spend (as :func:`classify`).
 
     Raises:
         QsicError: as :func:`param`, and for bad options.
@@ -392,6 +440,7 @@ def sample(
             tolerance=tolerance,
             chart=chart,
             affine=affine,
+            budget=_budget(budget),
         )
     )
     for piece in out["components"]:

@@ -8,6 +8,7 @@ from ._qsic import QsicError as QsicError
 
 FIELDS: Tuple[str, ...]
 MAX_THREADS: int
+DEFAULT_BUDGET: int
 
 Number = Union[int, float, str, Any]  # also Fraction, Decimal, NumPy scalars
 QuadricLike = Union["Quadric", str, Sequence[Sequence[Number]], np.ndarray]
@@ -75,12 +76,30 @@ class Classification:
     def affine(self) -> Optional[Dict[str, Any]]: ...
     def to_dict(self) -> Dict[str, Any]: ...
 
-def classify(a: QuadricLike, b: QuadricLike, *, affine: bool = True, chart: Optional[str] = None) -> Classification: ...
+def classify(
+    a: QuadricLike,
+    b: QuadricLike,
+    *,
+    affine: bool = True,
+    chart: Optional[str] = None,
+    budget: Optional[int] = None,
+) -> Classification: ...
 def classify_many(
-    A: Any, B: Any, *, affine: bool = False, chart: Optional[str] = None, threads: Optional[int] = None
+    A: Any,
+    B: Any,
+    *,
+    affine: bool = False,
+    chart: Optional[str] = None,
+    threads: Optional[int] = None,
+    budget: Optional[int] = None,
 ) -> Dict[str, np.ndarray]: ...
 def param(
-    a: QuadricLike, b: QuadricLike, *, affine: bool = True, chart: Optional[str] = None
+    a: QuadricLike,
+    b: QuadricLike,
+    *,
+    affine: bool = True,
+    chart: Optional[str] = None,
+    budget: Optional[int] = None,
 ) -> Dict[str, Any]: ...
 def sample(
     a: QuadricLike,
@@ -90,6 +109,7 @@ def sample(
     tolerance: Optional[float] = None,
     chart: Optional[str] = None,
     affine: bool = True,
+    budget: Optional[int] = None,
 ) -> Dict[str, Any]: ...
 def motion(a: MovingLike, b: MovingLike, range: Range = None) -> Dict[str, Any]: ...
 def first_contact(a: MovingLike, b: MovingLike, range: Range = None) -> Dict[str, Any]: ...

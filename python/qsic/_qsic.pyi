@@ -4,6 +4,7 @@ NumPy arrays and Python numbers and turn them into what these take."""
 from typing import Dict, List, Optional, Tuple, Union
 
 MAX_THREADS: int
+DEFAULT_BUDGET: int
 MAX_NUMBER_DIGITS: int
 
 class QsicError(ValueError):
@@ -23,6 +24,7 @@ def classify(
     b: Optional[NativeQuadric],
     affine: bool = True,
     chart: Optional[str] = None,
+    budget: Optional[int] = None,
 ) -> Tuple[str, str]: ...
 def classify_many(
     a_kind: str,
@@ -32,12 +34,14 @@ def classify_many(
     affine: bool = False,
     chart: Optional[str] = None,
     threads: Optional[int] = None,
+    budget: Optional[int] = None,
 ) -> Dict[str, Union[bytes, list]]: ...
 def param(
     a: Optional[NativeQuadric],
     b: Optional[NativeQuadric],
     affine: bool = True,
     chart: Optional[str] = None,
+    budget: Optional[int] = None,
 ) -> str: ...
 def sample(
     a: Optional[NativeQuadric],
@@ -46,6 +50,7 @@ def sample(
     tolerance: Optional[float] = None,
     chart: Optional[str] = None,
     affine: bool = True,
+    budget: Optional[int] = None,
 ) -> str: ...
 def motion(a: List[str], b: List[str], t0: Optional[str] = None, t1: Optional[str] = None) -> str: ...
 def first_contact(

@@ -21,9 +21,9 @@ use pyo3::types::{PyBytes, PyDict, PyList, PyString};
 use qsic::affine::Chart;
 use qsic::io::{moving_matrix_from_polynomial, moving_matrix_from_rows, MovingMatrix};
 use qsic::param::sample::SampleOptions;
-use qsic::{classify_allowing_zero, Error, Quadric};
+use qsic::{classify_allowing_zero, Budget, Error, Quadric};
 use qsic_algebra::RBig;
-use qsic_cli::batch::Answer;
+use qsic_cli::batch::{Answer, DEFAULT_LINE_BUDGET};
 use qsic_cli::output::{classification_to_json_line, human_report, ClassificationJson};
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -223,24 +223,26 @@ fn catch_panic<T>(f: impl FnOnce() -> T) -> Result<T, String> {
 /// The JSON object of `qsic classify --json` (with the `"affine"` object unless `affine` is
 /// false) and the text report of `qsic classify`.
 #[pyfunction]
-#[pyo3(signature = (a, b, affine = true, chart = None))]
+#[pyo3(signature = (a, b, affine = true, chart = None, budget = None))]
 fn classify(
     py: Python<'_>,
     a: Option<PyRef<'_, NativeQuadric>>,
     b: Option<PyRef<'_, NativeQuadric>>,
     affine: bool,
     chart: Option<&str>,
+    budget: Option<u64>,
 ) -> PyResult<(String, String)> {
     let (chart, chart_text) = chart_of(chart)?;
     let (qa, qb, planes) = quadrics((a.as_deref(), b.as_deref()));
+    let budget = Budget::new(budget.unwrap_or(DEFAULT_LINE_BUDGET));
     py.detach(|| {
         catch_panic(|| {
-            let c = classify_allowing_zero(qa, qb)
-                .map_err(|e| format!("A and B: both are zero: {e}"))?;
+            let c = classified(qa, qb, &budget)?;
             let mut line = classification_to_json_line(&c);
             let mut text = human_report(&c);
             if affine {
-                let view = qsic::affine::affine_view(qa, qb, &chart, planes);
+                let view = qsic::affine::affine_view_within(qa, qb, &chart, planes, &budget)
+                    .map_err(|e| e.to_string())?;
                 line.pop();
                 line.push_str(",\"affine\":");
                 line.push_str(&qsic_cli::affine::to_json(&view, &chart_text).to_string());
@@ -338,19 +340,47 @@ fn side<'a>(kind: &str, data: &'a Bound<'_, PyAny>) -> PyResult<Side<'a>> {
 /// What one row of a batch gives.
 type Row = Result<(ClassificationJson, Option<String>), String>;
 
-fn classify_row(a: &Side<'_>, b: &Side<'_>, k: usize, affine: Option<&(Chart, String)>) -> Row {
+fn classify_row(
+    a: &Side<'_>,
+    b: &Side<'_>,
+    k: usize,
+    affine: Option<&(Chart, String)>,
+    units: u64,
+) -> Row {
     let qa = a.quadric(k).map_err(|e| format!("A: {e}"))?;
     let qb = b.quadric(k).map_err(|e| format!("B: {e}"))?;
+    let budget = Budget::new(units);
     catch_panic(|| {
-        let c = classify_allowing_zero(qa.as_ref(), qb.as_ref())
-            .map_err(|e| format!("A and B: both are zero: {e}"))?;
-        let view = affine.map(|(chart, text)| {
-            qsic_cli::affine::affine_json(qa.as_ref(), qb.as_ref(), chart, text, [false, false])
-                .to_string()
-        });
+        let c = classified(qa.as_ref(), qb.as_ref(), &budget)?;
+        let view = affine
+            .map(|(chart, text)| {
+                qsic_cli::affine::affine_json_within(
+                    qa.as_ref(),
+                    qb.as_ref(),
+                    chart,
+                    text,
+                    [false, false],
+                    &budget,
+                )
+                .map(|v| v.to_string())
+            })
+            .transpose()
+            .map_err(|e| e.to_string())?;
         Ok((ClassificationJson::from(&c), view))
     })
     .and_then(|r| r)
+}
+
+/// The classification of a pair (either may be the zero form) spending `budget`.
+fn classified(
+    a: Option<&Quadric>,
+    b: Option<&Quadric>,
+    budget: &Budget,
+) -> Result<qsic::Classification, String> {
+    match (a, b) {
+        (Some(a), Some(b)) => qsic::classify_within(a, b, budget).map_err(|e| e.to_string()),
+        _ => classify_allowing_zero(a, b).map_err(|e| format!("A and B: both are zero: {e}")),
+    }
 }
 
 /// The most threads [`classify_many`] takes: beyond the cores threads only add start-up and
@@ -402,7 +432,7 @@ impl<'py> Strings<'py> {
 /// the string, list and error columns, the native bytes of an `int8` array for `case` (0:
 /// none), and the `"affine"` objects as JSON texts when `affine`.
 #[pyfunction]
-#[pyo3(signature = (a_kind, a, b_kind, b, affine = false, chart = None, threads = None))]
+#[pyo3(signature = (a_kind, a, b_kind, b, affine = false, chart = None, threads = None, budget = None))]
 #[allow(clippy::too_many_arguments)]
 fn classify_many<'py>(
     py: Python<'py>,
@@ -413,7 +443,9 @@ fn classify_many<'py>(
     affine: bool,
     chart: Option<&str>,
     threads: Option<i64>,
+    budget: Option<u64>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let units = budget.unwrap_or(DEFAULT_LINE_BUDGET);
     let threads = thread_count(threads)?;
     let a = side(a_kind, a)?;
     let b = side(b_kind, b)?;
@@ -428,7 +460,7 @@ fn classify_many<'py>(
     let work = || -> Vec<Row> {
         (0..n)
             .into_par_iter()
-            .map(|k| classify_row(&a, &b, k, chart.as_ref()))
+            .map(|k| classify_row(&a, &b, k, chart.as_ref(), units))
             .collect()
     };
     let rows: Vec<Row> = py
@@ -547,12 +579,14 @@ fn answer_json(
     py: Python<'_>,
     answer: &(impl Answer + ?Sized),
     pair: Pair<'_>,
+    budget: Option<u64>,
 ) -> PyResult<String> {
     let (qa, qb, planes) = quadrics(pair);
+    let budget = Budget::new(budget.unwrap_or(DEFAULT_LINE_BUDGET));
     py.detach(|| {
         catch_panic(|| {
             answer
-                .answer(qa, qb, planes)
+                .answer(qa, qb, planes, &budget)
                 .map(|fields| format!("{{{fields}}}"))
         })
         .and_then(|r| r)
@@ -562,26 +596,28 @@ fn answer_json(
 
 /// The JSON object of `qsic param --json` (`affine = false`: `--projective`; `chart`: `--chart`).
 #[pyfunction]
-#[pyo3(signature = (a, b, affine = true, chart = None))]
+#[pyo3(signature = (a, b, affine = true, chart = None, budget = None))]
 fn param(
     py: Python<'_>,
     a: Option<PyRef<'_, NativeQuadric>>,
     b: Option<PyRef<'_, NativeQuadric>>,
     affine: bool,
     chart: Option<&str>,
+    budget: Option<u64>,
 ) -> PyResult<String> {
     let answer = qsic_cli::param::Param {
         projective_only: !affine,
         chart: Some(chart_of(chart)?),
     };
-    answer_json(py, &answer, (a.as_deref(), b.as_deref()))
+    answer_json(py, &answer, (a.as_deref(), b.as_deref()), budget)
 }
 
 /// The JSON object of `qsic sample --format json` with at least `points` points per piece,
 /// chords within `tolerance` in the chart, and `chart = 0` at infinity (`None`: `w`);
 /// `affine = false`: `--projective`.
 #[pyfunction]
-#[pyo3(signature = (a, b, points = 64, tolerance = None, chart = None, affine = true))]
+#[pyo3(signature = (a, b, points = 64, tolerance = None, chart = None, affine = true, budget = None))]
+#[allow(clippy::too_many_arguments)]
 fn sample(
     py: Python<'_>,
     a: Option<PyRef<'_, NativeQuadric>>,
@@ -590,6 +626,7 @@ fn sample(
     tolerance: Option<f64>,
     chart: Option<&str>,
     affine: bool,
+    budget: Option<u64>,
 ) -> PyResult<String> {
     let mut options = SampleOptions {
         points,
@@ -604,7 +641,7 @@ fn sample(
         projective_only: !affine,
         chart_text: chart.unwrap_or("w").to_owned(),
     };
-    answer_json(py, &answer, (a.as_deref(), b.as_deref()))
+    answer_json(py, &answer, (a.as_deref(), b.as_deref()), budget)
 }
 
 /// A moving quadric: one polynomial text with coefficients rational in `t`, or 16 texts.
@@ -675,6 +712,7 @@ fn first_contact(
 fn _qsic(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("QsicError", m.py().get_type::<QsicError>())?;
     m.add("MAX_THREADS", MAX_THREADS)?;
+    m.add("DEFAULT_BUDGET", DEFAULT_LINE_BUDGET)?;
     m.add("MAX_NUMBER_DIGITS", qsic::limits::MAX_NUMBER_DIGITS)?;
     m.add_class::<NativeQuadric>()?;
     m.add_function(wrap_pyfunction!(quadric_from_text, m)?)?;

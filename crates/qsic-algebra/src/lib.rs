@@ -9,6 +9,7 @@
 //! | [`mpoly`] | sparse multivariate rational polynomials (up to 8 variables): arithmetic, degrees, coefficients in one variable, quadratic forms |
 //! | [`roots`] | real root isolation with rational (dyadic) isolating intervals |
 //! | [`field`] | exact real extensions of ℚ: ℚ(√δ) ([`field::Quadratic`]), ℚ(α) by dynamic evaluation ([`field::NumberField`]) |
+//! | [`budget`] | [`Budget`]: work units spent by the loops that can run long, explicit and deterministic |
 //! | [`algebraic`] | real algebraic numbers (refinement shared across calls) and the exact sign of a polynomial at them |
 //! | [`linalg`] | matrices over a ring or field: one determinant/minor implementation (expansion for `N ≤ 4`, Bareiss), Gauss–Jordan (rank, kernel, solve, inverse), congruence diagonalization, real points and plane pairs of rational quadratic forms |
 //! | [`matrix`] | symmetric 4×4 integer matrices, exact inertia, matrix pencils `λA − μB` over any coefficient ring |
@@ -22,6 +23,7 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod algebraic;
+pub mod budget;
 pub mod conic;
 pub mod factor;
 pub mod field;
@@ -38,6 +40,7 @@ pub mod sign;
 pub mod testing;
 
 pub use algebraic::AlgebraicReal;
+pub use budget::{Budget, Exhausted};
 pub use dashu_int::IBig;
 pub use dashu_ratio::RBig;
 pub use mpoly::MPoly;

@@ -47,6 +47,7 @@ pub use certified::{
 };
 pub use simplest::{between_roots, floor_of_root, simplest_rational_in, Bound};
 
+use crate::budget::{poly_step_units, Budget, Exhausted};
 use crate::poly::Poly;
 use crate::sign::Sign;
 use dashu_int::ops::{BitTest, UnsignedAbs};
@@ -147,9 +148,23 @@ pub fn isolate_squarefree_real_roots(sf: &Poly) -> Vec<RootInterval> {
 
 /// [`isolate_squarefree_real_roots`] by Descartes' rule alone (the exact path; module docs).
 pub fn isolate_squarefree_real_roots_descartes(sf: &Poly) -> Vec<RootInterval> {
+    isolate_squarefree_real_roots_within(sf, &Budget::unlimited())
+        .expect("an unlimited budget is never spent")
+}
+
+/// [`isolate_squarefree_real_roots_descartes`] spending `budget`: each cell of the work list
+/// costs about `(d + 1)²·ℓ` units (the Descartes test's Taylor shift on a polynomial of
+/// degree `d` with `ℓ`-limb coefficients).
+///
+/// # Errors
+/// [`Exhausted`] when the budget runs out.
+pub fn isolate_squarefree_real_roots_within(
+    sf: &Poly,
+    budget: &Budget,
+) -> Result<Vec<RootInterval>, Exhausted> {
     debug_assert!(sf.is_squarefree(), "isolate_squarefree_real_roots: {sf}");
     if sf.degree().unwrap_or(0) == 0 {
-        return Vec::new();
+        return Ok(Vec::new());
     }
     let mut sf = sf.clone();
     let mut out = Vec::new();
@@ -158,13 +173,13 @@ pub fn isolate_squarefree_real_roots_descartes(sf: &Poly) -> Vec<RootInterval> {
         sf = sf.shift_down(1);
     }
     out.extend(
-        isolate_positive(&sf.scale_var(&IBig::NEG_ONE))
+        isolate_positive(&sf.scale_var(&IBig::NEG_ONE), budget)?
             .into_iter()
             .map(RootInterval::negated),
     );
-    out.extend(isolate_positive(&sf));
+    out.extend(isolate_positive(&sf, budget)?);
     out.sort_by(|a, b| a.lo().cmp(b.lo()));
-    out
+    Ok(out)
 }
 
 /// An open interval `(lo·2^s, hi·2^s)` of the work list (`0 < lo < hi` integers), with the
@@ -204,10 +219,15 @@ enum Newton {
 }
 
 /// Isolates the positive roots of the square-free `p0` with `p0(0) ≠ 0` (none for a constant).
-fn isolate_positive(p0: &Poly) -> Vec<RootInterval> {
+fn isolate_positive(p0: &Poly, budget: &Budget) -> Result<Vec<RootInterval>, Exhausted> {
     let mut isolation = PositiveIsolation::new(p0);
-    while isolation.step() {}
-    isolation.roots()
+    let d = p0.degree().unwrap_or(0);
+    while let Some(cell) = isolation.work.last() {
+        let bits = isolation.p.max_bits() + d * (bit_len(&cell.hi) + cell.s.unsigned_abs());
+        budget.spend(poly_step_units(d, bits).saturating_mul(d as u64 + 1))?;
+        isolation.step();
+    }
+    Ok(isolation.roots())
 }
 
 /// The isolation of the positive roots of the square-free `p0` with `p0(0) ≠ 0`, run one
@@ -948,6 +968,32 @@ mod cluster_tests {
         let lin = Poly::new(vec![IBig::from(-1), a]);
         let p = &Poly::from_i64s(&[0, 0, 0, 0, 1]) - &(&lin * &lin).scale(&IBig::from(2));
         assert_eq!(isolated(&p).len(), 4);
+    }
+
+    /// The budgeted isolation gives the plain one's intervals, spends more on a cluster than
+    /// on separated roots of the same degree and size, and stops one unit short.
+    #[test]
+    fn budgeted_isolation_spends_with_the_work() {
+        let a = ten_pow(400);
+        let lin = Poly::new(vec![IBig::from(-1), a.clone()]);
+        let cluster = &Poly::from_i64s(&[0, 0, 0, 0, 1]) - &(&lin * &lin).scale(&IBig::from(2));
+        // four separated roots with coefficients as long: (x² − 2)(x² − 3)·10^800 + 1
+        let apart = &(&Poly::from_i64s(&[-2, 0, 1]) * &Poly::from_i64s(&[-3, 0, 1]))
+            .scale(&(&a * &a))
+            + &Poly::from_i64s(&[1]);
+        let spend = |p: &Poly| {
+            let budget = Budget::unlimited();
+            let r = isolate_squarefree_real_roots_within(p, &budget).unwrap();
+            assert_eq!(r, isolate_squarefree_real_roots(p));
+            budget.used()
+        };
+        let (c, s) = (spend(&cluster), spend(&apart));
+        assert!(c > 2 * s, "cluster {c}, apart {s}");
+        assert_eq!(
+            isolate_squarefree_real_roots_within(&cluster, &Budget::new(c - 1)),
+            Err(Exhausted { limit: c - 1 })
+        );
+        assert!(isolate_squarefree_real_roots_within(&cluster, &Budget::new(c)).is_ok());
     }
 
     /// Refinement to 2^−20000 takes few quadratic steps, and the result is an interval of

@@ -14,7 +14,9 @@
 //! ellipsoids (spheres included). [`conic_json`]: a conic component's affine data in
 //! `qsic param`.
 
-use qsic::affine::{affine_view, approx, AffineConic, AffineView, Chart, ConicShape};
+use qsic::affine::{
+    affine_view, affine_view_within, approx, AffineConic, AffineView, Chart, ConicShape,
+};
 use qsic::param::expr::Names;
 use qsic::param::Number;
 use qsic::Quadric;
@@ -32,6 +34,22 @@ pub fn affine_json(
 ) -> Value {
     let view = affine_view(a, b, chart, planes);
     to_json(&view, chart_text)
+}
+
+/// [`affine_json`] spending `budget` on the curve where the view builds it.
+///
+/// # Errors
+/// [`qsic::Error::BudgetExceeded`] when the budget runs out first.
+pub fn affine_json_within(
+    a: Option<&Quadric>,
+    b: Option<&Quadric>,
+    chart: &Chart,
+    chart_text: &str,
+    planes: [bool; 2],
+    budget: &qsic::Budget,
+) -> Result<Value, qsic::Error> {
+    let view = affine_view_within(a, b, chart, planes, budget)?;
+    Ok(to_json(&view, chart_text))
 }
 
 /// The JSON of an [`AffineView`].

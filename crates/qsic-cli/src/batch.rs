@@ -24,7 +24,7 @@ pub use crate::reader::{Content, LineReader, RawLine};
 use crate::stream::stream;
 pub use crate::stream::Window;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use qsic::{classify_allowing_zero, Quadric};
+use qsic::{classify_allowing_zero, classify_within, Budget, Quadric};
 use serde_json::Value;
 use std::io::{self, Read, Write};
 use std::panic::{self, AssertUnwindSafe};
@@ -70,13 +70,47 @@ pub(crate) fn open_record(id: Option<&str>) -> String {
 /// an error line.
 pub trait Answer: Sync {
     /// The fields or the error message; `planes[i]`: the input was a plane (its quadric the
-    /// double plane).
+    /// double plane); the computation spends `budget` (over it: the message of
+    /// [`qsic::Error::BudgetExceeded`]).
     fn answer(
         &self,
         a: Option<&Quadric>,
         b: Option<&Quadric>,
         planes: [bool; 2],
+        budget: &Budget,
     ) -> Result<String, String>;
+}
+
+/// The work budget of one line, in the units of [`qsic::Budget`], when `--line-budget` is
+/// not given: 10¹², some twenty times the largest the README's worst cases spend (about
+/// an hour of CPU on this machine kind at the slowest rate measured), so that no
+/// documented input meets it and no line runs for ever.
+pub const DEFAULT_LINE_BUDGET: u64 = 1_000_000_000_000;
+
+/// Reads a work budget (`--line-budget`): a positive integer (`250000`) or a power of ten
+/// with an integer mantissa (`1e9`, `25e8`), at most `u64::MAX`.
+///
+/// # Errors
+/// A message naming the text and the form expected.
+pub fn parse_budget(text: &str) -> Result<u64, String> {
+    let bad =
+        || format!("'{text}': a positive integer of work units (like 250000 or 1e9) expected");
+    let (mantissa, exponent) = match text.split_once(['e', 'E']) {
+        Some((m, e)) => (m, e.parse::<u32>().map_err(|_| bad())?),
+        None => (text, 0),
+    };
+    if mantissa.is_empty() || !mantissa.bytes().all(|c| c.is_ascii_digit()) {
+        return Err(bad());
+    }
+    let units = mantissa
+        .parse::<u64>()
+        .ok()
+        .and_then(|m| 10u64.checked_pow(exponent).and_then(|p| m.checked_mul(p)))
+        .ok_or_else(|| format!("'{text}': more than {} work units", u64::MAX))?;
+    if units == 0 {
+        return Err(format!("'{text}': the budget must be positive"));
+    }
+    Ok(units)
 }
 
 /// `qsic classify`: the classification's fields, then the `"affine"` object (see
@@ -94,14 +128,21 @@ impl Answer for Classify {
         a: Option<&Quadric>,
         b: Option<&Quadric>,
         planes: [bool; 2],
+        budget: &Budget,
     ) -> Result<String, String> {
-        let c = classify_allowing_zero(a, b).map_err(|e| format!("A and B: both are zero: {e}"))?;
+        let c = match (a, b) {
+            (Some(a), Some(b)) => classify_within(a, b, budget).map_err(|e| e.to_string())?,
+            _ => {
+                classify_allowing_zero(a, b).map_err(|e| format!("A and B: both are zero: {e}"))?
+            }
+        };
         let mut out = String::with_capacity(512);
         write_classification_fields(&mut out, &c);
         if !self.projective_only {
             let default = (qsic::affine::Chart::default(), "w".to_owned());
             let (chart, text) = self.chart.as_ref().unwrap_or(&default);
-            let view = crate::affine::affine_json(a, b, chart, text, planes);
+            let view = crate::affine::affine_json_within(a, b, chart, text, planes, budget)
+                .map_err(|e| e.to_string())?;
             out.push_str(",\"affine\":");
             out.push_str(&view.to_string());
         }
@@ -118,12 +159,17 @@ pub fn answer_line(line: &RawLine) -> (String, bool) {
             projective_only: false,
             chart: None,
         },
+        DEFAULT_LINE_BUDGET,
     )
 }
 
-/// [`answer_line`] for any [`Answer`].
-pub fn answer_line_with<A: Answer + ?Sized>(line: &RawLine, answer: &A) -> (String, bool) {
-    answer_with(line, |line| quadrics_line(line, answer))
+/// [`answer_line`] for any [`Answer`], with a budget of `units` work units for the line.
+pub fn answer_line_with<A: Answer + ?Sized>(
+    line: &RawLine,
+    answer: &A,
+    units: u64,
+) -> (String, bool) {
+    answer_with(line, |line| quadrics_line(line, answer, units))
 }
 
 /// The output line of `work` on `line`: its text, or the error record of its failure.
@@ -133,16 +179,19 @@ pub(crate) fn answer_with<'a>(
 ) -> (String, bool) {
     match work(line) {
         Ok(text) => (text, true),
-        Err(failure) => {
-            let mut out = open_record(failure.id);
-            out.push_str("\"error\":{\"line\":");
-            out.push_str(&line.number.to_string());
-            out.push_str(",\"message\":");
-            write_json_string(&mut out, &failure.message);
-            out.push_str("}}");
-            (out, false)
-        }
+        Err(failure) => (error_record(line, &failure), false),
     }
+}
+
+/// The error object of `line` (without newline).
+pub(crate) fn error_record(line: &RawLine, failure: &LineFailure<'_>) -> String {
+    let mut out = open_record(failure.id);
+    out.push_str("\"error\":{\"line\":");
+    out.push_str(&line.number.to_string());
+    out.push_str(",\"message\":");
+    write_json_string(&mut out, &failure.message);
+    out.push_str("}}");
+    out
 }
 
 /// `f()`, or the message of its panic (a bug, reported on the line instead of aborting).
@@ -206,7 +255,24 @@ pub(crate) fn read_record(line: &RawLine) -> Result<Line<'_>, LineFailure<'_>> {
 fn quadrics_line<'a, A: Answer + ?Sized>(
     line: &'a RawLine,
     answer: &A,
+    units: u64,
 ) -> Result<String, LineFailure<'a>> {
+    let (id, fields) = line_work(line, |a, b, planes| {
+        answer.answer(a, b, planes, &Budget::new(units))
+    })?;
+    let mut out = open_record(id);
+    out.push_str(&fields);
+    out.push('}');
+    Ok(out)
+}
+
+/// The line's `id` and what `work` makes of its quadrics `A`, `B` (`None`: the zero form)
+/// and which of them were planes, or the line's failure: unreadable, a bad quadric, the
+/// error `work` answers, or its panic.
+pub(crate) fn line_work<'a, T>(
+    line: &'a RawLine,
+    work: impl FnOnce(Option<&Quadric>, Option<&Quadric>, [bool; 2]) -> Result<T, String>,
+) -> Result<(Option<&'a str>, T), LineFailure<'a>> {
     let record = read_record(line)?;
     let id = record.id;
     let fail = |message: String| LineFailure { id, message };
@@ -216,17 +282,11 @@ fn quadrics_line<'a, A: Answer + ?Sized>(
     };
     let a = quadric("A", &record.a)?;
     let b = quadric("B", &record.b)?;
-    let fields = match catch_panic(|| {
-        answer.answer(a.quadric.as_ref(), b.quadric.as_ref(), [a.plane, b.plane])
-    }) {
-        Ok(Ok(fields)) => fields,
-        Ok(Err(message)) => return Err(fail(message)),
-        Err(what) => return Err(fail(format!("internal error (a bug): {what}"))),
-    };
-    let mut out = open_record(id);
-    out.push_str(&fields);
-    out.push('}');
-    Ok(out)
+    match catch_panic(|| work(a.quadric.as_ref(), b.quadric.as_ref(), [a.plane, b.plane])) {
+        Ok(Ok(value)) => Ok((id, value)),
+        Ok(Err(message)) => Err(fail(message)),
+        Err(what) => Err(fail(format!("internal error (a bug): {what}"))),
+    }
 }
 
 /// How a batch ended.
@@ -275,9 +335,10 @@ pub fn run_answer<R: Read, W: Write + Send, A: Answer + ?Sized>(
     output: W,
     progress: bool,
     answer: &A,
+    units: u64,
 ) -> Result<Summary, BatchError> {
     run_with(input, output, progress, |line: &RawLine| {
-        answer_line_with(line, answer)
+        answer_line_with(line, answer, units)
     })
 }
 
@@ -328,7 +389,7 @@ pub fn run_in_window<R: Read, W: Write + Send, F: Fn(&RawLine) -> (String, bool)
     })
 }
 
-fn progress_bar(visible: bool) -> ProgressBar {
+pub(crate) fn progress_bar(visible: bool) -> ProgressBar {
     if !visible {
         return ProgressBar::hidden();
     }
@@ -624,6 +685,7 @@ mod tests {
                     projective_only: true,
                     chart: None,
                 },
+                DEFAULT_LINE_BUDGET,
             );
             let got: Value = serde_json::from_str(&answer)
                 .unwrap_or_else(|e| panic!("line {number}: output is not JSON ({e}): {answer}"));

@@ -27,6 +27,7 @@ pub mod contact;
 mod eigencurve;
 pub mod file;
 pub mod input;
+pub mod large;
 pub mod line;
 pub mod motion;
 pub mod motion_plot;

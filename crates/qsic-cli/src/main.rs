@@ -33,8 +33,9 @@ BATCH (--batch FILE, or --batch - for standard input):
   (null if missing): the result object, or
   {\"id\": ..., \"error\": {\"line\": n, \"message\": \"...\"}} with n the 1-based input line.
   Blank lines are skipped but counted in line numbers. Lines longer than 1 MiB are
-  answered with an error without being stored. All cores are used; output is written
-  and flushed chunk by chunk. A progress spinner appears on stderr if it is a terminal.
+  answered with an error without being stored. A line over its work budget
+  (--line-budget) is answered with an error. All cores are used; each answer is written
+  as soon as it and every answer before it are done. A progress spinner appears on stderr if it is a terminal.
 
 EXIT STATUS:
   0  success (batch: every line classified)
@@ -61,6 +62,19 @@ EXAMPLES:
     after_help = "Run 'qsic classify --help' for the input forms, the batch format and the exit codes."
 )]
 struct Cli {
+    /// The work budget of one query or one batch line, in work units (about one word
+    /// operation of the exact arithmetic each; this machine kind does 10^8 to 10^9 a
+    /// second): a computation over it stops with an error ("over the work budget"), a batch
+    /// answers the other lines. An integer or a power like 1e9; default 1e12.
+    #[arg(
+        long,
+        global = true,
+        value_name = "UNITS",
+        default_value = "1e12",
+        value_parser = batch::parse_budget
+    )]
+    line_budget: u64,
+
     #[command(subcommand)]
     command: Command,
 }
@@ -389,10 +403,11 @@ struct MotionArgs {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    let units = cli.line_budget;
     match cli.command {
         Command::Motion(args) => run_motion(&args),
-        Command::Param(args) => run_param(&args),
-        Command::Sample(args) => run_sample(&args),
+        Command::Param(args) => run_param(&args, units),
+        Command::Sample(args) => run_sample(&args, units),
         Command::Plot(args) => run_plot(&args),
         Command::Classify(args) => {
             let chart = match args.chart.as_deref().map(classify_chart).transpose() {
@@ -409,9 +424,10 @@ fn main() -> ExitCode {
                         projective_only: args.projective,
                         chart,
                     },
+                    units,
                 ),
                 (None, Some(a), Some(b)) => {
-                    run_single(a, b, args.json, args.projective, chart.as_ref())
+                    run_single(a, b, args.json, args.projective, chart.as_ref(), units)
                 }
                 _ => {
                     // clap's `required_unless_present` makes this unreachable; answer as a usage error.
@@ -472,7 +488,9 @@ fn run_single(
     json: bool,
     projective: bool,
     chart: Option<&(qsic::affine::Chart, String)>,
+    units: u64,
 ) -> ExitCode {
+    let budget = qsic::Budget::new(units);
     let default = (qsic::affine::Chart::default(), "w".to_owned());
     let (chart, chart_text) = chart.unwrap_or(&default);
     let read =
@@ -481,10 +499,19 @@ fn run_single(
         let sb = read("B", b)?;
         let planes = [sa.plane, sb.plane];
         let (qa, qb) = (sa.quadric, sb.quadric);
-        let c = qsic::classify_allowing_zero(qa.as_ref(), qb.as_ref())
-            .map_err(|e| format!("A and B: both are zero: {e}"))?;
+        let c = match (&qa, &qb) {
+            (Some(a), Some(b)) => {
+                qsic::classify_within(a, b, &budget).map_err(|e| e.to_string())?
+            }
+            _ => qsic::classify_allowing_zero(qa.as_ref(), qb.as_ref())
+                .map_err(|e| format!("A and B: both are zero: {e}"))?,
+        };
         let view = (!projective)
-            .then(|| qsic::affine::affine_view(qa.as_ref(), qb.as_ref(), chart, planes));
+            .then(|| {
+                qsic::affine::affine_view_within(qa.as_ref(), qb.as_ref(), chart, planes, &budget)
+            })
+            .transpose()
+            .map_err(|e| e.to_string())?;
         Ok((c, view))
     });
     let (classification, view) = match result {
@@ -599,13 +626,27 @@ fn run_batch<F: Fn(&batch::RawLine) -> (String, bool) + Sync>(
     path: &std::path::Path,
     answer: F,
 ) -> ExitCode {
+    run_batch_by(path, |input, output, progress| {
+        batch::run_with(input, output, progress, answer)
+    })
+}
+
+/// A batch from `path` (`-`: standard input) to standard output by `run`, and its exit code.
+fn run_batch_by(
+    path: &std::path::Path,
+    run: impl FnOnce(
+        &mut dyn io::Read,
+        io::BufWriter<io::Stdout>,
+        bool,
+    ) -> Result<batch::Summary, batch::BatchError>,
+) -> ExitCode {
     let progress = io::stderr().is_terminal();
     let stdout = io::BufWriter::with_capacity(1 << 20, io::stdout());
     let result = if path.as_os_str() == "-" {
-        batch::run_with(io::stdin().lock(), stdout, progress, answer)
+        run(&mut io::stdin().lock(), stdout, progress)
     } else {
         match File::open(path) {
-            Ok(file) => batch::run_with(file, stdout, progress, answer),
+            Ok(mut file) => run(&mut file, stdout, progress),
             Err(e) => {
                 eprintln!("error: cannot open {}: {e}", path.display());
                 return ExitCode::from(2);
@@ -621,9 +662,9 @@ fn run_batch<F: Fn(&batch::RawLine) -> (String, bool) + Sync>(
 }
 
 /// A batch of any [`batch::Answer`] on the line's quadrics (`param`, `sample`).
-fn run_batch_with<A: batch::Answer>(path: &std::path::Path, answer: &A) -> ExitCode {
+fn run_batch_with<A: batch::Answer>(path: &std::path::Path, answer: &A, units: u64) -> ExitCode {
     run_batch(path, |line: &batch::RawLine| {
-        batch::answer_line_with(line, answer)
+        batch::answer_line_with(line, answer, units)
     })
 }
 
@@ -664,7 +705,7 @@ fn usage_error(message: &str) -> ExitCode {
 }
 
 /// `qsic param`.
-fn run_param(args: &ParamArgs) -> ExitCode {
+fn run_param(args: &ParamArgs, units: u64) -> ExitCode {
     let chart = match args.chart.as_deref().map(classify_chart).transpose() {
         Ok(chart) => chart,
         Err(message) => {
@@ -677,7 +718,7 @@ fn run_param(args: &ParamArgs) -> ExitCode {
         chart,
     };
     let (a, b) = match (&args.input.batch, &args.input.a, &args.input.b) {
-        (Some(path), _, _) => return run_batch_with(path, &answer),
+        (Some(path), _, _) => return run_batch_with(path, &answer, units),
         (None, Some(a), Some(b)) => (a, b),
         _ => return usage_error("two quadrics A and B, or --batch FILE, are required"),
     };
@@ -685,7 +726,7 @@ fn run_param(args: &ParamArgs) -> ExitCode {
         Ok(pair) => pair,
         Err(code) => return code,
     };
-    let curve = match param::curve_of(qa.as_ref(), qb.as_ref()) {
+    let curve = match param::curve_within(qa.as_ref(), qb.as_ref(), &qsic::Budget::new(units)) {
         Ok(c) => c,
         Err(message) => {
             eprintln!("error: {message}");
@@ -711,7 +752,7 @@ fn run_param(args: &ParamArgs) -> ExitCode {
 }
 
 /// `qsic sample`.
-fn run_sample(args: &SampleArgs) -> ExitCode {
+fn run_sample(args: &SampleArgs, units: u64) -> ExitCode {
     let mut options = SampleOptions {
         points: args.points,
         tolerance: args.tolerance,
@@ -731,14 +772,18 @@ fn run_sample(args: &SampleArgs) -> ExitCode {
             return usage_error("--batch writes JSON Lines: --format csv and obj need A and B")
         }
         (Some(path), _, _) => {
-            return run_batch_with(
-                path,
-                &sample::Sample {
-                    options,
-                    projective_only: args.projective,
-                    chart_text: args.chart.clone().unwrap_or_else(|| "w".to_owned()),
-                },
-            )
+            let answer = sample::Sample {
+                options,
+                projective_only: args.projective,
+                chart_text: args.chart.clone().unwrap_or_else(|| "w".to_owned()),
+            };
+            // the one dispatch between the two batch routes (module `large`)
+            if answer.is_large() {
+                return run_batch_by(path, |input, output, progress| {
+                    qsic_cli::large::run_large(input, output, progress, &answer, units)
+                });
+            }
+            return run_batch_with(path, &answer, units);
         }
         (None, Some(a), Some(b)) => (a, b),
         _ => return usage_error("two quadrics A and B, or --batch FILE, are required"),
@@ -751,7 +796,12 @@ fn run_sample(args: &SampleArgs) -> ExitCode {
         curve,
         sampled,
         surfaces,
-    } = match sample::sample_of(qa.as_ref(), qb.as_ref(), &options) {
+    } = match sample::sample_within(
+        qa.as_ref(),
+        qb.as_ref(),
+        &options,
+        &qsic::Budget::new(units),
+    ) {
         Ok(r) => r,
         Err(message) => {
             eprintln!("error: {message}");

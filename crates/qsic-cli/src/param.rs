@@ -13,8 +13,8 @@ use crate::output::ClassificationJson;
 use qsic::affine::{affine_conic, affine_view_of_curve, common_surfaces, Chart};
 use qsic::classify::ComponentKind;
 use qsic::param::expr::{NamedNumber, Names};
-use qsic::param::{parameterize, ComponentParam, Curve};
-use qsic::{Error, Quadric};
+use qsic::param::{parameterize_within, ComponentParam, Curve};
+use qsic::{Budget, Error, Quadric};
 use serde::Serialize;
 use serde_json::Value;
 
@@ -24,6 +24,18 @@ use serde_json::Value;
 /// # Errors
 /// The message.
 pub fn curve_of(a: Option<&Quadric>, b: Option<&Quadric>) -> Result<Curve, String> {
+    curve_within(a, b, &Budget::unlimited())
+}
+
+/// [`curve_of`] spending `budget` ([`qsic::param::parameterize_within`]).
+///
+/// # Errors
+/// As [`curve_of`], and the budget's message when it runs out first.
+pub fn curve_within(
+    a: Option<&Quadric>,
+    b: Option<&Quadric>,
+    budget: &Budget,
+) -> Result<Curve, String> {
     let (Some(a), Some(b)) = (a, b) else {
         return Err(if a.is_none() && b.is_none() {
             "A and B: both are zero".into()
@@ -31,7 +43,7 @@ pub fn curve_of(a: Option<&Quadric>, b: Option<&Quadric>) -> Result<Curve, Strin
             "not yet: the curve of a single quadric".into()
         });
     };
-    parameterize(a, b).map_err(|e| match e {
+    parameterize_within(a, b, budget).map_err(|e| match e {
         Error::Unsupported(m) => format!("not yet: {m}"),
         e => e.to_string(),
     })
@@ -278,8 +290,9 @@ impl Answer for Param {
         a: Option<&Quadric>,
         b: Option<&Quadric>,
         planes: [bool; 2],
+        budget: &Budget,
     ) -> Result<String, String> {
-        let curve = curve_of(a, b)?;
+        let curve = curve_within(a, b, budget)?;
         let default = (Chart::default(), "w".to_owned());
         let (chart, chart_text) = self.chart.as_ref().unwrap_or(&default);
         let ctx = AffineContext {

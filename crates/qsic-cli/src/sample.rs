@@ -9,16 +9,18 @@
 //! | [`to_csv`], [`to_obj`] | the other formats ([`csv_branches`]: the CSV's rows) |
 
 use crate::batch::Answer;
+use crate::large::{LargeAnswer, Unbraced};
 use crate::output::ClassificationJson;
-use crate::param::{curve_of, fields_of, AffineContext};
+use crate::param::{curve_within, fields_of, AffineContext};
 use qsic::affine::{common_surfaces, AffineComponent, Chart};
 use qsic::io::{parse_rational_function, Variable};
-use qsic::param::sample::{sample, verify_on_quadrics, SampleOptions, Sampled, SampledPiece};
+use qsic::param::sample::{verify_on_quadrics, SampleOptions, Sampled, SampledPiece};
 use qsic::param::Curve;
-use qsic::Quadric;
+use qsic::{Budget, Quadric};
 use qsic_algebra::RBig;
 use serde::Serialize;
 use std::fmt::Write as _;
+use std::io::{self, Write};
 
 /// The plane `a x + b y + c z + d w` as `[a, b, c, d]`; an affine constant term counts as
 /// `w` (`"x - 2"` is the plane `x = 2w`).
@@ -193,8 +195,22 @@ pub fn sample_of(
     b: Option<&Quadric>,
     options: &SampleOptions,
 ) -> Result<Sampling, String> {
-    let curve = curve_of(a, b)?;
-    let sampled = sample(&curve, options).map_err(|e| e.to_string())?;
+    sample_within(a, b, options, &Budget::unlimited())
+}
+
+/// [`sample_of`] spending `budget` on the curve and its points.
+///
+/// # Errors
+/// As [`sample_of`], and the budget's message when it runs out first.
+pub fn sample_within(
+    a: Option<&Quadric>,
+    b: Option<&Quadric>,
+    options: &SampleOptions,
+    budget: &Budget,
+) -> Result<Sampling, String> {
+    let curve = curve_within(a, b, budget)?;
+    let sampled =
+        qsic::param::sample::sample_within(&curve, options, budget).map_err(|e| e.to_string())?;
     let mut surfaces = Vec::new();
     if let (Some(a), Some(b)) = (a, b) {
         verify_on_quadrics(&sampled, a, b).map_err(|e| e.to_string())?;
@@ -228,18 +244,34 @@ pub struct Sample {
     pub chart_text: String,
 }
 
-impl Answer for Sample {
-    fn answer(
+impl Sample {
+    /// Whether a batch of these answers takes the large-answer route ([`crate::large`]):
+    /// at least [`STREAMED_POINTS`] points a piece.
+    pub fn is_large(&self) -> bool {
+        self.options.points >= STREAMED_POINTS
+    }
+}
+
+/// The points a piece from which a `sample` batch answers one line at a time and writes
+/// each answer as it is serialized ([`crate::large`]): about 2 MB of JSON a piece, where
+/// holding the text costs more than a second core gains.
+pub const STREAMED_POINTS: usize = 16_384;
+
+impl LargeAnswer for Sample {
+    type Prepared = SampleJson;
+
+    fn prepare(
         &self,
         a: Option<&Quadric>,
         b: Option<&Quadric>,
         planes: [bool; 2],
-    ) -> Result<String, String> {
+        budget: &Budget,
+    ) -> Result<SampleJson, String> {
         let Sampling {
             curve,
             sampled,
             surfaces,
-        } = sample_of(a, b, &self.options)?;
+        } = sample_within(a, b, &self.options, budget)?;
         let affine = if self.projective_only {
             None
         } else {
@@ -252,12 +284,30 @@ impl Answer for Sample {
             chart_text: &self.chart_text,
             planes,
         });
-        Ok(fields_of(&SampleJson::with_affine(
+        Ok(SampleJson::with_affine(
             &curve,
             &sampled,
             &surfaces,
             ctx.as_ref(),
-        )))
+        ))
+    }
+
+    fn write_fields(&self, prepared: &SampleJson, out: &mut dyn Write) -> io::Result<()> {
+        let mut unbraced = Unbraced::new(out);
+        serde_json::to_writer(&mut unbraced, prepared)?;
+        unbraced.finish()
+    }
+}
+
+impl Answer for Sample {
+    fn answer(
+        &self,
+        a: Option<&Quadric>,
+        b: Option<&Quadric>,
+        planes: [bool; 2],
+        budget: &Budget,
+    ) -> Result<String, String> {
+        Ok(fields_of(&self.prepare(a, b, planes, budget)?))
     }
 }
 

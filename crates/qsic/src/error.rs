@@ -179,6 +179,21 @@ pub enum Error {
     /// Legendre's theorem), or an internal consistency check of the parameterization.
     #[error("algebra: {}", shorten_numbers(.0))]
     Algebra(String),
+    /// The computation spent its work budget ([`crate::Budget`]) before it was done: no
+    /// answer, and nothing wrong with the input; a larger budget gives the answer.
+    #[error(
+        "over the work budget: {limit} units spent before the answer (a larger budget gives it)"
+    )]
+    BudgetExceeded {
+        /// The budget's limit, in work units.
+        limit: u64,
+    },
+}
+
+impl From<qsic_algebra::Exhausted> for Error {
+    fn from(e: qsic_algebra::Exhausted) -> Error {
+        Error::BudgetExceeded { limit: e.limit }
+    }
 }
 
 #[cfg(test)]

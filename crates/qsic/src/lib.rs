@@ -36,8 +36,11 @@ pub mod quadric;
 pub mod shapes;
 pub mod solids;
 
-pub use classify::{classify, classify_allowing_zero, classify_single, Classification};
+pub use classify::{
+    classify, classify_allowing_zero, classify_single, classify_within, Classification,
+};
 pub use error::Error;
+pub use qsic_algebra::Budget;
 pub use quadric::Quadric;
 
 /// For this crate's integration tests and benchmarks only, not part of the API.

@@ -16,6 +16,8 @@
 //! same analysis, and the parameterization member chosen from a sample stays the same.
 
 use crate::quadric::Quadric;
+use dashu_int::ops::BitTest;
+use qsic_algebra::budget::{poly_step_units, product_units, Budget, Exhausted};
 use qsic_algebra::matrix::{Inertia, MatrixPencil, SymMatrix4};
 use qsic_algebra::poly::binary::BinaryForm;
 use qsic_algebra::roots::{
@@ -69,6 +71,23 @@ pub(crate) struct PencilData {
 }
 
 impl PencilData {
+    /// The work units of [`PencilData::new`] on `qa`, `qb` ([`crate::Budget`]): the sums of
+    /// principal minors of `λA − B` are about 2 000 products of numbers up to four times
+    /// the longest entry of either matrix.
+    pub fn units(qa: &Quadric, qb: &Quadric) -> u64 {
+        let bits = |q: &Quadric| {
+            q.integer_matrix()
+                .entries()
+                .iter()
+                .flatten()
+                .map(|e| e.bit_len())
+                .max()
+                .unwrap_or(0)
+        };
+        let l = 4 * bits(qa).max(bits(qb));
+        2_000u64.saturating_mul(product_units(l, l))
+    }
+
     pub fn new(qa: &Quadric, qb: &Quadric) -> PencilData {
         let a = qa.integer_matrix().clone();
         let b = qb.integer_matrix().clone();
@@ -528,15 +547,19 @@ fn real_roots_f64(c: &[f64; 5]) -> ([f64; 4], usize) {
 /// αₖ`: `⌊α₁⌋ − 1`, the leftmost rational of least dyadic denominator between consecutive
 /// roots ([`dyadic_between_isolated`]), `⌈αₖ⌉ + 1` (`0` when there is no root). They depend
 /// on the roots only, not on their isolating intervals.
-fn arc_samples(finite: &[&AlgebraicReal], sign: &impl Fn(&Poly, &RBig) -> Sign) -> Vec<RBig> {
+fn arc_samples(
+    finite: &[&AlgebraicReal],
+    sign: &impl Fn(&Poly, &RBig) -> Sign,
+    budget: &Budget,
+) -> Result<Vec<RBig>, Exhausted> {
     let (Some(first), Some(last)) = (finite.first(), finite.last()) else {
-        return vec![RBig::ZERO];
+        return Ok(vec![RBig::ZERO]);
     };
     let mut out = Vec::with_capacity(finite.len() + 1);
     let (lo, _) = floor_and_ceil(first.interval(), first.poly(), sign);
     out.push(RBig::from(lo - IBig::ONE));
     for w in finite.windows(2) {
-        let (a, b) = separated(w[0], w[1]);
+        let (a, b) = separated(w[0], w[1], budget)?;
         out.push(dyadic_between_isolated(
             (a.interval(), a.poly()),
             (b.interval(), b.poly()),
@@ -545,21 +568,28 @@ fn arc_samples(finite: &[&AlgebraicReal], sign: &impl Fn(&Poly, &RBig) -> Sign) 
     }
     let (_, hi) = floor_and_ceil(last.interval(), last.poly(), sign);
     out.push(RBig::from(hi + IBig::ONE));
-    out
+    Ok(out)
 }
 
 /// `α < β` with isolating intervals no wider than the gap between them, by quadratic
 /// refinement (`O(log log)` steps each once isolated): [`between_roots`] then needs a few
 /// picks where wide intervals would cost one halving per bit of the gap (a root `10⁻³⁰⁰⁰`
-/// beside `0`: 10 000 picks). The answer does not depend on the intervals.
-fn separated(alpha: &AlgebraicReal, beta: &AlgebraicReal) -> (AlgebraicReal, AlgebraicReal) {
+/// beside `0`: 10 000 picks). The answer does not depend on the intervals. Each round
+/// spends a refinement step's units on each root (the evaluation of its polynomial at
+/// the interval's ends).
+fn separated(
+    alpha: &AlgebraicReal,
+    beta: &AlgebraicReal,
+    budget: &Budget,
+) -> Result<(AlgebraicReal, AlgebraicReal), Exhausted> {
     let (mut a, mut b) = (alpha.clone(), beta.clone());
     loop {
         let (ia, ib) = (a.interval(), b.interval());
         let gap = ib.lo() - ia.hi();
         let wide = |iv: &RootInterval| iv.hi() - iv.lo() > gap;
+        budget.spend(refine_units(&a).saturating_add(refine_units(&b)))?;
         match (gap > RBig::ZERO, wide(ia), wide(ib)) {
-            (true, false, false) => return (a, b),
+            (true, false, false) => return Ok((a, b)),
             (false, _, _) => {
                 a.refine();
                 b.refine();
@@ -576,6 +606,21 @@ fn separated(alpha: &AlgebraicReal, beta: &AlgebraicReal) -> (AlgebraicReal, Alg
     }
 }
 
+/// The units of one refinement step of `r`: an evaluation of its polynomial (degree `d`,
+/// `b`-bit coefficients) at an end of `n` bits, `d + 1` products of a number of up to
+/// `b + d·n` bits by one of `n` bits.
+fn refine_units(r: &AlgebraicReal) -> u64 {
+    let p = r.poly();
+    let d = p.degree().unwrap_or(0);
+    let iv = r.interval();
+    let n = [iv.lo(), iv.hi()]
+        .iter()
+        .map(|x| x.numerator().bit_len() + x.denominator().bit_len())
+        .max()
+        .unwrap_or(0);
+    (d as u64 + 1).saturating_mul(product_units(p.max_bits() + d * n, n))
+}
+
 /// The inertia at a simple finite root: exactly one eigenvalue crosses zero there, so the
 /// member's counts are the smaller of its two arcs'.
 fn simple_root_inertia(l: &Inertia, h: &Inertia) -> Inertia {
@@ -590,7 +635,21 @@ impl PencilAnalysis {
     /// Analyses the pencil of a regular pair (`f ≢ 0`): the fast path for four simple roots
     /// when its certificate holds, else the exact path (the same answer; module docs).
     pub(crate) fn compute(data: &PencilData) -> PencilAnalysis {
-        PencilAnalysis::compute_simple(data).unwrap_or_else(|| PencilAnalysis::compute_exact(data))
+        PencilAnalysis::compute_within(data, &Budget::unlimited())
+            .expect("an unlimited budget is never spent")
+    }
+
+    /// [`PencilAnalysis::compute`] spending `budget` ([`crate::Budget`]) on the exact
+    /// path's square-free decomposition, isolation and refinement; the fast path is
+    /// counted by the caller (its work is bounded).
+    pub(crate) fn compute_within(
+        data: &PencilData,
+        budget: &Budget,
+    ) -> Result<PencilAnalysis, Exhausted> {
+        match PencilAnalysis::compute_simple(data) {
+            Some(analysis) => Ok(analysis),
+            None => PencilAnalysis::compute_exact(data, budget),
+        }
     }
 
     /// Four simple roots, none at ∞: `None` unless the certified float isolation of `f`
@@ -605,13 +664,16 @@ impl PencilAnalysis {
         let sums = MinorSumSigns::new(&data.e);
         // every open interval isolates a root of f itself (its primitive part)
         let finite: Vec<&AlgebraicReal> = roots.iter().collect();
-        let arcs: Vec<(RBig, Inertia)> = arc_samples(&finite, &|_, x| sums.sign(3, x))
-            .into_iter()
-            .map(|x| {
-                let i = sums.inertia(&x);
-                (x, i)
-            })
-            .collect();
+        // the fast path's roots are certified to be well apart: few refinement steps
+        let arcs: Vec<(RBig, Inertia)> =
+            arc_samples(&finite, &|_, x| sums.sign(3, x), &Budget::unlimited())
+                .ok()?
+                .into_iter()
+                .map(|x| {
+                    let i = sums.inertia(&x);
+                    (x, i)
+                })
+                .collect();
         let complex = 4 - roots.len();
         let real_roots = roots
             .into_iter()
@@ -633,14 +695,18 @@ impl PencilAnalysis {
 
     /// The exact path: square-free decomposition, the minors' gcds when a root is multiple,
     /// Descartes isolation of the pieces.
-    fn compute_exact(data: &PencilData) -> PencilAnalysis {
+    fn compute_exact(data: &PencilData, budget: &Budget) -> Result<PencilAnalysis, Exhausted> {
         let f = &data.f;
         let m_inf = BinaryForm::new(f.clone(), 4).multiplicity_at_infinity();
+        // a remainder sequence of degree ≤ 4: about d² steps over d + 1 coefficients
+        budget.spend(poly_step_units(4, f.max_bits()).saturating_mul(25))?;
         let decomposition = f.squarefree_decomposition();
         let simple = m_inf <= 1 && decomposition.iter().all(|(_, m)| *m == 1);
         let gcds = if simple {
             None
         } else {
+            // every minor of the pencil and their gcds: about 100 determinants' work
+            budget.spend(poly_step_units(4, f.max_bits()).saturating_mul(2_500))?;
             Some(MinorGcds::new(data.pencil()))
         };
 
@@ -676,7 +742,7 @@ impl PencilAnalysis {
         }
 
         let e = &data.e;
-        let roots = BinaryForm::real_roots_of_coprime(&forms);
+        let roots = BinaryForm::real_roots_of_coprime_within(&forms, budget)?;
         let mut real_count = vec![0usize; forms.len()];
         let mut real_roots: Vec<PencilRoot> = Vec::with_capacity(roots.len());
         for (point, j) in roots {
@@ -715,7 +781,7 @@ impl PencilAnalysis {
             })
             .collect();
         let sums = MinorSumSigns::new(e);
-        let arcs: Vec<(RBig, Inertia)> = arc_samples(&finite, &|p: &Poly, x| p.sign_at(x))
+        let arcs: Vec<(RBig, Inertia)> = arc_samples(&finite, &|p: &Poly, x| p.sign_at(x), budget)?
             .into_iter()
             .map(|x| {
                 let i = sums.inertia(&x);
@@ -727,12 +793,12 @@ impl PencilAnalysis {
                 r.inertia = simple_root_inertia(&arcs[i].1, &arcs[i + 1].1);
             }
         }
-        PencilAnalysis {
+        Ok(PencilAnalysis {
             characteristic: f.clone(),
             real_roots,
             complex_roots,
             arcs,
-        }
+        })
     }
 
     /// The signature sequence along the projective line, cut inside the arc left of the
@@ -1042,7 +1108,7 @@ mod tests {
                     continue;
                 }
                 total += 1;
-                let exact = PencilAnalysis::compute_exact(&data);
+                let exact = PencilAnalysis::compute_exact(&data, &Budget::unlimited()).unwrap();
                 let what = format!("family {family}: {:?} / {:?}", a.matrix(), b.matrix());
                 if let Some(simple) = PencilAnalysis::compute_simple(&data) {
                     fast += 1;
@@ -1082,7 +1148,7 @@ mod tests {
                     assert_eq!(*inertia, m.inertia(), "inertia at {x}");
                 }
                 let data = PencilData::new(&a, &b);
-                let exact = PencilAnalysis::compute_exact(&data);
+                let exact = PencilAnalysis::compute_exact(&data, &Budget::unlimited()).unwrap();
                 if exact.real_roots.iter().all(|r| r.multiplicity == 1)
                     && exact.complex_roots.iter().all(|c| c == &[1])
                     && data.f.degree() == Some(4)
@@ -1116,14 +1182,18 @@ mod tests {
             let lo = RBig::from_parts_signed(IBig::ONE, &big * &big);
             let wide = RootInterval::Open(lo, RBig::ONE);
             let tiny = AlgebraicReal::from_isolating_interval(&p, &wide).unwrap();
-            let (a, b) = separated(&zero, &tiny);
+            let (a, b) = separated(&zero, &tiny, &Budget::unlimited()).unwrap();
             let gap = b.interval().lo() - a.interval().hi();
             assert!(gap > RBig::ZERO);
             assert!(b.interval().hi() - b.interval().lo() <= gap, "10^-{k}");
             let m = (0..).find(|&m| IBig::ONE << m > big).unwrap();
             let want = RBig::from_parts_signed(IBig::ONE, IBig::ONE << m);
             let sign = |p: &Poly, x: &RBig| p.sign_at(x);
-            assert_eq!(arc_samples(&[&zero, &tiny], &sign)[1], want, "10^-{k}");
+            assert_eq!(
+                arc_samples(&[&zero, &tiny], &sign, &Budget::unlimited()).unwrap()[1],
+                want,
+                "10^-{k}"
+            );
         }
     }
 
@@ -1142,7 +1212,7 @@ mod tests {
             if data.f.degree() != Some(4) {
                 continue;
             }
-            let exact = PencilAnalysis::compute_exact(&data);
+            let exact = PencilAnalysis::compute_exact(&data, &Budget::unlimited()).unwrap();
             let roots: Vec<AlgebraicReal> = exact
                 .real_roots
                 .iter()
@@ -1157,7 +1227,9 @@ mod tests {
             checked += 1;
             let want: Vec<RBig> = exact.arcs.iter().map(|(x, _)| x.clone()).collect();
             let sign = |p: &Poly, x: &RBig| p.sign_at(x);
-            let samples = |xs: &[AlgebraicReal]| arc_samples(&xs.iter().collect::<Vec<_>>(), &sign);
+            let samples = |xs: &[AlgebraicReal]| {
+                arc_samples(&xs.iter().collect::<Vec<_>>(), &sign, &Budget::unlimited()).unwrap()
+            };
             let reshaped =
                 |iv: &dyn Fn(usize, &AlgebraicReal) -> RootInterval| -> Vec<AlgebraicReal> {
                     roots

@@ -4,7 +4,8 @@
 
 use super::Poly;
 use crate::algebraic::AlgebraicReal;
-use crate::roots::isolate_squarefree_real_roots;
+use crate::budget::{Budget, Exhausted};
+use crate::roots::isolate_squarefree_real_roots_within;
 use dashu_int::IBig;
 use std::borrow::Cow;
 
@@ -147,6 +148,19 @@ impl BinaryForm {
     /// assert_eq!(one.as_rational(), Some(&RBig::ONE));
     /// ```
     pub fn real_roots_of_coprime(forms: &[BinaryForm]) -> Vec<(ProjectivePoint, usize)> {
+        BinaryForm::real_roots_of_coprime_within(forms, &Budget::unlimited())
+            .expect("an unlimited budget is never spent")
+    }
+
+    /// [`BinaryForm::real_roots_of_coprime`] spending `budget` on the isolation
+    /// ([`crate::roots::isolate_squarefree_real_roots_within`]).
+    ///
+    /// # Errors
+    /// [`Exhausted`] when the budget runs out.
+    pub fn real_roots_of_coprime_within(
+        forms: &[BinaryForm],
+        budget: &Budget,
+    ) -> Result<Vec<(ProjectivePoint, usize)>, Exhausted> {
         debug_assert!(
             forms.iter().all(|f| !f.is_zero())
                 && forms
@@ -169,23 +183,24 @@ impl BinaryForm {
                 .iter()
                 .fold(Cow::Borrowed(first), |acc, &(_, c)| Cow::Owned(&*acc * c)),
         };
-        let mut roots: Vec<(ProjectivePoint, usize)> = isolate_squarefree_real_roots(&product)
-            .iter()
-            .map(|iv| {
-                charts
-                    .iter()
-                    .find_map(|&(j, chart)| {
-                        let r = AlgebraicReal::from_isolating_interval(chart, iv)?;
-                        debug_assert!(r.is_valid(), "{r:?} of {chart}");
-                        Some((ProjectivePoint::Finite(r), j))
-                    })
-                    .expect("a root of the square-free product is a root of one chart")
-            })
-            .collect();
+        let mut roots: Vec<(ProjectivePoint, usize)> =
+            isolate_squarefree_real_roots_within(&product, budget)?
+                .iter()
+                .map(|iv| {
+                    charts
+                        .iter()
+                        .find_map(|&(j, chart)| {
+                            let r = AlgebraicReal::from_isolating_interval(chart, iv)?;
+                            debug_assert!(r.is_valid(), "{r:?} of {chart}");
+                            Some((ProjectivePoint::Finite(r), j))
+                        })
+                        .expect("a root of the square-free product is a root of one chart")
+                })
+                .collect();
         if let Some(j) = forms.iter().position(|f| f.multiplicity_at_infinity() > 0) {
             roots.push((ProjectivePoint::Infinity, j));
         }
-        roots
+        Ok(roots)
     }
 }
 

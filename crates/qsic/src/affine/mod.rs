@@ -29,7 +29,7 @@ pub use conic::{affine_conic, approx, AffineConic, Axis, ConicShape, Direction, 
 pub use curve::{affine_curve, AffineComponent, AffineCurve, AffineSingularPoint};
 pub(crate) use curve::{chart_value, levin_plane_crossings, params_of_point};
 pub use fast::{conic_real_intersections, fast_affine_curve};
-pub use view::{affine_view, affine_view_of_curve, AffineView};
+pub use view::{affine_view, affine_view_of_curve, affine_view_within, AffineView};
 
 use crate::error::Error;
 use crate::param::{Number, Point};

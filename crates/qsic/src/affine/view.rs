@@ -14,6 +14,7 @@ use crate::classify::ComponentKind;
 use crate::error::Error;
 use crate::param::Curve;
 use crate::quadric::Quadric;
+use crate::Budget;
 
 /// Everything the affine view says about a pair: the surfaces' names, the curve in ℝ³ when
 /// its exact components are available, and the relation of two solid ellipsoids.
@@ -157,14 +158,34 @@ pub fn affine_view(
     chart: &Chart,
     planes: [bool; 2],
 ) -> AffineView {
+    affine_view_within(a, b, chart, planes, &Budget::unlimited())
+        .expect("an unlimited budget is never spent")
+}
+
+/// [`affine_view`] spending `budget` ([`crate::Budget`]) on the curve where it is built
+/// ([`crate::param::parameterize_within`]).
+///
+/// # Errors
+/// [`Error::BudgetExceeded`] when the budget runs out first (any other failure of the
+/// curve is part of the view, as in [`affine_view`]).
+pub fn affine_view_within(
+    a: Option<&Quadric>,
+    b: Option<&Quadric>,
+    chart: &Chart,
+    planes: [bool; 2],
+    budget: &Budget,
+) -> Result<AffineView, Error> {
     let curve = match (a, b) {
         (Some(a), Some(b)) => match fast_affine_curve(a, b, chart) {
             Some(c) => Ok(c),
-            None => crate::param::parameterize(a, b).and_then(|c| affine_curve(&c, a, b, chart)),
+            None => match crate::param::parameterize_within(a, b, budget) {
+                Err(e @ Error::BudgetExceeded { .. }) => return Err(e),
+                curve => curve.and_then(|c| affine_curve(&c, a, b, chart)),
+            },
         },
         _ => Err(Error::Unsupported("a single quadric: no curve".into())),
     };
-    assemble(a, b, chart, planes, curve)
+    Ok(assemble(a, b, chart, planes, curve))
 }
 
 /// [`affine_view`] of `a` and `b` with their curve given (`None` when either is the

@@ -36,6 +36,7 @@ pub use morphology::{
 use crate::error::Error;
 use crate::pencil::{PencilAnalysis, PencilData, SigItem};
 use crate::quadric::Quadric;
+use crate::Budget;
 use notation::SegreKey;
 use std::collections::HashMap;
 use std::sync::OnceLock;
@@ -90,6 +91,38 @@ pub fn classify(a: &Quadric, b: &Quadric) -> Classification {
     classify_keeping_sums(a, b).0
 }
 
+/// [`classify()`] spending `budget` ([`crate::Budget`]): the fast path a fixed
+/// [`FAST_UNITS`], the exact path the units of its determinants, remainder sequences, root
+/// isolation and refinement (module [`crate::pencil`]).
+///
+/// # Errors
+/// [`Error::BudgetExceeded`] when the budget runs out first.
+pub fn classify_within(a: &Quadric, b: &Quadric, budget: &Budget) -> Result<Classification, Error> {
+    Ok(classify_keeping_sums_within(a, b, budget)?.0)
+}
+
+/// [`classify_keeping_sums`] spending `budget` (as [`classify_within`]).
+pub(crate) fn classify_keeping_sums_within(
+    a: &Quadric,
+    b: &Quadric,
+    budget: &Budget,
+) -> Result<(Classification, Option<MinorSums>), Error> {
+    budget.spend(FAST_UNITS)?;
+    match classify_fast(a, b) {
+        Some(fast::SimpleRoots { case, sums }) => {
+            Ok((from_row(&CASES[usize::from(case) - 1], 0), Some(sums)))
+        }
+        None => Ok((classify_exact_within(a, b, budget)?, None)),
+    }
+}
+
+/// `E₁…E₄` of `λA − B` in `i128`, as the fast path leaves them.
+pub(crate) type MinorSums = [[i128; 5]; 4];
+
+/// The units [`classify_within`] spends on the fast path: about what its `i128` minors and
+/// certified float roots cost in word operations.
+pub const FAST_UNITS: u64 = 2_000;
+
 /// [`classify()`] with `E₁…E₄` of `λA − B` when the fast path decided (module `fast`), for
 /// the curve's surface choice, which reads them too.
 pub(crate) fn classify_keeping_sums(
@@ -138,14 +171,28 @@ pub(crate) fn classify_singular_in<C: OrderedDomain>(
 /// [`classify()`] without the machine-arithmetic fast path: every decision by exact
 /// rational arithmetic. The two must agree (property tests).
 pub(crate) fn classify_exact(a: &Quadric, b: &Quadric) -> Classification {
+    classify_exact_within(a, b, &Budget::unlimited()).expect("an unlimited budget is never spent")
+}
+
+/// [`classify_exact`] spending `budget`: the minors of the pencil
+/// ([`PencilData::units`]), then the analysis of a regular pencil
+/// ([`PencilAnalysis::compute_within`]) or the rank and kernel computations of a singular
+/// one (as many units again as the minors).
+fn classify_exact_within(
+    a: &Quadric,
+    b: &Quadric,
+    budget: &Budget,
+) -> Result<Classification, Error> {
+    budget.spend(PencilData::units(a, b))?;
     let data = PencilData::new(a, b);
-    match pencil_kind(&data) {
+    Ok(match pencil_kind(&data) {
         PencilKind::Single => classify_single(a),
         PencilKind::Singular => {
+            budget.spend(PencilData::units(a, b))?;
             singular_classification(singular::classify_singular(&data.a, &data.b))
         }
-        PencilKind::Regular => classify_regular(&PencilAnalysis::compute(&data)),
-    }
+        PencilKind::Regular => classify_regular(&PencilAnalysis::compute_within(&data, budget)?),
+    })
 }
 
 /// The kind of the pencil of two quadrics, decided once for every route: proportional

@@ -36,11 +36,13 @@ pub use nodal::{parameterize_singular_quartic, SingularQuartic};
 pub use surface::{PolyVector, RuledParameterization};
 
 use crate::classify::{
-    analyze_pencil, classify_keeping_sums, Classification, ComponentKind, PencilKind,
+    analyze_pencil, classify_keeping_sums, classify_keeping_sums_within, Classification,
+    ComponentKind, PencilKind,
 };
 use crate::error::Error;
-use crate::pencil::{dyadic_between_isolated, PencilAnalysis, PencilPoint};
+use crate::pencil::{dyadic_between_isolated, PencilAnalysis, PencilData, PencilPoint};
 use crate::quadric::Quadric;
+use crate::Budget;
 use qsic_algebra::field::Quadratic;
 use qsic_algebra::roots::{
     isolate_squarefree_real_roots, rational_between, simplest_between, RootInterval,
@@ -743,6 +745,36 @@ fn balancing_exponent_of(log2_sizes: &[f64]) -> i64 {
 /// ```
 pub fn parameterize(a: &Quadric, b: &Quadric) -> Result<Curve, Error> {
     let (classification, sums) = classify_keeping_sums(a, b);
+    parameterize_classified(classification, sums, a, b)
+}
+
+/// [`parameterize`] spending `budget` ([`crate::Budget`]): the classification's units
+/// ([`crate::classify::classify_within`]), then [`CURVE_MINORS`] times the units of the
+/// pencil's minors for the curve (its minors, conic points, resultants and roots work on
+/// numbers of the same size; factoring is bounded on its own), at least [`CURVE_UNITS`].
+///
+/// # Errors
+/// As [`parameterize`], and [`Error::BudgetExceeded`] when the budget runs out first.
+pub fn parameterize_within(a: &Quadric, b: &Quadric, budget: &Budget) -> Result<Curve, Error> {
+    let (classification, sums) = classify_keeping_sums_within(a, b, budget)?;
+    budget.spend(CURVE_UNITS.max(PencilData::units(a, b).saturating_mul(CURVE_MINORS)))?;
+    parameterize_classified(classification, sums, a, b)
+}
+
+/// The curve's work in units of the pencil's minors ([`parameterize_within`]).
+pub const CURVE_MINORS: u64 = 4;
+
+/// The least units of a curve ([`parameterize_within`]): about what one of small integers
+/// costs (`param_cost`: ~0.11 M instructions).
+pub const CURVE_UNITS: u64 = 100_000;
+
+/// The curve of a classified pair ([`parameterize`]).
+fn parameterize_classified(
+    classification: Classification,
+    sums: Option<[[i128; 5]; 4]>,
+    a: &Quadric,
+    b: &Quadric,
+) -> Result<Curve, Error> {
     match (classification.pencil, classification.case) {
         (PencilKind::Regular, Some(1..=4)) => match smooth_quartic(a, b, true, true, sums.as_ref())
         {

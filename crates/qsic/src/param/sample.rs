@@ -61,6 +61,7 @@ use super::curve::{Arc, ComponentParam, Curve, Number, NumberPoly, ParamRange, P
 use super::curve::{RealPiece, Sheet};
 use crate::error::Error;
 use crate::quadric::Quadric;
+use crate::Budget;
 use qsic_algebra::field::NumberField;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring, Sign};
 use std::cell::RefCell;
@@ -237,6 +238,19 @@ pub struct Sampled {
 /// }
 /// ```
 pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> {
+    sample_within(curve, options, &Budget::unlimited())
+}
+
+/// [`sample`] spending `budget` ([`crate::Budget`]): [`POINT_UNITS`] a point made, refined
+/// or tried.
+///
+/// # Errors
+/// As [`sample`], and [`Error::BudgetExceeded`] when the budget runs out first.
+pub fn sample_within(
+    curve: &Curve,
+    options: &SampleOptions,
+    work: &Budget,
+) -> Result<Sampled, Error> {
     if options.points == 0 {
         return Err(Error::InvalidOption(
             "the points per piece must be a positive integer, not 0".into(),
@@ -256,7 +270,10 @@ pub fn sample(curve: &Curve, options: &SampleOptions) -> Result<Sampled, Error> 
     }
     let chart = options.chart()?;
     let approx = Approximations::default();
-    let mut budget = MAX_POINTS;
+    let mut budget = PointBudget {
+        left: MAX_POINTS,
+        work,
+    };
     let mut pieces = Vec::with_capacity(curve.pieces.len());
     // the parameterizations brought into the range of f64 where needed, made only where
     // some float is near the ends of the range (before the samplers, which borrow them)
@@ -3098,7 +3115,7 @@ impl<'a> Sampler<'a> {
         &self,
         arc: &'a Arc,
         n: usize,
-        budget: &mut usize,
+        budget: &mut PointBudget<'_>,
         line: &mut Line,
     ) -> Result<(), Error> {
         let sp = span(&arc.range, &|r| self.end_value(r))?;
@@ -3110,9 +3127,7 @@ impl<'a> Sampler<'a> {
             ));
         }
         let (events, ends) = self.events(arc, sp.theta, n, sheet)?;
-        *budget = budget
-            .checked_sub(n + 1 + events.len())
-            .ok_or_else(too_many_points)?;
+        budget.take(n + 1 + events.len())?;
         let marked = |mut s: Sample, (inf, sing): (bool, bool)| {
             s.at_infinity |= inf;
             s.singular |= sing;
@@ -3247,7 +3262,7 @@ impl<'a> Sampler<'a> {
         walk: &mut Walk,
         q: Sample,
         sheet: Sheet,
-        budget: &mut usize,
+        budget: &mut PointBudget<'_>,
         line: &mut Line,
     ) -> Result<(), Error> {
         let d = dot(&walk.prev.x, &q.x);
@@ -3265,7 +3280,7 @@ impl<'a> Sampler<'a> {
         walk: &mut Walk,
         q: Sample,
         sheet: Sheet,
-        budget: &mut usize,
+        budget: &mut PointBudget<'_>,
         line: &mut Line,
     ) -> Result<(), Error> {
         walk.stack.push((q, 0));
@@ -3273,7 +3288,7 @@ impl<'a> Sampler<'a> {
             let p = walk.prev;
             match self.split(&p, &q, sheet)? {
                 Some(m) if depth < MAX_DEPTH => {
-                    *budget = budget.checked_sub(1).ok_or_else(too_many_points)?;
+                    budget.take(1)?;
                     walk.stack.push((q, depth + 1));
                     walk.stack.push((m, depth + 1));
                 }
@@ -3366,7 +3381,7 @@ impl<'a> Sampler<'a> {
         arcs: &'a [Arc],
         closed: bool,
         points: usize,
-        budget: &mut usize,
+        budget: &mut PointBudget<'_>,
     ) -> Result<SampledPiece, Error> {
         let n = points.div_ceil(arcs.len().max(1)).max(8) + 1;
         let mut line = Line {
@@ -3817,6 +3832,27 @@ impl<'a> Sampler<'a> {
             at_infinity: false,
             indices,
         }
+    }
+}
+
+/// The work units of one point of [`sample_within`]: its evaluation in double-double
+/// arithmetic (a parameterization of degree ≤ 8 in four coordinates, `√s(u)`, the chart),
+/// its certificate and its chord test, counted as word operations.
+pub const POINT_UNITS: u64 = 100;
+
+/// The points a sample may still make ([`MAX_POINTS`] in all) and the work budget they
+/// are charged to.
+struct PointBudget<'b> {
+    left: usize,
+    work: &'b Budget,
+}
+
+impl PointBudget<'_> {
+    /// Takes `n` points.
+    fn take(&mut self, n: usize) -> Result<(), Error> {
+        self.left = self.left.checked_sub(n).ok_or_else(too_many_points)?;
+        self.work.spend(POINT_UNITS.saturating_mul(n as u64))?;
+        Ok(())
     }
 }
 
