@@ -12,6 +12,16 @@
 //!   beyond `2^±16` in size is named scaled, `β = α/2ᵉ` near 1 (its polynomial `m(2ᵉx)`,
 //!   and `2^(ej)` in the coefficient of `αʲ`), so that a checker evaluating the polynomial
 //!   near the root in floating point meets terms near 1, not `|α|⁴ ≈ 10¹⁶⁶`.
+//!
+//! A [`Names`] works out the form of each field of degree ≤ 2 once (`α` rational, or
+//! `D = k²n`, `σ` and `t = σk/(2m₂)`: the cost of `σ` and of the trial division of `D` is
+//! paid once per field and answer, not per coefficient). The form holds while the defining
+//! polynomial does, and that polynomial changes only by shrinking to a factor — of smaller
+//! degree — so the field and its degree identify it. `m` of degree 2 with `D` not a square
+//! is irreducible, so an element `(C₀ + C₁α)/d` reduced modulo `m` is zero exactly when
+//! `C₀ = C₁ = 0`: a coefficient of a polynomial is left out without the field's zero test
+//! (an element of a field of degree > 2 still takes it). Fractions are reduced in integers
+//! (nothing to do when `d = 1`), and the text is written once, into bytes.
 
 use super::curve::{Number, NumberPoly};
 use qsic_algebra::field::NumberField;
