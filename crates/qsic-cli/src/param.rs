@@ -272,8 +272,11 @@ impl ParamJson {
 /// The fields of a serialized object, without its braces.
 pub fn fields_of<T: Serialize>(value: &T) -> String {
     // plain data (strings, numbers, booleans): serialization cannot fail
-    let text = serde_json::to_string(value).expect("plain data serializes");
-    text[1..text.len() - 1].to_string()
+    let mut text = serde_json::to_string(value).expect("plain data serializes");
+    // an object: `{` … `}`, both one byte
+    text.pop();
+    text.remove(0);
+    text
 }
 
 /// The batch answer of `qsic param`.

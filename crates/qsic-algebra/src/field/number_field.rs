@@ -354,6 +354,18 @@ impl NumberField {
         self.snapshot().modulus().clone()
     }
 
+    /// The degree of the current defining polynomial, without the lock. It only decreases,
+    /// and every change of the defining polynomial decreases it: a value read twice unchanged
+    /// means the same defining polynomial (a cache key).
+    ///
+    /// ```
+    /// # use qsic_algebra::{field::NumberField, IBig};
+    /// assert_eq!(NumberField::sqrt(&IBig::from(5)).unwrap().degree(), 2);
+    /// ```
+    pub fn degree(&self) -> usize {
+        self.shared.degree.load(Ordering::Acquire)
+    }
+
     /// `α`, defined by the current defining polynomial (its refinement is the field's).
     pub fn alpha(&self) -> AlgebraicReal {
         self.snapshot().alpha.clone()
