@@ -24,7 +24,7 @@ use qsic::param::sample::SampleOptions;
 use qsic::{classify_allowing_zero, Error, Quadric};
 use qsic_algebra::RBig;
 use qsic_cli::batch::Answer;
-use qsic_cli::output::{classification_to_json_line, human_report, ClassificationJson};
+use qsic_cli::output::{classification_to_json_line, classify_report, ClassificationJson};
 use rayon::prelude::*;
 use std::collections::HashMap;
 use std::panic::{self, AssertUnwindSafe};
@@ -238,18 +238,14 @@ fn classify(
             let c = classify_allowing_zero(qa, qb)
                 .map_err(|e| format!("A and B: both are zero: {e}"))?;
             let mut line = classification_to_json_line(&c);
-            let mut text = human_report(&c);
-            if affine {
-                let view = qsic::affine::affine_view(qa, qb, &chart, planes);
+            let view = affine.then(|| qsic::affine::affine_view(qa, qb, &chart, planes));
+            if let Some(view) = &view {
                 line.pop();
                 line.push_str(",\"affine\":");
-                line.push_str(&qsic_cli::affine::to_json(&view, &chart_text).to_string());
+                line.push_str(&qsic_cli::affine::to_json(view, &chart_text).to_string());
                 line.push('}');
-                text.push_str(&format!(
-                    "in R^3 ({chart_text} = 0 at infinity): {}\n",
-                    view.summary()
-                ));
             }
+            let text = classify_report(&c, view.as_ref(), &chart_text);
             Ok((line, text))
         })
         .and_then(|r| r)

@@ -505,14 +505,7 @@ fn run_single(
         }
         line + "\n"
     } else {
-        let mut text = output::human_report(&classification);
-        if let Some(view) = &view {
-            text.push_str(&format!(
-                "in R^3 ({chart_text} = 0 at infinity): {}\n",
-                view.summary()
-            ));
-        }
-        text
+        output::classify_report(&classification, view.as_ref(), chart_text)
     };
     let mut stdout = io::stdout().lock();
     match stdout

@@ -12,7 +12,7 @@
 //! | ellipse | centre | the major axis | major, minor semi-axes |
 //! | hyperbola | centre | the transverse axis (the branch OpenCASCADE draws is on `+X`) | transverse (major), conjugate (minor) semi-axes |
 //! | parabola | vertex | the axis, from the vertex towards the focus | focal length `f` (`P + u²/(4f)·X + u·Y`) |
-//! | line | the point nearest the origin, `P − (P·d/d·d)d` | — | — |
+//! | line | the point nearest the origin, `P − (P·d/d·d)d`; direction `d`, first nonzero coordinate positive | — | — |
 //!
 //! `N` is the plane's normal, `Y = N × X`, so `(X, Y, N)` is right-handed and the conic is
 //! `location + a·cos θ·X + b·sin θ·Y` (ellipse) as in OpenCASCADE. A line `X(u) = x₀ + x₁u`
@@ -182,7 +182,7 @@ pub fn component_frame(component: &Component, chart: &Chart) -> Result<Option<Fr
     }
     match (component.kind, &component.param) {
         (ComponentKind::Conic, _) => match affine_conic(component, chart)? {
-            Some(conic) => conic_frame(&conic).map(Some),
+            Some(conic) => Ok(Some(conic_frame(&conic))),
             None => Ok(None),
         },
         (ComponentKind::Line, Some(ComponentParam::Rational { x, degree: 1 })) => {
@@ -360,10 +360,10 @@ fn placement(location: &[Number; 3], normal: &[Number; 3], x: FrameDirection) ->
     }
 }
 
-/// The frame of a conic from its affine data.
-fn conic_frame(conic: &AffineConic) -> Result<Frame, Error> {
+/// The frame of a conic from its affine data ([`affine_conic`]).
+pub fn conic_frame(conic: &AffineConic) -> Frame {
     let Some(normal) = &conic.normal else {
-        return Ok(Frame::ConicAtInfinity);
+        return Frame::ConicAtInfinity;
     };
     let central = |centre: &[Number; 3], first: &Axis, second: &Axis| {
         (
@@ -372,7 +372,7 @@ fn conic_frame(conic: &AffineConic) -> Result<Frame, Error> {
             length(&second.semi_axis2),
         )
     };
-    Ok(match &conic.shape {
+    match &conic.shape {
         ConicShape::AtInfinity => Frame::ConicAtInfinity,
         ConicShape::Circle { centre, radius2 } => {
             // a direction of the plane: |N|²eᵢ − NᵢN, eᵢ not along N
@@ -417,7 +417,7 @@ fn conic_frame(conic: &AffineConic) -> Result<Frame, Error> {
             placement: placement(vertex, normal, direction_from(axis)),
             focal: length(&Surd::number(focal_length2.clone())),
         },
-    })
+    }
 }
 
 /// The frame of the line through the chart points `p`, `q` (homogeneous, independent).
@@ -428,7 +428,11 @@ fn line_frame(p: &Point, q: &Point) -> Result<Frame, Error> {
     }
     // d = w₀q − w₁p: the point at infinity of the line
     let (xp, xq) = (xyz(p), xyz(q));
-    let d: [Number; 3] = std::array::from_fn(|i| w0.mul(&xq[i]).sub(&w1.mul(&xp[i])));
+    let mut d: [Number; 3] = std::array::from_fn(|i| w0.mul(&xq[i]).sub(&w1.mul(&xp[i])));
+    // a line has no orientation: its first nonzero coordinate made positive
+    if d.iter().find(|c| !c.is_zero()).map(Number::sign) == Some(Sign::Negative) {
+        d = d.map(|c| c.neg());
+    }
     let finite = if w0.is_zero() {
         scaled(&xq, &div(&int(1), w1)?)
     } else {

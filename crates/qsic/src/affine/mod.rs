@@ -31,8 +31,10 @@ pub use conic::{affine_conic, approx, AffineConic, Axis, ConicShape, Direction, 
 pub use curve::{affine_curve, AffineComponent, AffineCurve, AffineSingularPoint};
 pub(crate) use curve::{chart_value, levin_plane_crossings, params_of_point};
 pub use fast::{conic_real_intersections, fast_affine_curve};
-pub use frame::{component_frame, point_frame, Frame, FrameDirection, FrameLength, Placement};
-pub use view::{affine_view, affine_view_of_curve, AffineView};
+pub use frame::{
+    component_frame, conic_frame, point_frame, Frame, FrameDirection, FrameLength, Placement,
+};
+pub use view::{affine_view, affine_view_of_curve, surface_words, AffineView};
 
 use crate::error::Error;
 use crate::param::{Number, Point};
