@@ -126,6 +126,34 @@ pub fn answer_line_with<A: Answer + ?Sized>(line: &RawLine, answer: &A) -> (Stri
     answer_with(line, |line| quadrics_line(line, answer))
 }
 
+/// [`answer_line_with`] after reading the JSON floats of the line's `A` and `B` by
+/// `floats` ([`crate::floats::rewrite_floats`]); a float beyond the range of a double is the
+/// line's error.
+pub fn answer_line_reading<A: Answer + ?Sized>(
+    line: &RawLine,
+    answer: &A,
+    floats: crate::floats::FloatReading,
+) -> (String, bool) {
+    use crate::reader::Content;
+    let Content::Text(bytes) = &line.content else {
+        return answer_line_with(line, answer);
+    };
+    let Ok(text) = std::str::from_utf8(bytes) else {
+        return answer_line_with(line, answer);
+    };
+    match crate::floats::rewrite_floats(text, floats, Some(&["A", "B"])) {
+        Ok(std::borrow::Cow::Borrowed(_)) => answer_line_with(line, answer),
+        Ok(std::borrow::Cow::Owned(text)) => {
+            let rewritten = RawLine {
+                number: line.number,
+                content: Content::Text(text.into_bytes()),
+            };
+            answer_line_with(&rewritten, answer)
+        }
+        Err(message) => answer_with(line, |_| Err(LineFailure::without_id(message))),
+    }
+}
+
 /// The output line of `work` on `line`: its text, or the error record of its failure.
 pub(crate) fn answer_with<'a>(
     line: &'a RawLine,
