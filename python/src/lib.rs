@@ -259,6 +259,8 @@ fn classify(
 enum Side<'a> {
     Int(&'a [u8]),
     Float(&'a [u8]),
+    /// `float64` bytes, each read as the shortest decimal that rounds to it.
+    FloatShortest(&'a [u8]),
     Text {
         texts: Vec<String>,
         errors: HashMap<usize, String>,
@@ -268,7 +270,7 @@ enum Side<'a> {
 impl Side<'_> {
     fn len(&self) -> usize {
         match self {
-            Side::Int(b) | Side::Float(b) => b.len() / 128,
+            Side::Int(b) | Side::Float(b) | Side::FloatShortest(b) => b.len() / 128,
             Side::Text { texts, .. } => texts.len() / 16,
         }
     }
@@ -292,6 +294,18 @@ impl Side<'_> {
             Side::Float(bytes) => {
                 let m = words(bytes, k).map(|r| r.map(f64::from_ne_bytes));
                 allow_zero(Quadric::from_f64(m))
+            }
+            Side::FloatShortest(bytes) => {
+                let m = words(bytes, k).map(|r| r.map(f64::from_ne_bytes));
+                let mut exact: [[RBig; 4]; 4] = Default::default();
+                for (i, row) in m.iter().enumerate() {
+                    for (j, &x) in row.iter().enumerate() {
+                        exact[i][j] = qsic::io::shortest_decimal(x)
+                            .ok_or(Error::NotFinite { row: i, col: j })
+                            .map_err(|e| e.to_string())?;
+                    }
+                }
+                allow_zero(Quadric::from_matrix(exact))
             }
             Side::Text { texts, errors } => {
                 if let Some(message) = errors.get(&k) {
@@ -317,6 +331,7 @@ fn side<'a>(kind: &str, data: &'a Bound<'_, PyAny>) -> PyResult<Side<'a>> {
     match kind {
         "int64" => Ok(Side::Int(bytes()?)),
         "float64" => Ok(Side::Float(bytes()?)),
+        "float64_shortest" => Ok(Side::FloatShortest(bytes()?)),
         "text" => {
             let (texts, errors): (Vec<String>, HashMap<usize, String>) = data.extract()?;
             if texts.len() % 16 != 0 {
