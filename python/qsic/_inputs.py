@@ -114,12 +114,12 @@ def entry_text(x: Any, floats: str = "binary") -> str:
         return int_text(operator.index(x))
     except TypeError:
         pass
+    except Exception as e:
+        raise QsicError(f"is {describe(x)} that could not be read ({type(e).__name__}: {e})") from None
     if floats == "shortest":
         text = _shortest(x)
         if text is not None:
             return text
-    except Exception as e:
-        raise QsicError(f"is {describe(x)} that could not be read ({type(e).__name__}: {e})") from None
     ratio = getattr(x, "as_integer_ratio", None)
     if ratio is None:
         raise QsicError(f"is {describe(x)}, not a number or a number string")
