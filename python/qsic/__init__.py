@@ -2,7 +2,8 @@
 
 Every sign, rank, multiplicity and root count is decided exactly; numbers are read exactly
 (a float is the binary fraction it holds, 0.1 as a float is 3602879701896397/2**55; the
-string "0.1" is one tenth).
+string "0.1" is one tenth; ``floats="shortest"`` reads a float as the decimal ``repr``
+prints, 0.1 as one tenth).
 
 >>> import qsic
 >>> r = qsic.classify("x^2+y^2+z^2-1", "x^2+y^2-z^2")
@@ -59,13 +60,13 @@ FIELDS = (
 QuadricLike = Union["Quadric", str, Sequence[Sequence[Any]], np.ndarray]
 
 
-def _native(q: Any) -> Optional[_qsic.NativeQuadric]:
+def _native(q: Any, floats: str = "binary") -> Optional[_qsic.NativeQuadric]:
     """The native quadric of anything a quadric can be given as; None for the zero form."""
     if isinstance(q, Quadric):
         return q._native
     if isinstance(q, str):
         return _qsic.quadric_from_text(q)
-    return _qsic.quadric_from_entries(_inputs.matrix_texts(q))
+    return _qsic.quadric_from_entries(_inputs.matrix_texts(q, floats))
 
 
 class Quadric:
@@ -74,8 +75,14 @@ class Quadric:
 
     ``Quadric(source)`` takes a polynomial string of degree 2 in ``x, y, z, w`` (homogeneous)
     or in ``x, y, z`` (affine, homogenized with ``w``; a polynomial of degree 1 is a plane,
-    read as its double plane), or a 4×4 array whose entries are ints, floats (converted
-    exactly), ``Fraction``s or number strings (``"3/4"``, ``"0.1"``, ``"-2.5e3"``).
+    read as its double plane), or a 4×4 array whose entries are ints, floats, ``Fraction``s
+    or number strings (``"3/4"``, ``"0.1"``, ``"-2.5e3"``).
+
+    ``floats``: how a float is read. ``"binary"`` (the default): the value it holds, exactly
+    (``0.1`` is 3602879701896397/2**55, as ``Fraction(0.1)``); ``"shortest"``: the shortest
+    decimal that rounds to it, the one ``repr`` prints (``0.1`` is 1/10, ``0.3**2`` — printed
+    ``0.09`` — is 9/100), i.e. the number as typed when it was typed as a literal. Strings,
+    ints, ``Fraction``s and ``Decimal``s are read as written either way.
 
     Raises:
         QsicError: the library's message (syntax error with its column, entry ``(row,col)``,
@@ -84,8 +91,8 @@ class Quadric:
 
     __slots__ = ("_native",)
 
-    def __init__(self, source: QuadricLike) -> None:
-        native = _native(source)
+    def __init__(self, source: QuadricLike, *, floats: str = "binary") -> None:
+        native = _native(source, _inputs.check_floats(floats))
         if native is None:
             raise QsicError("the zero form is not a quadric")
         self._native = native
@@ -125,73 +132,75 @@ class Quadric:
     __hash__ = None  # type: ignore[assignment]
 
     # Shapes (module qsic::shapes of the Rust library). Lengths enter squared, so every
-    # coefficient stays rational; parameters are numbers as in the matrix entries.
+    # coefficient stays rational; parameters are numbers as in the matrix entries, floats
+    # read as ``floats`` says (``Quadric()``).
 
     @classmethod
-    def _shape(cls, name: str, *args: Any) -> "Quadric":
+    def _shape(cls, name: str, *args: Any, floats: str = "binary") -> "Quadric":
+        floats = _inputs.check_floats(floats)
         texts = [
-            _inputs.vector(a, f"argument {k} of {name}")
+            _inputs.vector(a, f"argument {k} of {name}", floats)
             if np.ndim(a) > 0
-            else [_inputs.number_text(a, f"argument {k} of {name}")]
+            else [_inputs.number_text(a, f"argument {k} of {name}", floats)]
             for k, a in enumerate(args)
         ]
         return cls._of(_qsic.quadric_from_shape(name, texts))
 
     @classmethod
-    def sphere(cls, center: Sequence[Any], r2: Any) -> "Quadric":
+    def sphere(cls, center: Sequence[Any], r2: Any, *, floats: str = "binary") -> "Quadric":
         """The sphere ``|X − center|² = r2``."""
-        return cls._shape("sphere", center, r2)
+        return cls._shape("sphere", center, r2, floats=floats)
 
     @classmethod
-    def ellipsoid(cls, center: Sequence[Any], semi_axes2: Sequence[Any]) -> "Quadric":
+    def ellipsoid(cls, center: Sequence[Any], semi_axes2: Sequence[Any], *, floats: str = "binary") -> "Quadric":
         """``Σ (Xᵢ − centerᵢ)²/a2ᵢ = 1`` with ``semi_axes2 = (a2₀, a2₁, a2₂)``."""
-        return cls._shape("ellipsoid", center, semi_axes2)
+        return cls._shape("ellipsoid", center, semi_axes2, floats=floats)
 
     @classmethod
-    def cylinder(cls, point: Sequence[Any], direction: Sequence[Any], r2: Any) -> "Quadric":
+    def cylinder(cls, point: Sequence[Any], direction: Sequence[Any], r2: Any, *, floats: str = "binary") -> "Quadric":
         """The circular cylinder of squared radius ``r2`` about the line ``point + s·direction``."""
-        return cls._shape("cylinder", point, direction, r2)
+        return cls._shape("cylinder", point, direction, r2, floats=floats)
 
     @classmethod
-    def elliptic_cylinder(cls, axis: Sequence[Any], semi_axes2: Sequence[Any]) -> "Quadric":
+    def elliptic_cylinder(cls, axis: Sequence[Any], semi_axes2: Sequence[Any], *, floats: str = "binary") -> "Quadric":
         """``(x − x₀)²/a2 + (y − y₀)²/b2 = 1`` with ``axis = (x₀, y₀)``, ``semi_axes2 = (a2, b2)``."""
-        return cls._shape("elliptic_cylinder", axis, semi_axes2)
+        return cls._shape("elliptic_cylinder", axis, semi_axes2, floats=floats)
 
     @classmethod
-    def cone(cls, apex: Sequence[Any], direction: Sequence[Any], cos2: Any) -> "Quadric":
+    def cone(cls, apex: Sequence[Any], direction: Sequence[Any], cos2: Any, *, floats: str = "binary") -> "Quadric":
         """The circular cone ``((X − apex)·v)² = cos2·|v|²·|X − apex|²`` (``cos2`` the squared
         cosine of the half-angle)."""
-        return cls._shape("cone", apex, direction, cos2)
+        return cls._shape("cone", apex, direction, cos2, floats=floats)
 
     @classmethod
-    def elliptic_cone(cls, apex: Sequence[Any], semi_axes2: Sequence[Any]) -> "Quadric":
+    def elliptic_cone(cls, apex: Sequence[Any], semi_axes2: Sequence[Any], *, floats: str = "binary") -> "Quadric":
         """``(x − x₀)²/a2 + (y − y₀)²/b2 = (z − z₀)²``."""
-        return cls._shape("elliptic_cone", apex, semi_axes2)
+        return cls._shape("elliptic_cone", apex, semi_axes2, floats=floats)
 
     @classmethod
-    def elliptic_paraboloid(cls, vertex: Sequence[Any], semi_axes2: Sequence[Any]) -> "Quadric":
+    def elliptic_paraboloid(cls, vertex: Sequence[Any], semi_axes2: Sequence[Any], *, floats: str = "binary") -> "Quadric":
         """``(x − x₀)²/a2 + (y − y₀)²/b2 = z − z₀``."""
-        return cls._shape("elliptic_paraboloid", vertex, semi_axes2)
+        return cls._shape("elliptic_paraboloid", vertex, semi_axes2, floats=floats)
 
     @classmethod
-    def hyperbolic_paraboloid(cls, vertex: Sequence[Any], semi_axes2: Sequence[Any]) -> "Quadric":
+    def hyperbolic_paraboloid(cls, vertex: Sequence[Any], semi_axes2: Sequence[Any], *, floats: str = "binary") -> "Quadric":
         """``(x − x₀)²/a2 − (y − y₀)²/b2 = z − z₀``."""
-        return cls._shape("hyperbolic_paraboloid", vertex, semi_axes2)
+        return cls._shape("hyperbolic_paraboloid", vertex, semi_axes2, floats=floats)
 
     @classmethod
-    def hyperboloid_one_sheet(cls, center: Sequence[Any], semi_axes2: Sequence[Any]) -> "Quadric":
+    def hyperboloid_one_sheet(cls, center: Sequence[Any], semi_axes2: Sequence[Any], *, floats: str = "binary") -> "Quadric":
         """``(x − x₀)²/a2 + (y − y₀)²/b2 − (z − z₀)²/c2 = 1``."""
-        return cls._shape("hyperboloid_one_sheet", center, semi_axes2)
+        return cls._shape("hyperboloid_one_sheet", center, semi_axes2, floats=floats)
 
     @classmethod
-    def hyperboloid_two_sheets(cls, center: Sequence[Any], semi_axes2: Sequence[Any]) -> "Quadric":
+    def hyperboloid_two_sheets(cls, center: Sequence[Any], semi_axes2: Sequence[Any], *, floats: str = "binary") -> "Quadric":
         """``(z − z₀)²/c2 − (x − x₀)²/a2 − (y − y₀)²/b2 = 1``."""
-        return cls._shape("hyperboloid_two_sheets", center, semi_axes2)
+        return cls._shape("hyperboloid_two_sheets", center, semi_axes2, floats=floats)
 
     @classmethod
-    def plane_pair(cls, n1: Sequence[Any], d1: Any, n2: Sequence[Any], d2: Any) -> "Quadric":
+    def plane_pair(cls, n1: Sequence[Any], d1: Any, n2: Sequence[Any], d2: Any, *, floats: str = "binary") -> "Quadric":
         """The plane pair ``(n1·X + d1)(n2·X + d2) = 0``."""
-        return cls._shape("plane_pair", n1, d1, n2, d2)
+        return cls._shape("plane_pair", n1, d1, n2, d2, floats=floats)
 
 
 class Classification:
@@ -246,21 +255,24 @@ def classify(
     affine: bool = True,
     chart: Optional[str] = None,
     budget: Optional[int] = None,
+    floats: str = "binary",
 ) -> Classification:
     """Classifies the intersection of ``a`` and ``b`` (each a :class:`Quadric` or anything
     ``Quadric()`` takes; one of them may be the zero form ``"0"``).
 
     ``affine=False`` leaves out the affine view (like ``--projective``: it builds the exact
     curve, far costlier than the classification); ``chart`` is the plane at infinity of the
-    affine view, a linear form ``"a*x+b*y+c*z+d*w"`` (default ``"w"``). ``budget``: the work
-    units the call may spend (:data:`DEFAULT_BUDGET` by default; README, "Work budget").
+    affine view, a linear form ``"a*x+b*y+c*z+d*w"`` (default ``"w"``); ``floats``: how the
+    floats of a matrix are read, ``"binary"`` or ``"shortest"`` (``Quadric()``). ``budget``: the
+    work units the call may spend (:data:`DEFAULT_BUDGET` by default; README, "Work budget").
 
     Raises:
         QsicError: a bad quadric (message prefixed ``A: ``/``B: ``), both zero, a budget
             that is not a positive integer, or ``over the work budget: …``.
     """
-    na = _side_native("A", a)
-    nb = _side_native("B", b)
+    floats = _inputs.check_floats(floats)
+    na = _side_native("A", a, floats)
+    nb = _side_native("B", b, floats)
     line, text = _qsic.classify(na, nb, affine=affine, chart=chart, budget=_budget(budget))
     return Classification(json.loads(line), text)
 
@@ -286,9 +298,9 @@ def _budget(budget: Any) -> Optional[int]:
     return b
 
 
-def _side_native(name: str, q: Any) -> Optional[_qsic.NativeQuadric]:
+def _side_native(name: str, q: Any, floats: str = "binary") -> Optional[_qsic.NativeQuadric]:
     try:
-        return _native(q)
+        return _native(q, floats)
     except QsicError as e:
         raise QsicError(f"{name}: {e}") from None
 
@@ -323,6 +335,7 @@ def classify_many(
     chart: Optional[str] = None,
     threads: Optional[int] = None,
     budget: Optional[int] = None,
+    floats: str = "binary",
 ) -> Dict[str, np.ndarray]:
     """Classifies ``A[k]`` against ``B[k]`` for every ``k``, on all cores with the GIL released.
 
@@ -346,7 +359,9 @@ def classify_many(
 
     ``threads``: the number of threads, an integer from 1 to :data:`MAX_THREADS` (256);
     default: all cores. ``budget``: the work units each row may spend (a row over it has the
-    error ``over the work budget: …``); default :data:`DEFAULT_BUDGET`.
+    error ``over the work budget: …``); default :data:`DEFAULT_BUDGET`. ``floats``:
+    ``"binary"`` or ``"shortest"``, as for ``Quadric()`` (``float64`` arrays read in Rust
+    either way).
 
     Raises:
         TypeError: ``A`` or ``B`` is not a sequence of matrices.
@@ -355,8 +370,9 @@ def classify_many(
     """
     threads = _thread_count(threads)
     budget = _budget(budget)
-    ka, da, na = _inputs.batch_side("A", A)
-    kb, db, nb = _inputs.batch_side("B", B)
+    floats = _inputs.check_floats(floats)
+    ka, da, na = _inputs.batch_side("A", A, floats)
+    kb, db, nb = _inputs.batch_side("B", B, floats)
     if na != nb:
         raise QsicError(f"A holds {na} matrices and B {nb}: the lengths must be equal")
     cols = _qsic.classify_many(
@@ -387,22 +403,33 @@ def param(
     affine: bool = True,
     chart: Optional[str] = None,
     budget: Optional[int] = None,
+    floats: str = "binary",
 ) -> Dict[str, Any]:
     """The exact curve: the JSON object of ``qsic param --json A B`` (README, "qsic param"):
     the classification's fields, ``numbers``, every component's parameterization as strings
     that sympy reads, and the real singular points; with ``affine`` (the default) each real
     conic's ``affine`` data (type, centre or vertex, axes) and the pair's ``affine`` object in
     the chart ``chart = 0`` at infinity (default ``w``), as ``--chart``; ``affine=False`` is
-    ``--projective``. ``budget``: the work units the call may spend (as :func:`classify`).
+    ``--projective``. Each real line, conic and point also has its ``frame``, what a CAD
+    kernel takes (README, "Frames"): a conic's location (centre or vertex), normal, X and Y
+    directions and radius, semi-axes or focal length, as OpenCASCADE's ``gp_Ax2`` and
+    ``gp_Circ``/``gp_Elips``/``gp_Hypr``/``gp_Parab``; a line's point nearest the origin and
+    direction (``gp_Lin``); exact strings, decimals under ``"approx"``. ``floats`` as for
+    :func:`classify`. ``budget``: the work units the call may spend (as :func:`classify`).
+
+    >>> f = param("x^2+y^2+z^2-25", "z-3")["components"][0]["frame"]
+    >>> (f["type"], f["location"], f["radius"]["exact"], f["approx"]["normal"])
+    ('circle', ['0', '0', '3'], '4', [0.0, 0.0, 1.0])
 
     Raises:
         QsicError: a bad quadric, ``not yet: …`` for a class whose curve is not built, or
             ``over the work budget: …``.
     """
+    floats = _inputs.check_floats(floats)
     return json.loads(
         _qsic.param(
-            _side_native("A", a),
-            _side_native("B", b),
+            _side_native("A", a, floats),
+            _side_native("B", b, floats),
             affine=affine,
             chart=chart,
             budget=_budget(budget),
@@ -419,6 +446,7 @@ def sample(
     chart: Optional[str] = None,
     affine: bool = True,
     budget: Optional[int] = None,
+    floats: str = "binary",
 ) -> Dict[str, Any]:
     """Real points on every real piece of the curve: the JSON object of ``qsic sample``, with
     every polyline a NumPy array.
@@ -427,15 +455,16 @@ def sample(
     vectors ``[x, y, z, w]``) and ``affine`` with ``branches`` (``(n, 3)`` arrays in the chart
     ``chart = 0`` at infinity, default ``w``) and ``points_at_infinity`` (a ``(k, 4)`` array).
     At least ``points`` points per piece; with ``tolerance``, chords within it in the chart.
-    ``budget``: the work units the call may spend (as :func:`classify`).
+    ``floats`` and ``budget`` (the work units the call may spend) as for :func:`classify`.
 
     Raises:
         QsicError: as :func:`param`, and for bad options.
     """
+    floats = _inputs.check_floats(floats)
     out = json.loads(
         _qsic.sample(
-            _side_native("A", a),
-            _side_native("B", b),
+            _side_native("A", a, floats),
+            _side_native("B", b, floats),
             points=points,
             tolerance=tolerance,
             chart=chart,

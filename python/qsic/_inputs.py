@@ -54,9 +54,38 @@ def fraction(text: str) -> Fraction:
     return Fraction(int(Decimal(p)), int(Decimal(q)) if q else 1)
 
 
-def entry_text(x: Any) -> str:
+#: The readings of a float: ``"binary"`` (the default), the value the float holds exactly
+#: (0.1 is 3602879701896397/2**55); ``"shortest"``, the shortest decimal that rounds to it,
+#: the one ``repr`` prints (0.1 is 1/10, ``0.3**2`` is 9/100).
+FLOAT_READINGS = ("binary", "shortest")
+
+
+def check_floats(floats: Any) -> str:
+    """``floats`` checked: one of :data:`FLOAT_READINGS`."""
+    if not isinstance(floats, str) or floats not in FLOAT_READINGS:
+        raise QsicError(f"floats must be 'binary' or 'shortest', got {floats!r}")
+    return floats
+
+
+def _shortest(x: Any) -> Optional[str]:
+    """The shortest decimal text of a float that rounds to it (``repr`` for a Python float,
+    NumPy's ``str`` — shortest for the scalar's own precision — for a NumPy float); None
+    for anything that is not a float."""
+    if isinstance(x, float):
+        if x != x or x in (float("inf"), float("-inf")):
+            raise QsicError("is not a finite number")
+        return repr(x)
+    if isinstance(x, np.floating):
+        if not np.isfinite(x):
+            raise QsicError("is not a finite number")
+        return str(x)
+    return None
+
+
+def entry_text(x: Any, floats: str = "binary") -> str:
     """An exact text for one number: ``str`` as written, integers in full, a ``Decimal`` as
-    its text, anything with ``as_integer_ratio`` (float, Fraction, NumPy floats) as ``p/q``.
+    its text, anything with ``as_integer_ratio`` (float, Fraction, NumPy floats) as ``p/q``;
+    with ``floats="shortest"`` a float as the shortest decimal that rounds to it.
 
     Raises:
         QsicError: the entry is not a finite real number or a string (the message says what
@@ -87,6 +116,10 @@ def entry_text(x: Any) -> str:
         pass
     except Exception as e:
         raise QsicError(f"is {describe(x)} that could not be read ({type(e).__name__}: {e})") from None
+    if floats == "shortest":
+        text = _shortest(x)
+        if text is not None:
+            return text
     ratio = getattr(x, "as_integer_ratio", None)
     if ratio is None:
         raise QsicError(f"is {describe(x)}, not a number or a number string")
@@ -101,7 +134,7 @@ def entry_text(x: Any) -> str:
     return int_text(p) if q == 1 else f"{int_text(p)}/{int_text(q)}"
 
 
-def matrix_texts(m: Any) -> List[str]:
+def matrix_texts(m: Any, floats: str = "binary") -> List[str]:
     """The 16 entry texts of a 4×4 matrix, row by row.
 
     Raises:
@@ -118,7 +151,7 @@ def matrix_texts(m: Any) -> List[str]:
     if arr.shape != (4, 4):
         got = describe(m) if arr.ndim == 0 else f"shape {arr.shape}"
         raise QsicError(f"a quadric matrix must be 4x4, got {got}")
-    return entry_texts(items(arr.ravel()))
+    return entry_texts(items(arr.ravel()), floats)
 
 
 def items(arr: np.ndarray) -> List[Any]:
@@ -131,7 +164,7 @@ def items(arr: np.ndarray) -> List[Any]:
 _SHORT_INT = 10**18
 
 
-def entry_texts(entries: List[Any]) -> List[str]:
+def entry_texts(entries: List[Any], floats: str = "binary") -> List[str]:
     """The texts of a matrix's 16 entries, row by row (plain ints and ASCII strings taken as
     they are, the rest by :func:`entry_text`).
 
@@ -147,24 +180,24 @@ def entry_texts(entries: List[Any]) -> List[str]:
             texts.append(x)
         else:
             try:
-                texts.append(entry_text(x))
+                texts.append(entry_text(x, floats))
             except QsicError as e:
                 raise QsicError(f"entry ({k // 4},{k % 4}) {e}") from None
     return texts
 
 
-def number_text(x: Any, what: str) -> str:
-    """``entry_text(x)``, its error naming ``what`` the number is."""
+def number_text(x: Any, what: str, floats: str = "binary") -> str:
+    """``entry_text(x, floats)``, its error naming ``what`` the number is."""
     try:
-        return entry_text(x)
+        return entry_text(x, floats)
     except QsicError as e:
         raise QsicError(f"{what} {e}") from None
 
 
-def vector(v: Any, what: str) -> List[str]:
+def vector(v: Any, what: str, floats: str = "binary") -> List[str]:
     """The texts of the coordinates of ``v``, errors naming ``what`` and the coordinate."""
     return [
-        number_text(x, f"{what}, coordinate {k},")
+        number_text(x, f"{what}, coordinate {k},", floats)
         for k, x in enumerate(np.asarray(v, dtype=object).ravel())
     ]
 
@@ -172,18 +205,24 @@ def vector(v: Any, what: str) -> List[str]:
 _I64_MAX = np.iinfo(np.int64).max
 
 
-def machine_side(arr: np.ndarray) -> Optional[Tuple[str, bytes]]:
+def machine_side(arr: np.ndarray, floats: str = "binary") -> Optional[Tuple[str, bytes]]:
     """The kind and native bytes of an ``(N, 4, 4)`` array the library reads without texts:
-    integers that fit in ``int64``, floats that fit in ``float64`` exactly; None otherwise."""
+    integers that fit in ``int64``, floats that fit in ``float64`` exactly (with
+    ``floats="shortest"`` ``float64`` only: the shortest decimal of a narrower float is not
+    that of its ``float64`` value); None otherwise."""
     kind = arr.dtype.kind
     if kind in "ib" or (kind == "u" and not (arr.size and arr.max() > _I64_MAX)):
         return "int64", np.ascontiguousarray(arr, dtype=np.int64).tobytes()
+    if kind == "f" and floats == "shortest":
+        if arr.dtype.itemsize != 8:
+            return None
+        return "float64_shortest", np.ascontiguousarray(arr, dtype=np.float64).tobytes()
     if kind == "f" and arr.dtype.itemsize <= 8:  # not long double: float64 would round it
         return "float64", np.ascontiguousarray(arr, dtype=np.float64).tobytes()
     return None
 
 
-def batch_side(name: str, m: Any) -> Tuple[str, Any, int]:
+def batch_side(name: str, m: Any, floats: str = "binary") -> Tuple[str, Any, int]:
     """One side of a batch for ``_qsic.classify_many``: machine bytes for integer and float
     arrays, else the rows' entry texts with the errors of the rows that cannot be read.
 
@@ -193,12 +232,12 @@ def batch_side(name: str, m: Any) -> Tuple[str, Any, int]:
     """
     if isinstance(m, np.ndarray):
         if m.ndim == 3 and m.shape[1:] == (4, 4):
-            machine = machine_side(m)
+            machine = machine_side(m, floats)
             if machine is not None:
                 return (*machine, m.shape[0])
-            return text_side(items(m.reshape(-1, 16)), entry_texts)
+            return text_side(items(m.reshape(-1, 16)), lambda r: entry_texts(r, floats))
         if m.ndim == 1 and m.dtype == object:  # a sequence of rows, each read alone
-            return text_side(list(m), matrix_texts)
+            return text_side(list(m), lambda r: matrix_texts(r, floats))
         if m.ndim == 0:
             raise TypeError(f"{name}: expected a sequence of 4x4 matrices, got {describe(m)}")
         raise QsicError(f"{name}: expected an array of shape (N, 4, 4), got {m.shape}")
@@ -209,7 +248,7 @@ def batch_side(name: str, m: Any) -> Tuple[str, Any, int]:
             f"{name}: expected a sequence of 4x4 matrices (an array of shape (N, 4, 4)), "
             f"got {describe(m)}"
         )
-    return text_side(list(m), matrix_texts)
+    return text_side(list(m), lambda r: matrix_texts(r, floats))
 
 
 def text_side(rows: List[Any], read: Any) -> Tuple[str, Any, int]:

@@ -24,7 +24,7 @@ use qsic::param::sample::SampleOptions;
 use qsic::{classify_allowing_zero, Budget, Error, Quadric};
 use qsic_algebra::RBig;
 use qsic_cli::batch::{Answer, DEFAULT_LINE_BUDGET};
-use qsic_cli::output::{classification_to_json_line, human_report, ClassificationJson};
+use qsic_cli::output::{classification_to_json_line, classify_report, ClassificationJson};
 use rayon::prelude::*;
 use std::collections::HashMap;
 use std::panic::{self, AssertUnwindSafe};
@@ -239,19 +239,21 @@ fn classify(
         catch_panic(|| {
             let c = classified(qa, qb, &budget)?;
             let mut line = classification_to_json_line(&c);
-            let mut text = human_report(&c);
-            if affine {
-                let view = qsic::affine::affine_view_within(qa, qb, &chart, planes, &budget)
-                    .map_err(|e| e.to_string())?;
+            let view = if affine {
+                Some(
+                    qsic::affine::affine_view_within(qa, qb, &chart, planes, &budget)
+                        .map_err(|e| e.to_string())?,
+                )
+            } else {
+                None
+            };
+            if let Some(view) = &view {
                 line.pop();
                 line.push_str(",\"affine\":");
-                line.push_str(&qsic_cli::affine::to_json(&view, &chart_text).to_string());
+                line.push_str(&qsic_cli::affine::to_json(view, &chart_text).to_string());
                 line.push('}');
-                text.push_str(&format!(
-                    "in R^3 ({chart_text} = 0 at infinity): {}\n",
-                    view.summary()
-                ));
             }
+            let text = classify_report(&c, view.as_ref(), &chart_text);
             Ok((line, text))
         })
         .and_then(|r| r)
@@ -265,6 +267,8 @@ fn classify(
 enum Side<'a> {
     Int(&'a [u8]),
     Float(&'a [u8]),
+    /// `float64` bytes, each read as the shortest decimal that rounds to it.
+    FloatShortest(&'a [u8]),
     Text {
         texts: Vec<String>,
         errors: HashMap<usize, String>,
@@ -274,7 +278,7 @@ enum Side<'a> {
 impl Side<'_> {
     fn len(&self) -> usize {
         match self {
-            Side::Int(b) | Side::Float(b) => b.len() / 128,
+            Side::Int(b) | Side::Float(b) | Side::FloatShortest(b) => b.len() / 128,
             Side::Text { texts, .. } => texts.len() / 16,
         }
     }
@@ -298,6 +302,18 @@ impl Side<'_> {
             Side::Float(bytes) => {
                 let m = words(bytes, k).map(|r| r.map(f64::from_ne_bytes));
                 allow_zero(Quadric::from_f64(m))
+            }
+            Side::FloatShortest(bytes) => {
+                let m = words(bytes, k).map(|r| r.map(f64::from_ne_bytes));
+                let mut exact: [[RBig; 4]; 4] = Default::default();
+                for (i, row) in m.iter().enumerate() {
+                    for (j, &x) in row.iter().enumerate() {
+                        exact[i][j] = qsic::io::shortest_decimal(x)
+                            .ok_or(Error::NotFinite { row: i, col: j })
+                            .map_err(|e| e.to_string())?;
+                    }
+                }
+                allow_zero(Quadric::from_matrix(exact))
             }
             Side::Text { texts, errors } => {
                 if let Some(message) = errors.get(&k) {
@@ -323,6 +339,7 @@ fn side<'a>(kind: &str, data: &'a Bound<'_, PyAny>) -> PyResult<Side<'a>> {
     match kind {
         "int64" => Ok(Side::Int(bytes()?)),
         "float64" => Ok(Side::Float(bytes()?)),
+        "float64_shortest" => Ok(Side::FloatShortest(bytes()?)),
         "text" => {
             let (texts, errors): (Vec<String>, HashMap<usize, String>) = data.extract()?;
             if texts.len() % 16 != 0 {

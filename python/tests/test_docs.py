@@ -18,6 +18,9 @@ def test_readme_one_liner_prints_the_report():
     code = "import qsic; print(qsic.classify('x^2+y^2+z^2-1', 'x^2+y^2-z^2'))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     lines = out.stdout.splitlines()
-    assert lines[0].split() == ["pencil:", "regular"]
-    assert lines[1].split() == ["case:", "14"]
-    assert lines[-1].startswith("in R^3 (w = 0 at infinity): sphere and circular_cone")
+    # the pair in R^3 first, the projective class after it
+    assert lines[0].split() == ["in", "R^3:", "2", "circles:", "2", "bounded", "curves;", "no", "point", "at", "infinity"]
+    assert lines[1].split(":", 1)[1].strip() == "sphere and circular cone"
+    assert lines[2].startswith("projective class")
+    assert lines[3].split() == ["pencil:", "regular"]
+    assert lines[4].split() == ["case:", "14"]

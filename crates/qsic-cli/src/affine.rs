@@ -12,10 +12,12 @@
 //! The counts, components and singular points are `null` (with `"unavailable"` saying why)
 //! for the classes whose curve is not built yet; `solids` is set when both surfaces are
 //! ellipsoids (spheres included). [`conic_json`]: a conic component's affine data in
-//! `qsic param`.
+//! `qsic param`. [`affine_report`]: the lead of `qsic classify`'s text report, the pair in ℝ³
+//! in words ([`curve_words`]).
 
 use qsic::affine::{
-    affine_view, affine_view_within, approx, AffineConic, AffineView, Chart, ConicShape,
+    affine_view, affine_view_within, approx, surface_words, AffineComponent, AffineConic,
+    AffineSurface, AffineView, Chart, ConicShape,
 };
 use qsic::param::expr::Names;
 use qsic::param::Number;
@@ -337,4 +339,122 @@ pub fn conic_text(conic: &ConicJson) -> String {
         out.push_str(&format!(", plane normal ({})", list(&v["normal"])));
     }
     out
+}
+
+/// `a`/`an`, or the count, before a singular or plural noun.
+fn counted(n: usize, noun: &str) -> String {
+    match n {
+        1 if noun.starts_with(['a', 'e', 'i', 'o', 'u']) => format!("an {noun}"),
+        1 => format!("a {noun}"),
+        n => format!("{n} {noun}s"),
+    }
+}
+
+/// A real component of the curve in ℝ³ in words (`hyperbola`, `double line`, `quartic
+/// curve`); `None` for points (counted as isolated points), surfaces and what lies at
+/// infinity. `plane_inputs` of the inputs were planes, read as double planes: their factor 2
+/// is not a multiplicity a user gave.
+fn component_words(k: &AffineComponent, plane_inputs: u32) -> Option<String> {
+    let name = match k.name? {
+        "cubic" => "twisted cubic",
+        "quartic" => "quartic curve",
+        name @ ("ellipse" | "circle" | "parabola" | "hyperbola" | "line") => name,
+        _ => return None,
+    };
+    let multiplicity = k.multiplicity >> plane_inputs;
+    let prefix = match multiplicity {
+        0 | 1 => "",
+        2 => "double ",
+        3 => "triple ",
+        _ => "quadruple ",
+    };
+    Some(format!("{prefix}{name}"))
+}
+
+/// The finite point `p` as `(x, y, z)`: exact when its coordinates need no named number,
+/// else decimals.
+fn point_words(p: &[Number; 3]) -> String {
+    let mut names = Names::new();
+    let exact: Vec<String> = p.iter().map(|c| names.number(c)).collect();
+    if names.numbers().is_empty() {
+        format!("({})", exact.join(", "))
+    } else {
+        let d: Vec<String> = p.iter().map(|c| format!("{:.6}", approx(c))).collect();
+        format!("≈ ({})", d.join(", "))
+    }
+}
+
+/// The curve in ℝ³ in the user's words, the lead of `qsic classify`'s report: the real
+/// components by their affine names, the finite singular points where they are, then
+/// [`AffineView::curve_summary`] (bounded and unbounded curves, what lies at infinity), e.g.
+/// `a hyperbola: 1 unbounded curve; 2 points at infinity`, `no common point in ℝ³; 1 point at
+/// infinity`.
+pub fn curve_words(view: &AffineView) -> String {
+    let summary = view.curve_summary();
+    let Ok(curve) = &view.curve else {
+        return summary;
+    };
+    let plane_inputs = view
+        .surfaces
+        .iter()
+        .filter(|s| **s == Some(AffineSurface::Plane))
+        .count() as u32;
+    // equal names grouped, in order of first appearance
+    let mut groups: Vec<(String, usize)> = Vec::new();
+    for k in curve.components.iter().filter(|k| !k.at_infinity) {
+        if let Some(w) = component_words(k, plane_inputs) {
+            match groups.iter_mut().find(|(g, _)| *g == w) {
+                Some((_, n)) => *n += 1,
+                None => groups.push((w, 1)),
+            }
+        }
+    }
+    let mut words: Vec<String> = groups.iter().map(|(w, n)| counted(*n, w)).collect();
+    let singular: Vec<String> = curve
+        .singular_points
+        .iter()
+        .filter_map(|p| {
+            let at = p.point.as_ref()?;
+            let kind = match p.kind.key() {
+                "multiple" => "multiple point",
+                k => k,
+            };
+            Some(format!("{} at {}", counted(1, kind), point_words(at)))
+        })
+        .collect();
+    let mut out = match words.pop() {
+        None if singular.is_empty() => return summary,
+        None => String::new(),
+        Some(last) if words.is_empty() => format!("{last} with "),
+        Some(last) => format!("{} and {last} with ", words.join(", ")),
+    };
+    if singular.is_empty() {
+        out.truncate(out.len() - " with ".len());
+    } else {
+        out.push_str(&singular.join(" and "));
+    }
+    format!("{out}: {summary}")
+}
+
+/// The lines of `qsic classify`'s text report on the pair in ℝ³: `in R^3:` ([`curve_words`])
+/// and `surfaces:` (their affine names, the chart when it is not `w`, the solids).
+pub fn affine_report(view: &AffineView, chart_text: &str) -> String {
+    let name = |s: &Option<AffineSurface>| s.map_or("zero form".to_owned(), surface_words);
+    let mut surfaces = format!(
+        "{} and {}",
+        name(&view.surfaces[0]),
+        name(&view.surfaces[1])
+    );
+    if chart_text != "w" {
+        surfaces.push_str(&format!(" ({chart_text} = 0 at infinity)"));
+    }
+    if let Some(s) = view.solids {
+        surfaces.push_str(&format!("; solids {}", s.key()));
+    }
+    format!(
+        "{:<18}{}\n{:<18}{surfaces}\n",
+        "in R^3:",
+        curve_words(view),
+        "surfaces:"
+    )
 }

@@ -172,6 +172,49 @@ pub fn answer_line_with<A: Answer + ?Sized>(
     answer_with(line, |line| quadrics_line(line, answer, units))
 }
 
+/// [`answer_line_with`] after reading the JSON floats of the line's `A` and `B` by
+/// `floats` ([`reread_floats`]).
+pub fn answer_line_reading<A: Answer + ?Sized>(
+    line: &RawLine,
+    answer: &A,
+    floats: crate::floats::FloatReading,
+    units: u64,
+) -> (String, bool) {
+    match reread_floats(line, floats) {
+        Ok(None) => answer_line_with(line, answer, units),
+        Ok(Some(rewritten)) => answer_line_with(&rewritten, answer, units),
+        Err(message) => answer_with(line, |_| Err(LineFailure::without_id(message))),
+    }
+}
+
+/// `line` with the JSON floats of its `A` and `B` read by `floats`
+/// ([`crate::floats::rewrite_floats`]): `None` when nothing changes (or the line is not
+/// text, for the reader's own error).
+///
+/// # Errors
+/// The message of a float beyond the range of a double: the line's error.
+pub(crate) fn reread_floats(
+    line: &RawLine,
+    floats: crate::floats::FloatReading,
+) -> Result<Option<RawLine>, String> {
+    use crate::reader::Content;
+    let Content::Text(bytes) = &line.content else {
+        return Ok(None);
+    };
+    let Ok(text) = std::str::from_utf8(bytes) else {
+        return Ok(None);
+    };
+    Ok(
+        match crate::floats::rewrite_floats(text, floats, Some(&["A", "B"]))? {
+            std::borrow::Cow::Borrowed(_) => None,
+            std::borrow::Cow::Owned(text) => Some(RawLine {
+                number: line.number,
+                content: Content::Text(text.into_bytes()),
+            }),
+        },
+    )
+}
+
 /// The output line of `work` on `line`: its text, or the error record of its failure.
 pub(crate) fn answer_with<'a>(
     line: &'a RawLine,

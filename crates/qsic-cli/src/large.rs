@@ -9,7 +9,11 @@
 //! large, writing its text is most of the work, and two lines at once would hold two.
 //! [`crate::stream`] serves every other batch.
 
-use crate::batch::{error_record, line_work, progress_bar, BatchError, Summary, MAX_LINE_BYTES};
+use crate::batch::{
+    error_record, line_work, progress_bar, reread_floats, BatchError, LineFailure, Summary,
+    MAX_LINE_BYTES,
+};
+use crate::floats::FloatReading;
 use crate::reader::{LineReader, RawLine};
 use qsic::{Budget, Quadric};
 use std::io::{self, Read, Write};
@@ -40,9 +44,10 @@ pub trait LargeAnswer: Sync {
     fn write_fields(&self, prepared: &Self::Prepared, out: &mut dyn Write) -> io::Result<()>;
 }
 
-/// Answers every non-blank line of `input` by `answer`, one at a time, with a budget of
-/// `units` a line, and writes each answer to `output` as it is serialized, then flushes
-/// (module docs). The lines and errors are those of [`crate::batch::run`].
+/// Answers every non-blank line of `input` by `answer`, one at a time, its JSON floats read
+/// by `floats`, with a budget of `units` a line, and writes each answer to `output` as it is
+/// serialized, then flushes (module docs). The lines and errors are those of
+/// [`crate::batch::run`].
 ///
 /// # Errors
 /// As [`crate::batch::run`].
@@ -51,6 +56,7 @@ pub fn run_large<R: Read, W: Write, A: LargeAnswer>(
     mut output: W,
     progress: bool,
     answer: &A,
+    floats: FloatReading,
     units: u64,
 ) -> Result<Summary, BatchError> {
     let bar = progress_bar(progress);
@@ -68,7 +74,18 @@ pub fn run_large<R: Read, W: Write, A: LargeAnswer>(
         if line.is_blank() {
             continue;
         }
-        let ok = write_line(&line, answer, units, &mut output).map_err(BatchError::Write)?;
+        let ok = match reread_floats(&line, floats) {
+            Ok(None) => write_line(&line, answer, units, &mut output),
+            Ok(Some(rewritten)) => write_line(&rewritten, answer, units, &mut output),
+            Err(message) => {
+                let record = error_record(&line, &LineFailure::without_id(message));
+                output
+                    .write_all(record.as_bytes())
+                    .and_then(|()| output.write_all(b"\n"))
+                    .map(|()| false)
+            }
+        }
+        .map_err(BatchError::Write)?;
         answered += 1;
         failed += u64::from(!ok);
         bar.set_position(answered);

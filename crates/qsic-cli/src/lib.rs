@@ -26,6 +26,8 @@ pub mod batch;
 pub mod contact;
 mod eigencurve;
 pub mod file;
+pub mod floats;
+pub mod frame;
 pub mod input;
 pub mod large;
 pub mod line;

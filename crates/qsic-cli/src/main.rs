@@ -7,6 +7,7 @@
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use qsic::param::sample::SampleOptions;
 use qsic::Quadric;
+use qsic_cli::floats::{rewrite_floats, FloatReading};
 use qsic_cli::motion::{self, TimeRange};
 use qsic_cli::{batch, contact, input, output, param, plot, sample};
 use std::fs::File;
@@ -271,6 +272,12 @@ struct PairArgs {
     /// Answer the JSON Lines of FILE ('-' for standard input) with JSON Lines.
     #[arg(long, value_name = "FILE", conflicts_with_all = ["a", "b"])]
     batch: Option<PathBuf>,
+
+    /// How JSON floats in matrices are read: text (as written, exactly), shortest (the
+    /// shortest decimal that rounds to the same double: 0.089999999999999997 is 9/100) or
+    /// binary (the double's exact value: 0.1 is 3602879701896397/2^55).
+    #[arg(long, value_enum, value_name = "READING", default_value_t = FloatReading::Text)]
+    floats: FloatReading,
 }
 
 /// Arguments of `qsic classify`.
@@ -310,6 +317,12 @@ struct ClassifyArgs {
     /// (default "w"); solids are given in the default chart only.
     #[arg(long, value_name = "FORM", allow_hyphen_values = true)]
     chart: Option<String>,
+
+    /// How JSON floats in matrices are read: text (as written, exactly), shortest (the
+    /// shortest decimal that rounds to the same double: 0.089999999999999997 is 9/100) or
+    /// binary (the double's exact value: 0.1 is 3602879701896397/2^55).
+    #[arg(long, value_enum, value_name = "READING", default_value_t = FloatReading::Text)]
+    floats: FloatReading,
 }
 
 const MOTION_HELP: &str = "\
@@ -424,11 +437,17 @@ fn main() -> ExitCode {
                         projective_only: args.projective,
                         chart,
                     },
+                    args.floats,
                     units,
                 ),
-                (None, Some(a), Some(b)) => {
-                    run_single(a, b, args.json, args.projective, chart.as_ref(), units)
-                }
+                (None, Some(a), Some(b)) => run_single(
+                    (a, b),
+                    args.floats,
+                    args.json,
+                    args.projective,
+                    chart.as_ref(),
+                    units,
+                ),
                 _ => {
                     // clap's `required_unless_present` makes this unreachable; answer as a usage error.
                     let mut cmd = Cli::command();
@@ -483,8 +502,8 @@ fn classify_chart(text: &str) -> Result<(qsic::affine::Chart, String), String> {
 }
 
 fn run_single(
-    a: &str,
-    b: &str,
+    (a, b): (&str, &str),
+    floats: FloatReading,
     json: bool,
     projective: bool,
     chart: Option<&(qsic::affine::Chart, String)>,
@@ -493,8 +512,7 @@ fn run_single(
     let budget = qsic::Budget::new(units);
     let default = (qsic::affine::Chart::default(), "w".to_owned());
     let (chart, chart_text) = chart.unwrap_or(&default);
-    let read =
-        |name: &str, text: &str| input::surface_from_arg(text).map_err(|e| format!("{name}: {e}"));
+    let read = |name: &str, text: &str| read_surface(name, text, floats);
     let result = read("A", a).and_then(|sa| {
         let sb = read("B", b)?;
         let planes = [sa.plane, sb.plane];
@@ -532,14 +550,7 @@ fn run_single(
         }
         line + "\n"
     } else {
-        let mut text = output::human_report(&classification);
-        if let Some(view) = &view {
-            text.push_str(&format!(
-                "in R^3 ({chart_text} = 0 at infinity): {}\n",
-                view.summary()
-            ));
-        }
-        text
+        output::classify_report(&classification, view.as_ref(), chart_text)
     };
     let mut stdout = io::stdout().lock();
     match stdout
@@ -661,19 +672,30 @@ fn run_batch_by(
     }
 }
 
-/// A batch of any [`batch::Answer`] on the line's quadrics (`param`, `sample`).
-fn run_batch_with<A: batch::Answer>(path: &std::path::Path, answer: &A, units: u64) -> ExitCode {
+/// A batch of any [`batch::Answer`] on the line's quadrics (`param`, `sample`), JSON floats
+/// read by `floats`, `units` of work a line.
+fn run_batch_with<A: batch::Answer>(
+    path: &std::path::Path,
+    answer: &A,
+    floats: FloatReading,
+    units: u64,
+) -> ExitCode {
     run_batch(path, |line: &batch::RawLine| {
-        batch::answer_line_with(line, answer, units)
+        batch::answer_line_reading(line, answer, floats, units)
     })
+}
+
+/// A quadric argument, its JSON floats read by `floats`; the error names the argument.
+fn read_surface(name: &str, text: &str, floats: FloatReading) -> Result<input::Surface, String> {
+    let text = rewrite_floats(text, floats, None).map_err(|e| format!("{name}: {e}"))?;
+    input::surface_from_arg(&text).map_err(|e| format!("{name}: {e}"))
 }
 
 /// The two quadrics of a single query (`None`: the zero form) and whether each was given as a
 /// plane, or exit 1 with the message.
 type Pair = (Option<Quadric>, Option<Quadric>, [bool; 2]);
-fn read_pair(a: &str, b: &str) -> Result<Pair, ExitCode> {
-    let read =
-        |name: &str, text: &str| input::surface_from_arg(text).map_err(|e| format!("{name}: {e}"));
+fn read_pair(a: &str, b: &str, floats: FloatReading) -> Result<Pair, ExitCode> {
+    let read = |name: &str, text: &str| read_surface(name, text, floats);
     match read("A", a).and_then(|sa| {
         let sb = read("B", b)?;
         Ok((sa.quadric, sb.quadric, [sa.plane, sb.plane]))
@@ -718,11 +740,11 @@ fn run_param(args: &ParamArgs, units: u64) -> ExitCode {
         chart,
     };
     let (a, b) = match (&args.input.batch, &args.input.a, &args.input.b) {
-        (Some(path), _, _) => return run_batch_with(path, &answer, units),
+        (Some(path), _, _) => return run_batch_with(path, &answer, args.input.floats, units),
         (None, Some(a), Some(b)) => (a, b),
         _ => return usage_error("two quadrics A and B, or --batch FILE, are required"),
     };
-    let (qa, qb, planes) = match read_pair(a, b) {
+    let (qa, qb, planes) = match read_pair(a, b, args.input.floats) {
         Ok(pair) => pair,
         Err(code) => return code,
     };
@@ -777,18 +799,19 @@ fn run_sample(args: &SampleArgs, units: u64) -> ExitCode {
                 projective_only: args.projective,
                 chart_text: args.chart.clone().unwrap_or_else(|| "w".to_owned()),
             };
+            let floats = args.input.floats;
             // the one dispatch between the two batch routes (module `large`)
             if answer.is_large() {
                 return run_batch_by(path, |input, output, progress| {
-                    qsic_cli::large::run_large(input, output, progress, &answer, units)
+                    qsic_cli::large::run_large(input, output, progress, &answer, floats, units)
                 });
             }
-            return run_batch_with(path, &answer, units);
+            return run_batch_with(path, &answer, floats, units);
         }
         (None, Some(a), Some(b)) => (a, b),
         _ => return usage_error("two quadrics A and B, or --batch FILE, are required"),
     };
-    let (qa, qb, planes) = match read_pair(a, b) {
+    let (qa, qb, planes) = match read_pair(a, b, args.input.floats) {
         Ok(pair) => pair,
         Err(code) => return code,
     };

@@ -295,6 +295,24 @@ fn singular_points_name(p: &SingularPoints) -> String {
     format!("{} {}", p.count, if p.count == 1 { one } else { many })
 }
 
+/// The text report of `qsic classify A B` with the affine view: the pair in ℝ³ first
+/// ([`crate::affine::affine_report`]), then the projective class ([`human_report`]) under a
+/// heading; the projective class alone without the view (`--projective`).
+pub fn classify_report(
+    c: &Classification,
+    view: Option<&qsic::affine::AffineView>,
+    chart_text: &str,
+) -> String {
+    match view {
+        Some(view) => format!(
+            "{}projective class (the curve in RP^3, over C and over R):\n{}",
+            crate::affine::affine_report(view, chart_text),
+            human_report(c)
+        ),
+        None => human_report(c),
+    }
+}
+
 /// Width of the label column of [`human_report`].
 const LABEL_WIDTH: usize = 18;
 

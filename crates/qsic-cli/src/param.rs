@@ -10,7 +10,9 @@
 
 use crate::batch::Answer;
 use crate::output::ClassificationJson;
-use qsic::affine::{affine_conic, affine_view_of_curve, common_surfaces, Chart};
+use qsic::affine::{
+    affine_conic, affine_view_of_curve, common_surfaces, component_frame, conic_frame, Chart,
+};
 use qsic::classify::ComponentKind;
 use qsic::param::expr::{NamedNumber, Names};
 use qsic::param::{parameterize_within, ComponentParam, Curve};
@@ -123,6 +125,10 @@ pub struct ComponentParamJson {
     /// for other components and with `--projective`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub affine: Option<crate::affine::ConicJson>,
+    /// A real line's, conic's or point's frame as a CAD kernel takes it
+    /// ([`crate::frame::frame_json`]); absent for other components and with `--projective`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub frame: Option<crate::frame::FrameJson>,
 }
 
 /// One real singular point.
@@ -204,46 +210,56 @@ impl ParamJson {
             }) => common_surfaces(curve, a, chart),
             _ => Vec::new(),
         };
-        let components = curve
-            .components
-            .iter()
-            .enumerate()
-            .map(|(k, comp)| ComponentParamJson {
+        let mut components = Vec::with_capacity(curve.components.len());
+        for (k, comp) in curve.components.iter().enumerate() {
+            let param = comp.param.as_ref().map(|p| match p {
+                ComponentParam::Point(x) => ParamFormJson::Point {
+                    point: std::array::from_fn(|i| names.number(&x[i])),
+                },
+                ComponentParam::Rational { x, .. } => ParamFormJson::Rational {
+                    x: std::array::from_fn(|i| names.poly(&x[i])),
+                },
+                ComponentParam::Levin { a, d, s, .. } => ParamFormJson::Levin {
+                    x: std::array::from_fn(|i| names.poly(&a[i])),
+                    d: std::array::from_fn(|i| names.poly(&d[i])),
+                    s: names.poly(s),
+                },
+            });
+            let plane = comp
+                .plane
+                .as_ref()
+                .filter(|_| comp.kind == ComponentKind::Plane)
+                .map(|l| std::array::from_fn(|i| names.number(&l[i])));
+            let (mut conic, mut frame) = (None, None);
+            if let Some(ctx) = affine {
+                match affine_conic(comp, ctx.chart) {
+                    Ok(Some(c)) => {
+                        conic = Some(crate::affine::conic_json(&c, &mut names));
+                        frame = Some(crate::frame::frame_json(&conic_frame(&c), &mut names));
+                    }
+                    Ok(None) => {
+                        frame = component_frame(comp, ctx.chart)
+                            .ok()
+                            .flatten()
+                            .map(|f| crate::frame::frame_json(&f, &mut names));
+                    }
+                    Err(e) => conic = Some(crate::affine::ConicJson::unavailable(e.to_string())),
+                }
+            }
+            components.push(ComponentParamJson {
                 kind: comp.kind.key(),
                 multiplicity: comp.multiplicity,
                 real: comp.real,
-                param: comp.param.as_ref().map(|p| match p {
-                    ComponentParam::Point(x) => ParamFormJson::Point {
-                        point: std::array::from_fn(|i| names.number(&x[i])),
-                    },
-                    ComponentParam::Rational { x, .. } => ParamFormJson::Rational {
-                        x: std::array::from_fn(|i| names.poly(&x[i])),
-                    },
-                    ComponentParam::Levin { a, d, s, .. } => ParamFormJson::Levin {
-                        x: std::array::from_fn(|i| names.poly(&a[i])),
-                        d: std::array::from_fn(|i| names.poly(&d[i])),
-                        s: names.poly(s),
-                    },
-                }),
-                plane: comp
-                    .plane
-                    .as_ref()
-                    .filter(|_| comp.kind == ComponentKind::Plane)
-                    .map(|l| std::array::from_fn(|i| names.number(&l[i]))),
+                param,
+                plane,
                 name: surfaces
                     .iter()
                     .find(|(i, _)| *i == k)
                     .and_then(|(_, s)| s.name),
-                affine: affine.and_then(|ctx| {
-                    let conic = affine_conic(comp, ctx.chart);
-                    match conic {
-                        Ok(Some(k)) => Some(crate::affine::conic_json(&k, &mut names)),
-                        Ok(None) => None,
-                        Err(e) => Some(crate::affine::ConicJson::unavailable(e.to_string())),
-                    }
-                }),
-            })
-            .collect();
+                affine: conic,
+                frame,
+            });
+        }
         let singular_points = curve
             .singular_points
             .iter()
@@ -310,7 +326,14 @@ impl Answer for Param {
     }
 }
 
-/// The text report of `qsic param A B`.
+/// `(x : y : z : w)`: a point in homogeneous coordinates.
+fn homogeneous(p: &[String]) -> String {
+    format!("({})", p.join(" : "))
+}
+
+/// The text report of `qsic param A B`. Points are printed in ℝ³, `(x, y, z)` in the chart's
+/// coordinates, when the affine data is there (a point at infinity as `(x : y : z : 0)`, at
+/// infinity); in homogeneous coordinates `(x : y : z : w)` with `--projective`.
 pub fn human_report(json: &ParamJson) -> String {
     let mut out = String::new();
     let or = |v: Option<&str>| v.unwrap_or("-").to_string();
@@ -347,7 +370,13 @@ pub fn human_report(json: &ParamJson) -> String {
         match &c.param {
             None => {}
             Some(ParamFormJson::Point { point }) => {
-                out.push_str(&format!("  point ({})\n", point.join(", ")));
+                let at_infinity = || format!("{}, at infinity", homogeneous(point));
+                let text = match c.frame.as_ref().map(crate::frame::FrameJson::point) {
+                    Some(Some(p)) => format!("({})", p.join(", ")),
+                    Some(None) => at_infinity(),
+                    None => homogeneous(point),
+                };
+                out.push_str(&format!("  point {text}\n"));
             }
             Some(ParamFormJson::Rational { x }) => {
                 for (name, e) in ["x", "y", "z", "w"].iter().zip(x) {
@@ -365,13 +394,29 @@ pub fn human_report(json: &ParamJson) -> String {
         if let Some(a) = &c.affine {
             out.push_str(&format!("  in R^3: {}\n", crate::affine::conic_text(a)));
         }
+        if let Some(f) = c.frame.as_ref().filter(|f| f.point().is_none()) {
+            out.push_str(&format!("  frame: {}\n", crate::frame::frame_text(f)));
+        }
     }
-    for p in &json.singular_points {
-        out.push_str(&format!(
-            "singular point ({}): ({})\n",
-            p.kind,
-            p.point.join(", ")
-        ));
+    let affine_points = json
+        .affine
+        .as_ref()
+        .and_then(|a| a["singular_points"].as_array());
+    for (k, p) in json.singular_points.iter().enumerate() {
+        let text = match affine_points.and_then(|a| a.get(k)) {
+            Some(a) => match a["point"].as_array() {
+                Some(xyz) => format!(
+                    "({})",
+                    xyz.iter()
+                        .map(|v| v.as_str().unwrap_or("-"))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+                None => format!("{}, at infinity", homogeneous(&p.point)),
+            },
+            None => homogeneous(&p.point),
+        };
+        out.push_str(&format!("singular point ({}): {text}\n", p.kind));
     }
     if let Some(a) = &json.affine {
         out.push_str(&format!(

@@ -50,6 +50,7 @@ pub(super) fn surface_component(comp: &Component, a: &Quadric, chart: &Chart) ->
         at_infinity: false,
         bounded: None,
         points_at_infinity: 0,
+        multiplicity: comp.multiplicity,
     };
     if !comp.real {
         return view;

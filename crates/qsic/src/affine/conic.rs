@@ -184,7 +184,7 @@ pub struct AffineConic {
 }
 
 /// `v / |v|`.
-fn unit(v: [f64; 3]) -> [f64; 3] {
+pub(super) fn unit(v: [f64; 3]) -> [f64; 3] {
     let n = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
     if n > 0.0 {
         v.map(|c| c / n)
@@ -193,11 +193,11 @@ fn unit(v: [f64; 3]) -> [f64; 3] {
     }
 }
 
-fn dot(a: &[Number; 3], b: &[Number; 3]) -> Number {
+pub(super) fn dot(a: &[Number; 3], b: &[Number; 3]) -> Number {
     a[0].mul(&b[0]).add(&a[1].mul(&b[1])).add(&a[2].mul(&b[2]))
 }
 
-fn cross(a: &[Number; 3], b: &[Number; 3]) -> [Number; 3] {
+pub(super) fn cross(a: &[Number; 3], b: &[Number; 3]) -> [Number; 3] {
     [
         a[1].mul(&b[2]).sub(&a[2].mul(&b[1])),
         a[2].mul(&b[0]).sub(&a[0].mul(&b[2])),
@@ -224,7 +224,7 @@ fn div(a: &Number, b: &Number) -> Result<Number, Error> {
 
 /// `v` without its field when it is rational (so that rational outputs of conics made in
 /// different fields combine).
-fn plain(v: &Number) -> Number {
+pub(super) fn plain(v: &Number) -> Number {
     if v.numerator().len() <= 1 {
         Number::rational(constant(v))
     } else {
@@ -232,7 +232,7 @@ fn plain(v: &Number) -> Number {
     }
 }
 
-fn plain3(v: &[Number; 3]) -> [Number; 3] {
+pub(super) fn plain3(v: &[Number; 3]) -> [Number; 3] {
     v.each_ref().map(plain)
 }
 
@@ -567,7 +567,7 @@ pub fn approx(v: &Number) -> f64 {
 }
 
 /// The rational value of an element with a constant numerator.
-fn constant(c: &Number) -> RBig {
+pub(super) fn constant(c: &Number) -> RBig {
     c.numerator()
         .first()
         .map_or(RBig::ZERO, |v| RBig::from(v.clone()))

@@ -47,6 +47,8 @@ pub struct AffineComponent {
     pub bounded: Option<bool>,
     /// Its distinct real points at infinity (0 for a component at infinity).
     pub points_at_infinity: usize,
+    /// Its multiplicity in the intersection (as [`crate::param::Component::multiplicity`]).
+    pub multiplicity: u32,
 }
 
 /// A real singular point of the curve seen in the chart.
@@ -949,6 +951,7 @@ fn components_view(
                 at_infinity: at_inf,
                 bounded: (real && !at_inf).then_some(n == 0),
                 points_at_infinity: n,
+                multiplicity: comp.multiplicity,
             }
         })
         .collect()

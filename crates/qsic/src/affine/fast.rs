@@ -201,6 +201,7 @@ pub fn fast_affine_curve(a: &Quadric, b: &Quadric, chart: &Chart) -> Option<Affi
             at_infinity: false,
             bounded: real.then_some(p == 0),
             points_at_infinity: p,
+            multiplicity: 1,
         }],
         singular_points: Vec::new(),
     })

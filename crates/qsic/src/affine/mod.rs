@@ -8,6 +8,7 @@
 //! | [`common_surfaces`] | a common plane, or the quadric when `A ∝ B`, with its affine name |
 //! | [`affine_view`], [`AffineView`] | the surfaces' names, the curve, the solids, the summary in words |
 //! | [`affine_conic`] | a conic component's type, centre or vertex, axes, radius, exactly |
+//! | [`component_frame`], [`Frame`] | a real line, conic or point as a CAD kernel stores it: location, normal, X direction, lengths |
 //! | [`fast_affine_curve`], [`conic_real_intersections`] | the same without the curve where the class and the conics at infinity decide it (nonsingular quartics) |
 //!
 //! With `M` the 4×4 matrix in coordinates where the plane at infinity is `w = 0` and `Q` its
@@ -22,6 +23,7 @@ mod common;
 mod conic;
 mod curve;
 mod fast;
+mod frame;
 mod view;
 
 pub use common::common_surfaces;
@@ -29,7 +31,10 @@ pub use conic::{affine_conic, approx, AffineConic, Axis, ConicShape, Direction, 
 pub use curve::{affine_curve, AffineComponent, AffineCurve, AffineSingularPoint};
 pub(crate) use curve::{chart_value, levin_plane_crossings, params_of_point};
 pub use fast::{conic_real_intersections, fast_affine_curve};
-pub use view::{affine_view, affine_view_of_curve, affine_view_within, AffineView};
+pub use frame::{
+    component_frame, conic_frame, point_frame, Frame, FrameDirection, FrameLength, Placement,
+};
+pub use view::{affine_view, affine_view_of_curve, affine_view_within, surface_words, AffineView};
 
 use crate::error::Error;
 use crate::param::{Number, Point};

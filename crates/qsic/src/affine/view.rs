@@ -38,18 +38,11 @@ impl AffineView {
     pub fn summary(&self) -> String {
         let name = |s: &Option<AffineSurface>| s.map_or("zero form", AffineSurface::key);
         let mut out = format!(
-            "{} and {}",
+            "{} and {}: {}",
             name(&self.surfaces[0]),
-            name(&self.surfaces[1])
+            name(&self.surfaces[1]),
+            self.curve_summary()
         );
-        match &self.curve {
-            Ok(c) => {
-                out.push_str(": ");
-                let same = self.surfaces[0].filter(|_| self.same);
-                out.push_str(&curve_summary(c, same));
-            }
-            Err(_) => out.push_str(": the curve in ℝ³ is not available for this class yet"),
-        }
         if let Some(s) = self.solids {
             out.push_str("; solids ");
             out.push_str(s.key());
@@ -58,9 +51,21 @@ impl AffineView {
     }
 }
 
+impl AffineView {
+    /// The part of [`AffineView::summary`] after the surfaces' names: what is common in ℝ³
+    /// (`"2 bounded curves; no point at infinity"`, `"no common point in ℝ³; 1 point at
+    /// infinity"`), or that the curve is not available.
+    pub fn curve_summary(&self) -> String {
+        match &self.curve {
+            Ok(c) => curve_summary(c, self.surfaces[0].filter(|_| self.same)),
+            Err(_) => "the curve in ℝ³ is not available for this class yet".to_owned(),
+        }
+    }
+}
+
 /// A surface in words: its key with spaces, the two names that do not read as a surface made
 /// explicit.
-fn words(s: AffineSurface) -> String {
+pub fn surface_words(s: AffineSurface) -> String {
     match s {
         AffineSurface::Empty => "plane at infinity".into(),
         AffineSurface::Imaginary => "imaginary quadric".into(),
@@ -83,7 +88,7 @@ fn curve_summary(c: &AffineCurve, same: Option<AffineSurface>) -> String {
         .collect();
     let mut parts = Vec::new();
     match same {
-        Some(s) => parts.push(format!("the two are the same {}", words(s))),
+        Some(s) => parts.push(format!("the two are the same {}", surface_words(s))),
         None => {
             for k in &surfaces {
                 parts.push(if k.at_infinity {

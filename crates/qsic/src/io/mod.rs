@@ -28,8 +28,8 @@ mod polynomial;
 
 pub use expression::{parse_rational_function, RationalFunction, Variable, VARIABLE_NAMES};
 pub use moving::{moving_matrix_from_polynomial, moving_matrix_from_rows, MovingMatrix};
-pub use number::parse_number;
 use number::parse_number_small;
+pub use number::{parse_number, shortest_decimal};
 pub use polynomial::{
     parse_plane, parse_quadric, parse_quadric_big_route, parse_quadric_or_plane, plane_as_quadric,
 };

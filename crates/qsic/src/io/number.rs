@@ -112,6 +112,28 @@ pub fn parse_number(text: &str) -> Result<RBig, Error> {
     Ok(if negative { -value } else { value })
 }
 
+/// The shortest decimal that rounds to `x`, as a rational: what Rust's `{}` and `{:e}`
+/// and Python's `repr` print, read exactly (`0.1` → 1/10; `0.3 * 0.3`, printed `0.09`, →
+/// 9/100), where [`Quadric::from_f64`](crate::Quadric::from_f64) takes the binary value the
+/// float holds (`0.1` → 3602879701896397/2⁵⁵). `None` for an infinity or NaN.
+///
+/// ```
+/// use dashu_ratio::RBig;
+/// use qsic::io::shortest_decimal;
+/// assert_eq!(shortest_decimal(0.1), Some(RBig::from_parts(1.into(), 10u8.into())));
+/// assert_eq!(shortest_decimal(0.3 * 0.3), Some(RBig::from_parts(9.into(), 100u8.into())));
+/// assert_ne!(RBig::try_from(0.3 * 0.3).ok(), shortest_decimal(0.3 * 0.3));
+/// assert_eq!(shortest_decimal(f64::NAN), None);
+/// ```
+pub fn shortest_decimal(x: f64) -> Option<RBig> {
+    if !x.is_finite() {
+        return None;
+    }
+    // `{:e}` prints the shortest digits that round back to `x`, with an exponent of at
+    // most three digits: within every limit of `parse_number`
+    parse_number(&format!("{x:e}")).ok()
+}
+
 /// Reads a number as [`parse_number`] does, in machine arithmetic: `None` if the text is
 /// not a number, or its value is not `p/q` with `p` an `i64` and `q` a `u64` after reading
 /// each numeral with at most 18 digits (the caller then uses [`parse_number`], which also
