@@ -31,6 +31,7 @@
 //! rational in `t` (Cayley or quaternion rotation, polynomial translation) as a moving matrix.
 
 pub mod contact;
+mod contact_point;
 mod instants;
 mod irrational;
 mod range;
