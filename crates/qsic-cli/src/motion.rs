@@ -27,18 +27,23 @@ use serde_json::Value;
 use std::fmt::Write as _;
 
 /// Reads a moving quadric from a command-line argument: a JSON array of 4 rows of 4 entries
-/// (numbers or strings of rational functions of `t`) if it starts with `[`, otherwise a
-/// quadratic form in `x, y, z, w` (or affine in `x, y, z`) with coefficients rational in `t`.
+/// (numbers or strings of rational functions of `t`) if it starts with `[`, a quadric under
+/// a rigid motion ([`crate::rigid`]) if it starts with `{`, otherwise a quadratic form in
+/// `x, y, z, w` (or affine in `x, y, z`) with coefficients rational in `t`.
 ///
 /// # Errors
 /// [`InputError::Json`] or [`InputError::Type`] for a bad JSON matrix, otherwise the
 /// reader's error (syntax, symmetry, zero quadric, limits).
 pub fn moving_from_arg(text: &str) -> Result<MovingMatrix, InputError> {
-    if !text.trim_start().starts_with('[') {
+    let object = text.trim_start().starts_with('{');
+    if !text.trim_start().starts_with('[') && !object {
         return Ok(moving_matrix_from_polynomial(text)?);
     }
     if text.len() > crate::input::MAX_MATRIX_ARG_BYTES {
         return Err(InputError::TooLong(text.len()));
+    }
+    if object {
+        return crate::rigid::moving_from_object_text(text);
     }
     let value: Value = serde_json::from_str(text).map_err(InputError::Json)?;
     let Value::Array(rows) = &value else {

@@ -29,7 +29,7 @@
 //! itself move (a [`MovingMatrix`]): the motion is applied at every `t`.
 
 use crate::error::Error;
-use crate::io::{moving_matrix_from_polys, MovingMatrix};
+use crate::io::{moving_matrix_from_polys, parse_rational_function, MovingMatrix, Variable};
 use qsic_algebra::{Poly, RBig};
 
 /// A polynomial in `t` with rational coefficients.
@@ -239,6 +239,37 @@ impl RigidMotion {
         let denominator = &(&n * &n) * &quadric.denominator().to_rational();
         moving_matrix_from_polys(&out, &denominator)
     }
+}
+
+/// Reads a polynomial in `t` with rational coefficients (`"t^2/2 - 3*t + 1"`, `"0.5"`), as
+/// the components of a translation or a quaternion path are written: the reader of
+/// [`parse_rational_function`] with the one variable `t`.
+///
+/// # Errors
+/// The reader's errors; [`Error::InvalidMotion`] for a division by an expression in `t`.
+///
+/// # Examples
+/// ```
+/// use qsic::motion::rigid::parse_polynomial_in_t;
+/// use qsic_algebra::{Poly, RBig};
+/// let p = parse_polynomial_in_t("(t + 1)^2/2")?;
+/// assert_eq!(p, Poly::new(vec![RBig::from_parts(1.into(), 2u8.into()), RBig::ONE, RBig::from_parts(1.into(), 2u8.into())]));
+/// assert!(parse_polynomial_in_t("1/t").is_err());
+/// # Ok::<(), qsic::Error>(())
+/// ```
+pub fn parse_polynomial_in_t(text: &str) -> Result<RationalPoly, Error> {
+    let f = parse_rational_function(text, &[Variable::T])?;
+    let t = Variable::T.index();
+    let (Some(num), Some(den)) = (
+        f.numerator().to_univariate(t),
+        f.denominator().as_constant(),
+    ) else {
+        return Err(Error::InvalidMotion(format!(
+            "'{}' is not a polynomial in t",
+            crate::error::shorten_numbers(text.trim())
+        )));
+    };
+    Ok(Poly::new(num.into_iter().map(|c| c / &den).collect()))
 }
 
 /// The quadric `quadric` moved by `motion`: [`RigidMotion::apply`].
