@@ -11,7 +11,7 @@ MAX_THREADS: int
 
 Number = Union[int, float, str, Any]  # also Fraction, Decimal, NumPy scalars
 QuadricLike = Union["Quadric", str, Sequence[Sequence[Number]], np.ndarray]
-MovingLike = Union[str, Sequence[Sequence[Number]], np.ndarray]
+MovingLike = Union[str, Sequence[Sequence[Number]], np.ndarray, Dict[str, Any]]
 Range = Optional[Tuple[Optional[Number], Optional[Number]]]
 
 class Quadric:
