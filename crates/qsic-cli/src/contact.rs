@@ -29,8 +29,8 @@ use qsic::motion::contact::{
     contact_points, first_contact_in, solid_motion_in, CommonLocus, ContactPoints, FirstContact,
     SolidMotion, SolidState, TimeRange,
 };
-use qsic::param::expr::Names;
 use qsic::motion::{MovingPencil, MINUS_INFINITY, PLUS_INFINITY};
+use qsic::param::expr::Names;
 use qsic::Error;
 use qsic_algebra::{AlgebraicReal, RBig};
 use std::fmt::Write as _;
@@ -324,7 +324,10 @@ fn contact_points_text(c: &ContactPoints) -> String {
     let mut names = Names::new();
     match &c.locus {
         CommonLocus::SameQuadric => {
-            let _ = writeln!(s, "  the quadrics are the same there: every point is common");
+            let _ = writeln!(
+                s,
+                "  the quadrics are the same there: every point is common"
+            );
         }
         CommonLocus::NotComputed(why) => {
             let _ = writeln!(s, "  common points not computed: {why}");

@@ -85,50 +85,53 @@ fn rotation(value: &Value) -> Result<(Rotation, [RBig; 3]), InputError> {
             crate::input::json_kind(value)
         )));
     };
-    only_keys(map, &["axis", "cayley", "quaternion", "center"], "\"rotate\"")?;
+    only_keys(
+        map,
+        &["axis", "cayley", "quaternion", "center"],
+        "\"rotate\"",
+    )?;
     let center = match map.get("center") {
         Some(c) => entries::<_, 3>("center", c, parse_number)?,
         None => [RBig::ZERO, RBig::ZERO, RBig::ZERO],
     };
-    let rotation = match (map.get("axis"), map.get("quaternion")) {
-        (Some(_), Some(_)) => {
-            return Err(invalid(
-                "\"rotate\" has both an \"axis\" and a \"quaternion\": give one".into(),
-            ))
-        }
-        (Some(axis), None) => {
-            match map.get("cayley") {
-                None | Some(Value::Bool(true)) => {}
-                Some(_) => {
-                    return Err(invalid(
+    let rotation =
+        match (map.get("axis"), map.get("quaternion")) {
+            (Some(_), Some(_)) => {
+                return Err(invalid(
+                    "\"rotate\" has both an \"axis\" and a \"quaternion\": give one".into(),
+                ))
+            }
+            (Some(axis), None) => {
+                match map.get("cayley") {
+                    None | Some(Value::Bool(true)) => {}
+                    Some(_) => return Err(invalid(
                         "an axis rotation is parameterized by t = tan(θ/2)/|axis| (\"cayley\": \
                          true); give a \"quaternion\" path for another"
                             .into(),
-                    ))
+                    )),
+                }
+                Rotation::Cayley {
+                    axis: entries::<_, 3>("axis", axis, parse_number)?,
                 }
             }
-            Rotation::Cayley {
-                axis: entries::<_, 3>("axis", axis, parse_number)?,
+            (None, Some(q)) => {
+                if map.contains_key("cayley") {
+                    return Err(invalid(
+                        "\"cayley\" goes with an \"axis\", not with a \"quaternion\"".into(),
+                    ));
+                }
+                Rotation::Quaternion(entries::<RationalPoly, 4>(
+                    "quaternion",
+                    q,
+                    parse_polynomial_in_t,
+                )?)
             }
-        }
-        (None, Some(q)) => {
-            if map.contains_key("cayley") {
+            (None, None) => {
                 return Err(invalid(
-                    "\"cayley\" goes with an \"axis\", not with a \"quaternion\"".into(),
-                ));
+                    "\"rotate\" needs an \"axis\" or a \"quaternion\"".into(),
+                ))
             }
-            Rotation::Quaternion(entries::<RationalPoly, 4>(
-                "quaternion",
-                q,
-                parse_polynomial_in_t,
-            )?)
-        }
-        (None, None) => {
-            return Err(invalid(
-                "\"rotate\" needs an \"axis\" or a \"quaternion\"".into(),
-            ))
-        }
-    };
+        };
     Ok((rotation, center))
 }
 
@@ -191,8 +194,8 @@ mod tests {
 
     #[test]
     fn the_object_form_builds_the_library_motion() {
-        let m = read(r#"{"quadric": "x^2/4 + y^2 + z^2 - 1", "rotate": {"axis": [0, 0, 1]}}"#)
-            .unwrap();
+        let m =
+            read(r#"{"quadric": "x^2/4 + y^2 + z^2 - 1", "rotate": {"axis": [0, 0, 1]}}"#).unwrap();
         let want = RigidMotion {
             rotation: Rotation::Cayley {
                 axis: [0, 0, 1].map(RBig::from),
@@ -208,8 +211,8 @@ mod tests {
         )
         .unwrap();
         assert_eq!(same, want);
-        let slide = read(r#"{"quadric": "x^2 + y^2 + z^2 - 1", "translate": ["t", 0, "t^2/2"]}"#)
-            .unwrap();
+        let slide =
+            read(r#"{"quadric": "x^2 + y^2 + z^2 - 1", "translate": ["t", 0, "t^2/2"]}"#).unwrap();
         assert_eq!(
             slide,
             moving_from_arg("(x - t)^2 + y^2 + (z - t^2/2)^2 - 1").unwrap()

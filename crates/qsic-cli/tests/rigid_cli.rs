@@ -26,7 +26,8 @@ fn json(args: &[&str]) -> Value {
 /// on [0, ∞) (`crates/qsic/tests/rigid_contact.rs` has the argument).
 #[test]
 fn a_turning_ellipsoid_touches_a_sphere() {
-    let turning = r#"{"quadric": "x^2/4 + y^2 + z^2 - 1", "rotate": {"axis": [0, 0, 1], "cayley": true}}"#;
+    let turning =
+        r#"{"quadric": "x^2/4 + y^2 + z^2 - 1", "rotate": {"axis": [0, 0, 1], "cayley": true}}"#;
     let sphere = "(x - 3)^2 + (y - 4)^2 + z^2 - 9";
     let v = json(&["contact", "--json", turning, sphere]);
     assert_eq!(v["first_contact"], "-2");
@@ -37,7 +38,10 @@ fn a_turning_ellipsoid_touches_a_sphere() {
     assert_eq!(c["curves"], 0);
     assert_eq!(c["points"].as_array().map(Vec::len), Some(1));
     assert_eq!(c["points"][0]["kind"], "isolated");
-    assert_eq!(c["points"][0]["point"], serde_json::json!(["6/5", "8/5", "0", "1"]));
+    assert_eq!(
+        c["points"][0]["point"],
+        serde_json::json!(["6/5", "8/5", "0", "1"])
+    );
     assert_eq!(c["points"][0]["approx"][1].as_f64(), Some(1.6));
     let later = json(&["contact", "--json", "--range", "0", "oo", turning, sphere]);
     assert_eq!(later["contact"]["t"], "1/2");
@@ -45,12 +49,20 @@ fn a_turning_ellipsoid_touches_a_sphere() {
     // the text report gives the point exactly and in decimals
     let (code, text, _) = qsic(&["contact", turning, sphere]);
     assert_eq!(code, Some(0));
-    assert!(text.contains("isolated point (6/5, 8/5, 0, 1) ≈ (1.2"), "{text}");
+    assert!(
+        text.contains("isolated point (6/5, 8/5, 0, 1) ≈ (1.2"),
+        "{text}"
+    );
     // the same motion as a quaternion path about the centre 0, and `motion` reads it too
     let path = r#"{"quadric": [["1/4",0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1]], "rotate": {"quaternion": [1, 0, 0, "t"], "center": [0, 0, 0]}}"#;
     assert_eq!(json(&["contact", "--json", path, sphere]), v);
     let m = json(&["motion", "--json", turning, sphere]);
-    let instants: Vec<&Value> = m["instants"].as_array().unwrap().iter().map(|i| &i["t"]).collect();
+    let instants: Vec<&Value> = m["instants"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|i| &i["t"])
+        .collect();
     assert!(instants.contains(&&Value::from("-2")) && instants.contains(&&Value::from("1/2")));
 }
 
@@ -70,7 +82,10 @@ fn a_screw_motion_and_a_range_that_starts_inside() {
     assert_eq!(inside["contact"]["at_start"], true);
     assert_eq!(inside["contact"]["curves"], 1);
     let (_, text, _) = qsic(&["contact", "--range", "5/2", "3", screw, sphere]);
-    assert!(text.contains("they already meet at the start of the range"), "{text}");
+    assert!(
+        text.contains("they already meet at the start of the range"),
+        "{text}"
+    );
 }
 
 /// Spheres along a line through (0, 1/2, 0): the contact at t = −√35/2 is irrational, its
@@ -86,7 +101,12 @@ fn an_irrational_contact_names_its_number() {
     let c = &v["contact"];
     assert!(c["t"]["poly"].is_string());
     let p = &c["points"][0];
-    let approx: Vec<f64> = p["approx"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+    let approx: Vec<f64> = p["approx"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
     assert!((approx[0] + 35f64.sqrt() / 3.0).abs() < 1e-12, "{approx:?}");
     assert!((approx[1] - 1.0 / 3.0).abs() < 1e-12 && approx[2] == 0.0);
     assert_eq!(c["numbers"][0]["name"], "a1");
@@ -96,9 +116,18 @@ fn an_irrational_contact_names_its_number() {
 #[test]
 fn errors_name_the_part_of_the_motion() {
     let cases = [
-        (r#"{"quadric": "x^2 + y^2 - 1", "rotate": {"axis": [0, 0, 0]}}"#, "error: A: invalid rigid motion: the rotation axis is zero"),
-        (r#"{"quadric": "x^2 + y^2 - 1", "translate": ["1/t", 0, 0]}"#, "error: A: invalid rigid motion: \"translate\"[0]"),
-        (r#"{"quadric": "x^2 + y^2 - 1", "rotate": {"axis": [0, 0, 1]}"#, "error: A: invalid JSON"),
+        (
+            r#"{"quadric": "x^2 + y^2 - 1", "rotate": {"axis": [0, 0, 0]}}"#,
+            "error: A: invalid rigid motion: the rotation axis is zero",
+        ),
+        (
+            r#"{"quadric": "x^2 + y^2 - 1", "translate": ["1/t", 0, 0]}"#,
+            "error: A: invalid rigid motion: \"translate\"[0]",
+        ),
+        (
+            r#"{"quadric": "x^2 + y^2 - 1", "rotate": {"axis": [0, 0, 1]}"#,
+            "error: A: invalid JSON",
+        ),
     ];
     for (a, want) in cases {
         for command in ["motion", "contact"] {

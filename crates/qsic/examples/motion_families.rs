@@ -12,8 +12,14 @@ mod motion_inputs;
 use qsic::io::MovingMatrix;
 
 fn rows(m: &MovingMatrix) -> String {
-    let entry = |i: usize, j: usize| format!("\"{}\"", m.numerators()[i][j].to_string().replace('x', "t"));
-    let row = |i: usize| format!("[{}]", (0..4).map(|j| entry(i, j)).collect::<Vec<_>>().join(","));
+    let entry =
+        |i: usize, j: usize| format!("\"{}\"", m.numerators()[i][j].to_string().replace('x', "t"));
+    let row = |i: usize| {
+        format!(
+            "[{}]",
+            (0..4).map(|j| entry(i, j)).collect::<Vec<_>>().join(",")
+        )
+    };
     format!("[{}]", (0..4).map(row).collect::<Vec<_>>().join(","))
 }
 
@@ -23,6 +29,10 @@ fn main() {
         .into_iter()
         .map(|(n, a, b)| (n.to_string(), a, b));
     for (name, a, b) in rigid.chain(motion_inputs::random_families(all)) {
-        println!("{{\"id\":\"{name}\",\"A\":{},\"B\":{}}}", rows(&a), rows(&b));
+        println!(
+            "{{\"id\":\"{name}\",\"A\":{},\"B\":{}}}",
+            rows(&a),
+            rows(&b)
+        );
     }
 }

@@ -63,12 +63,19 @@ fn spheres_along_a_line_touch_at_known_points() {
     let later = TimeRange::new(Some(RBig::ZERO), None).unwrap();
     let c = contact(&a, &b, &later);
     assert_eq!(c.t, AlgebraicReal::from_rational(RBig::ONE));
-    assert_eq!(single_point(&c).0, affine([RBig::from(2), RBig::ZERO, RBig::ZERO]));
+    assert_eq!(
+        single_point(&c).0,
+        affine([RBig::from(2), RBig::ZERO, RBig::ZERO])
+    );
     // starting inside the overlap: they already meet at the start, along a circle
     let overlap = TimeRange::new(Some(RBig::from(2)), None).unwrap();
     let c = contact(&a, &b, &overlap);
     assert!(c.at_start);
-    assert!(matches!(c.locus, CommonLocus::Points { curves: 1, .. }), "{:?}", c.locus);
+    assert!(
+        matches!(c.locus, CommonLocus::Points { curves: 1, .. }),
+        "{:?}",
+        c.locus
+    );
 
     // off the line of centres by 1/2: |c| = 3 at t = −√35/2, the point 2c/3 = (−√35/3, 1/3, 0)
     let b = moving("(x - t)^2 + (y - 1/2)^2 + z^2 - 1");
@@ -136,9 +143,16 @@ fn a_screw_motion_rises_into_a_sphere() {
     let b = moving("(x + 6/5)^2 + (y - 8/5)^2 + (z - 5)^2 - 4");
     let c = contact(&a, &b, &TimeRange::all());
     assert_eq!(c.t, AlgebraicReal::from_rational(RBig::from(2)));
-    assert_eq!(single_point(&c).0, affine([rat(-6, 5), rat(8, 5), RBig::from(3)]));
+    assert_eq!(
+        single_point(&c).0,
+        affine([rat(-6, 5), rat(8, 5), RBig::from(3)])
+    );
     // a range starting after the contact: they meet at its start
-    let c = contact(&a, &b, &TimeRange::new(Some(rat(5, 2)), Some(RBig::from(3))).unwrap());
+    let c = contact(
+        &a,
+        &b,
+        &TimeRange::new(Some(rat(5, 2)), Some(RBig::from(3))).unwrap(),
+    );
     assert!(c.at_start && c.t == AlgebraicReal::from_rational(rat(5, 2)));
     // a range that ends before it has none
     let before = TimeRange::new(None, Some(RBig::ONE)).unwrap();

@@ -2,7 +2,7 @@
 //! (README, "Moving quadrics"): rigid motions built by `qsic::motion::rigid`, and random
 //! moving pencils with fixed seeds.
 
-#![allow(dead_code)]
+#![allow(dead_code, clippy::needless_range_loop)]
 
 use qsic::io::{moving_matrix_from_polynomial, moving_matrix_from_polys, MovingMatrix};
 use qsic::motion::rigid::{RigidMotion, Rotation};
@@ -21,11 +21,18 @@ pub fn rigid_families() -> Vec<(&'static str, MovingMatrix, MovingMatrix)> {
     };
     let ellipsoid = q("x^2/4 + y^2 + z^2/9 - 1");
     let other = q("(x - 3)^2/9 + (y - 1)^2/4 + (z - 1/2)^2 - 1");
-    let translate = RigidMotion::translation([rational_poly(&[-6, 2]), rational_poly(&[0, 1]), rational_poly(&[1])]);
+    let translate = RigidMotion::translation([
+        rational_poly(&[-6, 2]),
+        rational_poly(&[0, 1]),
+        rational_poly(&[1]),
+    ]);
+    // turning about z until a tip touches B at (6/5, 8/5, 0), t = −2 (tests/rigid_contact.rs)
     let turn = RigidMotion {
-        rotation: cayley([1, 2, 2]),
+        rotation: cayley([0, 0, 1]),
         ..RigidMotion::default()
     };
+    let elongated = q("x^2/4 + y^2 + z^2 - 1");
+    let near_tip = q("(x - 3)^2/9 + (y - 4)^2/9 + z^2/4 - 1");
     let screw = RigidMotion {
         rotation: cayley([0, 0, 1]),
         translation: [Poly::zero(), Poly::zero(), rational_poly(&[0, 1])],
@@ -38,10 +45,26 @@ pub fn rigid_families() -> Vec<(&'static str, MovingMatrix, MovingMatrix)> {
     };
     let cone = q("(x - 2)^2 + y^2 - (z - 1)^2/4");
     vec![
-        ("ellipsoids_translation", translate.apply(&ellipsoid).expect("moved"), other.clone()),
-        ("ellipsoids_rotation", turn.apply(&ellipsoid).expect("moved"), other.clone()),
-        ("ellipsoids_screw", screw.apply(&ellipsoid).expect("moved"), other),
-        ("cylinder_cone_rotating", q("x^2 + y^2 - 1"), cone_turn.apply(&cone).expect("moved")),
+        (
+            "ellipsoids_translation",
+            translate.apply(&ellipsoid).expect("moved"),
+            other.clone(),
+        ),
+        (
+            "ellipsoids_rotation",
+            turn.apply(&elongated).expect("moved"),
+            near_tip,
+        ),
+        (
+            "ellipsoids_screw",
+            screw.apply(&ellipsoid).expect("moved"),
+            other,
+        ),
+        (
+            "cylinder_cone_rotating",
+            q("x^2 + y^2 - 1"),
+            cone_turn.apply(&cone).expect("moved"),
+        ),
     ]
 }
 
@@ -51,7 +74,11 @@ fn random_integer(rng: &mut SplitMix, bits: usize) -> IBig {
     let mut left = bits;
     while left > 0 {
         let take = left.min(64);
-        let word = if take == 64 { rng.next_u64() } else { rng.next_u64() >> (64 - take) };
+        let word = if take == 64 {
+            rng.next_u64()
+        } else {
+            rng.next_u64() >> (64 - take)
+        };
         c = (c << take) + IBig::from(word);
         left -= take;
     }
@@ -68,7 +95,11 @@ pub fn random_moving(rng: &mut SplitMix, degree: usize, bits: usize) -> MovingMa
     let mut m: [[Poly<RBig>; 4]; 4] = Default::default();
     for i in 0..4 {
         for j in i..4 {
-            let p = Poly::new((0..=degree).map(|_| RBig::from(random_integer(rng, bits))).collect());
+            let p = Poly::new(
+                (0..=degree)
+                    .map(|_| RBig::from(random_integer(rng, bits)))
+                    .collect(),
+            );
             m[i][j] = p.clone();
             m[j][i] = p;
         }
@@ -92,4 +123,3 @@ pub fn random_families(all: bool) -> Vec<(String, MovingMatrix, MovingMatrix)> {
         })
         .collect()
 }
-

@@ -286,7 +286,9 @@ pub fn moving_matrix_from_polys(
         return Err(Error::ZeroQuadric);
     }
     if denominator.is_zero() {
-        return Err(Error::Algebra("a moving matrix over the zero denominator".into()));
+        return Err(Error::Algebra(
+            "a moving matrix over the zero denominator".into(),
+        ));
     }
     use dashu_int::ops::BitTest;
     let rational_bits = |c: &RBig| c.numerator().bit_len() + c.denominator().bit_len();

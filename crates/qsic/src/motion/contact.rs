@@ -21,10 +21,10 @@
 //!   at the first contact — the points where the quadrics touch — exactly, and whether they
 //!   already meet at the start of the range.
 
-use super::instants::pencil_entries;
 pub use super::contact_point::{
     common_points_at, contact_points, CommonLocus, CommonPoint, CommonPointKind, ContactPoints,
 };
+use super::instants::pencil_entries;
 pub use super::range::TimeRange;
 use super::{irrational, InstantType, Motion, MovingPencil};
 use crate::classify::Classification;

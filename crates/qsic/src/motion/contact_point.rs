@@ -22,8 +22,8 @@
 //!   quadratic extension of `K`, a singular pencil at `α` — the answer says what was not
 //!   computed ([`CommonLocus::NotComputed`]), never a guess.
 
-use super::instants::squarefree_decomposition_t;
 use super::contact::{FirstContact, TimeRange};
+use super::instants::squarefree_decomposition_t;
 use super::{irrational, MovingPencil};
 use crate::classify::{Classification, ComponentKind, SingularPointKind};
 use crate::error::Error;
@@ -207,6 +207,9 @@ fn same_point(p: &Point, q: &Point) -> bool {
     (0..4).all(|i| p[i].compatible_with(&q[i]) && p[i].sub(&q[i]).is_zero())
 }
 
+/// A 4×4 matrix over `K`.
+type Matrix4 = [[K; 4]; 4];
+
 /// `xᵀMy` over `K`.
 fn form(m: &[[K; 4]; 4], x: &[K], y: &[K]) -> K {
     let mut acc = K::zero();
@@ -256,7 +259,7 @@ fn common_points_at_irrational(pencil: &MovingPencil, alpha: &AlgebraicReal) -> 
         .iter()
         .map(|(g, _)| g.map(|c| field.integer_element(c)))
         .collect();
-    let mut members: Vec<([[K; 4]; 4], &[[K; 4]; 4])> = Vec::new();
+    let mut members: Vec<(Matrix4, &Matrix4)> = Vec::new();
     for piece in split_by(&multiple, &factors) {
         if piece.degree() != Some(1) {
             return not_computed("tangency members of the pencil not split over ℚ(t)");
@@ -291,7 +294,9 @@ fn common_points_at_irrational(pencil: &MovingPencil, alpha: &AlgebraicReal) -> 
                         let p: Vec<K> = if qa.is_zero() {
                             k1.clone()
                         } else {
-                            (0..4).map(|i| k2[i].mul(&qa).sub(&k1[i].mul(&qb))).collect()
+                            (0..4)
+                                .map(|i| k2[i].mul(&qa).sub(&k1[i].mul(&qb)))
+                                .collect()
                         };
                         points.push(std::array::from_fn(|i| p[i].clone()));
                     }
@@ -409,7 +414,10 @@ mod tests {
         let pt = &exact[0].point;
         assert_eq!(pt[1], number(RBig::from_parts(1.into(), 3u8.into())));
         assert!(pt[2].is_zero() && pt[3] == number(RBig::ONE));
-        assert_eq!(pt[0].mul(&pt[0]), number(RBig::from_parts(35.into(), 9u8.into())));
+        assert_eq!(
+            pt[0].mul(&pt[0]),
+            number(RBig::from_parts(35.into(), 9u8.into()))
+        );
         assert_eq!(exact[0].kind, CommonPointKind::Isolated);
         // inside: |c| = 1, t² = 3/4, the point 2c = (2t, 1, 0)
         let roots = AlgebraicReal::real_roots_of(&Poly::from_i64s(&[-3, 0, 4]));
@@ -423,7 +431,11 @@ mod tests {
     #[test]
     fn rational_instants_points_curves_and_equal_quadrics() {
         let three = AlgebraicReal::from_rational(RBig::from(3));
-        let (p, c) = points(&locus("x^2 + y^2 + z^2 - 4", "(x - t)^2 + y^2 + z^2 - 1", &three));
+        let (p, c) = points(&locus(
+            "x^2 + y^2 + z^2 - 4",
+            "(x - t)^2 + y^2 + z^2 - 1",
+            &three,
+        ));
         assert_eq!((p, c), (vec![[2.0, 0.0, 0.0]], 0));
         // parallel cylinders of radius 1 at distance t touch along a line at t = 2
         let two = AlgebraicReal::from_rational(RBig::from(2));

@@ -79,7 +79,9 @@ fn rotation_of(q: &[RationalPoly; 4]) -> ([[RationalPoly; 3]; 3], RationalPoly) 
     let sq: [RationalPoly; 4] = std::array::from_fn(|i| p(i, i));
     let diag = |k: usize| {
         // q₀² + q_k² − (the other two squares)
-        let others = (1..4).filter(|&i| i != k).fold(Poly::zero(), |acc, i| &acc + &sq[i]);
+        let others = (1..4)
+            .filter(|&i| i != k)
+            .fold(Poly::zero(), |acc, i| &acc + &sq[i]);
         &(&sq[0] + &sq[k]) - &others
     };
     let off = |a: (usize, usize), b: (usize, usize), plus: bool| {
@@ -87,9 +89,21 @@ fn rotation_of(q: &[RationalPoly; 4]) -> ([[RationalPoly; 3]; 3], RationalPoly) 
         &two * &(if plus { &x + &y } else { &x - &y })
     };
     let m = [
-        [diag(1), off((1, 2), (0, 3), false), off((1, 3), (0, 2), true)],
-        [off((1, 2), (0, 3), true), diag(2), off((2, 3), (0, 1), false)],
-        [off((1, 3), (0, 2), false), off((2, 3), (0, 1), true), diag(3)],
+        [
+            diag(1),
+            off((1, 2), (0, 3), false),
+            off((1, 3), (0, 2), true),
+        ],
+        [
+            off((1, 2), (0, 3), true),
+            diag(2),
+            off((2, 3), (0, 1), false),
+        ],
+        [
+            off((1, 3), (0, 2), false),
+            off((2, 3), (0, 1), true),
+            diag(3),
+        ],
     ];
     let n = sq.iter().fold(Poly::zero(), |acc, s| &acc + s);
     (m, n)
@@ -213,7 +227,7 @@ impl RigidMotion {
     /// assert_eq!(moved.denominator(), &Poly::from_i64s(&[4, 0, 8, 0, 4])); // 4(1 + t²)²
     /// let quarter = moved.quadric_at(&RBig::ONE)?;
     /// let swapped = moving("x^2 + y^2/4 + z^2 - 1")?.quadric_at(&RBig::ONE)?;
-/// assert!(quarter.integer_matrix().is_proportional(swapped.integer_matrix()));
+    /// assert!(quarter.integer_matrix().is_proportional(swapped.integer_matrix()));
     /// # Ok::<(), qsic::Error>(())
     /// ```
     pub fn apply(&self, quadric: &MovingMatrix) -> Result<MovingMatrix, Error> {
@@ -353,14 +367,26 @@ mod tests {
         let moved = turn.apply(&ellipsoid).unwrap();
         let at = |m: &MovingMatrix, t: &RBig| m.quadric_at(t).unwrap();
         let swapped = moving("x^2 + y^2/4 + z^2 - 1").unwrap();
-        assert!(proportional(&at(&moved, &RBig::ONE), &at(&swapped, &RBig::ONE)));
-        assert!(proportional(&at(&moved, &RBig::ZERO), &at(&ellipsoid, &RBig::ZERO)));
+        assert!(proportional(
+            &at(&moved, &RBig::ONE),
+            &at(&swapped, &RBig::ONE)
+        ));
+        assert!(proportional(
+            &at(&moved, &RBig::ZERO),
+            &at(&ellipsoid, &RBig::ZERO)
+        ));
         // t = 1/2: cos θ = (1 − t²)/(1 + t²) = 3/5, sin θ = 4/5; the point (2, 0, 0) of the
         // ellipsoid goes to (6/5, 8/5, 0)
         let half = q(1, 2);
         let image = [q(6, 5), q(8, 5), RBig::ZERO, RBig::ONE];
         assert_eq!(eval(&at(&moved, &half), &image), RBig::ZERO);
-        assert_ne!(eval(&at(&moved, &half), &[q(8, 5), q(6, 5), RBig::ZERO, RBig::ONE]), RBig::ZERO);
+        assert_ne!(
+            eval(
+                &at(&moved, &half),
+                &[q(8, 5), q(6, 5), RBig::ZERO, RBig::ONE]
+            ),
+            RBig::ZERO
+        );
 
         let via_quaternion = RigidMotion {
             rotation: Rotation::Quaternion([constant(1), Poly::zero(), Poly::zero(), t_times(1)]),
@@ -384,7 +410,10 @@ mod tests {
             rotation: cayley([1, 2, 2]),
             ..RigidMotion::default()
         };
-        assert_eq!(spin.apply(&sphere).unwrap().numerators(), sphere.numerators());
+        assert_eq!(
+            spin.apply(&sphere).unwrap().numerators(),
+            sphere.numerators()
+        );
 
         // about the z axis through (1, 0, 0): the origin goes to (1, −1, 0) at t = 1
         let small = moving("x^2 + y^2 + z^2 - 1/4").unwrap();
@@ -394,9 +423,16 @@ mod tests {
             ..RigidMotion::default()
         };
         let want = moving("(x - 1)^2 + (y + 1)^2 + z^2 - 1/4").unwrap();
-        assert!(proportional(&at(&about.apply(&small).unwrap(), &RBig::ONE), &at(&want, &RBig::ONE)));
+        assert!(proportional(
+            &at(&about.apply(&small).unwrap(), &RBig::ONE),
+            &at(&want, &RBig::ONE)
+        ));
 
-        let slide = RigidMotion::translation([t_times(1), Poly::zero(), Poly::new(vec![q(0, 1), q(0, 1), q(1, 1)])]);
+        let slide = RigidMotion::translation([
+            t_times(1),
+            Poly::zero(),
+            Poly::new(vec![q(0, 1), q(0, 1), q(1, 1)]),
+        ]);
         assert_eq!(
             slide.apply(&sphere).unwrap(),
             moving("(x - t)^2 + y^2 + (z - t^2)^2 - 1").unwrap()
@@ -422,11 +458,20 @@ mod tests {
         ] {
             let want = format!("(x - {})^2 + (y - {})^2 + (z - {})^2 - 1", c[0], c[1], c[2]);
             let want = moving(&want).unwrap().quadric_at(&t).unwrap();
-            assert!(proportional(&moved.quadric_at(&t).unwrap(), &want), "t = {t}");
+            assert!(
+                proportional(&moved.quadric_at(&t).unwrap(), &want),
+                "t = {t}"
+            );
         }
         // a sphere: one factor n = 1 + t² cancels, n·(|c(t)|² − 1) = (1 + t²)(t² + 3) is
         // the top degree; an ellipsoid keeps degree 4 + 2 (the rise, squared) over n²
-        let degree = |m: &MovingMatrix| m.numerators().iter().flatten().filter_map(Poly::degree).max();
+        let degree = |m: &MovingMatrix| {
+            m.numerators()
+                .iter()
+                .flatten()
+                .filter_map(Poly::degree)
+                .max()
+        };
         assert_eq!(degree(&moved), Some(4));
         assert_eq!(moved.numerators()[3][3], Poly::from_i64s(&[3, 0, 4, 0, 1]));
         let ellipsoid = moving("(x - 2)^2 + y^2/4 + z^2 - 1").unwrap();
@@ -450,6 +495,9 @@ mod tests {
             rotation: Rotation::Quaternion(Default::default()),
             ..RigidMotion::default()
         };
-        assert!(matches!(zero_path.apply(&sphere), Err(Error::InvalidMotion(_))));
+        assert!(matches!(
+            zero_path.apply(&sphere),
+            Err(Error::InvalidMotion(_))
+        ));
     }
 }
