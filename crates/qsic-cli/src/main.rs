@@ -332,7 +332,8 @@ RIGID MOTIONS:
     \"translate\": [c1,c2,c3]                 then the translation, polynomials in t
   a and p are rational numbers (JSON numbers or strings \"1/3\"), q and c numbers or strings
   \"2*t^2 - 1/2\". A screw motion: an axis rotation and a translation along the axis.
-  Exact: the moved matrix is T^-T A T^-1 with T^-1 rational in t. Not in --batch lines.
+  Exact: the moved matrix is T^-T A T^-1 with T^-1 rational in t. Also as \"A\"/\"B\" of
+  --batch lines.
 
 OUTPUT:
   A timeline: the open intervals of t with a rational sample and their type, and the

@@ -78,8 +78,8 @@ pub fn moving_from_arg(text: &str) -> Result<MovingMatrix, InputError> {
     Ok(moving_matrix_from_rows(&texts)?)
 }
 
-/// Reads a moving quadric from a batch field: a string as in [`moving_from_arg`], or a 4×4
-/// array of numbers and strings.
+/// Reads a moving quadric from a batch field: a string as in [`moving_from_arg`], a 4×4
+/// array of numbers and strings, or a rigid motion object ([`crate::rigid`]).
 ///
 /// # Errors
 /// As [`moving_from_arg`]; [`InputError::Type`] for a value of another JSON type.
@@ -95,9 +95,10 @@ pub fn moving_from_form(form: &JsonForm<'_>) -> Result<MovingMatrix, InputError>
                 .collect();
             return Ok(moving_matrix_from_rows(&rows)?);
         }
+        JsonForm::Object(map) => return crate::rigid::moving_from_object(map),
         JsonForm::Other(kind) => {
             return Err(InputError::Type(format!(
-                "expected a polynomial string or a 4x4 array, found {kind}"
+                "expected a polynomial string, a 4x4 array or a rigid motion object, found {kind}"
             )))
         }
     };

@@ -1,5 +1,5 @@
 //! The JSON object form of a moving quadric: a quadric under a rigid motion
-//! ([`qsic::motion::rigid`]), for `qsic motion`, `qsic contact` and Python.
+//! ([`qsic::motion::rigid`]), for `qsic motion`, `qsic contact`, their batch lines and Python.
 //!
 //! ```text
 //! {"quadric": Q,                                   a quadric: a polynomial string or a 4x4 array

@@ -137,3 +137,59 @@ fn errors_name_the_part_of_the_motion() {
         }
     }
 }
+
+/// A batch line takes the object form as its `A` or `B`, with the answer of the argument; a
+/// bad object is that line's error, an object where a quadric is expected names its type.
+#[test]
+fn batch_lines_read_rigid_motion_objects() {
+    let turning = r#"{"quadric": "x^2/4 + y^2 + z^2 - 1", "rotate": {"axis": [0, 0, 1]}}"#;
+    let sphere = "(x - 3)^2 + (y - 4)^2 + z^2 - 9";
+    let input = format!(
+        "{{\"id\": 1, \"A\": {turning}, \"B\": \"{sphere}\"}}\n\
+         {{\"id\": 2, \"A\": {{\"quadric\": \"x^2 - 1\", \"rotate\": {{\"axis\": [0, 0, 0]}}}}, \"B\": \"x^2 - 4\"}}\n"
+    );
+    let path = std::env::temp_dir().join(format!("qsic-rigid-batch-{}.jsonl", std::process::id()));
+    std::fs::write(&path, input).unwrap();
+    let (code, out, _) = qsic(&["motion", "--batch", path.to_str().unwrap()]);
+    let _ = std::fs::remove_file(&path);
+    assert_eq!(code, Some(1), "{out}");
+    let lines: Vec<Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    let single = json(&["motion", "--json", turning, sphere]);
+    assert_eq!(lines[0]["instants"], single["instants"]);
+    assert_eq!(lines[0]["intervals"], single["intervals"]);
+    let message = lines[1]["error"]["message"].as_str().unwrap();
+    assert_eq!(
+        message,
+        "A: invalid rigid motion: the rotation axis is zero"
+    );
+    // classify takes quadrics, not motions
+    let (_, out, _) = qsic_stdin(
+        &["classify", "--batch", "-"],
+        &format!("{{\"id\": 3, \"A\": {turning}, \"B\": \"x^2 - 1\"}}\n"),
+    );
+    assert!(out.contains("found an object"), "{out}");
+}
+
+/// Exit code, stdout and stderr of `qsic args…` with `input` on standard input.
+fn qsic_stdin(args: &[&str], input: &str) -> (Option<i32>, String, String) {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_qsic"))
+        .args(args)
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("the qsic binary runs");
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(input.as_bytes())
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    let text = |b: Vec<u8>| String::from_utf8(b).expect("UTF-8 output");
+    (out.status.code(), text(out.stdout), text(out.stderr))
+}
