@@ -480,16 +480,30 @@ def sample(
     return out
 
 
-MovingLike = Union[str, Sequence[Sequence[Any]], np.ndarray]
+MovingLike = Union[str, Sequence[Sequence[Any]], np.ndarray, Dict[str, Any]]
 
 
 def _moving(name: str, m: Any) -> List[str]:
     if isinstance(m, str):
         return [m]
+    if isinstance(m, dict):
+        # a quadric under a rigid motion, read as the CLI reads the JSON object form
+        try:
+            return [json.dumps(m, default=_json_scalar)]
+        except (TypeError, ValueError) as e:
+            raise QsicError(f"{name}: {e}") from None
     try:
         return _inputs.matrix_texts(m)
     except QsicError as e:
         raise QsicError(f"{name}: {e}") from None
+
+
+def _json_scalar(v: Any) -> Any:
+    """A number of a rigid motion that JSON does not write itself (a Fraction, a Decimal, a
+    NumPy scalar), as its exact text."""
+    if isinstance(v, np.ndarray):
+        return v.tolist()
+    return _inputs.number_text(v, "a rigid motion entry")
 
 
 def _range(r: Optional[Tuple[Any, Any]]) -> Tuple[Optional[str], Optional[str]]:
@@ -518,9 +532,13 @@ def motion(
     ``qsic motion --json`` (README, "Moving quadrics").
 
     ``a``, ``b``: a polynomial string in ``x, y, z, w`` whose coefficients are rational
-    functions of ``t`` (``"(x - t)^2 + y^2 + z^2 - 1"``), or a 4×4 array of numbers and
-    strings of rational functions of ``t``. ``range = (t0, t1)``: only ``t`` in
-    ``[t0, t1]``, None for an open side.
+    functions of ``t`` (``"(x - t)^2 + y^2 + z^2 - 1"``), a 4×4 array of numbers and
+    strings of rational functions of ``t``, or a quadric under a rigid motion, a dict as the
+    CLI's JSON object form: ``{"quadric": "x^2/4 + y^2 + z^2 - 1", "rotate": {"axis": [0, 0,
+    1]}, "translate": [0, 0, "t"]}`` (``"rotate"``: ``"axis"`` for the Cayley rotation
+    ``tan(θ/2) = t·|axis|``, or ``"quaternion"`` ``[q0, q1, q2, q3]`` polynomials in ``t``;
+    ``"center"`` a point of the axis; README, "Rigid motions"). ``range = (t0, t1)``: only
+    ``t`` in ``[t0, t1]``, None for an open side.
 
     Raises:
         QsicError: the reader's or the analysis' message.
@@ -535,8 +553,10 @@ def first_contact(
     """The first ``t`` in ``range`` where moving quadrics have a real common point, and the
     relation of the solids along the motion where both are ellipsoids: the JSON object of
     ``qsic contact --json`` (``range``, ``first_contact``: None, ``"-oo"``, ``"p/q"`` or
-    ``{"poly", "interval", "approx"}``, ``solids``: the relation on the range only).
-    ``range = (t0, t1)`` as for :func:`motion`.
+    ``{"poly", "interval", "approx"}``, ``contact``: the common points there, exact and in
+    decimals, and ``at_start`` when they already meet at the range's start; ``solids``: the
+    relation on the range only). ``a``, ``b`` and ``range = (t0, t1)`` as for :func:`motion`
+    (rigid motions as dicts).
 
     Raises:
         QsicError: the reader's or the analysis' message.

@@ -12,7 +12,7 @@ DEFAULT_BUDGET: int
 
 Number = Union[int, float, str, Any]  # also Fraction, Decimal, NumPy scalars
 QuadricLike = Union["Quadric", str, Sequence[Sequence[Number]], np.ndarray]
-MovingLike = Union[str, Sequence[Sequence[Number]], np.ndarray]
+MovingLike = Union[str, Sequence[Sequence[Number]], np.ndarray, Dict[str, Any]]
 Range = Optional[Tuple[Optional[Number], Optional[Number]]]
 
 class Quadric:

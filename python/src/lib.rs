@@ -19,7 +19,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList, PyString};
 use qsic::affine::Chart;
-use qsic::io::{moving_matrix_from_polynomial, moving_matrix_from_rows, MovingMatrix};
+use qsic::io::{moving_matrix_from_rows, MovingMatrix};
 use qsic::param::sample::SampleOptions;
 use qsic::{classify_allowing_zero, Budget, Error, Quadric};
 use qsic_algebra::RBig;
@@ -661,15 +661,15 @@ fn sample(
     answer_json(py, &answer, (a.as_deref(), b.as_deref()), budget)
 }
 
-/// A moving quadric: one polynomial text with coefficients rational in `t`, or 16 texts.
+/// A moving quadric: one text read as a `qsic motion` argument (a polynomial with
+/// coefficients rational in `t`, or the JSON object of a rigid motion), or 16 texts.
 fn moving(name: &str, texts: Vec<String>) -> PyResult<MovingMatrix> {
-    let m = if texts.len() == 1 {
-        moving_matrix_from_polynomial(&texts[0])
-    } else {
-        let rows: Vec<Vec<String>> = texts.chunks(4).map(<[String]>::to_vec).collect();
-        moving_matrix_from_rows(&rows)
-    };
-    m.map_err(|e| err(format!("{name}: {e}")))
+    if texts.len() == 1 {
+        return qsic_cli::motion::moving_from_arg(&texts[0])
+            .map_err(|e| err(format!("{name}: {e}")));
+    }
+    let rows: Vec<Vec<String>> = texts.chunks(4).map(<[String]>::to_vec).collect();
+    moving_matrix_from_rows(&rows).map_err(|e| err(format!("{name}: {e}")))
 }
 
 /// The range `(t0, t1)` of `motion` and `first_contact`, read as `--range T0 T1` by the

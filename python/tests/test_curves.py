@@ -89,7 +89,8 @@ def test_motion_with_a_range_and_first_contact_equal_cli(cli):
     assert later == cli_json(cli, "contact", "--json", "--range", "0", "oo", a, b)
     assert later["first_contact"] == "1"  # inside (no common point) until |t| = 2 − 1
     # the documented key order, the solids on the range only
-    assert list(later) == ["range", "first_contact", "solids"]
+    assert list(later) == ["range", "first_contact", "contact", "solids"]
+    assert later["contact"]["points"][0]["point"] == ["2", "0", "0", "1"]  # the inner touching
     assert list(later["solids"]) == ["first_meeting", "intervals", "instants"]
     assert later["solids"]["intervals"][0]["from"] == "0"
 
@@ -113,3 +114,26 @@ def test_inputs_are_read_as_by_the_cli(cli):
     assert qsic.motion(*pair, range=(float("-inf"), 1)) == open_start
     with pytest.raises(qsic.QsicError, match="range start is not a finite number"):
         qsic.motion(*pair, range=(float("nan"), 1))
+
+
+def test_rigid_motions_as_dicts_equal_cli(cli):
+    # the ellipsoid x²/4 + y² + z² = 1 turning about z (t = tan(θ/2)) first touches the
+    # sphere of radius 3 about (3, 4, 0) with a tip, at (6/5, 8/5, 0), at t = −2
+    turning = {"quadric": "x^2/4 + y^2 + z^2 - 1", "rotate": {"axis": [0, 0, 1]}}
+    sphere = "(x - 3)^2 + (y - 4)^2 + z^2 - 9"
+    got = qsic.first_contact(turning, sphere)
+    assert got == cli_json(cli, "contact", "--json", json.dumps(turning), sphere)
+    assert got["first_contact"] == "-2"
+    assert got["contact"]["points"][0]["point"] == ["6/5", "8/5", "0", "1"]
+    assert got["contact"]["at_start"] is False
+    # a quaternion path with exact numbers, a screw rise, numpy and Fraction entries
+    screw = {
+        "quadric": np.diag([1, 1, 1, -1]).tolist(),
+        "rotate": {"quaternion": [1, 0, 0, "t"], "center": [Fraction(0), 0, 0]},
+        "translate": [0, 0, "t"],
+    }
+    m = qsic.motion(screw, "x^2 + y^2 + (z - 5)^2 - 1")
+    # a unit sphere about the origin rising along z: touches at t = 3, leaves at t = 7
+    assert [i["t"] for i in m["instants"]][:1] == ["3"]
+    with pytest.raises(qsic.QsicError, match="^A: invalid rigid motion: the rotation axis is zero"):
+        qsic.motion({"quadric": "x^2 - 1", "rotate": {"axis": [0, 0, 0]}}, sphere)

@@ -3,12 +3,20 @@
 //!
 //! JSON (one object, keys in this order):
 //! `{"range": [from|null, to|null], "first_contact": null | "-oo" | instant,
-//! "solids": null | {"first_meeting": null | "-oo" | instant | {"error": "..."},
+//! "contact": null | {"t": instant, "at_start": bool, "locus": "points" | "same_quadric" |
+//! "not_computed", "curves": n | null, "points": [{"kind", "point": [x, y, z, w], "approx":
+//! [x, y, z] | null}], "numbers": [{"name", "poly", "interval", "approx"}], "note": null |
+//! "..."}, "solids": null | {"first_meeting": null | "-oo" | instant | {"error": "..."},
 //! "intervals": [{"from", "to", "sample_t", "relation", "inner", "note"}],
 //! "instants": [{"t", "relation", "inner", "note"}]}}` with an instant `"p/q"` or
 //! `{"poly": "t^2 - 8", "interval": ["a", "b"], "approx": "-2.828…"}`, `from`/`to` null for
 //! `∓∞`; `relation` a [`SolidRelation`](qsic::solids::SolidRelation) key, `not_ellipsoids`
 //! or `undetermined`; `inner` `"A"`/`"B"` for `inside` and `touching_internally`.
+//! `contact` gives the common real points at the first contact (null for none or `"-oo"`):
+//! `kind` `isolated` (at a touching from an empty intersection, every point) or a singular
+//! point's kind; `point` exact homogeneous coordinates (`w = 1` for an affine point) as in
+//! `qsic param`, algebraic numbers of degree > 2 named `a1`, … under `numbers`; `curves` the
+//! number of real curve pieces (0 at a touching; more when they already meet, `at_start`).
 //! `solids` covers the range only ([`solid_motion_in`]), and is null when the two are never
 //! both solid ellipsoids there.
 //!
@@ -18,9 +26,11 @@
 use crate::output::write_json_string;
 use qsic::io::MovingMatrix;
 use qsic::motion::contact::{
-    first_contact_in, solid_motion_in, FirstContact, SolidMotion, SolidState, TimeRange,
+    contact_points, first_contact_in, solid_motion_in, CommonLocus, ContactPoints, FirstContact,
+    SolidMotion, SolidState, TimeRange,
 };
 use qsic::motion::{MovingPencil, MINUS_INFINITY, PLUS_INFINITY};
+use qsic::param::expr::Names;
 use qsic::Error;
 use qsic_algebra::{AlgebraicReal, RBig};
 use std::fmt::Write as _;
@@ -32,6 +42,8 @@ pub struct ContactReport {
     pub range: TimeRange,
     /// The first `t` with a real common point (real projective space).
     pub first_contact: Option<FirstContact>,
+    /// The common points there (`None` without a first instant).
+    pub contact: Option<ContactPoints>,
     /// The relation of the solids along the range; `None` if they are never both solid
     /// ellipsoids there.
     pub solids: Option<SolidMotion>,
@@ -48,6 +60,10 @@ pub fn contact(a: MovingMatrix, b: MovingMatrix, range: TimeRange) -> Result<Con
     let pencil = MovingPencil::new(a, b)?;
     let motion = pencil.variations()?;
     let first = first_contact_in(&pencil, &motion, &range)?;
+    let contact = match &first {
+        Some(f) => contact_points(&pencil, f, &range)?,
+        None => None,
+    };
     let solids = solid_motion_in(&pencil, &range)?;
     let any_relation = solids
         .intervals
@@ -64,6 +80,7 @@ pub fn contact(a: MovingMatrix, b: MovingMatrix, range: TimeRange) -> Result<Con
     Ok(ContactReport {
         range,
         first_contact: first,
+        contact,
         solids,
         first_meeting,
     })
@@ -167,6 +184,78 @@ fn write_solids(
     out.push_str("]}");
 }
 
+/// Appends the `"contact"` object (module docs).
+fn write_contact_points(out: &mut String, c: &ContactPoints) {
+    let mut names = Names::new();
+    out.push_str("{\"t\":");
+    write_instant(out, &c.t);
+    out.push_str(",\"at_start\":");
+    out.push_str(if c.at_start { "true" } else { "false" });
+    let (locus, curves, note) = match &c.locus {
+        CommonLocus::Points { curves, .. } => ("points", Some(*curves), None),
+        CommonLocus::SameQuadric => ("same_quadric", None, None),
+        CommonLocus::NotComputed(why) => ("not_computed", None, Some(why.as_str())),
+    };
+    out.push_str(",\"locus\":");
+    write_json_string(out, locus);
+    out.push_str(",\"curves\":");
+    match curves {
+        Some(n) => out.push_str(&n.to_string()),
+        None => out.push_str("null"),
+    }
+    out.push_str(",\"points\":[");
+    if let CommonLocus::Points { points, .. } = &c.locus {
+        for (k, p) in points.iter().enumerate() {
+            if k > 0 {
+                out.push(',');
+            }
+            out.push_str("{\"kind\":");
+            write_json_string(out, p.kind.key());
+            out.push_str(",\"point\":[");
+            for (i, x) in p.point.iter().enumerate() {
+                if i > 0 {
+                    out.push(',');
+                }
+                write_json_string(out, &names.number(x));
+            }
+            out.push_str("],\"approx\":");
+            match p.approx() {
+                Some(x) => {
+                    let x = x.map(|v| format!("{v:.15}"));
+                    out.push('[');
+                    out.push_str(&x.join(","));
+                    out.push(']');
+                }
+                None => out.push_str("null"),
+            }
+            out.push('}');
+        }
+    }
+    out.push_str("],\"numbers\":[");
+    for (k, n) in names.numbers().into_iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        out.push_str("{\"name\":");
+        write_json_string(out, &n.name);
+        out.push_str(",\"poly\":");
+        write_json_string(out, &n.poly);
+        out.push_str(",\"interval\":[");
+        write_json_string(out, &n.interval[0]);
+        out.push(',');
+        write_json_string(out, &n.interval[1]);
+        out.push_str("],\"approx\":");
+        out.push_str(&format!("{:.15}", n.approx));
+        out.push('}');
+    }
+    out.push_str("],\"note\":");
+    match note {
+        Some(n) => write_json_string(out, n),
+        None => out.push_str("null"),
+    }
+    out.push('}');
+}
+
 /// The report as one JSON object on one line, keys in the documented order (module docs).
 pub fn report_to_json_line(r: &ContactReport) -> String {
     let mut out = String::with_capacity(1024);
@@ -182,6 +271,11 @@ pub fn report_to_json_line(r: &ContactReport) -> String {
     }
     out.push_str("],\"first_contact\":");
     write_contact(&mut out, &r.first_contact);
+    out.push_str(",\"contact\":");
+    match &r.contact {
+        Some(c) => write_contact_points(&mut out, c),
+        None => out.push_str("null"),
+    }
     out.push_str(",\"solids\":");
     match &r.solids {
         Some(m) => write_solids(&mut out, m, &r.first_meeting),
@@ -221,6 +315,52 @@ fn state_text(s: &SolidState) -> String {
     }
 }
 
+/// The common points at the first contact, for people: one line each, exact and decimal.
+fn contact_points_text(c: &ContactPoints) -> String {
+    let mut s = String::new();
+    if c.at_start {
+        let _ = writeln!(s, "  they already meet at the start of the range");
+    }
+    let mut names = Names::new();
+    match &c.locus {
+        CommonLocus::SameQuadric => {
+            let _ = writeln!(
+                s,
+                "  the quadrics are the same there: every point is common"
+            );
+        }
+        CommonLocus::NotComputed(why) => {
+            let _ = writeln!(s, "  common points not computed: {why}");
+        }
+        CommonLocus::Points { points, curves } => {
+            if *curves > 0 {
+                let _ = writeln!(s, "  {curves} real curve piece(s) in common");
+            }
+            for p in points {
+                let exact: Vec<String> = p.point.iter().map(|x| names.number(x)).collect();
+                let approx = match p.approx() {
+                    Some(x) => format!("≈ ({:.12}, {:.12}, {:.12})", x[0], x[1], x[2]),
+                    None => "at infinity".to_string(),
+                };
+                let _ = writeln!(
+                    s,
+                    "  {} point ({}) {approx}",
+                    p.kind.key(),
+                    exact.join(", ")
+                );
+            }
+            for n in names.numbers() {
+                let _ = writeln!(
+                    s,
+                    "    {} = root of {} in [{}, {}] ≈ {:.12}",
+                    n.name, n.poly, n.interval[0], n.interval[1], n.approx
+                );
+            }
+        }
+    }
+    s
+}
+
 /// The text report: first contact, then the timeline of the solids in the range.
 pub fn human_report(r: &ContactReport) -> String {
     let end = |v: Option<&RBig>, inf: &str| v.map_or(inf.to_string(), rational);
@@ -236,6 +376,9 @@ pub fn human_report(r: &ContactReport) -> String {
         "first contact (real common point): {}",
         contact_text(&r.first_contact, "none in the range")
     );
+    if let Some(c) = &r.contact {
+        s.push_str(&contact_points_text(c));
+    }
     let Some(m) = &r.solids else {
         let _ = writeln!(s, "solids: not both solid ellipsoids at any t in the range");
         return s;

@@ -219,6 +219,9 @@ pub enum JsonForm<'a> {
     /// A 4×4 array whose entries are numbers (their text as written) or strings without
     /// escapes (their content), as [`crate::line::scan_plain`] reads it.
     Array4([[&'a str; 4]; 4]),
+    /// An object: a quadric under a rigid motion for the moving readers
+    /// ([`crate::rigid`]); of the wrong type for the others.
+    Object(serde_json::Map<String, Value>),
     /// Any other value, by its JSON type (`"a number"`, `"null"`, …).
     Other(&'static str),
 }
@@ -266,6 +269,16 @@ fn drain_map<'de, A: MapAccess<'de>>(mut map: A) -> Result<&'static str, A::Erro
 /// Visits any value of the wrong type as `T::from(kind)`.
 macro_rules! other_kinds {
     ($make:expr) => {
+        other_scalars!($make);
+        fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Self::Value, A::Error> {
+            Ok($make(drain_map(map)?))
+        }
+    };
+}
+
+/// Visits a boolean, a number or null as `T::from(kind)`.
+macro_rules! other_scalars {
+    ($make:expr) => {
         fn visit_bool<E: de::Error>(self, _: bool) -> Result<Self::Value, E> {
             Ok($make("a boolean"))
         }
@@ -280,9 +293,6 @@ macro_rules! other_kinds {
         }
         fn visit_unit<E: de::Error>(self) -> Result<Self::Value, E> {
             Ok($make("null"))
-        }
-        fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Self::Value, A::Error> {
-            Ok($make(drain_map(map)?))
         }
     };
 }
@@ -323,7 +333,21 @@ impl<'de> Deserialize<'de> for JsonForm<'de> {
                 }
                 Ok(JsonForm::Matrix(m))
             }
-            other_kinds!(JsonForm::Other);
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
+                let mut object = serde_json::Map::new();
+                while let Some(key) = map.next_key::<String>()? {
+                    if object.is_empty() && key == NUMBER_TOKEN {
+                        // serde_json's arbitrary-precision number, not an object
+                        map.next_value::<IgnoredAny>()?;
+                        drain_map(map)?;
+                        return Ok(JsonForm::Other("a number"));
+                    }
+                    let value = map.next_value::<Value>()?;
+                    object.insert(key, value);
+                }
+                Ok(JsonForm::Object(object))
+            }
+            other_scalars!(JsonForm::Other);
         }
         deserializer.deserialize_any(FormVisitor)
     }
@@ -389,6 +413,11 @@ pub fn quadric_from_form(form: &JsonForm<'_>) -> Result<Option<Quadric>, InputEr
         JsonForm::Text(text) => return allow_zero(parse_quadric(text)),
         JsonForm::Matrix(m) => m,
         JsonForm::Array4(texts) => return allow_zero(quadric_from_array(texts)),
+        JsonForm::Object(_) => {
+            return Err(InputError::Type(
+                "expected a polynomial string or a 4x4 array, found an object".into(),
+            ))
+        }
         JsonForm::Other(kind) => {
             return Err(InputError::Type(format!(
                 "expected a polynomial string or a 4x4 array, found {kind}"

@@ -12,6 +12,7 @@
 //! | [`contact`] | `qsic contact`: first contact of two moving quadrics and the relation of moving solid ellipsoids |
 //! | [`batch`] | `--batch`: bounded, ordered, parallel JSON Lines processing, for any [`batch::Answer`] or line answer |
 //! | [`motion`] | `qsic motion`: moving quadrics in, their timeline out (text, JSON, batch lines) |
+//! | [`rigid`] | the JSON object form of a quadric under a rigid motion (`{"quadric", "rotate", "translate"}`) |
 //! | [`motion_plot`] | `qsic motion --plot`: the timeline as an SVG picture |
 //! | [`param`] | `qsic param`: the exact curve as JSON and text |
 //! | [`mod@sample`] | `qsic sample`: real points as JSON, CSV, OBJ |
@@ -38,6 +39,7 @@ pub mod param;
 pub mod plot;
 mod plot_common;
 pub mod reader;
+pub mod rigid;
 pub mod sample;
 pub mod stream;
 pub mod svg;

@@ -173,9 +173,17 @@ struct PlotArgs {
     after_help = "A and B: read as by 'qsic motion': quadratic forms in x, y, z, w (or affine \
 x, y, z) whose coefficients are rational functions of t, e.g. \"(x - t)^2 + y^2 + z^2 - 1\" (a \
 linear one is a moving plane, read as its double plane), or 4x4 JSON arrays of numbers and \
-such functions as strings. --range as for 'qsic motion'; the solids' relation is reported on \
-the range only. Instants are exact: rationals, or roots of a polynomial in t.\n\
-Example: qsic contact \"x^2+y^2+z^2-4\" \"(x-t)^2+y^2+z^2-1\" --range -10 10"
+such functions as strings, or quadrics under rigid motions, JSON objects {\"quadric\", \
+\"rotate\": {\"axis\" | \"quaternion\", \"center\"}, \"translate\"} (see 'qsic motion --help'). \
+--range as for 'qsic motion'; the solids' relation is reported on the range only. Instants are \
+exact: rationals, or roots of a polynomial in t.\n\
+The first contact comes with the common points there (\"contact\" in --json): exact \
+homogeneous coordinates (w = 1 for an affine point; numbers of degree > 2 named a1, … with \
+their polynomial) and decimals, each isolated or a singular point of the curve; the number of \
+real curve pieces in common, and whether the quadrics already meet at the start of the range.\n\
+Examples: qsic contact \"x^2+y^2+z^2-4\" \"(x-t)^2+y^2+z^2-1\" --range -10 10\n\
+  qsic contact '{\"quadric\": \"(x-2)^2+y^2+z^2-1\", \"rotate\": {\"axis\": [0,0,1]}, \"translate\": [0,0,\"t\"]}' \
+\"(x+6/5)^2+(y-8/5)^2+(z-5)^2-4\""
 )]
 struct ContactArgs {
     /// First moving quadric.
@@ -337,6 +345,23 @@ MOVING QUADRICS:
   Bounds (qsic::limits): entries of degree <= 16 in t once denominators are cleared,
   coefficients of <= 512 bits; each number <= 10000 digits.
 
+RIGID MOTIONS:
+  A(t) or B(t) may be a quadric under a rigid motion, a JSON object:
+    {\"quadric\": Q, \"rotate\": {\"axis\": [a1,a2,a3]} , \"translate\": [c1,c2,c3]}
+  Q: a quadric as above (a string or a 4x4 array; it may itself depend on t). A point x
+  moves to R(t)(x - p) + p + c(t):
+    \"rotate\": {\"axis\": [a1,a2,a3]}          the Cayley rotation about the axis a: angle
+                                          theta with tan(theta/2) = t*|a| (\"cayley\": true
+                                          may be added); entries of degree 4 over (1+|a|^2 t^2)^2
+    \"rotate\": {\"quaternion\": [q0,q1,q2,q3]}  the rotation of the quaternion path
+                                          q0 + q1 i + q2 j + q3 k (polynomials in t)
+    \"center\": [p1,p2,p3] (in \"rotate\")      a point of the axis (default the origin)
+    \"translate\": [c1,c2,c3]                 then the translation, polynomials in t
+  a and p are rational numbers (JSON numbers or strings \"1/3\"), q and c numbers or strings
+  \"2*t^2 - 1/2\". A screw motion: an axis rotation and a translation along the axis.
+  Exact: the moved matrix is T^-T A T^-1 with T^-1 rational in t. Also as \"A\"/\"B\" of
+  --batch lines.
+
 OUTPUT:
   A timeline: the open intervals of t with a rational sample and their type, and the
   instants between them where the type differs from a neighbour's. An instant is exact:
@@ -375,7 +400,8 @@ EXIT STATUS:
 EXAMPLES:
   qsic motion \"x^2+y^2+z^2-4\" \"(x-t)^2+y^2+z^2-1\"
   qsic motion --json --range 0 2 \"x^2+y^2-z^2-w^2\" \"(x^2+y^2+(z+t*w)^2)/2-w^2\"
-  qsic motion --batch moving.jsonl";
+  qsic motion --batch moving.jsonl
+  qsic motion '{\"quadric\": \"x^2/4+y^2+z^2-1\", \"rotate\": {\"axis\": [0,0,1]}}' \"(x-3)^2+(y-4)^2+z^2-9\"";
 
 /// Arguments of `qsic motion`.
 #[derive(Args, Debug)]

@@ -27,18 +27,23 @@ use serde_json::Value;
 use std::fmt::Write as _;
 
 /// Reads a moving quadric from a command-line argument: a JSON array of 4 rows of 4 entries
-/// (numbers or strings of rational functions of `t`) if it starts with `[`, otherwise a
-/// quadratic form in `x, y, z, w` (or affine in `x, y, z`) with coefficients rational in `t`.
+/// (numbers or strings of rational functions of `t`) if it starts with `[`, a quadric under
+/// a rigid motion ([`crate::rigid`]) if it starts with `{`, otherwise a quadratic form in
+/// `x, y, z, w` (or affine in `x, y, z`) with coefficients rational in `t`.
 ///
 /// # Errors
 /// [`InputError::Json`] or [`InputError::Type`] for a bad JSON matrix, otherwise the
 /// reader's error (syntax, symmetry, zero quadric, limits).
 pub fn moving_from_arg(text: &str) -> Result<MovingMatrix, InputError> {
-    if !text.trim_start().starts_with('[') {
+    let object = text.trim_start().starts_with('{');
+    if !text.trim_start().starts_with('[') && !object {
         return Ok(moving_matrix_from_polynomial(text)?);
     }
     if text.len() > crate::input::MAX_MATRIX_ARG_BYTES {
         return Err(InputError::TooLong(text.len()));
+    }
+    if object {
+        return crate::rigid::moving_from_object_text(text);
     }
     let value: Value = serde_json::from_str(text).map_err(InputError::Json)?;
     let Value::Array(rows) = &value else {
@@ -73,8 +78,8 @@ pub fn moving_from_arg(text: &str) -> Result<MovingMatrix, InputError> {
     Ok(moving_matrix_from_rows(&texts)?)
 }
 
-/// Reads a moving quadric from a batch field: a string as in [`moving_from_arg`], or a 4×4
-/// array of numbers and strings.
+/// Reads a moving quadric from a batch field: a string as in [`moving_from_arg`], a 4×4
+/// array of numbers and strings, or a rigid motion object ([`crate::rigid`]).
 ///
 /// # Errors
 /// As [`moving_from_arg`]; [`InputError::Type`] for a value of another JSON type.
@@ -90,9 +95,10 @@ pub fn moving_from_form(form: &JsonForm<'_>) -> Result<MovingMatrix, InputError>
                 .collect();
             return Ok(moving_matrix_from_rows(&rows)?);
         }
+        JsonForm::Object(map) => return crate::rigid::moving_from_object(map),
         JsonForm::Other(kind) => {
             return Err(InputError::Type(format!(
-                "expected a polynomial string or a 4x4 array, found {kind}"
+                "expected a polynomial string, a 4x4 array or a rigid motion object, found {kind}"
             )))
         }
     };

@@ -237,8 +237,13 @@ fn keys_in_order(text: &str) -> Vec<Vec<String>> {
 /// irrational instant too.
 #[test]
 fn contact_json_keys_follow_the_documented_order() {
-    let documented: [&[&str]; 6] = [
-        &["range", "first_contact", "solids"],
+    let documented: [&[&str]; 9] = [
+        &["range", "first_contact", "contact", "solids"],
+        &[
+            "t", "at_start", "locus", "curves", "points", "numbers", "note",
+        ],
+        &["kind", "point", "approx"],
+        &["name", "poly", "interval", "approx"],
         &["first_meeting", "intervals", "instants"],
         &["from", "to", "sample_t", "relation", "inner", "note"],
         &["t", "relation", "inner", "note"],

@@ -167,6 +167,11 @@ pub enum Error {
     /// at `−∞`): says which end and why ([`crate::motion::TimeRange`]).
     #[error("invalid time range: {}", shorten_numbers(.0))]
     InvalidRange(String),
+    /// A rigid motion that cannot be built: a zero rotation axis or quaternion path, a
+    /// translation or quaternion component that is not a polynomial in `t`
+    /// ([`crate::motion::rigid`]). Says which part and why.
+    #[error("invalid rigid motion: {}", shorten_numbers(.0))]
+    InvalidMotion(String),
     /// A quadric that does not bound a solid ellipsoid where one is needed
     /// ([`crate::solids`]): says which and what it is instead.
     #[error("not a solid ellipsoid: {}", shorten_numbers(.0))]

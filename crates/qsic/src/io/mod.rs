@@ -10,6 +10,7 @@
 //! | [`quadric_from_f64_rows`] | a 4×4 matrix of `f64`, each converted exactly |
 //! | [`parse_rational_function`] | an expression in chosen variables with any division: a quotient of polynomials |
 //! | [`moving_matrix_from_rows`] | a 4×4 matrix of rational functions of `t`: a [`MovingMatrix`] over one denominator |
+//! | [`moving_matrix_from_polys`] | a symmetric matrix of polynomials in `t` over a denominator, computed rather than read: the same |
 //! | [`moving_matrix_from_polynomial`] | a quadratic form in `x, y, z, w` with coefficients rational in `t` (a linear one as its double plane): the same |
 //!
 //! Polynomials and rational functions are read by one Pratt parser (`expression`); the
@@ -27,7 +28,9 @@ mod number;
 mod polynomial;
 
 pub use expression::{parse_rational_function, RationalFunction, Variable, VARIABLE_NAMES};
-pub use moving::{moving_matrix_from_polynomial, moving_matrix_from_rows, MovingMatrix};
+pub use moving::{
+    moving_matrix_from_polynomial, moving_matrix_from_polys, moving_matrix_from_rows, MovingMatrix,
+};
 use number::parse_number_small;
 pub use number::{parse_number, shortest_decimal};
 pub use polynomial::{

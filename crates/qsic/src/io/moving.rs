@@ -241,6 +241,73 @@ pub fn moving_matrix_from_polynomial(text: &str) -> Result<MovingMatrix, Error> 
     Ok(canonical(numerators, integer_poly(&denominator, t)))
 }
 
+/// A moving quadric from a symmetric matrix of polynomials in `t` with rational
+/// coefficients over a nonzero denominator, `A(t) = entries(t) / denominator(t)`, put in
+/// canonical form ([`MovingMatrix`]): the builder of the readers, for matrices computed
+/// rather than read (a quadric under a rigid motion, [`crate::motion::rigid`]).
+///
+/// # Errors
+/// - [`Error::NotSymmetric`] if `entries[i][j] ≠ entries[j][i]` (the texts are the two
+///   polynomials);
+/// - [`Error::ZeroQuadric`] if every entry is zero, [`Error::Algebra`] if the denominator
+///   is;
+/// - [`Error::Limit`] if the coefficients have more than [`MAX_MOVING_MATRIX_BITS`] bits.
+///
+/// # Examples
+/// ```
+/// use qsic::io::{moving_matrix_from_polynomial, moving_matrix_from_polys};
+/// use qsic_algebra::{Poly, RBig};
+///
+/// let c = |v: &[i64]| Poly::new(v.iter().map(|&k| RBig::from(k)).collect());
+/// let mut m: [[Poly<RBig>; 4]; 4] = Default::default();
+/// (m[0][0], m[1][1], m[2][2]) = (c(&[1]), c(&[1]), c(&[1]));
+/// (m[0][3], m[3][0], m[3][3]) = (c(&[0, -1]), c(&[0, -1]), c(&[-1, 0, 1]));
+/// let moved = moving_matrix_from_polys(&m, &c(&[2]))?;
+/// assert_eq!(moved.numerators(), moving_matrix_from_polynomial("(x - t)^2 + y^2 + z^2 - 1")?.numerators());
+/// # Ok::<(), qsic::error::Error>(())
+/// ```
+pub fn moving_matrix_from_polys(
+    entries: &[[Poly<RBig>; 4]; 4],
+    denominator: &Poly<RBig>,
+) -> Result<MovingMatrix, Error> {
+    for i in 0..4 {
+        for j in i + 1..4 {
+            if entries[i][j] != entries[j][i] {
+                return Err(Error::NotSymmetric {
+                    row: i,
+                    col: j,
+                    a: excerpt(&entries[i][j].to_string().replace('x', "t")),
+                    b: excerpt(&entries[j][i].to_string().replace('x', "t")),
+                });
+            }
+        }
+    }
+    if entries.iter().flatten().all(Poly::is_zero) {
+        return Err(Error::ZeroQuadric);
+    }
+    if denominator.is_zero() {
+        return Err(Error::Algebra(
+            "a moving matrix over the zero denominator".into(),
+        ));
+    }
+    use dashu_int::ops::BitTest;
+    let rational_bits = |c: &RBig| c.numerator().bit_len() + c.denominator().bit_len();
+    let size = entries
+        .iter()
+        .flatten()
+        .chain(std::iter::once(denominator))
+        .flat_map(|p| p.coeffs())
+        .map(rational_bits)
+        .sum();
+    check_moving_size(size)?;
+    // entries / denominator = (s·entries) / P with P = s·denominator in ℤ[t]
+    let (d, s) = Poly::from_rational(denominator);
+    let m = std::array::from_fn(|i| {
+        std::array::from_fn(|j| entries[i][j].coeffs().iter().map(|c| c * &s).collect())
+    });
+    Ok(canonical(m, d))
+}
+
 /// Bits of all the coefficients of `p`.
 fn size_in_bits(p: &MPoly) -> usize {
     p.terms().iter().map(|(_, c)| bits(c)).sum()

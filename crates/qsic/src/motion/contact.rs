@@ -17,7 +17,13 @@
 //!   decision over `ℚ(α)` (minor signs at `α`, the pencil's roots and inertias over `ℚ(α)`).
 //!   [`SolidMotion::first_meeting`] is the affine first contact: the least `t` where the
 //!   solids are no longer separated.
+//! - [`contact_points`], [`common_points_at`] (module `contact_point`): the common real points
+//!   at the first contact — the points where the quadrics touch — exactly, and whether they
+//!   already meet at the start of the range.
 
+pub use super::contact_point::{
+    common_points_at, contact_points, CommonLocus, CommonPoint, CommonPointKind, ContactPoints,
+};
 use super::instants::pencil_entries;
 pub use super::range::TimeRange;
 use super::{irrational, InstantType, Motion, MovingPencil};

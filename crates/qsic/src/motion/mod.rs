@@ -27,12 +27,15 @@
 //!
 //! [`contact`]: the first contact of the two quadrics in a range, and the relation of two
 //! moving solid ellipsoids along the motion. [`TimeRange`]: the range of `t`, and its one
-//! reading from text (`-oo`/`oo` for an open side).
+//! reading from text (`-oo`/`oo` for an open side). [`rigid`]: a quadric under a rigid motion
+//! rational in `t` (Cayley or quaternion rotation, polynomial translation) as a moving matrix.
 
 pub mod contact;
+mod contact_point;
 mod instants;
 mod irrational;
 mod range;
+pub mod rigid;
 
 pub use contact::{first_contact, solid_motion, FirstContact, SolidMotion, SolidState};
 pub use range::{TimeRange, MINUS_INFINITY, PLUS_INFINITY};
