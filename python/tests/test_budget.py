@@ -36,8 +36,11 @@ def test_curve_and_points_take_the_budget():
 
 
 def test_a_row_over_its_budget_is_an_error_row_and_the_others_are_answered():
-    a = [qsic.Quadric(SPHERES[0]), qsic.Quadric(CLOSE[0]), qsic.Quadric(SPHERES[0])]
-    b = [qsic.Quadric("x^2+2*y^2-1"), qsic.Quadric(CLOSE[1]), qsic.Quadric("x^2+2*y^2-2")]
+    def matrices(texts):
+        return [qsic.Quadric(t).matrix for t in texts]
+
+    a = matrices([SPHERES[0], CLOSE[0], SPHERES[0]])
+    b = matrices(["x^2+2*y^2-1", CLOSE[1], "x^2+2*y^2-2"])
     out = qsic.classify_many(a, b, budget=10**5)
     assert out["error"][0] is None and out["error"][2] is None
     assert "over the work budget: 100000 units" in out["error"][1]
