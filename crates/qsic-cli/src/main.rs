@@ -875,12 +875,18 @@ fn run_sample(args: &SampleArgs, units: u64) -> ExitCode {
                 planes,
             };
             let affine = (!args.projective).then_some(&ctx);
-            format!(
-                "{{{}}}\n",
-                param::fields_of(&sample::SampleJson::with_affine(
-                    &curve, &sampled, &surfaces, affine
-                ))
-            )
+            let json = sample::SampleJson::with_affine(&curve, &sampled, &surfaces, affine);
+            drop((curve, sampled));
+            // serialized straight into the output: a million points are 140 MB of text
+            let mut stdout = io::BufWriter::with_capacity(1 << 20, io::stdout().lock());
+            let written = serde_json::to_writer(&mut stdout, &json)
+                .map_err(io::Error::from)
+                .and_then(|()| stdout.write_all(b"\n"))
+                .and_then(|()| stdout.flush());
+            return match written {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => io_failure("writing the output", &e),
+            };
         }
         Format::Csv => sample::to_csv(&sampled),
         Format::Obj => sample::to_obj(&sampled),
