@@ -32,6 +32,7 @@
 pub mod contact;
 mod instants;
 mod irrational;
+mod irrational_fast;
 mod range;
 
 pub use contact::{first_contact, solid_motion, FirstContact, SolidMotion, SolidState};
@@ -60,6 +61,8 @@ pub struct MovingPencil {
     /// `λM_A(t) − M_B(t)` over ℤ\[t\] with every minor, as polynomials in `λ`.
     pencil: MatrixPencil<Poly>,
     f: TPoly,
+    /// The polynomials in `λ` over `ℤ[t]` the fast route at irrational instants reads.
+    polys: irrational_fast::PencilPolys,
 }
 
 /// The type compared between neighbours: pencil kind, case, complex and real type.
@@ -180,12 +183,14 @@ impl MovingPencil {
         let entries = pencil_entries(ma, mb);
         let pencil = MatrixPencil::from_entries(ma.clone(), mb.clone());
         let f = pencil.det_poly();
+        let polys = irrational_fast::PencilPolys::of(&pencil);
         Ok(MovingPencil {
             a,
             b,
             entries,
             pencil,
             f,
+            polys,
         })
     }
 
@@ -393,7 +398,8 @@ impl MovingPencil {
         for c in &candidates {
             instant_types.push(match c.as_rational() {
                 Some(v) => InstantType::Exact(self.classify_at(v)?),
-                None => irrational::classify_at_irrational(&self.entries, c)
+                None => self
+                    .classify_at_irrational(c)
                     .map_or(InstantType::IrrationalUnclassified, InstantType::Exact),
             });
         }
@@ -453,6 +459,16 @@ impl MovingPencil {
             intervals,
             instants,
         })
+    }
+}
+
+impl MovingPencil {
+    /// The class at an irrational instant: the one dispatch point between the fast route
+    /// (module `irrational_fast`: one double root, certified signs) and the reference
+    /// (module `irrational`), which answers whatever the fast route hands back.
+    fn classify_at_irrational(&self, alpha: &AlgebraicReal) -> Option<Classification> {
+        irrational_fast::classify_at_irrational_fast(&self.polys, alpha)
+            .or_else(|| irrational::classify_at_irrational(&self.entries, alpha))
     }
 }
 

@@ -1,0 +1,344 @@
+//! The accelerator of module `irrational`: the class of a regular pencil at an irrational
+//! instant `t = α` whose characteristic polynomial has exactly one double root — the shape
+//! of almost every instant of a motion no one designed (a simple root of the discriminant) —
+//! with a few exact signs in `K = ℚ(α)` and no root isolation over `K`.
+//!
+//! # Mathematics
+//! The polynomials in `λ` over `ℤ[t]` — `f = det(λM_A − M_B)`, the principal-minor sums
+//! `E₁…E₄` and the `3×3` minors — are formed once per motion ([`PencilPolys`]); at `α` only
+//! their coefficients are reduced into `K`. With `f(λ; α)` of degree 4 (`det M_A(α) ≠ 0`,
+//! so no root at `λ = ∞`):
+//! - the remainder sequence of `f` and `f′` over `K` (every degree decided by the exact zero
+//!   test of `K`) gives `g = gcd(f, f′)`; this route takes only `deg g = 1`: `g = λ − λ₀`
+//!   with `λ₀ ∈ K`, a root of multiplicity exactly 2, and `f = (λ − λ₀)²·h` with `h`
+//!   quadratic, square-free and `h(λ₀) ≠ 0`. (`deg g = 1` also rules out a singular pencil
+//!   and a single quadric, whose `f` vanishes or is a fourth power.) `λ₀` is real (its
+//!   conjugate would be a second double root), and `h` has two real roots or none by the
+//!   sign of its discriminant in `K`;
+//! - the Segre block of `λ₀` is `[2]` if some `3×3` minor is nonzero at `λ₀` (rank 3), else
+//!   `[(11)]` (rank 2: the order of `λ₀` in `D₃` is 1, in `D₂` and `D₁` it is 0, since the
+//!   geometric multiplicity is at most the algebraic one); the roots of `h` are simple;
+//! - the real roots are ordered, and rational samples of the arcs between them chosen, from
+//!   float approximations, then certified by exact signs in `K`: at the samples
+//!   `s₀ < … < s_r`, `s − λ₀` and `lc(h)·h(s)` must show the claimed order (with two real
+//!   roots `h` changes sign exactly across them; `s − λ₀` across `λ₀`). A pattern that
+//!   does not match, or a sample that is a root, hands the instant back to the reference;
+//! - the inertia on each arc from the signs of `E_k` at its sample, at `λ₀` from the signs
+//!   of `E_k(λ₀)`, at a simple root from its arcs (one eigenvalue crosses zero) — the same
+//!   values the reference reads, so the class is the same: [`classify_regular_parts`] of the
+//!   same Segre structures and signature sequence.
+//!
+//! Every sign is exact (interval arithmetic on `α`'s refined interval, then `K`'s exact zero
+//! test); floats only propose the samples. `None` means "not this shape or not certified":
+//! the caller then runs the reference, so an answer is never lost.
+
+use super::instants::TPoly;
+use crate::classify::{classify_regular_parts, Classification};
+use crate::pencil::SigItem;
+use crate::solids::PencilSigns;
+use qsic_algebra::field::number_field::{NumberField, NumberFieldElement as K};
+use qsic_algebra::matrix::{Inertia, MatrixPencil};
+use qsic_algebra::roots::simplest_between;
+use qsic_algebra::{AlgebraicReal, Field, IBig, Poly, RBig, Ring, Sign};
+
+type KPoly = Poly<K>;
+
+/// The polynomials in `λ` over `ℤ[t]` the fast route reads, formed once per motion.
+#[derive(Clone, Debug)]
+pub(crate) struct PencilPolys {
+    /// `f = det(λM_A − M_B)`.
+    f: TPoly,
+    /// `E₁…E₄`, the principal-minor sums of `λM_A − M_B`.
+    e: [TPoly; 4],
+    /// The nonzero `3×3` minors.
+    minors3: Vec<TPoly>,
+}
+
+impl PencilPolys {
+    /// From the minors of the pencil over `ℤ[t]`.
+    pub(crate) fn of(pencil: &MatrixPencil<Poly>) -> PencilPolys {
+        PencilPolys {
+            f: pencil.det_poly(),
+            e: pencil.principal_minor_sums(),
+            minors3: pencil.minors(3),
+        }
+    }
+
+    /// The same for the pencil with `M_A` negated (`negate_a`) and/or `M_B` negated: a
+    /// `k×k` minor `m(λ)` of `λM_A − M_B` becomes `m(−λ)` for `(−M_A, M_B)`,
+    /// `(−1)ᵏm(−λ)` for `(M_A, −M_B)` and `(−1)ᵏm(λ)` for both negated.
+    pub(crate) fn oriented(&self, negate_a: bool, negate_b: bool) -> PencilPolys {
+        let map = |p: &TPoly, k: usize| -> TPoly {
+            let flip_lambda = negate_a != negate_b;
+            let flip_all = negate_b && k % 2 == 1;
+            Poly::new(
+                p.coeffs()
+                    .iter()
+                    .enumerate()
+                    .map(|(i, c)| {
+                        if flip_all != (flip_lambda && i % 2 == 1) {
+                            c.neg()
+                        } else {
+                            c.clone()
+                        }
+                    })
+                    .collect(),
+            )
+        };
+        PencilPolys {
+            f: map(&self.f, 4),
+            e: std::array::from_fn(|k| map(&self.e[k], k + 1)),
+            minors3: self.minors3.iter().map(|m| map(m, 3)).collect(),
+        }
+    }
+}
+
+/// A real root of `f(λ; α)`: the double root `λ₀`, or a simple root of `h`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum RealRoot {
+    Double,
+    Simple,
+}
+
+/// The certified analysis of the shape of the module docs.
+struct DoubleRootAnalysis {
+    /// The real roots, increasing, with their inertias.
+    roots: Vec<(RealRoot, Inertia)>,
+    /// The sign of each real root (in the same order).
+    root_signs: Vec<Sign>,
+    /// The rational sample of each arc (one more than the roots) and the inertia there.
+    arcs: Vec<(RBig, Inertia)>,
+    /// The Segre blocks of `λ₀`: `[2]` or `[1, 1]`.
+    double_blocks: Vec<u8>,
+    /// Whether `h` has real roots (else a complex pair).
+    h_real: bool,
+}
+
+/// The class at `α` by the fast route; `None` when `f(λ; α)` has not the shape of the
+/// module docs or a float guess is not confirmed (the caller runs the reference).
+pub(crate) fn classify_at_irrational_fast(
+    polys: &PencilPolys,
+    alpha: &AlgebraicReal,
+) -> Option<Classification> {
+    let an = analyze(polys, alpha)?;
+    let mut real_blocks: Vec<Vec<u8>> = Vec::new();
+    let mut seq = vec![SigItem::Interval(an.arcs[0].1.positive)];
+    for (i, (root, inertia)) in an.roots.iter().enumerate() {
+        let (blocks, mult) = match root {
+            RealRoot::Double => (an.double_blocks.clone(), 2),
+            RealRoot::Simple => (vec![1], 1),
+        };
+        real_blocks.push(blocks);
+        seq.push(SigItem::Root {
+            p: inertia.positive,
+            n: inertia.negative,
+            mult,
+        });
+        seq.push(SigItem::Interval(an.arcs[i + 1].1.positive));
+    }
+    let complex_blocks: Vec<Vec<u8>> = if an.h_real {
+        Vec::new()
+    } else {
+        vec![vec![1], vec![1]]
+    };
+    let structures = real_blocks
+        .iter()
+        .map(Vec::as_slice)
+        .chain(complex_blocks.iter().map(Vec::as_slice));
+    Some(classify_regular_parts(structures, real_blocks.len(), seq))
+}
+
+/// The signs and inertias along the λ-line (as the reference's
+/// `pencil_signs_at_irrational`) by the fast route; `None` as
+/// [`classify_at_irrational_fast`], or when `M_B(α)` is singular (a root at `λ = 0`).
+pub(crate) fn pencil_signs_at_irrational_fast(
+    polys: &PencilPolys,
+    alpha: &AlgebraicReal,
+) -> Option<PencilSigns> {
+    let an = analyze(polys, alpha)?;
+    if an.root_signs.contains(&Sign::Zero) {
+        return None;
+    }
+    Some(PencilSigns {
+        arcs: an
+            .arcs
+            .iter()
+            .map(|(x, inertia)| (Sign::of_rational(x), *inertia))
+            .collect(),
+        roots: an
+            .root_signs
+            .iter()
+            .zip(&an.roots)
+            .map(|(s, (_, inertia))| (*s, *inertia))
+            .collect(),
+    })
+}
+
+fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnalysis> {
+    let field = NumberField::new(alpha);
+    let into_k = |p: &TPoly| -> KPoly { p.map(|c| field.integer_element(c)) };
+    let f = into_k(&polys.f);
+    if f.degree() != Some(4) {
+        return None;
+    }
+    // gcd(f, f′) by the remainder sequence; each `Poly::new` trims by the exact zero test
+    let (mut a, mut b) = (f.clone(), f.derivative());
+    while !b.is_zero() {
+        let r = a.pseudo_rem(&b);
+        a = b;
+        b = r;
+    }
+    if a.degree() != Some(1) {
+        return None;
+    }
+    let lambda0 = a.coeff(0).neg().mul(&a.coeff(1).inv()?);
+    let square = Poly::new(vec![
+        lambda0.mul(&lambda0),
+        lambda0.mul(&K::from_int(&IBig::from(-2))),
+        K::one(),
+    ]);
+    let (h, rest) = f.div_rem(&square);
+    debug_assert!(rest.is_zero(), "(λ − λ₀)² divides f");
+    let (hc, hb, ha) = (h.coeff(0), h.coeff(1), h.coeff(2));
+    let disc = hb.mul(&hb).sub(&ha.mul(&hc).mul(&K::from_int(&IBig::from(4))));
+    let h_real = match disc.sign() {
+        Sign::Positive => true,
+        Sign::Negative => false,
+        Sign::Zero => return None, // not square-free: not this shape (gcd said otherwise)
+    };
+
+    // The Segre block of λ₀: rank 3 if a 3×3 minor is nonzero there.
+    let rank3 = polys
+        .minors3
+        .iter()
+        .any(|m| !into_k(m).eval(&lambda0).is_zero());
+    let double_blocks = if rank3 { vec![2] } else { vec![1, 1] };
+
+    // The order of the real roots, proposed by floats, then certified.
+    let x0 = lambda0.to_f64();
+    let mut approx: Vec<(f64, RealRoot)> = vec![(x0, RealRoot::Double)];
+    if h_real {
+        let (fa, fb, fd) = (ha.to_f64(), hb.to_f64(), disc.to_f64());
+        let s = fd.sqrt();
+        // the roots of h without cancellation: q = −(b + sign(b)·√D)/2, roots q/a and c/q
+        let q = -0.5 * (fb + fb.signum() * s);
+        let (r1, r2) = (q / fa, hc.to_f64() / q);
+        approx.push((r1, RealRoot::Simple));
+        approx.push((r2, RealRoot::Simple));
+    }
+    if approx.iter().any(|(x, _)| !x.is_finite()) {
+        return None;
+    }
+    approx.sort_by(|u, v| u.0.total_cmp(&v.0));
+    let samples = arc_samples(&approx)?;
+    // certify: λ₀ lies in the claimed cell, and lc(h)·h changes sign exactly across the
+    // claimed simple roots
+    let lead_sign = ha.sign();
+    let to_k = |x: &RBig| K::rational(x.clone());
+    let mut at_double = 0;
+    let mut simple_cells = Vec::new();
+    for (i, (_, kind)) in approx.iter().enumerate() {
+        match kind {
+            RealRoot::Double => at_double = i,
+            RealRoot::Simple => simple_cells.push(i),
+        }
+    }
+    for (i, s) in samples.iter().enumerate() {
+        let sk = to_k(s);
+        let side = sk.sub(&lambda0).sign();
+        let expected = if i <= at_double {
+            Sign::Negative
+        } else {
+            Sign::Positive
+        };
+        if side != expected {
+            return None;
+        }
+        if h_real {
+            let hs = h.eval(&sk).sign() * lead_sign;
+            // positive outside the two roots, negative between them
+            let inside = simple_cells[0] < i && i <= simple_cells[1];
+            if hs != if inside { Sign::Negative } else { Sign::Positive } {
+                return None;
+            }
+        }
+    }
+
+    let e: [KPoly; 4] = std::array::from_fn(|k| into_k(&polys.e[k]));
+    let inertia_at = |x: &K| Inertia::from_minor_sum_signs(e.each_ref().map(|q| q.eval(x).sign()));
+    let arcs: Vec<(RBig, Inertia)> = samples
+        .into_iter()
+        .map(|s| {
+            let inertia = inertia_at(&to_k(&s));
+            (s, inertia)
+        })
+        .collect();
+    let roots = approx
+        .iter()
+        .enumerate()
+        .map(|(i, (_, kind))| {
+            let inertia = match kind {
+                RealRoot::Double => inertia_at(&lambda0),
+                RealRoot::Simple => {
+                    let (l, r) = (&arcs[i].1, &arcs[i + 1].1);
+                    Inertia {
+                        positive: l.positive.min(r.positive),
+                        negative: l.negative.min(r.negative),
+                        zero: 1,
+                    }
+                }
+            };
+            (*kind, inertia)
+        })
+        .collect();
+    // the signs of the roots: λ₀ directly; those of h from h(0) and the sum of the roots
+    let mut root_signs = Vec::with_capacity(approx.len());
+    let h0 = hc.sign() * lead_sign; // sign of the product of the roots of h
+    let sum = hb.neg().sign() * lead_sign; // sign of their sum
+    let mut simple_seen = 0;
+    for (_, kind) in &approx {
+        root_signs.push(match kind {
+            RealRoot::Double => lambda0.sign(),
+            RealRoot::Simple => {
+                simple_seen += 1;
+                match h0 {
+                    Sign::Zero => Sign::Zero,
+                    Sign::Negative if simple_seen == 1 => Sign::Negative,
+                    Sign::Negative => Sign::Positive,
+                    Sign::Positive => sum,
+                }
+            }
+        });
+    }
+    Some(DoubleRootAnalysis {
+        roots,
+        root_signs,
+        arcs,
+        double_blocks,
+        h_real,
+    })
+}
+
+/// Rational samples for the arcs of the approximate roots `approx` (increasing): one below
+/// the first, one simple rational in the middle half of each gap, one above the last.
+/// `None` if two approximations coincide.
+fn arc_samples(approx: &[(f64, RealRoot)]) -> Option<Vec<RBig>> {
+    let exact = |x: f64| RBig::try_from(x).ok();
+    let first = approx.first()?.0;
+    let last = approx.last()?.0;
+    let mut out = vec![RBig::from(exact(first)?.floor() - IBig::ONE)];
+    for w in approx.windows(2) {
+        let (lo, hi) = (w[0].0, w[1].0);
+        if !(lo < hi) {
+            return None;
+        }
+        let q = (hi - lo) / 4.0;
+        let (a, b) = (exact(lo + q)?, exact(hi - q)?);
+        if a >= b {
+            return None;
+        }
+        out.push(simplest_between(&a, &b, true, true));
+    }
+    out.push(RBig::from(exact(last)?.ceil() + IBig::ONE));
+    Some(out)
+}
