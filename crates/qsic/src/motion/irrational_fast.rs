@@ -39,7 +39,7 @@ use crate::solids::PencilSigns;
 use qsic_algebra::field::number_field::{NumberField, NumberFieldElement as K};
 use qsic_algebra::matrix::{Inertia, MatrixPencil};
 use qsic_algebra::roots::simplest_between;
-use qsic_algebra::{AlgebraicReal, Field, IBig, Poly, RBig, Ring, Sign};
+use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring, Sign};
 
 type KPoly = Poly<K>;
 
@@ -191,16 +191,36 @@ fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnaly
     if a.degree() != Some(1) {
         return None;
     }
-    let lambda0 = a.coeff(0).neg().mul(&a.coeff(1).inv()?);
-    let square = Poly::new(vec![
-        lambda0.mul(&lambda0),
-        lambda0.mul(&K::from_int(&IBig::from(-2))),
-        K::one(),
-    ]);
-    let (h, rest) = f.div_rem(&square);
-    debug_assert!(rest.is_zero(), "(λ − λ₀)² divides f");
-    let (hc, hb, ha) = (h.coeff(0), h.coeff(1), h.coeff(2));
-    let disc = hb.mul(&hb).sub(&ha.mul(&hc).mul(&K::from_int(&IBig::from(4))));
+    // λ₀ = u/v with v > 0, kept as a fraction: no inverse in K, whose numerators are large
+    let (mut u, mut v) = (a.coeff(0).neg(), a.coeff(1));
+    if v.sign() == Sign::Negative {
+        (u, v) = (u.neg(), v.neg());
+    }
+    // the sign at λ₀ of a polynomial of degree ≤ k in λ: that of v^k·q(u/v)
+    let sign_at_double = |q: &KPoly, k: usize| -> Sign {
+        let mut acc = K::zero();
+        let mut v_pow = K::one();
+        for i in (0..=k).rev() {
+            // Horner in u with the powers of v carried: Σ qᵢ uⁱ v^(k−i)
+            acc = acc.mul(&u).add(&q.coeff(i).mul(&v_pow));
+            v_pow = v_pow.mul(&v);
+        }
+        acc.sign()
+    };
+    // H = v²·h for f = (λ − λ₀)²·h (synthetic division twice, times v²)
+    let (a2, a3, a4) = (f.coeff(2), f.coeff(3), f.coeff(4));
+    let two = K::from_int(&IBig::from(2));
+    let (uu, uv, vv) = (u.mul(&u), u.mul(&v), v.mul(&v));
+    let ha = a4.mul(&vv);
+    let hb = a3.mul(&vv).add(&two.mul(&a4).mul(&uv));
+    let hc = a2
+        .mul(&vv)
+        .add(&two.mul(&a3).mul(&uv))
+        .add(&K::from_int(&IBig::from(3)).mul(&a4).mul(&uu));
+    let h = Poly::new(vec![hc.clone(), hb.clone(), ha.clone()]);
+    let disc = hb
+        .mul(&hb)
+        .sub(&ha.mul(&hc).mul(&K::from_int(&IBig::from(4))));
     let h_real = match disc.sign() {
         Sign::Positive => true,
         Sign::Negative => false,
@@ -211,25 +231,30 @@ fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnaly
     let rank3 = polys
         .minors3
         .iter()
-        .any(|m| !into_k(m).eval(&lambda0).is_zero());
+        .any(|m| sign_at_double(&into_k(m), 3) != Sign::Zero);
     let double_blocks = if rank3 { vec![2] } else { vec![1, 1] };
 
     // The order of the real roots, proposed by floats, then certified.
-    let x0 = lambda0.to_f64();
-    let mut approx: Vec<(f64, RealRoot)> = vec![(x0, RealRoot::Double)];
+    // (ratios of rationals first: the values themselves may be far outside f64's range)
+    let ratio = |x: &RBig, y: &RBig| -> f64 { (x / y).to_f64().value() };
+    let x0 = ratio(&approx(alpha, &u)?, &approx(alpha, &v)?);
+    let mut approx_roots: Vec<(f64, RealRoot)> = vec![(x0, RealRoot::Double)];
     if h_real {
-        let (fa, fb, fd) = (ha.to_f64(), hb.to_f64(), disc.to_f64());
-        let s = fd.sqrt();
-        // the roots of h without cancellation: q = −(b + sign(b)·√D)/2, roots q/a and c/q
-        let q = -0.5 * (fb + fb.signum() * s);
-        let (r1, r2) = (q / fa, hc.to_f64() / q);
-        approx.push((r1, RealRoot::Simple));
-        approx.push((r2, RealRoot::Simple));
+        let fa = approx(alpha, &ha)?;
+        let (b, c) = (approx(alpha, &hb)? / &fa, approx(alpha, &hc)? / &fa);
+        let d = (&b * &b - RBig::from(4) * &c).to_f64().value();
+        let (b, c) = (b.to_f64().value(), c.to_f64().value());
+        // the roots of λ² + bλ + c without cancellation: q = −(b + sign(b)·√d)/2, roots q
+        // and c/q
+        let q = -0.5 * (b + b.signum() * d.max(0.0).sqrt());
+        approx_roots.push((q, RealRoot::Simple));
+        approx_roots.push((c / q, RealRoot::Simple));
     }
-    if approx.iter().any(|(x, _)| !x.is_finite()) {
+    if approx_roots.iter().any(|(x, _)| !x.is_finite()) {
         return None;
     }
-    approx.sort_by(|u, v| u.0.total_cmp(&v.0));
+    approx_roots.sort_by(|x, y| x.0.total_cmp(&y.0));
+    let approx = approx_roots;
     let samples = arc_samples(&approx)?;
     // certify: λ₀ lies in the claimed cell, and lc(h)·h changes sign exactly across the
     // claimed simple roots
@@ -245,7 +270,8 @@ fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnaly
     }
     for (i, s) in samples.iter().enumerate() {
         let sk = to_k(s);
-        let side = sk.sub(&lambda0).sign();
+        // sign(s − λ₀) = sign(v·s − u), v > 0
+        let side = v.mul(&sk).sub(&u).sign();
         let expected = if i <= at_double {
             Sign::Negative
         } else {
@@ -258,7 +284,13 @@ fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnaly
             let hs = h.eval(&sk).sign() * lead_sign;
             // positive outside the two roots, negative between them
             let inside = simple_cells[0] < i && i <= simple_cells[1];
-            if hs != if inside { Sign::Negative } else { Sign::Positive } {
+            if hs
+                != if inside {
+                    Sign::Negative
+                } else {
+                    Sign::Positive
+                }
+            {
                 return None;
             }
         }
@@ -278,7 +310,9 @@ fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnaly
         .enumerate()
         .map(|(i, (_, kind))| {
             let inertia = match kind {
-                RealRoot::Double => inertia_at(&lambda0),
+                RealRoot::Double => Inertia::from_minor_sum_signs::<4>(std::array::from_fn(|k| {
+                    sign_at_double(&e[k], k + 1)
+                })),
                 RealRoot::Simple => {
                     let (l, r) = (&arcs[i].1, &arcs[i + 1].1);
                     Inertia {
@@ -298,7 +332,7 @@ fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnaly
     let mut simple_seen = 0;
     for (_, kind) in &approx {
         root_signs.push(match kind {
-            RealRoot::Double => lambda0.sign(),
+            RealRoot::Double => u.sign(),
             RealRoot::Simple => {
                 simple_seen += 1;
                 match h0 {
@@ -317,6 +351,30 @@ fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnaly
         double_blocks,
         h_real,
     })
+}
+
+/// A rational near the value of `x` at `α`: the middle of a rational enclosure narrowed
+/// until it pins the value to about 50 bits (it only proposes; the caller certifies).
+/// `None` if no enclosure up to 4096 bits does.
+fn approx(alpha: &AlgebraicReal, x: &K) -> Option<RBig> {
+    let p = KPoly::constant(x.clone());
+    let mut bits = 64;
+    while bits <= 4096 {
+        let (lo, hi) = p.enclosure_at(alpha, bits);
+        let mid = (&lo + &hi) / RBig::from(2);
+        let width = &hi - &lo;
+        let scale = if mid < RBig::ZERO {
+            -mid.clone()
+        } else {
+            mid.clone()
+        }
+        .max(RBig::ONE);
+        if width * RBig::from(IBig::ONE << 50) <= scale {
+            return Some(mid);
+        }
+        bits *= 2;
+    }
+    None
 }
 
 /// Rational samples for the arcs of the approximate roots `approx` (increasing): one below
