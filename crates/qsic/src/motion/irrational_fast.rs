@@ -52,15 +52,29 @@ pub(crate) struct PencilPolys {
     e: [TPoly; 4],
     /// The nonzero `3×3` minors.
     minors3: Vec<TPoly>,
+    /// The subresultant `S₁(f, ∂f/∂λ)`, of degree ≤ 1 in `λ`.
+    s1: TPoly,
+    /// `psc₀(f, ∂f/∂λ) = Res_λ(f, ∂f/∂λ)`.
+    psc0: Poly,
 }
 
 impl PencilPolys {
     /// From the minors of the pencil over `ℤ[t]`.
     pub(crate) fn of(pencil: &MatrixPencil<Poly>) -> PencilPolys {
+        let f = pencil.det_poly();
+        let (s1, psc0) = if f.degree() == Some(4) {
+            let df = f.derivative();
+            (f.subresultant(&df, 1), f.subresultant(&df, 0).coeff(0))
+        } else {
+            // never of degree 4 at any t: the fast route does not apply
+            (TPoly::zero(), Poly::zero())
+        };
         PencilPolys {
-            f: pencil.det_poly(),
+            f,
             e: pencil.principal_minor_sums(),
             minors3: pencil.minors(3),
+            s1,
+            psc0,
         }
     }
 
@@ -89,6 +103,9 @@ impl PencilPolys {
             f: map(&self.f, 4),
             e: std::array::from_fn(|k| map(&self.e[k], k + 1)),
             minors3: self.minors3.iter().map(|m| map(m, 3)).collect(),
+            // only the root of S₁ and the vanishing of psc₀ are read: S₁(λ) becomes ±S₁(∓λ)
+            s1: map(&self.s1, 0),
+            psc0: self.psc0.clone(),
         }
     }
 }
@@ -181,20 +198,20 @@ fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnaly
     if f.degree() != Some(4) {
         return None;
     }
-    // gcd(f, f′) by the remainder sequence; each `Poly::new` trims by the exact zero test
-    let (mut a, mut b) = (f.clone(), f.derivative());
-    while !b.is_zero() {
-        let r = a.pseudo_rem(&b);
-        a = b;
-        b = r;
+    // deg gcd(f, f′) = 1 at α ⇔ psc₀(α) = 0 ≠ psc₁(α) (f of degree 4 at α, so the
+    // subresultants specialise), and then S₁(α) is the gcd: λ₀ = u/v, kept as a fraction
+    // with v > 0 (no inverse in K, whose numerators are large)
+    let (mut u, mut v) = (
+        field.integer_element(&polys.s1.coeff(0)).neg(),
+        field.integer_element(&polys.s1.coeff(1)),
+    );
+    match v.sign() {
+        Sign::Zero => return None,
+        Sign::Negative => (u, v) = (u.neg(), v.neg()),
+        Sign::Positive => {}
     }
-    if a.degree() != Some(1) {
+    if !field.integer_element(&polys.psc0).is_zero() {
         return None;
-    }
-    // λ₀ = u/v with v > 0, kept as a fraction: no inverse in K, whose numerators are large
-    let (mut u, mut v) = (a.coeff(0).neg(), a.coeff(1));
-    if v.sign() == Sign::Negative {
-        (u, v) = (u.neg(), v.neg());
     }
     // the sign at λ₀ of a polynomial of degree ≤ k in λ: that of v^k·q(u/v)
     let sign_at_double = |q: &KPoly, k: usize| -> Sign {
@@ -357,24 +374,21 @@ fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnaly
 /// until it pins the value to about 50 bits (it only proposes; the caller certifies).
 /// `None` if no enclosure up to 4096 bits does.
 fn approx(alpha: &AlgebraicReal, x: &K) -> Option<RBig> {
-    let p = KPoly::constant(x.clone());
-    let mut bits = 64;
-    while bits <= 4096 {
-        let (lo, hi) = p.enclosure_at(alpha, bits);
-        let mid = (&lo + &hi) / RBig::from(2);
-        let width = &hi - &lo;
-        let scale = if mid < RBig::ZERO {
-            -mid.clone()
-        } else {
-            mid.clone()
-        }
-        .max(RBig::ONE);
-        if width * RBig::from(IBig::ONE << 50) <= scale {
-            return Some(mid);
-        }
-        bits *= 2;
+    let num = x.numerator_poly();
+    let den = RBig::from(x.denominator().clone());
+    if num.degree().unwrap_or(0) == 0 {
+        return Some(RBig::from(num.coeff(0)) / den);
     }
-    None
+    // the value at a dyadic point within 2^−bits of α, bits above the coefficients' size
+    // (an error of about |C′(α)|·2^−bits)
+    let bits = 128 + num.max_bits();
+    let width = RBig::from_parts(IBig::ONE, dashu_int::UBig::ONE << bits);
+    let iv = alpha.refined_interval(&width);
+    let scale = IBig::ONE << bits;
+    let point = ((iv.lo() + iv.hi()) * RBig::from(scale.clone()) / RBig::from(2)).floor();
+    let value = num.eval_homogeneous(&point, &scale);
+    let power = scale.pow(num.degree().unwrap_or(0));
+    Some(RBig::from_parts_signed(value, power) / den)
 }
 
 /// Rational samples for the arcs of the approximate roots `approx` (increasing): one below
@@ -399,4 +413,168 @@ fn arc_samples(approx: &[(f64, RealRoot)]) -> Option<Vec<RBig>> {
     }
     out.push(RBig::from(exact(last)?.ceil() + IBig::ONE));
     Some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{irrational, MovingPencil};
+    use super::*;
+    use crate::io::{moving_matrix_from_polynomial, moving_matrix_from_rows};
+    use qsic_algebra::testing::SplitMix;
+
+    fn pencil(a: &str, b: &str) -> MovingPencil {
+        MovingPencil::new(
+            moving_matrix_from_polynomial(a).unwrap(),
+            moving_matrix_from_polynomial(b).unwrap(),
+        )
+        .unwrap()
+    }
+
+    /// A random symmetric matrix `M₀ + t·M₁` with entries in `−r..=r`, `M₁` with `k` nonzero
+    /// entries (and their mirror images).
+    fn random_moving(rng: &mut SplitMix, r: i64, k: usize) -> Vec<Vec<String>> {
+        let mut m0 = [[0i64; 4]; 4];
+        let mut m1 = [[0i64; 4]; 4];
+        for i in 0..4 {
+            for j in i..4 {
+                m0[i][j] = rng.int(-r, r);
+                m0[j][i] = m0[i][j];
+            }
+        }
+        for _ in 0..k {
+            let (i, j) = (rng.int(0, 3) as usize, rng.int(0, 3) as usize);
+            m1[i][j] = rng.int(-r, r);
+            m1[j][i] = m1[i][j];
+        }
+        (0..4)
+            .map(|i| {
+                (0..4)
+                    .map(|j| format!("{} + ({})*t", m0[i][j], m1[i][j]))
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// Every irrational candidate instant of `p`: the fast route, where it answers, gives the
+    /// reference's class; returns how many it answered and how many there were.
+    fn compare(p: &MovingPencil, what: &str) -> (usize, usize) {
+        let (mut answered, mut all) = (0, 0);
+        for alpha in p.candidate_instants().unwrap() {
+            if alpha.as_rational().is_some() {
+                continue;
+            }
+            all += 1;
+            if let Some(fast) = classify_at_irrational_fast(&p.polys, &alpha) {
+                let reference = irrational::classify_at_irrational(&p.entries, &alpha);
+                assert_eq!(Some(fast), reference, "{what} at {alpha}");
+                answered += 1;
+            }
+        }
+        (answered, all)
+    }
+
+    /// The fast route equals the reference at every irrational instant of the moving corpus
+    /// and of random moving pencils (fixed seed), and answers at most of them: at the simple
+    /// roots of the discriminant of a generic motion.
+    #[test]
+    fn fast_route_agrees_with_the_reference() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/moving.jsonl");
+        let text = std::fs::read_to_string(path).unwrap();
+        let entry = |v: &serde_json::Value| -> String {
+            match v {
+                serde_json::Value::String(s) => s.clone(),
+                other => other.to_string(),
+            }
+        };
+        for line in text.lines().filter(|l| !l.trim().is_empty()) {
+            let d: serde_json::Value = serde_json::from_str(line).unwrap();
+            let m = |key: &str| {
+                let rows: Vec<Vec<String>> = d[key]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|r| r.as_array().unwrap().iter().map(entry).collect())
+                    .collect();
+                moving_matrix_from_rows(&rows).unwrap()
+            };
+            let p = MovingPencil::new(m("A"), m("B")).unwrap();
+            compare(&p, d["id"].as_str().unwrap());
+        }
+        let mut rng = SplitMix::new(28);
+        let (mut answered, mut all) = (0, 0);
+        for n in 0..6 {
+            let (a, b) = (random_moving(&mut rng, 3, 2), random_moving(&mut rng, 3, 1));
+            let p = MovingPencil::new(
+                moving_matrix_from_rows(&a).unwrap(),
+                moving_matrix_from_rows(&b).unwrap(),
+            )
+            .unwrap();
+            let (x, y) = compare(&p, &format!("random pencil {n}: {a:?}, {b:?}"));
+            answered += x;
+            all += y;
+        }
+        assert!(all >= 6 && answered * 4 >= all * 3, "{answered} of {all}");
+    }
+
+    /// Instants of known shape: a unit sphere through a sphere of radius √2 touches it at
+    /// `t = ±√2 ± 1` (one double root of `f`, block `[2]`... or `[(11)]` at `t = 0`, which is
+    /// rational); the fast route answers at all four and agrees with the reference.
+    #[test]
+    fn fast_route_answers_at_tangencies() {
+        let p = pencil("x^2 + y^2 + z^2 - 2", "(x - t)^2 + y^2 + z^2 - 1");
+        assert_eq!(compare(&p, "sphere through sphere"), (4, 4));
+        // a motion whose instants are double roots with a rank-2 member: a cone's apex on
+        // a moving sphere is rational, so check the [(11)] block where the two routes meet
+        let q = pencil("x^2 + y^2 - z^2", "(x - t)^2 + y^2 + z^2 - 2");
+        let (answered, all) = compare(&q, "cone and sphere");
+        assert!(all > 0 && answered > 0, "{answered} of {all}");
+    }
+
+    /// The signs along the λ-line agree with the reference's for ellipsoids (the contact
+    /// route), in every orientation of the pair.
+    #[test]
+    fn fast_pencil_signs_agree_with_the_reference() {
+        let motions = [
+            ("x^2 + y^2 + z^2 - 2", "(x - t)^2 + y^2 + z^2 - 1"),
+            (
+                "x^2 + 2*y^2 + 3*z^2 - 5",
+                "(x - t)^2 + (y - t^2)^2 + z^2 - 1",
+            ),
+        ];
+        let mut answered = 0;
+        for (a, b) in motions {
+            let p = pencil(a, b);
+            for alpha in p.candidate_instants().unwrap() {
+                if alpha.as_rational().is_some() {
+                    continue;
+                }
+                for (na, nb) in [(false, false), (true, false), (false, true), (true, true)] {
+                    let polys = p.polys.oriented(na, nb);
+                    let Some(fast) = pencil_signs_at_irrational_fast(&polys, &alpha) else {
+                        continue;
+                    };
+                    let sign = |m: &[[Poly; 4]; 4], neg: bool| -> [[Poly; 4]; 4] {
+                        let k = Poly::constant(if neg { -IBig::ONE } else { IBig::ONE });
+                        m.clone().map(|row| row.map(|e| e.mul(&k)))
+                    };
+                    let (ma, mb) = p.numerators();
+                    let entries =
+                        super::super::instants::pencil_entries(&sign(ma, na), &sign(mb, nb));
+                    let reference = irrational::pencil_signs_at_irrational(&entries, &alpha)
+                        .expect("the reference answers where the fast route does");
+                    assert_eq!(
+                        crate::solids::relation_from_signs(&fast),
+                        crate::solids::relation_from_signs(&reference),
+                        "{a}, {b} at {alpha}, orientation {na} {nb}"
+                    );
+                    assert_eq!(fast.roots.len(), reference.roots.len());
+                    for (x, y) in fast.roots.iter().zip(&reference.roots) {
+                        assert_eq!(x, y, "{a}, {b} at {alpha}");
+                    }
+                    answered += 1;
+                }
+            }
+        }
+        assert!(answered >= 8, "{answered}");
+    }
 }
