@@ -370,9 +370,9 @@ fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnaly
     })
 }
 
-/// A rational near the value of `x` at `α`: the middle of a rational enclosure narrowed
-/// until it pins the value to about 50 bits (it only proposes; the caller certifies).
-/// `None` if no enclosure up to 4096 bits does.
+/// A rational near the value of `x = C(α)/d` at `α`: `C` at a dyadic point near `α` by
+/// Horner in fixed point, with more bits than `C`'s coefficients so that the cancellation
+/// in `C(α)` leaves about a hundred bits (it only proposes; the caller certifies).
 fn approx(alpha: &AlgebraicReal, x: &K) -> Option<RBig> {
     let num = x.numerator_poly();
     let den = RBig::from(x.denominator().clone());
@@ -384,11 +384,13 @@ fn approx(alpha: &AlgebraicReal, x: &K) -> Option<RBig> {
     let bits = 128 + num.max_bits();
     let width = RBig::from_parts(IBig::ONE, dashu_int::UBig::ONE << bits);
     let iv = alpha.refined_interval(&width);
-    let scale = IBig::ONE << bits;
-    let point = ((iv.lo() + iv.hi()) * RBig::from(scale.clone()) / RBig::from(2)).floor();
-    let value = num.eval_homogeneous(&point, &scale);
-    let power = scale.pow(num.degree().unwrap_or(0));
-    Some(RBig::from_parts_signed(value, power) / den)
+    let point: IBig = ((iv.lo() + iv.hi()) * RBig::from(IBig::ONE << (bits - 1))).floor();
+    // Horner in fixed point: acc·2^bits, truncated after each product (proposals only)
+    let mut acc = IBig::ZERO;
+    for c in num.coeffs().iter().rev() {
+        acc = ((acc * &point) >> bits) + (c << bits);
+    }
+    Some(RBig::from_parts_signed(acc, IBig::ONE << bits) / den)
 }
 
 /// Rational samples for the arcs of the approximate roots `approx` (increasing): one below
