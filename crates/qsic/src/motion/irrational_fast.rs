@@ -403,7 +403,7 @@ fn arc_samples(approx: &[(f64, RealRoot)]) -> Option<Vec<RBig>> {
     let mut out = vec![RBig::from(exact(first)?.floor() - IBig::ONE)];
     for w in approx.windows(2) {
         let (lo, hi) = (w[0].0, w[1].0);
-        if !(lo < hi) {
+        if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
             return None;
         }
         let q = (hi - lo) / 4.0;
