@@ -191,7 +191,31 @@ pub(crate) fn pencil_signs_at_irrational_fast(
     })
 }
 
+/// The analysis by enclosures ([`analyze_enclosed`]) where they decide every sign, else by
+/// exact arithmetic in `K` ([`analyze_in_field`]).
 fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnalysis> {
+    // a value's enclosure narrows like 2^−prec times its coefficients' size: past a few
+    // times that size, a sign still undecided is most likely a zero for the exact route
+    let size = polys
+        .s1
+        .coeffs()
+        .iter()
+        .map(Poly::max_bits)
+        .max()
+        .unwrap_or(0);
+    let cap = MAX_ENCLOSURE_BITS.min(1024 + 4 * size);
+    let mut prec = 128;
+    while prec <= cap {
+        match analyze_enclosed(polys, alpha, prec) {
+            Enclosed::Done(an) => return Some(an),
+            Enclosed::NotThisShape => return None,
+            Enclosed::Undecided => prec *= 2,
+        }
+    }
+    analyze_in_field(polys, alpha)
+}
+
+fn analyze_in_field(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnalysis> {
     let field = NumberField::new(alpha);
     let into_k = |p: &TPoly| -> KPoly { p.map(|c| field.integer_element(c)) };
     let f = into_k(&polys.f);
@@ -366,6 +390,275 @@ fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnaly
         root_signs,
         arcs,
         double_blocks,
+        h_real,
+    })
+}
+
+/// Precision past which the enclosures give up for exact arithmetic in `K`.
+const MAX_ENCLOSURE_BITS: usize = 1 << 16;
+
+/// The outcome of [`analyze_enclosed`].
+enum Enclosed {
+    Done(DoubleRootAnalysis),
+    /// `psc₀(α) ≠ 0` or `psc₁(α) = 0`, decided exactly: not one double root.
+    NotThisShape,
+    /// An enclosure holds zero: more bits, or the exact route.
+    Undecided,
+}
+
+/// A dyadic interval `[lo, hi]·2^−prec`.
+#[derive(Clone, Debug)]
+struct Dyadic {
+    lo: IBig,
+    hi: IBig,
+    prec: usize,
+}
+
+impl Dyadic {
+    fn int(v: &IBig, prec: usize) -> Dyadic {
+        Dyadic {
+            lo: v << prec,
+            hi: v << prec,
+            prec,
+        }
+    }
+    fn add(&self, o: &Dyadic) -> Dyadic {
+        Dyadic {
+            lo: &self.lo + &o.lo,
+            hi: &self.hi + &o.hi,
+            prec: self.prec,
+        }
+    }
+    fn neg(&self) -> Dyadic {
+        Dyadic {
+            lo: -self.hi.clone(),
+            hi: -self.lo.clone(),
+            prec: self.prec,
+        }
+    }
+    fn sub(&self, o: &Dyadic) -> Dyadic {
+        self.add(&o.neg())
+    }
+    /// The product, its ends rounded outward to `prec` bits.
+    fn mul(&self, o: &Dyadic) -> Dyadic {
+        let p = [
+            &self.lo * &o.lo,
+            &self.lo * &o.hi,
+            &self.hi * &o.lo,
+            &self.hi * &o.hi,
+        ];
+        let min = p.iter().min().expect("four products").clone();
+        let max = p.iter().max().expect("four products").clone();
+        Dyadic {
+            lo: min >> self.prec,
+            hi: -((-max) >> self.prec),
+            prec: self.prec,
+        }
+    }
+    /// The sign of every value in the interval, if it has one.
+    fn sign(&self) -> Option<Sign> {
+        if self.lo > IBig::ZERO {
+            Some(Sign::Positive)
+        } else if self.hi < IBig::ZERO {
+            Some(Sign::Negative)
+        } else {
+            None
+        }
+    }
+    fn mid(&self) -> RBig {
+        RBig::from_parts_signed(&self.lo + &self.hi, IBig::ONE << (self.prec + 1))
+    }
+}
+
+/// `p(α)` enclosed, by Horner on `α`'s box.
+fn enclose(p: &Poly, a: &Dyadic) -> Dyadic {
+    let mut acc = Dyadic::int(&IBig::ZERO, a.prec);
+    for c in p.coeffs().iter().rev() {
+        acc = acc.mul(a).add(&Dyadic::int(c, a.prec));
+    }
+    acc
+}
+
+/// `Σ qᵢ xⁱ y^(k−i)` enclosed, for enclosures `q` of the coefficients.
+fn enclose_homogeneous(q: &[Dyadic], k: usize, x: &Dyadic, y: &Dyadic) -> Dyadic {
+    let prec = x.prec;
+    let zero = Dyadic::int(&IBig::ZERO, prec);
+    let mut acc = zero.clone();
+    let mut y_pow = Dyadic::int(&IBig::ONE, prec);
+    for i in (0..=k).rev() {
+        acc = acc.mul(x).add(&q.get(i).unwrap_or(&zero).mul(&y_pow));
+        y_pow = y_pow.mul(y);
+    }
+    acc
+}
+
+/// The analysis of [`analyze_in_field`] with every sign read from dyadic enclosures of the
+/// values at `α` at `prec` bits (a sign is taken only where the enclosure excludes zero,
+/// so every sign is exact), and `psc₀(α) = 0` decided exactly: no arithmetic in `K`.
+fn analyze_enclosed(polys: &PencilPolys, alpha: &AlgebraicReal, prec: usize) -> Enclosed {
+    use Enclosed::{NotThisShape, Undecided};
+    if polys.f.degree() != Some(4) {
+        return NotThisShape;
+    }
+    let width = RBig::from_parts(IBig::ONE, dashu_int::UBig::ONE << prec);
+    let iv = alpha.refined_interval(&width);
+    let scale = RBig::from(IBig::ONE << prec);
+    let a = Dyadic {
+        lo: (iv.lo() * &scale).floor(),
+        hi: (iv.hi() * &scale).ceil(),
+        prec,
+    };
+    let at = |p: &Poly| enclose(p, &a);
+    let f: Vec<Dyadic> = polys.f.coeffs().iter().map(at).collect();
+    let (mut u, mut v) = (at(&polys.s1.coeff(0)).neg(), at(&polys.s1.coeff(1)));
+    match v.sign() {
+        None if alpha.is_root_of(&polys.s1.coeff(1)) => return NotThisShape,
+        None => return Undecided,
+        Some(Sign::Negative) => (u, v) = (u.neg(), v.neg()),
+        Some(_) => {}
+    }
+    if f[4].sign().is_none() {
+        return Undecided;
+    }
+    if !alpha.is_root_of(&polys.psc0) {
+        return NotThisShape;
+    }
+    let int = |k: i64| Dyadic::int(&IBig::from(k), prec);
+    let (uu, uv, vv) = (u.mul(&u), u.mul(&v), v.mul(&v));
+    let ha = f[4].mul(&vv);
+    let hb = f[3].mul(&vv).add(&int(2).mul(&f[4]).mul(&uv));
+    let hc = f[2]
+        .mul(&vv)
+        .add(&int(2).mul(&f[3]).mul(&uv))
+        .add(&int(3).mul(&f[4]).mul(&uu));
+    let disc = hb.mul(&hb).sub(&int(4).mul(&ha).mul(&hc));
+    let (Some(lead_sign), Some(disc_sign)) = (ha.sign(), disc.sign()) else {
+        return Undecided;
+    };
+    let h_real = disc_sign == Sign::Positive;
+    let rank3 = polys.minors3.iter().any(|m| {
+        let q: Vec<Dyadic> = m.coeffs().iter().map(at).collect();
+        enclose_homogeneous(&q, 3, &u, &v).sign().is_some()
+    });
+    if !rank3 {
+        return Undecided; // rank 2, or an enclosure too wide: the exact route decides
+    }
+    let ratio = |x: &Dyadic, y: &Dyadic| -> f64 { (x.mid() / y.mid()).to_f64().value() };
+    let mut approx: Vec<(f64, RealRoot)> = vec![(ratio(&u, &v), RealRoot::Double)];
+    if h_real {
+        let (b, c) = (hb.mid() / ha.mid(), hc.mid() / ha.mid());
+        let d = (&b * &b - RBig::from(4) * &c).to_f64().value();
+        let (b, c) = (b.to_f64().value(), c.to_f64().value());
+        let q = -0.5 * (b + b.signum() * d.max(0.0).sqrt());
+        approx.push((q, RealRoot::Simple));
+        approx.push((c / q, RealRoot::Simple));
+    }
+    if approx.iter().any(|(x, _)| !x.is_finite()) {
+        return Undecided;
+    }
+    approx.sort_by(|x, y| x.0.total_cmp(&y.0));
+    let Some(samples) = arc_samples(&approx) else {
+        return Undecided;
+    };
+    let at_double = approx
+        .iter()
+        .position(|(_, k)| *k == RealRoot::Double)
+        .expect("λ₀ is among the roots");
+    let simple_cells: Vec<usize> = (0..approx.len())
+        .filter(|&i| approx[i].1 == RealRoot::Simple)
+        .collect();
+    let e: Vec<Vec<Dyadic>> = polys
+        .e
+        .iter()
+        .map(|q| q.coeffs().iter().map(at).collect())
+        .collect();
+    let mut arcs = Vec::with_capacity(samples.len());
+    for (i, s) in samples.into_iter().enumerate() {
+        // s = n/d, d > 0: the signs of d^k·q(s)
+        let n = Dyadic::int(s.numerator(), prec);
+        let d = Dyadic::int(&IBig::from(s.denominator().clone()), prec);
+        let side = v.mul(&n).sub(&u.mul(&d)).sign();
+        let expected = if i <= at_double {
+            Sign::Negative
+        } else {
+            Sign::Positive
+        };
+        if side != Some(expected) {
+            return Undecided;
+        }
+        if h_real {
+            let hs = enclose_homogeneous(&[hc.clone(), hb.clone(), ha.clone()], 2, &n, &d);
+            let inside = simple_cells[0] < i && i <= simple_cells[1];
+            let want = if inside {
+                Sign::Negative
+            } else {
+                Sign::Positive
+            };
+            if hs.sign().map(|x| x * lead_sign) != Some(want) {
+                return Undecided;
+            }
+        }
+        let mut signs = [Sign::Zero; 4];
+        for k in 0..4 {
+            match enclose_homogeneous(&e[k], k + 1, &n, &d).sign() {
+                Some(x) => signs[k] = x,
+                None => return Undecided,
+            }
+        }
+        arcs.push((s, Inertia::from_minor_sum_signs(signs)));
+    }
+    // E₄(λ₀) = f(λ₀) = 0; E₃(λ₀) ≠ 0 at rank 3, E₁, E₂ as the enclosures say
+    let mut double_signs = [Sign::Zero; 4];
+    for k in 0..3 {
+        match enclose_homogeneous(&e[k], k + 1, &u, &v).sign() {
+            Some(x) => double_signs[k] = x,
+            None => return Undecided,
+        }
+    }
+    let roots = approx
+        .iter()
+        .enumerate()
+        .map(|(i, (_, kind))| {
+            let inertia = match kind {
+                RealRoot::Double => Inertia::from_minor_sum_signs(double_signs),
+                RealRoot::Simple => {
+                    let (l, r) = (&arcs[i].1, &arcs[i + 1].1);
+                    Inertia {
+                        positive: l.positive.min(r.positive),
+                        negative: l.negative.min(r.negative),
+                        zero: 1,
+                    }
+                }
+            };
+            (*kind, inertia)
+        })
+        .collect();
+    // root signs (the contact route): zero only where the enclosure cannot tell, which
+    // makes that route hand the instant back
+    let or_zero = |x: &Dyadic| x.sign().unwrap_or(Sign::Zero);
+    let h0 = or_zero(&hc) * lead_sign;
+    let sum = -or_zero(&hb) * lead_sign;
+    let mut simple_seen = 0;
+    let root_signs = approx
+        .iter()
+        .map(|(_, kind)| match kind {
+            RealRoot::Double => or_zero(&u),
+            RealRoot::Simple => {
+                simple_seen += 1;
+                match h0 {
+                    Sign::Zero => Sign::Zero,
+                    Sign::Negative if simple_seen == 1 => Sign::Negative,
+                    Sign::Negative => Sign::Positive,
+                    Sign::Positive => sum,
+                }
+            }
+        })
+        .collect();
+    Enclosed::Done(DoubleRootAnalysis {
+        roots,
+        root_signs,
+        arcs,
+        double_blocks: vec![2],
         h_real,
     })
 }
