@@ -28,8 +28,13 @@
 //!   values the reference reads, so the class is the same: [`classify_regular_parts`] of the
 //!   same Segre structures and signature sequence.
 //!
-//! Every sign is exact (interval arithmetic on `α`'s refined interval, then `K`'s exact zero
-//! test); floats only propose the samples. `None` means "not this shape or not certified":
+//! Every sign is exact. First stage: the values at `α` (the coefficients of `f`, `S₁`, `E_k`
+//! and the minors, and their combinations above) are enclosed in dyadic intervals by Horner
+//! on `α`'s box, at a precision doubled up to a few times the coefficients' size; a sign
+//! is read only from an enclosure that excludes zero, `psc₀(α) = 0` is decided exactly,
+//! and `E₄(λ₀) = f(λ₀) = 0` by construction. Where an enclosure still holds zero (a zero
+//! value: a rank-2 member, `E₁` or `E₂` vanishing), the same steps run in `K` with its exact
+//! zero test. Floats only propose the samples. `None` means "not this shape or not certified":
 //! the caller then runs the reference, so an answer is never lost.
 
 use super::instants::TPoly;
