@@ -26,7 +26,7 @@ pub use super::contact_point::{
 };
 use super::instants::pencil_entries;
 pub use super::range::TimeRange;
-use super::{irrational, InstantType, Motion, MovingPencil};
+use super::{irrational, irrational_fast, InstantType, Motion, MovingPencil};
 use crate::classify::Classification;
 use crate::error::Error;
 use crate::io::MovingMatrix;
@@ -482,8 +482,16 @@ fn state_at_irrational(pencil: &MovingPencil, alpha: &AlgebraicReal) -> SolidSta
         let k = Poly::constant(if negate { -IBig::ONE } else { IBig::ONE });
         m.clone().map(|row| row.map(|p| p.mul(&k)))
     };
-    let entries = pencil_entries(&oriented(ma, negate_a), &oriented(mb, negate_b));
-    irrational::pencil_signs_at_irrational(&entries, alpha).map_or(SolidState::Undetermined, |s| {
+    // the fast route (one double root, certified signs), else the reference
+    let signs = irrational_fast::pencil_signs_at_irrational_fast(
+        &pencil.polys.oriented(negate_a, negate_b),
+        alpha,
+    )
+    .or_else(|| {
+        let entries = pencil_entries(&oriented(ma, negate_a), &oriented(mb, negate_b));
+        irrational::pencil_signs_at_irrational(&entries, alpha)
+    });
+    signs.map_or(SolidState::Undetermined, |s| {
         SolidState::Relation(relation_from_signs(&s))
     })
 }

@@ -34,6 +34,7 @@ pub mod contact;
 mod contact_point;
 mod instants;
 mod irrational;
+mod irrational_fast;
 mod range;
 pub mod rigid;
 
@@ -63,6 +64,8 @@ pub struct MovingPencil {
     /// `λM_A(t) − M_B(t)` over ℤ\[t\] with every minor, as polynomials in `λ`.
     pencil: MatrixPencil<Poly>,
     f: TPoly,
+    /// The polynomials in `λ` over `ℤ[t]` the fast route at irrational instants reads.
+    polys: irrational_fast::PencilPolys,
 }
 
 /// The type compared between neighbours: pencil kind, case, complex and real type.
@@ -183,12 +186,14 @@ impl MovingPencil {
         let entries = pencil_entries(ma, mb);
         let pencil = MatrixPencil::from_entries(ma.clone(), mb.clone());
         let f = pencil.det_poly();
+        let polys = irrational_fast::PencilPolys::of(&pencil);
         Ok(MovingPencil {
             a,
             b,
             entries,
             pencil,
             f,
+            polys,
         })
     }
 
@@ -243,6 +248,16 @@ impl MovingPencil {
     /// [`Error::UnsupportedMotion`] if no integer combination of the `k×k` minors separates
     /// their common roots (not expected).
     pub fn candidate_polynomials(&self) -> Result<Vec<Poly>, Error> {
+        Ok(self.candidates_and_generic_condition()?.0)
+    }
+
+    /// [`Self::candidate_polynomials`], and for a pencil whose `f` is square-free over `ℚ(t)`
+    /// of degree 4 in `λ`, the polynomial `G = content(f)·Δ` (`Δ` the discriminant of `f`
+    /// as a binary quartic form) where `G(t₀) ≠ 0` says that `f(λ, μ; t₀)` has four
+    /// distinct roots in `ℙ¹`: the Segre characteristic `[1111]` at `t₀` and around it, so
+    /// the type at `t₀` is that of both neighbouring intervals (Theorem 3.2) and `t₀` is
+    /// never an instant where it changes.
+    fn candidates_and_generic_condition(&self) -> Result<(Vec<Poly>, Option<Poly>), Error> {
         let rank = (1..=4)
             .rev()
             .find(|&k| self.pencil.minors(k).iter().any(|m| !m.is_zero()))
@@ -275,6 +290,12 @@ impl MovingPencil {
                 degree: 1,
             };
             forms.push((mu, m_inf));
+        }
+        let mut generic = None;
+        if let [(g, 1)] = forms.as_slice() {
+            if g.degree == 4 && rank == 4 {
+                generic = discriminant_form(g).map(|d| &d * &out[0]);
+            }
         }
         for (i, (g, _)) in forms.iter().enumerate() {
             out.extend(discriminant_form(g));
@@ -313,7 +334,7 @@ impl MovingPencil {
         }
         out.push(prop);
         out.retain(|p| !p.is_zero());
-        Ok(out)
+        Ok((out, generic.filter(|g| !g.is_zero())))
     }
 
     /// The candidate instants: the distinct real roots of [`Self::candidate_polynomials`], in
@@ -382,8 +403,8 @@ impl MovingPencil {
                 });
             }
         }
-        let candidates: Vec<AlgebraicReal> = self
-            .candidate_instants()?
+        let (polys, generic) = self.candidates_and_generic_condition()?;
+        let candidates: Vec<AlgebraicReal> = real_roots_of_all(&polys)
             .into_iter()
             .filter(|c| lo.as_ref().is_none_or(|a| a < c) && hi.as_ref().is_none_or(|b| c < b))
             .collect();
@@ -392,12 +413,17 @@ impl MovingPencil {
         for s in &samples {
             interval_types.push(self.classify_at(s)?);
         }
+        // `None`: an irrational candidate where `f` has four distinct roots, of the type of
+        // both neighbours (`candidates_and_generic_condition`), not classified
         let mut instant_types = Vec::with_capacity(candidates.len());
         for c in &candidates {
             instant_types.push(match c.as_rational() {
-                Some(v) => InstantType::Exact(self.classify_at(v)?),
-                None => irrational::classify_at_irrational(&self.entries, c)
-                    .map_or(InstantType::IrrationalUnclassified, InstantType::Exact),
+                Some(v) => Some(InstantType::Exact(self.classify_at(v)?)),
+                None if generic.as_ref().is_some_and(|g| !c.is_root_of(g)) => None,
+                None => Some(
+                    self.classify_at_irrational(c)
+                        .map_or(InstantType::IrrationalUnclassified, InstantType::Exact),
+                ),
             });
         }
         let mut intervals = vec![MotionInterval {
@@ -413,6 +439,15 @@ impl MovingPencil {
                 .last()
                 .expect("one interval at least")
                 .classification;
+            let class = match class {
+                Some(class) => class,
+                // the theorem says both neighbours have the same type; were they to
+                // differ, the instant is classified all the same
+                None if MotionType::of(left) == MotionType::of(right) => continue,
+                None => self
+                    .classify_at_irrational(&t)
+                    .map_or(InstantType::IrrationalUnclassified, InstantType::Exact),
+            };
             let unchanged = class.classification().is_some_and(|c| {
                 MotionType::of(c) == MotionType::of(left)
                     && MotionType::of(c) == MotionType::of(right)
@@ -456,6 +491,16 @@ impl MovingPencil {
             intervals,
             instants,
         })
+    }
+}
+
+impl MovingPencil {
+    /// The class at an irrational instant: the one dispatch point between the fast route
+    /// (module `irrational_fast`: one double root, certified signs) and the reference
+    /// (module `irrational`), which answers whatever the fast route hands back.
+    fn classify_at_irrational(&self, alpha: &AlgebraicReal) -> Option<Classification> {
+        irrational_fast::classify_at_irrational_fast(&self.polys, alpha)
+            .or_else(|| irrational::classify_at_irrational(&self.entries, alpha))
     }
 }
 
