@@ -284,23 +284,13 @@ fn analyze_in_field(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<Double
     // (ratios of rationals first: the values themselves may be far outside f64's range)
     let ratio = |x: &RBig, y: &RBig| -> f64 { (x / y).to_f64().value() };
     let x0 = ratio(&approx(alpha, &u)?, &approx(alpha, &v)?);
-    let mut approx_roots: Vec<(f64, RealRoot)> = vec![(x0, RealRoot::Double)];
-    if h_real {
+    let quadratic = if h_real {
         let fa = approx(alpha, &ha)?;
-        let (b, c) = (approx(alpha, &hb)? / &fa, approx(alpha, &hc)? / &fa);
-        let d = (&b * &b - RBig::from(4) * &c).to_f64().value();
-        let (b, c) = (b.to_f64().value(), c.to_f64().value());
-        // the roots of λ² + bλ + c without cancellation: q = −(b + sign(b)·√d)/2, roots q
-        // and c/q
-        let q = -0.5 * (b + b.signum() * d.max(0.0).sqrt());
-        approx_roots.push((q, RealRoot::Simple));
-        approx_roots.push((c / q, RealRoot::Simple));
-    }
-    if approx_roots.iter().any(|(x, _)| !x.is_finite()) {
-        return None;
-    }
-    approx_roots.sort_by(|x, y| x.0.total_cmp(&y.0));
-    let approx = approx_roots;
+        Some((approx(alpha, &hb)? / &fa, approx(alpha, &hc)? / &fa))
+    } else {
+        None
+    };
+    let approx = proposed_roots(x0, quadratic)?;
     let samples = arc_samples(&approx)?;
     // certify: λ₀ lies in the claimed cell, and lc(h)·h changes sign exactly across the
     // claimed simple roots
@@ -549,19 +539,10 @@ fn analyze_enclosed(polys: &PencilPolys, alpha: &AlgebraicReal, prec: usize) -> 
         return Undecided; // rank 2, or an enclosure too wide: the exact route decides
     }
     let ratio = |x: &Dyadic, y: &Dyadic| -> f64 { (x.mid() / y.mid()).to_f64().value() };
-    let mut approx: Vec<(f64, RealRoot)> = vec![(ratio(&u, &v), RealRoot::Double)];
-    if h_real {
-        let (b, c) = (hb.mid() / ha.mid(), hc.mid() / ha.mid());
-        let d = (&b * &b - RBig::from(4) * &c).to_f64().value();
-        let (b, c) = (b.to_f64().value(), c.to_f64().value());
-        let q = -0.5 * (b + b.signum() * d.max(0.0).sqrt());
-        approx.push((q, RealRoot::Simple));
-        approx.push((c / q, RealRoot::Simple));
-    }
-    if approx.iter().any(|(x, _)| !x.is_finite()) {
+    let quadratic = h_real.then(|| (hb.mid() / ha.mid(), hc.mid() / ha.mid()));
+    let Some(approx) = proposed_roots(ratio(&u, &v), quadratic) else {
         return Undecided;
-    }
-    approx.sort_by(|x, y| x.0.total_cmp(&y.0));
+    };
     let Some(samples) = arc_samples(&approx) else {
         return Undecided;
     };
@@ -713,6 +694,26 @@ fn arc_samples(approx: &[(f64, RealRoot)]) -> Option<Vec<RBig>> {
     }
     out.push(RBig::from(exact(last)?.ceil() + IBig::ONE));
     Some(out)
+}
+
+/// The proposed real roots of `f(λ; α)`, sorted: the double root `x0` and, when
+/// `quadratic` gives the cofactor `λ² + bλ + c` with real roots, its two simple roots
+/// (`q = −(b + sign(b)·√d)/2`, `q` and `c/q`: no cancellation); `None` if one is not
+/// finite. Floats only propose: every sign is certified afterwards.
+fn proposed_roots(x0: f64, quadratic: Option<(RBig, RBig)>) -> Option<Vec<(f64, RealRoot)>> {
+    let mut roots: Vec<(f64, RealRoot)> = vec![(x0, RealRoot::Double)];
+    if let Some((b, c)) = quadratic {
+        let d = (&b * &b - RBig::from(4) * &c).to_f64().value();
+        let (b, c) = (b.to_f64().value(), c.to_f64().value());
+        let q = -0.5 * (b + b.signum() * d.max(0.0).sqrt());
+        roots.push((q, RealRoot::Simple));
+        roots.push((c / q, RealRoot::Simple));
+    }
+    if roots.iter().any(|(x, _)| !x.is_finite()) {
+        return None;
+    }
+    roots.sort_by(|x, y| x.0.total_cmp(&y.0));
+    Some(roots)
 }
 
 #[cfg(test)]
