@@ -284,18 +284,24 @@ DEFAULT_BUDGET: int = _qsic.DEFAULT_BUDGET
 
 def _budget(budget: Any) -> Optional[int]:
     """``budget`` checked: None, or an integer from 1 to 2⁶⁴ − 1."""
-    if budget is None:
-        return None
     wanted = "budget must be a positive integer of work units, at most 2**64 - 1"
-    if isinstance(budget, (bool, np.bool_)):
-        raise QsicError(f"{wanted}, got {budget!r}")
+    return _int_in(budget, 2**64 - 1, wanted)
+
+
+def _int_in(value: Any, most: int, wanted: str) -> Optional[int]:
+    """``value`` checked: None, or an integer (not a bool) from 1 to ``most``; else
+    :class:`QsicError` with ``wanted`` and what was given."""
+    if value is None:
+        return None
+    if isinstance(value, (bool, np.bool_)):
+        raise QsicError(f"{wanted}, got {value!r}")
     try:
-        b = operator.index(budget)
+        k = operator.index(value)
     except TypeError:
-        raise QsicError(f"{wanted}, got {budget!r}") from None
-    if not 1 <= b <= 2**64 - 1:
-        raise QsicError(f"{wanted}, got {b}")
-    return b
+        raise QsicError(f"{wanted}, got {_inputs.describe(value)}") from None
+    if not 1 <= k <= most:
+        raise QsicError(f"{wanted}, got {k}")
+    return k
 
 
 def _side_native(name: str, q: Any, floats: str = "binary") -> Optional[_qsic.NativeQuadric]:
@@ -313,18 +319,7 @@ MAX_THREADS: int = _qsic.MAX_THREADS
 
 def _thread_count(threads: Any) -> Optional[int]:
     """``threads`` checked: None, or an integer from 1 to :data:`MAX_THREADS`."""
-    if threads is None:
-        return None
-    wanted = f"threads must be an integer from 1 to {MAX_THREADS}"
-    if isinstance(threads, (bool, np.bool_)):
-        raise QsicError(f"{wanted}, got {threads!r}")
-    try:
-        t = operator.index(threads)
-    except TypeError:
-        raise QsicError(f"{wanted}, got {_inputs.describe(threads)}") from None
-    if not 1 <= t <= MAX_THREADS:
-        raise QsicError(f"{wanted}, got {t}")
-    return t
+    return _int_in(threads, MAX_THREADS, f"threads must be an integer from 1 to {MAX_THREADS}")
 
 
 def classify_many(
