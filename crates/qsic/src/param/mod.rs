@@ -15,6 +15,7 @@
 //! `s = c₁² − c₀c₂`; identically `aᵀQa + s·dᵀQd = 0` and `aᵀQd = 0` for every member `Q`.
 //! `u` runs over ℝ ∪ {∞}: `s` is a binary quartic, its degree drop a root at `u = ∞`.
 
+mod balance;
 mod biquadratic;
 pub mod curve;
 pub mod expr;
@@ -768,8 +769,21 @@ pub const CURVE_MINORS: u64 = 4;
 /// costs (`param_cost`: ~0.11 M instructions).
 pub const CURVE_UNITS: u64 = 100_000;
 
-/// The curve of a classified pair ([`parameterize`]).
+/// The curve of a classified pair ([`parameterize`]), its rational components balanced
+/// ([`balance`]).
 fn parameterize_classified(
+    classification: Classification,
+    sums: Option<[[i128; 5]; 4]>,
+    a: &Quadric,
+    b: &Quadric,
+) -> Result<Curve, Error> {
+    let mut curve = curve_of_class(classification, sums, a, b)?;
+    balance::balance_curve(&mut curve);
+    Ok(curve)
+}
+
+/// The curve of a classified pair, by its class's route.
+fn curve_of_class(
     classification: Classification,
     sums: Option<[[i128; 5]; 4]>,
     a: &Quadric,

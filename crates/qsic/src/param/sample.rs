@@ -75,6 +75,10 @@ pub const MAX_DEPTH: u32 = 48;
 pub const MAX_POINTS: usize = 1 << 22;
 /// The chord tolerance is enforced on segments within this distance of the chart's origin.
 pub const AFFINE_RADIUS: f64 = 1e6;
+/// Coefficients whose largest estimate is beyond `2^FLOAT_SCALE` are scaled to about 1
+/// before they become floats (`in_float_range`): `‖X‖²` then stays below `2³⁰⁰` for every
+/// `|t| ≤ 1`, far from the end of the floats at `2¹⁰²⁴`.
+const FLOAT_SCALE: f64 = 64.0;
 
 /// What [`sample`] produces and how densely.
 #[derive(Clone, Debug, PartialEq)]
@@ -411,10 +415,13 @@ fn alpha_log2(k: &NumberField) -> f64 {
     }
 }
 
-/// `param` scaled by powers of two into the range of `f64`, `None` when it is there already
-/// (every coefficient estimate within `2^±900`). `X = a ± d√s` is projective: `a` and `d`
-/// each get their own factor `2^−eₐ`, `2^−e_d` (the largest estimates) and `s` gets
-/// `2^(2e_d − 2eₐ)`, which keeps the point and both sheets (positive factors).
+/// `param` scaled by powers of two so that its largest coefficient is about 1, `None` when it
+/// is small enough already (the largest estimate below `2^FLOAT_SCALE`, none below `2⁻⁹⁰⁰`):
+/// the floats' squares and sums of squares (`‖X‖²`) stay far inside the range of `f64`, which
+/// ends at `2¹⁰²⁴`. `X = a ± d√s` is projective: with `t_a`, `t_d`, `t_s` the largest
+/// estimates, `s` gets `2^(2f)` (`f = −⌊t_s/2⌉`, so `s` is about 1), `d` gets `2^(−f−g)` and `a`
+/// gets `2^(−g)` (`g = max(t_a, t_d − f)`): `a′ ± d′√s′ = 2^(−g)(a ± d√s)`, the point and both
+/// sheets kept (positive factors).
 fn in_float_range(param: &ComponentParam) -> Option<ComponentParam> {
     let mut alphas: Vec<(NumberField, f64)> = Vec::new();
     // (largest, smallest) estimate of each part, one pass over the coefficients
@@ -429,7 +436,7 @@ fn in_float_range(param: &ComponentParam) -> Option<ComponentParam> {
         }
         (top, bottom)
     };
-    let out = |(t, b): (Option<f64>, f64)| t.is_some_and(|t| t > 900.0) || b < -900.0;
+    let out = |(t, b): (Option<f64>, f64)| t.is_some_and(|t| t > FLOAT_SCALE) || b < -900.0;
     let scale = |v: &[NumberPoly; 4], e: i64| -> [NumberPoly; 4] {
         let k = super::curve::rational(super::expr::power_of_two(e));
         std::array::from_fn(|i| v[i].map(|c| c.mul(&k)))
@@ -461,8 +468,9 @@ fn in_float_range(param: &ComponentParam) -> Option<ComponentParam> {
             if !(out(ra) || out(rd) || out(rs)) {
                 return None;
             }
-            let (ea, ed) = (ra.0? as i64, rd.0? as i64);
-            let es = 2 * (ed - ea);
+            let f = -(rs.0? * 0.5).round() as i64;
+            let g = ra.0.unwrap_or(f64::NEG_INFINITY).max(rd.0? - f as f64) as i64;
+            let (ea, ed, es) = (g, f + g, 2 * f);
             // every coefficient in range after the scaling (none lost below the floats)
             let spread = |(t, b): (Option<f64>, f64), e: i64| {
                 t.is_none_or(|t| t + (e as f64) < 900.0) && b + (e as f64) > -900.0
@@ -734,12 +742,12 @@ fn point_piece(
     })
 }
 
-/// `2^∓800`: a parameterization whose floats are all zero or within these in magnitude
-/// needs no scaling ([`in_float_range`] leaves it as it is: its estimates are at least
-/// `log₂|c|`, and above it by a few bits unless the terms of `c` cancel).
+/// `2⁻⁸⁰⁰` and `2^FLOAT_SCALE`: a parameterization whose floats are all zero or within these
+/// in magnitude needs no scaling ([`in_float_range`] leaves it as it is: its estimates are at
+/// least `log₂|c|`, and above it by a few bits unless the terms of `c` cancel).
 const NARROW: (f64, f64) = (
     f64::from_bits((1023 - 800) << 52),
-    f64::from_bits((1023 + 800) << 52),
+    f64::from_bits((1023 + FLOAT_SCALE as u64) << 52),
 );
 
 /// Grid points between exact values of `(sin θ, cos θ)` ([`Evaluator::grid`]).
@@ -4151,7 +4159,7 @@ mod tests {
             (f64::INFINITY, f64::INFINITY)
         );
         assert!(sure_bounds(1e-14, 1.0, 1.0, &s).1.is_finite());
-        assert_eq!(NARROW, (2f64.powi(-800), 2f64.powi(800)));
+        assert_eq!(NARROW, (2f64.powi(-800), 2f64.powi(FLOAT_SCALE as i32)));
     }
 
     /// A parameterization with coefficients beyond `2⁹⁰⁰` (not [`NARROW`], and beyond
