@@ -24,8 +24,8 @@
 
 use crate::poly::Poly;
 use crate::roots::{
-    certified_real_roots_enclosed, isolate_squarefree_real_roots_within, refine_step, simplest_between,
-    RootInterval, MAX_CERTIFIED_DEGREE,
+    certified_real_roots_enclosed, isolate_squarefree_real_roots_within, refine_step,
+    simplest_between, RootInterval, MAX_CERTIFIED_DEGREE,
 };
 use crate::sign::Sign;
 use dashu_int::ops::{BitTest, DivEuclid};

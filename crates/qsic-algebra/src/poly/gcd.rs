@@ -55,7 +55,10 @@ impl Poly {
 pub fn prem_units(a: &Poly, b: &Poly) -> u64 {
     let (m, n) = (a.degree().unwrap_or(0), b.degree().unwrap_or(0));
     let products = (m.saturating_sub(n) as u64 + 2) * (n as u64 + 1);
-    products.saturating_mul(product_units(a.max_bits(), b.max_bits() * (m - n.min(m) + 1)))
+    products.saturating_mul(product_units(
+        a.max_bits(),
+        b.max_bits() * (m - n.min(m) + 1),
+    ))
 }
 
 /// The Mersenne prime 2⁶¹ − 1.

@@ -25,8 +25,8 @@
 //! [`super`]); the plain forms spend [`Budget::unlimited`].
 
 pub use super::contact_point::{
-    common_points_at, common_points_at_within, contact_points, contact_points_within,
-    CommonLocus, CommonPoint, CommonPointKind, ContactPoints,
+    common_points_at, common_points_at_within, contact_points, contact_points_within, CommonLocus,
+    CommonPoint, CommonPointKind, ContactPoints,
 };
 use super::instants::pencil_entries;
 pub use super::range::TimeRange;
@@ -557,7 +557,7 @@ fn state_at_irrational(
         m.clone().map(|row| row.map(|p| p.mul(&k)))
     };
     // the fast route (one double root, certified signs), else the reference
-    let polys = pencil.polys.oriented(negate_a, negate_b);
+    let polys = pencil.fast_polys(budget)?.oriented(negate_a, negate_b);
     let signs = match irrational_fast::pencil_signs_at_irrational_fast(&polys, alpha, budget)? {
         Some(s) => Some(s),
         None => {

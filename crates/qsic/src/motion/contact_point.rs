@@ -287,7 +287,14 @@ fn common_points_at_irrational(
         return Ok(not_computed("the class is not computed"));
     };
     let factors_t = squarefree_decomposition_t(pencil.characteristic(), budget)?;
-    Ok(points_at_irrational(&a, &b, &class, &factors_t, &field, not_computed))
+    Ok(points_at_irrational(
+        &a,
+        &b,
+        &class,
+        &factors_t,
+        &field,
+        not_computed,
+    ))
 }
 
 /// The points of [`common_points_at_irrational`] from `A(α)`, `B(α)` over `K`, the class at

@@ -200,6 +200,50 @@ pub(crate) fn resultant_forms(f: &Form, g: &Form, budget: &Budget) -> Result<Pol
     det_within(rows, budget)
 }
 
+/// The `j`-th subresultant `S_j(a, b)` over `ℤ[t]` (`deg_λ a = m`, `deg_λ b = n`,
+/// `j ≤ min(m, n)`, both nonzero): the determinant polynomial of the `(m + n − 2j)`-row
+/// Sylvester matrix of `λ^(n−j−1)a, …, a, λ^(m−j−1)b, …, b` — the coefficient of `λ^k` the
+/// determinant of its first `m + n − 2j − 1` columns and the column of `λ^k` — as
+/// [`Poly::subresultant`] lays it out, each determinant by [`det_within`].
+pub(crate) fn subresultant_within(
+    a: &TPoly,
+    b: &TPoly,
+    j: usize,
+    budget: &Budget,
+) -> Result<TPoly, Exhausted> {
+    let (m, n) = (a.degree().unwrap_or(0), b.degree().unwrap_or(0));
+    debug_assert!(!a.is_zero() && !b.is_zero() && j <= m.min(n));
+    let rows = m + n - 2 * j;
+    if rows == 0 {
+        return Ok(b.clone());
+    }
+    let width = m + n - j;
+    let mut sylvester: Vec<Vec<Poly>> = Vec::with_capacity(rows);
+    for (p, count) in [(a, n - j), (b, m - j)] {
+        for shift in (0..count).rev() {
+            let mut row = vec![Poly::zero(); width];
+            for (i, v) in p.coeffs().iter().enumerate() {
+                row[width - 1 - (i + shift)] = v.clone();
+            }
+            sylvester.push(row);
+        }
+    }
+    let mut coeffs = Vec::with_capacity(j + 1);
+    for k in 0..=j {
+        let column = width - 1 - k;
+        let square: Vec<Vec<Poly>> = sylvester
+            .iter()
+            .map(|row| {
+                let mut r = row[..rows - 1].to_vec();
+                r.push(row[column].clone());
+                r
+            })
+            .collect();
+        coeffs.push(det_within(square, budget)?);
+    }
+    Ok(Poly::new(coeffs))
+}
+
 /// The discriminant of a binary form of degree `d ≥ 2` up to a nonzero integer factor:
 /// `Res(∂F/∂λ, ∂F/∂μ)`, which vanishes at `t₀` exactly when `F(t₀)` has a repeated root in
 /// `ℙ¹` (or is zero). `None` for `d < 2` (no condition).

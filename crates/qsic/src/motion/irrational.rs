@@ -23,10 +23,10 @@ use crate::classify::{
     OrderedDomain,
 };
 use crate::pencil::SigItem;
+use qsic_algebra::budget::{product_units, Budget, Exhausted};
 use qsic_algebra::field::number_field::{NumberField, NumberFieldElement as K};
 use qsic_algebra::linalg::minors::SmallMinors;
 use qsic_algebra::matrix::Inertia;
-use qsic_algebra::budget::{product_units, Budget, Exhausted};
 use qsic_algebra::{AlgebraicReal, Field, IBig, Poly, RBig, Ring, Sign};
 
 /// The budget of one classification at `α` and the units of one product in `K = ℚ(α)`.
@@ -40,7 +40,10 @@ impl<'a> Spend<'a> {
     /// For `K = ℚ(α)`: a product of two elements is `n²` coefficient products of the size
     /// of `α`'s defining polynomial (`n` its degree) and its reduction as much again.
     pub(crate) fn new(budget: &'a Budget, alpha: &AlgebraicReal) -> Spend<'a> {
-        let (n, bits) = (alpha.poly().degree().unwrap_or(1).max(1), alpha.poly().max_bits());
+        let (n, bits) = (
+            alpha.poly().degree().unwrap_or(1).max(1),
+            alpha.poly().max_bits(),
+        );
         let product = (2 * n * n) as u64;
         Spend {
             budget,

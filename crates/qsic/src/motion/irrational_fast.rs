@@ -42,15 +42,15 @@
 //! ([`enclosure_units`]); the exact zero tests their gcd's estimate; the stage in `K` the
 //! reduction of the coefficients into `K` and its products ([`super::irrational::Spend`]).
 
-use super::instants::TPoly;
+use super::instants::{subresultant_within, TPoly};
+use super::irrational::Spend;
 use crate::classify::{classify_regular_parts, Classification};
 use crate::pencil::SigItem;
 use crate::solids::PencilSigns;
+use qsic_algebra::budget::{poly_step_units, product_units, Budget, Exhausted};
 use qsic_algebra::field::number_field::{NumberField, NumberFieldElement as K};
 use qsic_algebra::matrix::{Inertia, MatrixPencil};
 use qsic_algebra::roots::simplest_between;
-use super::irrational::Spend;
-use qsic_algebra::budget::{poly_step_units, product_units, Budget, Exhausted};
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring, Sign};
 
 type KPoly = Poly<K>;
@@ -71,23 +71,30 @@ pub(crate) struct PencilPolys {
 }
 
 impl PencilPolys {
-    /// From the minors of the pencil over `ℤ[t]`.
-    pub(crate) fn of(pencil: &MatrixPencil<Poly>) -> PencilPolys {
+    /// From the minors of the pencil over `ℤ[t]`, the subresultants spending `budget`
+    /// ([`subresultant_within`]).
+    pub(crate) fn of(
+        pencil: &MatrixPencil<Poly>,
+        budget: &Budget,
+    ) -> Result<PencilPolys, Exhausted> {
         let f = pencil.det_poly();
         let (s1, psc0) = if f.degree() == Some(4) {
             let df = f.derivative();
-            (f.subresultant(&df, 1), f.subresultant(&df, 0).coeff(0))
+            (
+                subresultant_within(&f, &df, 1, budget)?,
+                subresultant_within(&f, &df, 0, budget)?.coeff(0),
+            )
         } else {
             // never of degree 4 at any t: the fast route does not apply
             (TPoly::zero(), Poly::zero())
         };
-        PencilPolys {
+        Ok(PencilPolys {
             f,
             e: pencil.principal_minor_sums(),
             minors3: pencil.minors(3),
             s1,
             psc0,
-        }
+        })
     }
 
     /// The same for the pencil with `M_A` negated (`negate_a`) and/or `M_B` negated: a
@@ -841,7 +848,10 @@ mod tests {
             }
             all += 1;
             let unlimited = Budget::unlimited();
-            if let Some(fast) = classify_at_irrational_fast(&p.polys, &alpha, &unlimited).unwrap() {
+            if let Some(fast) =
+                classify_at_irrational_fast(p.fast_polys(&unlimited).unwrap(), &alpha, &unlimited)
+                    .unwrap()
+            {
                 let reference =
                     irrational::classify_at_irrational(&p.entries, &alpha, &unlimited).unwrap();
                 assert_eq!(Some(fast), reference, "{what} at {alpha}");
@@ -908,9 +918,13 @@ mod tests {
         assert!(all >= 2 && answered == all, "{answered} of {all}");
         for alpha in p.candidate_instants().unwrap() {
             if alpha.as_rational().is_none() {
-                let c = classify_at_irrational_fast(&p.polys, &alpha, &Budget::unlimited())
-                    .unwrap()
-                    .unwrap();
+                let c = classify_at_irrational_fast(
+                    p.fast_polys(&Budget::unlimited()).unwrap(),
+                    &alpha,
+                    &Budget::unlimited(),
+                )
+                .unwrap()
+                .unwrap();
                 let segre = c.segre.unwrap_or_default();
                 assert!(segre.starts_with("[211]"), "{segre} at {alpha}");
             }
@@ -936,7 +950,7 @@ mod tests {
                     continue;
                 }
                 for (na, nb) in [(false, false), (true, false), (false, true), (true, true)] {
-                    let polys = p.polys.oriented(na, nb);
+                    let polys = p.fast_polys(&Budget::unlimited()).unwrap().oriented(na, nb);
                     let unlimited = Budget::unlimited();
                     let Some(fast) =
                         pencil_signs_at_irrational_fast(&polys, &alpha, &unlimited).unwrap()

@@ -55,12 +55,13 @@ use crate::io::MovingMatrix;
 use crate::limits::{MAX_MOTION_COEFFICIENT_BITS, MAX_MOTION_DEGREE};
 use instants::{
     common_kernel_condition, discriminant_form, generic_gcd, pencil_entries, rank_conditions,
-    resultant_forms, squarefree_decomposition_t, t_content, t_primitive, tpoly_product_units,
-    Form, RankConditionError, TPoly,
+    resultant_forms, squarefree_decomposition_t, t_content, t_primitive, tpoly_product_units, Form,
+    RankConditionError, TPoly,
 };
 use qsic_algebra::budget::{Budget, Exhausted};
 use qsic_algebra::matrix::MatrixPencil;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
+use std::sync::OnceLock;
 
 /// Two moving quadrics `A(t)`, `B(t)` and their characteristic polynomial
 /// `f(λ; t) = det(λM_A(t) − M_B(t))`.
@@ -74,8 +75,10 @@ pub struct MovingPencil {
     /// `λM_A(t) − M_B(t)` over ℤ\[t\] with every minor, as polynomials in `λ`.
     pencil: MatrixPencil<Poly>,
     f: TPoly,
-    /// The polynomials in `λ` over `ℤ[t]` the fast route at irrational instants reads.
-    polys: irrational_fast::PencilPolys,
+    /// The polynomials in `λ` over `ℤ[t]` the fast route at irrational instants reads, made
+    /// when first needed ([`Self::fast_polys`]): a motion without irrational instants to
+    /// classify never pays for their subresultants.
+    polys: OnceLock<irrational_fast::PencilPolys>,
 }
 
 /// The type compared between neighbours: pencil kind, case, complex and real type.
@@ -196,14 +199,13 @@ impl MovingPencil {
         let entries = pencil_entries(ma, mb);
         let pencil = MatrixPencil::from_entries(ma.clone(), mb.clone());
         let f = pencil.det_poly();
-        let polys = irrational_fast::PencilPolys::of(&pencil);
         Ok(MovingPencil {
             a,
             b,
             entries,
             pencil,
             f,
-            polys,
+            polys: OnceLock::new(),
         })
     }
 
@@ -345,14 +347,13 @@ impl MovingPencil {
         }
         if rank < 4 || forms.iter().any(|(_, m)| *m > 1) {
             for k in 1..=3 {
-                let conditions = rank_conditions(&self.pencil.minors(k), k, budget).map_err(
-                    |e| match e {
+                let conditions =
+                    rank_conditions(&self.pencil.minors(k), k, budget).map_err(|e| match e {
                         RankConditionError::NoSeparatingCombination(why) => {
                             Error::UnsupportedMotion(why)
                         }
                         RankConditionError::Exhausted(e) => e.into(),
-                    },
-                )?;
+                    })?;
                 out.extend(conditions);
             }
         }
@@ -586,10 +587,26 @@ impl MovingPencil {
         alpha: &AlgebraicReal,
         budget: &Budget,
     ) -> Result<Option<Classification>, Exhausted> {
-        match irrational_fast::classify_at_irrational_fast(&self.polys, alpha, budget)? {
+        match irrational_fast::classify_at_irrational_fast(self.fast_polys(budget)?, alpha, budget)?
+        {
             Some(c) => Ok(Some(c)),
             None => irrational::classify_at_irrational(&self.entries, alpha, budget),
         }
+    }
+}
+
+impl MovingPencil {
+    /// The polynomials of the fast route at irrational instants, made on first use spending
+    /// `budget` (their subresultants over `ℤ[t]`).
+    pub(crate) fn fast_polys(
+        &self,
+        budget: &Budget,
+    ) -> Result<&irrational_fast::PencilPolys, Exhausted> {
+        if let Some(p) = self.polys.get() {
+            return Ok(p);
+        }
+        let made = irrational_fast::PencilPolys::of(&self.pencil, budget)?;
+        Ok(self.polys.get_or_init(|| made))
     }
 }
 
