@@ -520,7 +520,10 @@ def _range_end(t: Any, name: str) -> Optional[str]:
 
 
 def motion(
-    a: MovingLike, b: MovingLike, range: Optional[Tuple[Any, Any]] = None
+    a: MovingLike,
+    b: MovingLike,
+    range: Optional[Tuple[Any, Any]] = None,
+    budget: Optional[int] = None,
 ) -> Dict[str, Any]:
     """The instants where the type of the intersection of moving quadrics ``A(t)``, ``B(t)``
     changes, and the type on every interval and at every instant: the JSON object of
@@ -533,28 +536,38 @@ def motion(
     1]}, "translate": [0, 0, "t"]}`` (``"rotate"``: ``"axis"`` for the Cayley rotation
     ``tan(θ/2) = t·|axis|``, or ``"quaternion"`` ``[q0, q1, q2, q3]`` polynomials in ``t``;
     ``"center"`` a point of the axis; README, "Rigid motions"). ``range = (t0, t1)``: only
-    ``t`` in ``[t0, t1]``, None for an open side.
+    ``t`` in ``[t0, t1]``, None for an open side. ``budget``: the work units the call may
+    spend (:data:`DEFAULT_BUDGET` by default; README, "Work budget").
 
     Raises:
-        QsicError: the reader's or the analysis' message.
+        QsicError: the reader's or the analysis' message, a budget that is not a positive
+            integer, or ``over the work budget: …``.
     """
     t0, t1 = _range(range)
-    return json.loads(_qsic.motion(_moving("A", a), _moving("B", b), t0, t1))
+    units = _budget(budget)
+    return json.loads(_qsic.motion(_moving("A", a), _moving("B", b), t0, t1, budget=units))
 
 
 def first_contact(
-    a: MovingLike, b: MovingLike, range: Optional[Tuple[Any, Any]] = None
+    a: MovingLike,
+    b: MovingLike,
+    range: Optional[Tuple[Any, Any]] = None,
+    budget: Optional[int] = None,
 ) -> Dict[str, Any]:
     """The first ``t`` in ``range`` where moving quadrics have a real common point, and the
     relation of the solids along the motion where both are ellipsoids: the JSON object of
     ``qsic contact --json`` (``range``, ``first_contact``: None, ``"-oo"``, ``"p/q"`` or
     ``{"poly", "interval", "approx"}``, ``contact``: the common points there, exact and in
     decimals, and ``at_start`` when they already meet at the range's start; ``solids``: the
-    relation on the range only). ``a``, ``b`` and ``range = (t0, t1)`` as for :func:`motion`
-    (rigid motions as dicts).
+    relation on the range only). ``a``, ``b``, ``range = (t0, t1)`` and ``budget`` as for
+    :func:`motion` (rigid motions as dicts).
 
     Raises:
-        QsicError: the reader's or the analysis' message.
+        QsicError: the reader's or the analysis' message, a bad budget, or ``over the work
+            budget: …``.
     """
     t0, t1 = _range(range)
-    return json.loads(_qsic.first_contact(_moving("A", a), _moving("B", b), t0, t1))
+    units = _budget(budget)
+    return json.loads(
+        _qsic.first_contact(_moving("A", a), _moving("B", b), t0, t1, budget=units)
+    )

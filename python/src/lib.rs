@@ -679,21 +679,24 @@ fn time_range(t0: Option<&str>, t1: Option<&str>) -> PyResult<qsic::motion::Time
         .map_err(|e| err(format!("range: {e}")))
 }
 
-/// The JSON object of `qsic motion --json --range T0 T1` (`None`: an open side).
+/// The JSON object of `qsic motion --json --range T0 T1` (`None`: an open side), spending
+/// at most `budget` work units (default [`DEFAULT_LINE_BUDGET`]).
 #[pyfunction]
-#[pyo3(signature = (a, b, t0 = None, t1 = None))]
+#[pyo3(signature = (a, b, t0 = None, t1 = None, budget = None))]
 fn motion(
     py: Python<'_>,
     a: Vec<String>,
     b: Vec<String>,
     t0: Option<&str>,
     t1: Option<&str>,
+    budget: Option<u64>,
 ) -> PyResult<String> {
     let (ma, mb) = (moving("A", a)?, moving("B", b)?);
     let range = time_range(t0, t1)?;
+    let budget = Budget::new(budget.unwrap_or(DEFAULT_LINE_BUDGET));
     py.detach(|| {
         catch_panic(|| {
-            qsic_cli::motion::analyze(ma, mb, &range)
+            qsic_cli::motion::analyze_within(ma, mb, &range, &budget)
                 .map(|m| qsic_cli::motion::motion_to_json_line(&m))
                 .map_err(|e| format!("A and B: {e}"))
         })
@@ -702,21 +705,24 @@ fn motion(
     .map_err(err)
 }
 
-/// The JSON object of `qsic contact --json --range T0 T1` (`None`: an open side).
+/// The JSON object of `qsic contact --json --range T0 T1` (`None`: an open side), spending
+/// at most `budget` work units (default [`DEFAULT_LINE_BUDGET`]).
 #[pyfunction]
-#[pyo3(signature = (a, b, t0 = None, t1 = None))]
+#[pyo3(signature = (a, b, t0 = None, t1 = None, budget = None))]
 fn first_contact(
     py: Python<'_>,
     a: Vec<String>,
     b: Vec<String>,
     t0: Option<&str>,
     t1: Option<&str>,
+    budget: Option<u64>,
 ) -> PyResult<String> {
     let (ma, mb) = (moving("A", a)?, moving("B", b)?);
     let range = time_range(t0, t1)?;
+    let budget = Budget::new(budget.unwrap_or(DEFAULT_LINE_BUDGET));
     py.detach(|| {
         catch_panic(|| {
-            qsic_cli::contact::contact(ma, mb, range)
+            qsic_cli::contact::contact_within(ma, mb, range, &budget)
                 .map(|r| qsic_cli::contact::report_to_json_line(&r))
                 .map_err(|e| format!("A and B: {e}"))
         })

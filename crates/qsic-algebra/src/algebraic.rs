@@ -24,8 +24,8 @@
 
 use crate::poly::Poly;
 use crate::roots::{
-    certified_real_roots_enclosed, isolate_squarefree_real_roots, refine_step, simplest_between,
-    RootInterval, MAX_CERTIFIED_DEGREE,
+    certified_real_roots_enclosed, isolate_squarefree_real_roots_within, refine_step,
+    simplest_between, RootInterval, MAX_CERTIFIED_DEGREE,
 };
 use crate::sign::Sign;
 use dashu_int::ops::{BitTest, DivEuclid};
@@ -148,20 +148,34 @@ impl AlgebraicReal {
     /// All real roots of `p`, in increasing order, each once (Descartes' rule on the
     /// square-free part; [`Self::certified_real_roots_of`] is the float route).
     pub fn real_roots_of(p: &Poly) -> Vec<AlgebraicReal> {
-        let sf = p.squarefree_part();
+        AlgebraicReal::real_roots_of_within(p, &crate::budget::Budget::unlimited())
+            .expect("an unlimited budget is never spent")
+    }
+
+    /// [`Self::real_roots_of`] spending `budget` on the square-free part
+    /// ([`Poly::squarefree_part_within`]) and the isolation
+    /// ([`crate::roots::isolate_squarefree_real_roots_within`]).
+    ///
+    /// # Errors
+    /// [`crate::budget::Exhausted`] when the budget runs out.
+    pub fn real_roots_of_within(
+        p: &Poly,
+        budget: &crate::budget::Budget,
+    ) -> Result<Vec<AlgebraicReal>, crate::budget::Exhausted> {
+        let sf = p.squarefree_part_within(budget)?;
         if sf.degree() == Some(1) {
             let v = RBig::from_parts_signed(-sf.coeff(0), sf.coeff(1));
-            return vec![AlgebraicReal::from_rational(v)];
+            return Ok(vec![AlgebraicReal::from_rational(v)]);
         }
-        let intervals = isolate_squarefree_real_roots(&sf);
+        let intervals = isolate_squarefree_real_roots_within(&sf, budget)?;
         let sf = Arc::new(Defining::made(sf));
-        intervals
+        Ok(intervals
             .into_iter()
             .map(|iv| match iv {
                 RootInterval::Exact(v) => AlgebraicReal::from_rational(v),
                 iv => AlgebraicReal::with_shared(Arc::clone(&sf), iv),
             })
-            .collect()
+            .collect())
     }
 
     /// All real roots of `p` (increasing, each once) if the certified float path

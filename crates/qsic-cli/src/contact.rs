@@ -21,17 +21,21 @@
 //! both solid ellipsoids there.
 //!
 //! The moving quadrics are read as by `qsic motion` ([`crate::motion::moving_from_arg`]),
-//! and the range too ([`TimeRange::parse`]).
+//! and the range too ([`TimeRange::parse`]). [`contact_within`] spends a work budget
+//! (`--line-budget`); [`answer_contact_line`] answers one line of `qsic contact --batch`
+//! (`{"id", "A", "B"}` in, `{"id", "range", …}` or the error record out).
 
+use crate::batch::{answer_with, catch_panic, open_record, read_record, LineFailure, RawLine};
+use crate::input::JsonForm;
 use crate::output::write_json_string;
 use qsic::io::MovingMatrix;
 use qsic::motion::contact::{
-    contact_points, first_contact_in, solid_motion_in, CommonLocus, ContactPoints, FirstContact,
-    SolidMotion, SolidState, TimeRange,
+    contact_points_within, first_contact_in_within, solid_motion_in_within, CommonLocus,
+    ContactPoints, FirstContact, SolidMotion, SolidState, TimeRange,
 };
 use qsic::motion::{MovingPencil, MINUS_INFINITY, PLUS_INFINITY};
 use qsic::param::expr::Names;
-use qsic::Error;
+use qsic::{Budget, Error};
 use qsic_algebra::{AlgebraicReal, RBig};
 use std::fmt::Write as _;
 
@@ -57,14 +61,27 @@ pub struct ContactReport {
 /// As [`qsic::motion::contact::first_contact`] and
 /// [`qsic::motion::contact::solid_motion_in`].
 pub fn contact(a: MovingMatrix, b: MovingMatrix, range: TimeRange) -> Result<ContactReport, Error> {
+    contact_within(a, b, range, &Budget::unlimited())
+}
+
+/// [`contact`] spending `budget` on the motion, the contact points and the solids.
+///
+/// # Errors
+/// As [`contact`]; [`Error::BudgetExceeded`] when the budget runs out.
+pub fn contact_within(
+    a: MovingMatrix,
+    b: MovingMatrix,
+    range: TimeRange,
+    budget: &Budget,
+) -> Result<ContactReport, Error> {
     let pencil = MovingPencil::new(a, b)?;
-    let motion = pencil.variations()?;
-    let first = first_contact_in(&pencil, &motion, &range)?;
+    let motion = pencil.variations_within(None, None, budget)?;
+    let first = first_contact_in_within(&pencil, &motion, &range, budget)?;
     let contact = match &first {
-        Some(f) => contact_points(&pencil, f, &range)?,
+        Some(f) => contact_points_within(&pencil, f, &range, budget)?,
         None => None,
     };
-    let solids = solid_motion_in(&pencil, &range)?;
+    let solids = solid_motion_in_within(&pencil, &range, budget)?;
     let any_relation = solids
         .intervals
         .iter()
@@ -259,30 +276,75 @@ fn write_contact_points(out: &mut String, c: &ContactPoints) {
 /// The report as one JSON object on one line, keys in the documented order (module docs).
 pub fn report_to_json_line(r: &ContactReport) -> String {
     let mut out = String::with_capacity(1024);
-    out.push_str("{\"range\":[");
+    out.push('{');
+    write_report_fields(&mut out, r);
+    out.push('}');
+    out
+}
+
+/// The output line for one line of `qsic contact --batch` and whether it succeeded:
+/// `{"id", "range", "first_contact", "contact", "solids"}` or the error record of the
+/// batch conventions; the line may spend `units` work units.
+pub fn answer_contact_line(line: &RawLine, range: &TimeRange, units: u64) -> (String, bool) {
+    answer_with(line, |line| contact_line(line, range, units))
+}
+
+fn contact_line<'a>(
+    line: &'a RawLine,
+    range: &TimeRange,
+    units: u64,
+) -> Result<String, LineFailure<'a>> {
+    let record = read_record(line)?;
+    let id = record.id;
+    let fail = |message: String| LineFailure { id, message };
+    let read = |name: &str, form: &Option<JsonForm<'_>>| match form {
+        None => Err(fail(format!("missing field \"{name}\""))),
+        Some(form) => {
+            crate::motion::moving_from_form(form).map_err(|e| fail(format!("{name}: {e}")))
+        }
+    };
+    let a = read("A", &record.a)?;
+    let b = read("B", &record.b)?;
+    let report = match catch_panic(|| contact_within(a, b, range.clone(), &Budget::new(units))) {
+        Ok(Ok(r)) => r,
+        Ok(Err(e)) => return Err(fail(format!("A and B: {e}"))),
+        Err(what) => {
+            return Err(fail(format!(
+                "internal error in the contact analysis (a bug): {what}"
+            )))
+        }
+    };
+    let mut out = open_record(id);
+    write_report_fields(&mut out, &report);
+    out.push('}');
+    Ok(out)
+}
+
+/// Appends the report's fields `"range":…,"first_contact":…,"contact":…,"solids":…`,
+/// without braces.
+fn write_report_fields(out: &mut String, r: &ContactReport) {
+    out.push_str("\"range\":[");
     for (k, end) in [r.range.from(), r.range.to()].into_iter().enumerate() {
         if k > 0 {
             out.push(',');
         }
         match end {
-            Some(v) => write_json_string(&mut out, &rational(v)),
+            Some(v) => write_json_string(out, &rational(v)),
             None => out.push_str("null"),
         }
     }
     out.push_str("],\"first_contact\":");
-    write_contact(&mut out, &r.first_contact);
+    write_contact(out, &r.first_contact);
     out.push_str(",\"contact\":");
     match &r.contact {
-        Some(c) => write_contact_points(&mut out, c),
+        Some(c) => write_contact_points(out, c),
         None => out.push_str("null"),
     }
     out.push_str(",\"solids\":");
     match &r.solids {
-        Some(m) => write_solids(&mut out, m, &r.first_meeting),
+        Some(m) => write_solids(out, m, &r.first_meeting),
         None => out.push_str("null"),
     }
-    out.push('}');
-    out
 }
 
 fn instant_text(t: &AlgebraicReal) -> String {

@@ -187,11 +187,23 @@ Examples: qsic contact \"x^2+y^2+z^2-4\" \"(x-t)^2+y^2+z^2-1\" --range -10 10\n\
 )]
 struct ContactArgs {
     /// First moving quadric.
-    #[arg(value_name = "A", allow_hyphen_values = true)]
-    a: String,
+    #[arg(
+        value_name = "A",
+        allow_hyphen_values = true,
+        required_unless_present = "batch"
+    )]
+    a: Option<String>,
     /// Second moving quadric.
-    #[arg(value_name = "B", allow_hyphen_values = true)]
-    b: String,
+    #[arg(
+        value_name = "B",
+        allow_hyphen_values = true,
+        required_unless_present = "batch"
+    )]
+    b: Option<String>,
+    /// Answer the JSON Lines {"id", "A", "B"} of FILE ('-' for standard input), one JSON
+    /// line each (the --json object with the line's id first), in order.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["a", "b"])]
+    batch: Option<PathBuf>,
     /// Only t in the closed range [T0, T1] (exact numbers, -oo/oo for an open side), as for motion.
     #[arg(long, num_args = 2, value_names = ["T0", "T1"], allow_hyphen_values = true)]
     range: Option<Vec<String>>,
@@ -444,7 +456,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let units = cli.line_budget;
     match cli.command {
-        Command::Motion(args) => run_motion(&args),
+        Command::Motion(args) => run_motion(&args, units),
         Command::Param(args) => run_param(&args, units),
         Command::Sample(args) => run_sample(&args, units),
         Command::Plot(args) => run_plot(&args),
@@ -485,17 +497,32 @@ fn main() -> ExitCode {
                 }
             }
         }
-        Command::Contact(args) => run_contact(&args),
+        Command::Contact(args) => run_contact(&args, units),
     }
 }
 
-/// `qsic contact A B`: exit 0 with the report, or 1 with the error on stderr.
-fn run_contact(args: &ContactArgs) -> ExitCode {
+/// `qsic contact A B`: exit 0 with the report, or 1 with the error on stderr; or a batch.
+/// The query or each line may spend `units` work units.
+fn run_contact(args: &ContactArgs, units: u64) -> ExitCode {
     let range = range_arg(args.range.as_deref());
+    if let Some(path) = &args.batch {
+        return run_batch(path, |line: &batch::RawLine| {
+            contact::answer_contact_line(line, &range, units)
+        });
+    }
+    let (Some(a), Some(b)) = (&args.a, &args.b) else {
+        let mut cmd = Cli::command();
+        cmd.error(
+            clap::error::ErrorKind::MissingRequiredArgument,
+            "two moving quadrics A and B, or --batch FILE, are required",
+        )
+        .exit()
+    };
     let result = (|| {
-        let a = motion::moving_from_arg(&args.a).map_err(|e| format!("A: {e}"))?;
-        let b = motion::moving_from_arg(&args.b).map_err(|e| format!("B: {e}"))?;
-        contact::contact(a, b, range).map_err(|e| format!("A and B: {e}"))
+        let a = motion::moving_from_arg(a).map_err(|e| format!("A: {e}"))?;
+        let b = motion::moving_from_arg(b).map_err(|e| format!("B: {e}"))?;
+        contact::contact_within(a, b, range, &qsic::Budget::new(units))
+            .map_err(|e| format!("A and B: {e}"))
     })();
     let report = match result {
         Ok(r) => r,
@@ -608,12 +635,13 @@ fn range_arg(range: Option<&[String]>) -> TimeRange {
     }
 }
 
-/// `qsic motion`: a single pair (exit 0, or 1 with `error: …`) or a batch.
-fn run_motion(args: &MotionArgs) -> ExitCode {
+/// `qsic motion`: a single pair (exit 0, or 1 with `error: …`) or a batch; the query or
+/// each line may spend `units` work units.
+fn run_motion(args: &MotionArgs, units: u64) -> ExitCode {
     let range = range_arg(args.range.as_deref());
     if let Some(path) = &args.batch {
         return run_batch(path, |line: &batch::RawLine| {
-            motion::answer_motion_line(line, &range)
+            motion::answer_motion_line(line, &range, units)
         });
     }
     let (Some(a), Some(b)) = (&args.a, &args.b) else {
@@ -630,7 +658,8 @@ fn run_motion(args: &MotionArgs) -> ExitCode {
         let mb = read("B", b)?;
         // the plot's snapshots need the moving quadrics again
         let pair = args.plot.is_some().then(|| (ma.clone(), mb.clone()));
-        let m = motion::analyze(ma, mb, &range).map_err(|e| format!("A and B: {e}"))?;
+        let m = motion::analyze_within(ma, mb, &range, &qsic::Budget::new(units))
+            .map_err(|e| format!("A and B: {e}"))?;
         Ok((m, pair))
     });
     if let (Ok((m, Some((ma, mb)))), Some(path)) = (&result, &args.plot) {
@@ -974,7 +1003,7 @@ mod tests {
         let Command::Contact(args) = cli.command else {
             panic!("contact parsed as another command")
         };
-        assert_eq!(args.a, "-x^2");
+        assert_eq!(args.a.as_deref(), Some("-x^2"));
         assert_eq!(args.range, Some(vec!["-3".to_string(), "1/2".to_string()]));
         assert!(Cli::try_parse_from(["qsic", "contact", "x^2", "y^2", "--range", "1"]).is_err());
     }

@@ -6,10 +6,10 @@
 //! |---|---|
 //! | [`TimeRange::parse`] | `--range T0 T1` (the library's, shared with `qsic contact`): exact rationals, `-oo`/`oo` for an open side |
 //! | [`moving_from_arg`], [`moving_from_form`] | a moving quadric from an argument or a batch field |
-//! | [`analyze`] | the variations of the pair on the range |
+//! | [`analyze`], [`analyze_within`] | the variations of the pair on the range (spending a work budget) |
 //! | [`motion_to_json_line`], [`write_motion_fields`] | the JSON result (keys `instants`, `intervals`) |
 //! | [`human_timeline`] | the text timeline of `qsic motion A B` |
-//! | [`answer_motion_line`] | one batch line to one output line |
+//! | [`answer_motion_line`] | one batch line to one output line, within the line's work budget |
 //!
 //! An instant `t` is written `"p/q"` when rational, otherwise
 //! `{"poly": "t^2 - 2", "interval": ["7/5", "3/2"], "approx": "1.4142135623730951"}`: a
@@ -21,7 +21,7 @@ use crate::output::write_json_string;
 use qsic::io::{moving_matrix_from_polynomial, moving_matrix_from_rows, MovingMatrix};
 pub use qsic::motion::TimeRange;
 use qsic::motion::{Motion, MovingPencil, MINUS_INFINITY, PLUS_INFINITY};
-use qsic::{Classification, Error};
+use qsic::{Budget, Classification, Error};
 use qsic_algebra::AlgebraicReal;
 use serde_json::Value;
 use std::fmt::Write as _;
@@ -110,7 +110,20 @@ pub fn moving_from_form(form: &JsonForm<'_>) -> Result<MovingMatrix, InputError>
 /// # Errors
 /// As [`MovingPencil::new`] and [`MovingPencil::variations_in`].
 pub fn analyze(a: MovingMatrix, b: MovingMatrix, range: &TimeRange) -> Result<Motion, Error> {
-    MovingPencil::new(a, b)?.variations_in(range.from(), range.to())
+    analyze_within(a, b, range, &Budget::unlimited())
+}
+
+/// [`analyze`] spending `budget` ([`MovingPencil::variations_within`]).
+///
+/// # Errors
+/// As [`analyze`]; [`Error::BudgetExceeded`] when the budget runs out.
+pub fn analyze_within(
+    a: MovingMatrix,
+    b: MovingMatrix,
+    range: &TimeRange,
+    budget: &Budget,
+) -> Result<Motion, Error> {
+    MovingPencil::new(a, b)?.variations_within(range.from(), range.to(), budget)
 }
 
 /// Appends an instant as JSON: `"p/q"`, or `{"poly", "interval", "approx"}`.
@@ -298,12 +311,17 @@ pub fn human_timeline(m: &Motion) -> String {
 }
 
 /// The output line for one line of `qsic motion --batch` and whether it succeeded: `{"id",
-/// "instants", "intervals"}` or the error record of the batch conventions.
-pub fn answer_motion_line(line: &RawLine, range: &TimeRange) -> (String, bool) {
-    answer_with(line, |line| motion_line(line, range))
+/// "instants", "intervals"}` or the error record of the batch conventions; the line may
+/// spend `units` work units (over them: the budget's error record).
+pub fn answer_motion_line(line: &RawLine, range: &TimeRange, units: u64) -> (String, bool) {
+    answer_with(line, |line| motion_line(line, range, units))
 }
 
-fn motion_line<'a>(line: &'a RawLine, range: &TimeRange) -> Result<String, LineFailure<'a>> {
+fn motion_line<'a>(
+    line: &'a RawLine,
+    range: &TimeRange,
+    units: u64,
+) -> Result<String, LineFailure<'a>> {
     let record = read_record(line)?;
     let id = record.id;
     let fail = |message: String| LineFailure { id, message };
@@ -313,7 +331,7 @@ fn motion_line<'a>(line: &'a RawLine, range: &TimeRange) -> Result<String, LineF
     };
     let a = read("A", &record.a)?;
     let b = read("B", &record.b)?;
-    let motion = match catch_panic(|| analyze(a, b, range)) {
+    let motion = match catch_panic(|| analyze_within(a, b, range, &Budget::new(units))) {
         Ok(Ok(m)) => m,
         Ok(Err(e)) => return Err(fail(format!("A and B: {e}"))),
         Err(what) => {

@@ -1,9 +1,18 @@
 //! Work units spent and the rate at which this machine spends them (README, "Work budget"):
 //! each input is answered once with `Budget::unlimited()`, which counts without limit.
 //!
-//! `cargo run --release -p qsic --example budget_rate`
+//! `cargo run --release -p qsic --example budget_rate [all]` (`all`: also the motion and
+//! contact of the random moving pencil at the documented limits, degree 16 in `t` with
+//! 512-bit coefficients — minutes).
 
-use qsic::io::parse_quadric;
+#[path = "../benches/inputs/motion.rs"]
+mod motion_inputs;
+
+use qsic::io::{moving_matrix_from_polynomial, parse_quadric};
+use qsic::motion::contact::{
+    contact_points_within, first_contact_in_within, solid_motion_in_within, TimeRange,
+};
+use qsic::motion::MovingPencil;
 use qsic::param::{
     parameterize_within,
     sample::{sample_within, SampleOptions},
@@ -79,6 +88,40 @@ fn main() {
         };
         report(&format!("sample: Viviani, {points} points"), |budget| {
             sample_within(&curve, &options, budget).expect("points");
+        });
+    }
+    // motions and contacts: the rigid families and the random pencils of the bench
+    let all = std::env::args().nth(1).as_deref() == Some("all");
+    let spheres = (
+        "spheres".to_string(),
+        moving_matrix_from_polynomial("x^2+y^2+z^2-4").expect("A"),
+        moving_matrix_from_polynomial("(x-t)^2+y^2+z^2-1").expect("B"),
+    );
+    let rigid = motion_inputs::rigid_families()
+        .into_iter()
+        .map(|(n, a, b)| (n.to_string(), a, b));
+    let random = motion_inputs::random_families(all)
+        .into_iter()
+        .filter(|(n, _, _)| all || !n.contains("64bit") && !n.contains("degree4"));
+    for (name, a, b) in std::iter::once(spheres).chain(rigid).chain(random) {
+        report(&format!("motion: {name}"), |budget| {
+            let pencil = MovingPencil::new(a.clone(), b.clone()).expect("a pencil");
+            pencil
+                .variations_within(None, None, budget)
+                .expect("the motion");
+        });
+        report(&format!("contact: {name}"), |budget| {
+            let range = TimeRange::all();
+            let pencil = MovingPencil::new(a.clone(), b.clone()).expect("a pencil");
+            let motion = pencil
+                .variations_within(None, None, budget)
+                .expect("the motion");
+            if let Some(first) =
+                first_contact_in_within(&pencil, &motion, &range, budget).expect("first contact")
+            {
+                contact_points_within(&pencil, &first, &range, budget).expect("the points");
+            }
+            solid_motion_in_within(&pencil, &range, budget).expect("the solids");
         });
     }
 }

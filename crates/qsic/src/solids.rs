@@ -24,7 +24,6 @@
 //! same decision runs over `ℚ(α)` for moving ellipsoids at irrational instants
 //! ([`crate::motion::contact`]).
 
-use crate::classify::analyze_pencil;
 use crate::error::Error;
 use crate::pencil::PencilPoint;
 use crate::quadric::Quadric;
@@ -153,6 +152,18 @@ impl fmt::Display for SolidRelation {
 /// # Ok::<(), qsic::Error>(())
 /// ```
 pub fn solid_relation(a: &Quadric, b: &Quadric) -> Result<SolidRelation, Error> {
+    solid_relation_within(a, b, &crate::Budget::unlimited())
+}
+
+/// [`solid_relation`] spending `budget` on the pencil's analysis.
+///
+/// # Errors
+/// As [`solid_relation`]; [`Error::BudgetExceeded`] when the budget runs out.
+pub fn solid_relation_within(
+    a: &Quadric,
+    b: &Quadric,
+    budget: &crate::Budget,
+) -> Result<SolidRelation, Error> {
     let negate_a = ellipsoid_orientation(minor_signs(a)).map_err(|e| not_ellipsoid("A", e))?;
     let negate_b = ellipsoid_orientation(minor_signs(b)).map_err(|e| not_ellipsoid("B", e))?;
     if a.integer_matrix().is_proportional(b.integer_matrix()) {
@@ -167,7 +178,7 @@ pub fn solid_relation(a: &Quadric, b: &Quadric) -> Result<SolidRelation, Error> 
     };
     let (qa, qb) = (oriented(a, negate_a)?, oriented(b, negate_b)?);
     // Both nonsingular and not proportional: det(λA − B) has degree 4, a regular pencil.
-    let analysis = analyze_pencil(&qa, &qb)
+    let analysis = crate::classify::analyze_pencil_within(&qa, &qb, budget)?
         .ok_or_else(|| Error::Algebra("two ellipsoids span a regular pencil".into()))?;
     let x = Poly::x();
     let mut roots = Vec::with_capacity(analysis.real_roots.len());

@@ -5,6 +5,7 @@
 //! (`gcd_primitive_prs`, in the tests) is the simpler second route they are compared with.
 
 use super::Poly;
+use crate::budget::{poly_step_units, product_units, Budget, Exhausted};
 use dashu_int::IBig;
 
 impl Poly {
@@ -17,17 +18,47 @@ impl Poly {
     /// assert_eq!(a.gcd(&b), Poly::from_roots(&[2, 3]));
     /// ```
     pub fn gcd(&self, other: &Poly) -> Poly {
+        self.gcd_within(other, &Budget::unlimited())
+            .expect("an unlimited budget is never spent")
+    }
+
+    /// [`Self::gcd`] spending `budget`: the image modulo the prime costs its reduction and
+    /// Euclid's `(m + 1)(n + 1)` word steps, charged before it starts; each step of the
+    /// subresultant sequence where it is needed [`prem_units`] of its pair.
+    ///
+    /// # Errors
+    /// [`Exhausted`] when the budget runs out.
+    pub fn gcd_within(&self, other: &Poly, budget: &Budget) -> Result<Poly, Exhausted> {
         // Modulo a prime first (a square-free polynomial and its derivative, the removable
         // factor two forms share): the image's degree bounds the gcd's, and a lifted
         // candidate that divides both is the gcd. The subresultant PRS, whose coefficients
         // grow with the degrees and sizes, only where that does not conclude.
-        if self.degree().unwrap_or(0) >= 2 && other.degree().unwrap_or(0) >= 2 {
+        let (m, n) = (self.degree().unwrap_or(0), other.degree().unwrap_or(0));
+        if m >= 2 && n >= 2 {
+            let reduction = poly_step_units(m, self.max_bits())
+                .saturating_add(poly_step_units(n, other.max_bits()));
+            budget.spend(reduction.saturating_add(((m + 1) * (n + 1)) as u64))?;
             if let Some(g) = gcd_modular(self, other) {
-                return g;
+                return Ok(g);
             }
         }
-        gcd_subresultant(self, other)
+        Ok(self
+            .primitive_part()
+            .gcd_domain_within(&other.primitive_part(), prem_units, budget)?
+            .primitive_part())
     }
+}
+
+/// The units of one pseudo-remainder step of `a` by `b` (`deg a ≥ deg b`) and its exact
+/// division: `(deg a − deg b + 2)·(deg b + 1)` coefficient products of the sizes of `a`'s
+/// and `b`'s coefficients ([`product_units`]).
+pub fn prem_units(a: &Poly, b: &Poly) -> u64 {
+    let (m, n) = (a.degree().unwrap_or(0), b.degree().unwrap_or(0));
+    let products = (m.saturating_sub(n) as u64 + 2) * (n as u64 + 1);
+    products.saturating_mul(product_units(
+        a.max_bits(),
+        b.max_bits() * (m - n.min(m) + 1),
+    ))
 }
 
 /// The Mersenne prime 2⁶¹ − 1.
@@ -163,6 +194,7 @@ fn gcd_modular(a: &Poly, b: &Poly) -> Option<Poly> {
 }
 
 /// Gcd by the subresultant PRS ([`Poly::gcd_domain`]) on the primitive parts.
+#[cfg(test)]
 fn gcd_subresultant(a: &Poly, b: &Poly) -> Poly {
     a.primitive_part()
         .gcd_domain(&b.primitive_part())

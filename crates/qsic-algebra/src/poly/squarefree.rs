@@ -2,6 +2,7 @@
 //! one implementation (`yun`).
 
 use super::Poly;
+use crate::budget::{Budget, Exhausted};
 
 impl Poly {
     /// Square-free decomposition `p = c · ∏ fᵢ^mᵢ`: the list of `(fᵢ, mᵢ)`, each `fᵢ`
@@ -23,15 +24,26 @@ impl Poly {
 
     /// The square-free part: the product of the distinct irreducible factors, primitive.
     pub fn squarefree_part(&self) -> Poly {
+        self.squarefree_part_within(&Budget::unlimited())
+            .expect("an unlimited budget is never spent")
+    }
+
+    /// [`Self::squarefree_part`] spending `budget` on its gcd ([`Poly::gcd_within`]) and
+    /// division (one pseudo-remainder's units).
+    ///
+    /// # Errors
+    /// [`Exhausted`] when the budget runs out.
+    pub fn squarefree_part_within(&self, budget: &Budget) -> Result<Poly, Exhausted> {
         if self.degree().unwrap_or(0) == 0 {
-            return Poly::constant(dashu_int::IBig::ONE);
+            return Ok(Poly::constant(dashu_int::IBig::ONE));
         }
         let f = self.primitive_part();
-        let g = f.gcd(&f.derivative());
+        let g = f.gcd_within(&f.derivative(), budget)?;
         if g.is_constant() {
-            return f;
+            return Ok(f);
         }
-        exact(&f, &g).primitive_part()
+        budget.spend(super::gcd::prem_units(&f, &g))?;
+        Ok(exact(&f, &g).primitive_part())
     }
 
     /// `true` if the polynomial has no repeated factor (constants are square-free).

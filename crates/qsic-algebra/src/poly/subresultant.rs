@@ -17,6 +17,7 @@
 //! `psc_j ≠ 0`.
 
 use super::Poly;
+use crate::budget::{Budget, Exhausted};
 use crate::linalg::minors::det_bareiss;
 use crate::ring::Ring;
 
@@ -96,20 +97,37 @@ impl<C: Ring> Poly<C> {
     /// polynomial of the subresultant PRS. It is a gcd up to a nonzero factor of `C`;
     /// `gcd_domain(0, 0) = 0`, and a constant when the two are coprime.
     pub fn gcd_domain(&self, other: &Self) -> Self {
+        self.gcd_domain_within(other, |_, _| 0, &Budget::unlimited())
+            .expect("an unlimited budget is never spent")
+    }
+
+    /// [`Self::gcd_domain`] spending `step_units(a, b)` on `budget` before each step of the
+    /// remainder sequence on the pair `(a, b)` (the caller prices a pseudo-remainder by the
+    /// sizes of its coefficients).
+    ///
+    /// # Errors
+    /// [`Exhausted`] when the budget runs out.
+    pub fn gcd_domain_within(
+        &self,
+        other: &Self,
+        step_units: impl Fn(&Self, &Self) -> u64,
+        budget: &Budget,
+    ) -> Result<Self, Exhausted> {
         let (a, b) = match (self.degree(), other.degree()) {
-            (None, _) => return other.clone(),
-            (_, None) => return self.clone(),
+            (None, _) => return Ok(other.clone()),
+            (_, None) => return Ok(self.clone()),
             (Some(m), Some(n)) if m >= n => (self.clone(), other.clone()),
             _ => (other.clone(), self.clone()),
         };
         let mut prs = Prs::new(a, b);
         while prs.b.degree().unwrap_or(0) > 0 {
+            budget.spend(step_units(&prs.a, &prs.b))?;
             prs.step();
             if prs.b.is_zero() {
-                return prs.a;
+                return Ok(prs.a);
             }
         }
-        prs.b
+        Ok(prs.b)
     }
 
     /// The `j`-th subresultant `S_j(self, other)` (module docs), for

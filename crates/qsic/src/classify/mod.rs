@@ -224,10 +224,45 @@ pub fn classify_allowing_zero(
     }
 }
 
+/// [`classify_allowing_zero`] spending `budget` on a pair ([`classify_within`]; a single
+/// quadric costs [`FAST_UNITS`]).
+///
+/// # Errors
+/// As [`classify_allowing_zero`]; [`Error::BudgetExceeded`] when the budget runs out.
+pub fn classify_allowing_zero_within(
+    a: Option<&Quadric>,
+    b: Option<&Quadric>,
+    budget: &Budget,
+) -> Result<Classification, Error> {
+    match (a, b) {
+        (Some(a), Some(b)) => classify_within(a, b, budget),
+        (Some(q), None) | (None, Some(q)) => {
+            budget.spend(FAST_UNITS)?;
+            Ok(classify_single(q))
+        }
+        (None, None) => Err(Error::ZeroQuadric),
+    }
+}
+
 /// The exact analysis of the pencil of a regular pair; `None` for a singular or single pencil.
 pub fn analyze_pencil(a: &Quadric, b: &Quadric) -> Option<PencilAnalysis> {
     let data = PencilData::new(a, b);
     (pencil_kind(&data) == PencilKind::Regular).then(|| PencilAnalysis::compute(&data))
+}
+
+/// [`analyze_pencil`] spending `budget`: the minors ([`PencilData::units`]) and the
+/// analysis ([`PencilAnalysis::compute_within`]).
+pub(crate) fn analyze_pencil_within(
+    a: &Quadric,
+    b: &Quadric,
+    budget: &Budget,
+) -> Result<Option<PencilAnalysis>, qsic_algebra::Exhausted> {
+    budget.spend(PencilData::units(a, b))?;
+    let data = PencilData::new(a, b);
+    if pencil_kind(&data) != PencilKind::Regular {
+        return Ok(None);
+    }
+    Ok(Some(PencilAnalysis::compute_within(&data, budget)?))
 }
 
 pub use single::classify_single;

@@ -20,9 +20,13 @@
 //! - [`contact_points`], [`common_points_at`] (module `contact_point`): the common real points
 //!   at the first contact — the points where the quadrics touch — exactly, and whether they
 //!   already meet at the start of the range.
+//!
+//! Each has a `_within` form spending a caller's [`Budget`] (module docs of
+//! [`super`]); the plain forms spend [`Budget::unlimited`].
 
 pub use super::contact_point::{
-    common_points_at, contact_points, CommonLocus, CommonPoint, CommonPointKind, ContactPoints,
+    common_points_at, common_points_at_within, contact_points, contact_points_within, CommonLocus,
+    CommonPoint, CommonPointKind, ContactPoints,
 };
 use super::instants::pencil_entries;
 pub use super::range::TimeRange;
@@ -31,8 +35,10 @@ use crate::classify::Classification;
 use crate::error::Error;
 use crate::io::MovingMatrix;
 use crate::solids::{
-    ellipsoid_orientation, leading_minors, relation_from_signs, solid_relation, SolidRelation,
+    ellipsoid_orientation, leading_minors, relation_from_signs, solid_relation_within,
+    SolidRelation,
 };
+use qsic_algebra::budget::{Budget, Exhausted};
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring};
 
 /// The least `t` of a range where a closed condition holds.
@@ -80,8 +86,23 @@ pub fn first_contact(
     b: &MovingMatrix,
     range: &TimeRange,
 ) -> Result<Option<FirstContact>, Error> {
+    first_contact_within(a, b, range, &Budget::unlimited())
+}
+
+/// [`first_contact`] spending `budget` on the variations of the motion and the class at the
+/// start of the range.
+///
+/// # Errors
+/// As [`first_contact`]; [`Error::BudgetExceeded`] when the budget runs out.
+pub fn first_contact_within(
+    a: &MovingMatrix,
+    b: &MovingMatrix,
+    range: &TimeRange,
+    budget: &Budget,
+) -> Result<Option<FirstContact>, Error> {
     let pencil = MovingPencil::new(a.clone(), b.clone())?;
-    first_contact_in(&pencil, &pencil.variations()?, range)
+    let motion = pencil.variations_within(None, None, budget)?;
+    first_contact_in_within(&pencil, &motion, range, budget)
 }
 
 /// [`first_contact`] from a pencil and its variations, computed once.
@@ -92,6 +113,19 @@ pub fn first_contact_in(
     pencil: &MovingPencil,
     motion: &Motion,
     range: &TimeRange,
+) -> Result<Option<FirstContact>, Error> {
+    first_contact_in_within(pencil, motion, range, &Budget::unlimited())
+}
+
+/// [`first_contact_in`] spending `budget` on the class at the start of the range.
+///
+/// # Errors
+/// As [`first_contact_within`].
+pub fn first_contact_in_within(
+    pencil: &MovingPencil,
+    motion: &Motion,
+    range: &TimeRange,
+    budget: &Budget,
 ) -> Result<Option<FirstContact>, Error> {
     // On the whole line interval i + 1 starts at instant i.
     let interval_meets = |i: usize| has_real_points(&motion.intervals[i].classification);
@@ -108,7 +142,7 @@ pub fn first_contact_in(
             first_interval: || interval_meets(0),
             after_instant: |i: usize| interval_meets(i + 1),
             instant: instant_meets,
-            at_start: |t: &RBig| has_real_points(&pencil.classify_at(t)?),
+            at_start: |t: &RBig| has_real_points(&pencil.classify_at_within(t, budget)?),
         },
     )
 }
@@ -326,6 +360,19 @@ pub fn solid_motion(a: &MovingMatrix, b: &MovingMatrix) -> Result<SolidMotion, E
     solid_motion_of(&MovingPencil::new(a.clone(), b.clone())?)
 }
 
+/// [`solid_motion`] spending `budget` ([`solid_motion_in_within`] on the whole line).
+///
+/// # Errors
+/// As [`solid_motion`]; [`Error::BudgetExceeded`] when the budget runs out.
+pub fn solid_motion_within(
+    a: &MovingMatrix,
+    b: &MovingMatrix,
+    budget: &Budget,
+) -> Result<SolidMotion, Error> {
+    let pencil = MovingPencil::new(a.clone(), b.clone())?;
+    solid_motion_in_within(&pencil, &TimeRange::all(), budget)
+}
+
 /// [`solid_motion`] of a pencil already built.
 ///
 /// # Errors
@@ -360,6 +407,20 @@ pub fn solid_motion_of(pencil: &MovingPencil) -> Result<SolidMotion, Error> {
 /// # Ok::<(), qsic::Error>(())
 /// ```
 pub fn solid_motion_in(pencil: &MovingPencil, range: &TimeRange) -> Result<SolidMotion, Error> {
+    solid_motion_in_within(pencil, range, &Budget::unlimited())
+}
+
+/// [`solid_motion_in`] spending `budget`: the candidate stage as
+/// [`MovingPencil::variations_within`], each rational state as the pencil's analysis, each
+/// irrational one as the classification at `α`.
+///
+/// # Errors
+/// As [`solid_motion`]; [`Error::BudgetExceeded`] when the budget runs out.
+pub fn solid_motion_in_within(
+    pencil: &MovingPencil,
+    range: &TimeRange,
+    budget: &Budget,
+) -> Result<SolidMotion, Error> {
     let exact = |v: &RBig| AlgebraicReal::from_rational(v.clone());
     let (lo, hi) = (range.from().map(exact), range.to().map(exact));
     if let (Some(a), Some(b)) = (range.from(), range.to()) {
@@ -368,24 +429,24 @@ pub fn solid_motion_in(pencil: &MovingPencil, range: &TimeRange) -> Result<Solid
                 intervals: Vec::new(),
                 instants: vec![SolidInstant {
                     t: exact(a),
-                    state: state_at_rational(pencil, a),
+                    state: state_at_rational(pencil, a, budget)?,
                 }],
             });
         }
     }
-    let mut polys = pencil.candidate_polynomials()?;
+    let mut polys = pencil.candidate_polynomials_within(budget)?;
     for m in [pencil.a(), pencil.b()] {
         polys.extend(leading_minors(m.numerators()));
     }
     polys.retain(|p| !p.is_zero());
-    let candidates: Vec<AlgebraicReal> = super::real_roots_of_all(&polys)
+    let candidates: Vec<AlgebraicReal> = super::real_roots_of_all(&polys, budget)?
         .into_iter()
         .filter(|c| lo.as_ref().is_none_or(|a| a < c) && hi.as_ref().is_none_or(|b| c < b))
         .collect();
     let samples = super::samples_between(&candidates, lo.as_ref(), hi.as_ref());
     let mut interval_states = Vec::with_capacity(samples.len());
     for s in &samples {
-        interval_states.push(state_at_rational(pencil, s));
+        interval_states.push(state_at_rational(pencil, s, budget)?);
     }
     let mut intervals = vec![SolidInterval {
         from: lo.clone(),
@@ -396,8 +457,8 @@ pub fn solid_motion_in(pencil: &MovingPencil, range: &TimeRange) -> Result<Solid
     let mut instants = Vec::new();
     for (j, t) in candidates.into_iter().enumerate() {
         let state = match t.as_rational() {
-            Some(v) => state_at_rational(pencil, v),
-            None => state_at_irrational(pencil, &t),
+            Some(v) => state_at_rational(pencil, v, budget)?,
+            None => state_at_irrational(pencil, &t, budget)?,
         };
         let right = &interval_states[j + 1];
         let left = &intervals.last().expect("one interval at least").state;
@@ -417,7 +478,7 @@ pub fn solid_motion_in(pencil: &MovingPencil, range: &TimeRange) -> Result<Solid
     // The ends of the range, where their relation differs from the interval beside them.
     for (end, first) in [(range.from(), true), (range.to(), false)] {
         let Some(v) = end else { continue };
-        let state = state_at_rational(pencil, v);
+        let state = state_at_rational(pencil, v, budget)?;
         let beside = if first {
             intervals.first()
         } else {
@@ -438,7 +499,12 @@ pub fn solid_motion_in(pencil: &MovingPencil, range: &TimeRange) -> Result<Solid
     })
 }
 
-fn state_at_rational(pencil: &MovingPencil, t: &RBig) -> SolidState {
+/// The relation at a rational `t`; `Err` only when the budget runs out.
+fn state_at_rational(
+    pencil: &MovingPencil,
+    t: &RBig,
+    budget: &Budget,
+) -> Result<SolidState, Exhausted> {
     let quadric = |m: &MovingMatrix, name: &str| {
         m.quadric_at(t).map_err(|e| {
             SolidState::NotEllipsoids(match e {
@@ -448,20 +514,28 @@ fn state_at_rational(pencil: &MovingPencil, t: &RBig) -> SolidState {
         })
     };
     let pair = quadric(pencil.a(), "A").and_then(|a| Ok((a, quadric(pencil.b(), "B")?)));
-    match pair {
-        Ok((a, b)) => match solid_relation(&a, &b) {
+    Ok(match pair {
+        Ok((a, b)) => match solid_relation_within(&a, &b, budget) {
             Ok(r) => SolidState::Relation(r),
             Err(Error::NotEllipsoid(why)) => SolidState::NotEllipsoids(why),
+            Err(Error::BudgetExceeded { limit }) => return Err(Exhausted { limit }),
             Err(_) => SolidState::Undetermined,
         },
         Err(s) => s,
-    }
+    })
 }
 
 /// The relation at an irrational `α`: the minors' signs at `α` decide ellipsoids and their
 /// orientation, the 2×2 minors of the pair `A ∝ B`, then the pencil over `ℚ(α)`.
-fn state_at_irrational(pencil: &MovingPencil, alpha: &AlgebraicReal) -> SolidState {
+fn state_at_irrational(
+    pencil: &MovingPencil,
+    alpha: &AlgebraicReal,
+    budget: &Budget,
+) -> Result<SolidState, Exhausted> {
     let (ma, mb) = (pencil.a().numerators(), pencil.b().numerators());
+    // the minors' and the pair's 2×2 minors' signs at α: a zero test or an enclosure each
+    let spend = super::irrational::Spend::new(budget, alpha);
+    spend.products(8 + 120)?;
     let orientation = |m: &[[Poly; 4]; 4], name: &str| {
         let signs = leading_minors(m).map(|p| alpha.sign_of(&p));
         ellipsoid_orientation(signs)
@@ -469,31 +543,31 @@ fn state_at_irrational(pencil: &MovingPencil, alpha: &AlgebraicReal) -> SolidSta
     };
     let (negate_a, negate_b) = match (orientation(ma, "A"), orientation(mb, "B")) {
         (Ok(a), Ok(b)) => (a, b),
-        (Err(s), _) | (_, Err(s)) => return s,
+        (Err(s), _) | (_, Err(s)) => return Ok(s),
     };
     let (va, vb): (Vec<&Poly>, Vec<&Poly>) =
         (ma.iter().flatten().collect(), mb.iter().flatten().collect());
     let proportional = (0..16)
         .all(|i| (i + 1..16).all(|j| alpha.is_root_of(&(&(va[i] * vb[j]) - &(va[j] * vb[i])))));
     if proportional {
-        return SolidState::Relation(SolidRelation::Equal);
+        return Ok(SolidState::Relation(SolidRelation::Equal));
     }
     let oriented = |m: &[[Poly; 4]; 4], negate: bool| -> [[Poly; 4]; 4] {
         let k = Poly::constant(if negate { -IBig::ONE } else { IBig::ONE });
         m.clone().map(|row| row.map(|p| p.mul(&k)))
     };
     // the fast route (one double root, certified signs), else the reference
-    let signs = irrational_fast::pencil_signs_at_irrational_fast(
-        &pencil.polys.oriented(negate_a, negate_b),
-        alpha,
-    )
-    .or_else(|| {
-        let entries = pencil_entries(&oriented(ma, negate_a), &oriented(mb, negate_b));
-        irrational::pencil_signs_at_irrational(&entries, alpha)
-    });
-    signs.map_or(SolidState::Undetermined, |s| {
+    let polys = pencil.fast_polys(budget)?.oriented(negate_a, negate_b);
+    let signs = match irrational_fast::pencil_signs_at_irrational_fast(&polys, alpha, budget)? {
+        Some(s) => Some(s),
+        None => {
+            let entries = pencil_entries(&oriented(ma, negate_a), &oriented(mb, negate_b));
+            irrational::pencil_signs_at_irrational(&entries, alpha, budget)?
+        }
+    };
+    Ok(signs.map_or(SolidState::Undetermined, |s| {
         SolidState::Relation(relation_from_signs(&s))
-    })
+    }))
 }
 
 #[cfg(test)]
@@ -519,8 +593,11 @@ mod tests {
             let p = MovingPencil::new(moving(a).unwrap(), moving(b).unwrap()).unwrap();
             for n in -16..=16 {
                 let t = RBig::from_parts_signed(n.into(), 4u8.into());
-                let rational = state_at_rational(&p, &t);
-                let via_field = state_at_irrational(&p, &AlgebraicReal::from_rational(t.clone()));
+                let unlimited = Budget::unlimited();
+                let rational = state_at_rational(&p, &t, &unlimited).unwrap();
+                let via_field =
+                    state_at_irrational(&p, &AlgebraicReal::from_rational(t.clone()), &unlimited)
+                        .unwrap();
                 match (&rational, &via_field) {
                     // the messages name the same quadric and kind
                     (SolidState::NotEllipsoids(x), SolidState::NotEllipsoids(y)) => {

@@ -27,7 +27,8 @@ use super::instants::squarefree_decomposition_t;
 use super::{irrational, MovingPencil};
 use crate::classify::{Classification, ComponentKind, SingularPointKind};
 use crate::error::Error;
-use crate::param::{parameterize, Point, RealPiece};
+use crate::param::{parameterize_within, Point, RealPiece};
+use qsic_algebra::budget::{Budget, Exhausted};
 use qsic_algebra::field::number_field::{NumberField, NumberFieldElement as K};
 use qsic_algebra::linalg::minors::det;
 use qsic_algebra::linalg::Matrix;
@@ -127,9 +128,23 @@ pub struct ContactPoints {
 /// # Ok::<(), qsic::Error>(())
 /// ```
 pub fn common_points_at(pencil: &MovingPencil, t: &AlgebraicReal) -> Result<CommonLocus, Error> {
+    common_points_at_within(pencil, t, &Budget::unlimited())
+}
+
+/// [`common_points_at`] spending `budget`: at a rational `t` the curve
+/// ([`crate::param::parameterize_within`]), at an irrational one the classification at `α`
+/// and the kernels over `ℚ(α)` (their products charged up front).
+///
+/// # Errors
+/// As [`common_points_at`]; [`Error::BudgetExceeded`] when the budget runs out.
+pub fn common_points_at_within(
+    pencil: &MovingPencil,
+    t: &AlgebraicReal,
+    budget: &Budget,
+) -> Result<CommonLocus, Error> {
     match t.as_rational() {
-        Some(v) => common_points_at_rational(pencil, v),
-        None => Ok(common_points_at_irrational(pencil, t)),
+        Some(v) => common_points_at_rational(pencil, v, budget),
+        None => Ok(common_points_at_irrational(pencil, t, budget)?),
     }
 }
 
@@ -143,6 +158,19 @@ pub fn contact_points(
     first: &FirstContact,
     range: &TimeRange,
 ) -> Result<Option<ContactPoints>, Error> {
+    contact_points_within(pencil, first, range, &Budget::unlimited())
+}
+
+/// [`contact_points`] spending `budget` ([`common_points_at_within`]).
+///
+/// # Errors
+/// As [`common_points_at_within`].
+pub fn contact_points_within(
+    pencil: &MovingPencil,
+    first: &FirstContact,
+    range: &TimeRange,
+    budget: &Budget,
+) -> Result<Option<ContactPoints>, Error> {
     let FirstContact::At(t) = first else {
         return Ok(None);
     };
@@ -150,16 +178,20 @@ pub fn contact_points(
     Ok(Some(ContactPoints {
         t: t.clone(),
         at_start,
-        locus: common_points_at(pencil, t)?,
+        locus: common_points_at_within(pencil, t, budget)?,
     }))
 }
 
-fn common_points_at_rational(pencil: &MovingPencil, t: &RBig) -> Result<CommonLocus, Error> {
+fn common_points_at_rational(
+    pencil: &MovingPencil,
+    t: &RBig,
+    budget: &Budget,
+) -> Result<CommonLocus, Error> {
     let (a, b) = (pencil.a().quadric_at(t)?, pencil.b().quadric_at(t)?);
     if a.integer_matrix().is_proportional(b.integer_matrix()) {
         return Ok(CommonLocus::SameQuadric);
     }
-    let curve = match parameterize(&a, &b) {
+    let curve = match parameterize_within(&a, &b, budget) {
         Ok(c) => c,
         Err(Error::Unsupported(why)) | Err(Error::Algebra(why)) => {
             return Ok(CommonLocus::NotComputed(format!(
@@ -223,7 +255,16 @@ fn form(m: &[[K; 4]; 4], x: &[K], y: &[K]) -> K {
     acc
 }
 
-fn common_points_at_irrational(pencil: &MovingPencil, alpha: &AlgebraicReal) -> CommonLocus {
+/// Products in `K` charged for the kernels and points over `K` at an irrational instant (the
+/// determinant and gcds of degree 4, a few kernels of 4×4 members, the points on them).
+const POINT_PRODUCTS: usize = 3_000;
+
+fn common_points_at_irrational(
+    pencil: &MovingPencil,
+    alpha: &AlgebraicReal,
+    budget: &Budget,
+) -> Result<CommonLocus, Exhausted> {
+    irrational::Spend::new(budget, alpha).products(POINT_PRODUCTS)?;
     let field = NumberField::new(alpha);
     let at = |m: &[[Poly; 4]; 4]| -> [[K; 4]; 4] {
         std::array::from_fn(|i| std::array::from_fn(|j| field.integer_element(&m[i][j])))
@@ -234,7 +275,7 @@ fn common_points_at_irrational(pencil: &MovingPencil, alpha: &AlgebraicReal) -> 
     let proportional =
         (0..16).all(|i| (i + 1..16).all(|j| va[i].mul(vb[j]).sub(&va[j].mul(vb[i])).is_zero()));
     if proportional {
-        return CommonLocus::SameQuadric;
+        return Ok(CommonLocus::SameQuadric);
     }
     let not_computed = |why: &str| {
         CommonLocus::NotComputed(format!(
@@ -242,9 +283,30 @@ fn common_points_at_irrational(pencil: &MovingPencil, alpha: &AlgebraicReal) -> 
             alpha.to_f64()
         ))
     };
-    let Some(class) = irrational::classify_at_irrational(&pencil.entries, alpha) else {
-        return not_computed("the class is not computed");
+    let Some(class) = irrational::classify_at_irrational(&pencil.entries, alpha, budget)? else {
+        return Ok(not_computed("the class is not computed"));
     };
+    let factors_t = squarefree_decomposition_t(pencil.characteristic(), budget)?;
+    Ok(points_at_irrational(
+        &a,
+        &b,
+        &class,
+        &factors_t,
+        &field,
+        not_computed,
+    ))
+}
+
+/// The points of [`common_points_at_irrational`] from `A(α)`, `B(α)` over `K`, the class at
+/// `α` and the square-free factors of `f` over `ℚ(t)`.
+fn points_at_irrational(
+    a: &Matrix4,
+    b: &Matrix4,
+    class: &Classification,
+    factors_t: &[(super::instants::TPoly, usize)],
+    field: &NumberField,
+    not_computed: impl Fn(&str) -> CommonLocus,
+) -> CommonLocus {
     // f(λ) = det(λA − B) over K
     let pencil_entry = |i: usize, j: usize| Poly::new(vec![b[i][j].neg(), a[i][j].clone()]);
     let lambda_a_minus_b: [[Poly<K>; 4]; 4] =
@@ -255,7 +317,7 @@ fn common_points_at_irrational(pencil: &MovingPencil, alpha: &AlgebraicReal) -> 
     }
     // the finite multiple roots, split by the square-free factors of f over ℚ(t) at α
     let multiple = f.gcd_monic(&f.derivative()).squarefree_part_field();
-    let factors: Vec<Poly<K>> = squarefree_decomposition_t(pencil.characteristic())
+    let factors: Vec<Poly<K>> = factors_t
         .iter()
         .map(|(g, _)| g.map(|c| field.integer_element(c)))
         .collect();
@@ -266,11 +328,11 @@ fn common_points_at_irrational(pencil: &MovingPencil, alpha: &AlgebraicReal) -> 
         }
         let l0 = piece.coeff(0).neg().div(&piece.coeff(1)).expect("degree 1");
         let s = std::array::from_fn(|i| std::array::from_fn(|j| l0.mul(&a[i][j]).sub(&b[i][j])));
-        members.push((s, &a));
+        members.push((s, a));
     }
     if f.degree().unwrap_or(0) + 2 <= 4 {
         // λ = ∞ is a multiple root: the member A, its kernel met with B
-        members.push((a.clone(), &b));
+        members.push((a.clone(), b));
     }
     let mut points: Vec<Point> = Vec::new();
     for (s, q) in &members {
@@ -324,7 +386,7 @@ fn common_points_at_irrational(pencil: &MovingPencil, alpha: &AlgebraicReal) -> 
     let kind = match (curves, d.singular_points.as_slice()) {
         (0, _) if points.len() == isolated => CommonPointKind::Isolated,
         (_, [s]) if isolated == 0 && points.len() == singular => CommonPointKind::Singular(s.kind),
-        _ => return not_computed(&mismatch(&class, points.len())),
+        _ => return not_computed(&mismatch(class, points.len())),
     };
     let points = points
         .iter()

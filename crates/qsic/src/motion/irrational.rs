@@ -9,6 +9,13 @@
 //! typed by its inertia in `K`; a singular pencil at `α` by the singular classifier
 //! instantiated over `K` ([`crate::classify::OrderedDomain`]: Kronecker structure, common
 //! singular points, the projected pencil of conics, all decided by exact signs in `K`).
+//!
+//! **Work units** ([`Spend`]): a product in `K` is priced as `n²` products of `α`'s
+//! coefficient size (`n = deg α`); the minors of the pencil over `K` cost their products up
+//! front, each gcd and remainder step over `K[λ]` its coefficient operations, each bisection
+//! step of the isolation the evaluation of its Sturm sequence. The singular classification
+//! over `K` (which reads signs through [`OrderedDomain`]) is charged up front, as a few
+//! hundred remainder sequences of degree 4.
 
 use super::instants::TPoly;
 use crate::classify::{
@@ -16,10 +23,59 @@ use crate::classify::{
     OrderedDomain,
 };
 use crate::pencil::SigItem;
+use qsic_algebra::budget::{product_units, Budget, Exhausted};
 use qsic_algebra::field::number_field::{NumberField, NumberFieldElement as K};
 use qsic_algebra::linalg::minors::SmallMinors;
 use qsic_algebra::matrix::Inertia;
 use qsic_algebra::{AlgebraicReal, Field, IBig, Poly, RBig, Ring, Sign};
+
+/// The budget of one classification at `α` and the units of one product in `K = ℚ(α)`.
+#[derive(Clone, Copy)]
+pub(crate) struct Spend<'a> {
+    budget: &'a Budget,
+    product: u64,
+}
+
+impl<'a> Spend<'a> {
+    /// For `K = ℚ(α)`: a product of two elements is `n²` coefficient products of the size
+    /// of `α`'s defining polynomial (`n` its degree) and its reduction as much again.
+    pub(crate) fn new(budget: &'a Budget, alpha: &AlgebraicReal) -> Spend<'a> {
+        let (n, bits) = (
+            alpha.poly().degree().unwrap_or(1).max(1),
+            alpha.poly().max_bits(),
+        );
+        let product = (2 * n * n) as u64;
+        Spend {
+            budget,
+            product: product.saturating_mul(product_units(bits, bits)),
+        }
+    }
+
+    /// Spends `count` products in `K`.
+    pub(crate) fn products(&self, count: usize) -> Result<(), Exhausted> {
+        self.budget
+            .spend((count as u64).saturating_mul(self.product))
+    }
+
+    /// Spends a remainder or gcd step on polynomials of degrees `m ≥ n` over `K`.
+    pub(crate) fn step(&self, m: usize, n: usize) -> Result<(), Exhausted> {
+        self.products((m.saturating_sub(n) + 2) * (n + 1))
+    }
+
+    /// Spends a gcd of polynomials of degrees `m`, `n` over `K` (Euclid's `min(m, n)` steps).
+    pub(crate) fn gcd(&self, m: usize, n: usize) -> Result<(), Exhausted> {
+        let (hi, lo) = (m.max(n), m.min(n));
+        self.products((hi + 2) * (lo + 1) * (lo + 1))
+    }
+}
+
+/// Products in `K` of the minors of a 4×4 pencil over `K` (every minor of every order, by
+/// expansion, with the principal-minor sums), charged before they are formed.
+const MINOR_PRODUCTS: usize = 400;
+
+/// Products in `K` charged for the classification of a singular pencil at `α` (its rank,
+/// kernel and projected-conic computations; about a hundred sign queries of degree ≤ 4).
+const SINGULAR_PRODUCTS: usize = 4_000;
 
 /// Bisection steps allowed for isolating the roots (distinct roots of a quartic over `K`).
 const MAX_STEPS: usize = 20_000;
@@ -49,7 +105,12 @@ struct Analysis {
 
 /// The analysis at `α`; `None` when the pencil at `α` is singular or a single quadric, or
 /// the isolation exceeds its budget.
-fn analyze(entries: &[[TPoly; 4]; 4], alpha: &AlgebraicReal) -> Option<Analysis> {
+fn analyze(
+    entries: &[[TPoly; 4]; 4],
+    alpha: &AlgebraicReal,
+    spend: Spend<'_>,
+) -> Result<Option<Analysis>, Exhausted> {
+    spend.products(MINOR_PRODUCTS)?;
     let field = NumberField::new(alpha);
     let e: [[KPoly; 4]; 4] = std::array::from_fn(|i| {
         std::array::from_fn(|j| entries[i][j].map(|c| field.integer_element(c)))
@@ -57,7 +118,7 @@ fn analyze(entries: &[[TPoly; 4]; 4], alpha: &AlgebraicReal) -> Option<Analysis>
     let a: Vec<K> = e.iter().flatten().map(|p| p.coeff(1)).collect();
     let b: Vec<K> = e.iter().flatten().map(|p| p.coeff(0)).collect();
     if a.iter().all(Ring::is_zero) || b.iter().all(Ring::is_zero) || proportional(&a, &b) {
-        return None;
+        return Ok(None);
     }
     // the chart is λA − B with A, −B the coefficients of λ¹, λ⁰
     let (ma, mb): ([[K; 4]; 4], [[K; 4]; 4]) = (
@@ -67,9 +128,11 @@ fn analyze(entries: &[[TPoly; 4]; 4], alpha: &AlgebraicReal) -> Option<Analysis>
     let minors = SmallMinors::of_pencil(&ma, &mb);
     let f = minors.minor(&[0, 1, 2, 3], &[0, 1, 2, 3]).clone();
     if f.is_zero() {
-        return None;
+        return Ok(None);
     }
     let m_inf = 4 - f.degree().unwrap_or(0);
+    // Yun over K: at most four gcds of degree ≤ 4
+    spend.products(4 * 6 * 5 * 5)?;
     let decomposition = f.squarefree_decomposition_field();
     let simple = m_inf <= 1 && decomposition.iter().all(|(_, m)| *m == 1);
 
@@ -82,6 +145,7 @@ fn analyze(entries: &[[TPoly; 4]; 4], alpha: &AlgebraicReal) -> Option<Analysis>
             for m in minors.of_order(k) {
                 if !m.is_zero() {
                     mu = mu.min(k - m.degree().unwrap_or(0));
+                    spend.gcd(g.degree().unwrap_or(0), m.degree().unwrap_or(0))?;
                     g = g.gcd_monic(m);
                 }
             }
@@ -96,7 +160,7 @@ fn analyze(entries: &[[TPoly; 4]; 4], alpha: &AlgebraicReal) -> Option<Analysis>
         for (k, (dk, _)) in d.iter().enumerate() {
             let mut next = Vec::new();
             for (p, ords) in split {
-                for (h, j) in split_by_order(&p, dk) {
+                for (h, j) in split_by_order(&p, dk, spend)? {
                     let mut o = ords;
                     o[k] = j;
                     next.push((h, o));
@@ -111,8 +175,13 @@ fn analyze(entries: &[[TPoly; 4]; 4], alpha: &AlgebraicReal) -> Option<Analysis>
     let product = pieces
         .iter()
         .fold(KPoly::constant(K::one()), |acc, (p, _, _)| &acc * p);
-    let roots = isolate(&product)?;
-    let sturms: Vec<Vec<KPoly>> = pieces.iter().map(|(p, _, _)| sturm(p, None)).collect();
+    let Some(roots) = isolate(&product, spend)? else {
+        return Ok(None);
+    };
+    let mut sturms: Vec<Vec<KPoly>> = Vec::with_capacity(pieces.len());
+    for (p, _, _) in &pieces {
+        sturms.push(sturm(p, None, spend)?);
+    }
     let principal: [KPoly; 4] = minors
         .principal_minor_sums()
         .try_into()
@@ -120,19 +189,28 @@ fn analyze(entries: &[[TPoly; 4]; 4], alpha: &AlgebraicReal) -> Option<Analysis>
 
     let mut found: Vec<(usize, Option<Inertia>)> = Vec::new(); // (piece, inertia if multiple)
     for root in &roots {
-        let piece = (0..pieces.len()).find(|&i| match root {
+        spend.products(2 * 5 * pieces.len() * 5)?;
+        let Some(piece) = (0..pieces.len()).find(|&i| match root {
             Root::Exact(x) => pieces[i].0.eval(&K::rational(x.clone())).is_zero(),
             Root::Open(lo, hi) => variations(&sturms[i], lo) > variations(&sturms[i], hi),
-        })?;
-        let inertia = (pieces[piece].1 > 1).then(|| {
-            let signs = principal
-                .each_ref()
-                .map(|q| sign_at_root(&product, q, root));
-            Inertia::from_minor_sum_signs(signs)
-        });
+        }) else {
+            return Ok(None);
+        };
+        let inertia = if pieces[piece].1 > 1 {
+            let mut signs = [Sign::Zero; 4];
+            for (k, q) in principal.iter().enumerate() {
+                signs[k] = sign_at_root(&product, q, root, spend)?;
+            }
+            Some(Inertia::from_minor_sum_signs(signs))
+        } else {
+            None
+        };
         found.push((piece, inertia));
     }
-    let samples = arc_samples(&product, &roots)?;
+    let Some(samples) = arc_samples(&product, &roots, spend)? else {
+        return Ok(None);
+    };
+    spend.products(4 * 5 * samples.len())?;
     let arcs: Vec<(RBig, Inertia)> = samples
         .into_iter()
         .map(|x| {
@@ -155,7 +233,7 @@ fn analyze(entries: &[[TPoly; 4]; 4], alpha: &AlgebraicReal) -> Option<Analysis>
             (piece, inertia.unwrap_or(simple))
         })
         .collect();
-    Some(Analysis {
+    Ok(Some(Analysis {
         pieces,
         roots,
         product,
@@ -164,7 +242,7 @@ fn analyze(entries: &[[TPoly; 4]; 4], alpha: &AlgebraicReal) -> Option<Analysis>
         m_inf,
         d,
         principal,
-    })
+    }))
 }
 
 /// A single quadric at `α` (`A(α) ∝ B(α)`, or one of them zero) typed by its inertia, read
@@ -223,16 +301,24 @@ fn singular_at_irrational(
 }
 
 /// The classification of `λA(α) − B(α)` at `α`: a single quadric, a singular or a regular
-/// pencil; `None` only when the root isolation of a regular pencil exceeds its budget.
+/// pencil; `None` only when the root isolation of a regular pencil exceeds its step limit,
+/// spending `budget` ([`Spend`]).
+///
+/// # Errors
+/// [`Exhausted`] when the budget runs out.
 pub(crate) fn classify_at_irrational(
     entries: &[[TPoly; 4]; 4],
     alpha: &AlgebraicReal,
-) -> Option<Classification> {
+    budget: &Budget,
+) -> Result<Option<Classification>, Exhausted> {
+    let spend = Spend::new(budget, alpha);
+    spend.products(MINOR_PRODUCTS)?;
     if let Some(single) = single_at_irrational(entries, alpha) {
-        return Some(single);
+        return Ok(Some(single));
     }
-    let Some(an) = analyze(entries, alpha) else {
-        return singular_at_irrational(entries, alpha);
+    let Some(an) = analyze(entries, alpha, spend)? else {
+        spend.products(SINGULAR_PRODUCTS)?;
+        return Ok(singular_at_irrational(entries, alpha));
     };
     let mut real_blocks: Vec<Vec<u8>> = Vec::new();
     let mut complex_blocks: Vec<Vec<u8>> = Vec::new();
@@ -274,7 +360,11 @@ pub(crate) fn classify_at_irrational(
         .iter()
         .map(Vec::as_slice)
         .chain(complex_blocks.iter().map(Vec::as_slice));
-    Some(classify_regular_parts(structures, real_blocks.len(), seq))
+    Ok(Some(classify_regular_parts(
+        structures,
+        real_blocks.len(),
+        seq,
+    )))
 }
 
 /// The signs and inertias along the real λ-line of `λA(α) − B(α)` for a regular pencil
@@ -282,16 +372,24 @@ pub(crate) fn classify_at_irrational(
 /// consecutive real roots, the side of `0` of its rational sample and the inertia there;
 /// for each real root, its sign and the inertia of its member. `None` as [`analyze`], or
 /// when `A(α)` or `B(α)` is singular.
+///
+/// # Errors
+/// [`Exhausted`] when the budget runs out.
 pub(crate) fn pencil_signs_at_irrational(
     entries: &[[TPoly; 4]; 4],
     alpha: &AlgebraicReal,
-) -> Option<crate::solids::PencilSigns> {
-    let an = analyze(entries, alpha)?;
+    budget: &Budget,
+) -> Result<Option<crate::solids::PencilSigns>, Exhausted> {
+    let spend = Spend::new(budget, alpha);
+    let Some(an) = analyze(entries, alpha, spend)? else {
+        return Ok(None);
+    };
     let zero = RBig::ZERO;
     if an.m_inf > 0 || an.product.eval(&K::rational(zero.clone())).is_zero() {
-        return None;
+        return Ok(None);
     }
-    let seq = sturm(&an.product, None);
+    let seq = sturm(&an.product, None, spend)?;
+    spend.products(5 * 5 * (an.roots.len() + 1))?;
     let at_zero = variations(&seq, &zero);
     let roots = an
         .roots
@@ -318,7 +416,7 @@ pub(crate) fn pencil_signs_at_irrational(
         .iter()
         .map(|(x, inertia)| (rational_sign(x), *inertia))
         .collect();
-    Some(crate::solids::PencilSigns { arcs, roots })
+    Ok(Some(crate::solids::PencilSigns { arcs, roots }))
 }
 
 fn rational_sign(x: &RBig) -> Sign {
@@ -336,7 +434,13 @@ impl OrderedDomain for K {
     /// The variations of the Sturm–Tarski sequence at `−∞` minus at `+∞` (signs of the
     /// leading coefficients).
     fn tarski_query(p: &KPoly, q: &KPoly) -> i64 {
-        let seq = sturm(p, Some(q));
+        // charged up front by the caller (SINGULAR_PRODUCTS)
+        let unlimited = Budget::unlimited();
+        let spend = Spend {
+            budget: &unlimited,
+            product: 0,
+        };
+        let seq = sturm(p, Some(q), spend).expect("an unlimited budget is never spent");
         let at = |negative: bool| {
             qsic_algebra::sign::count_variations(seq.iter().map(|s| {
                 let lead = s.leading().sign();
@@ -357,11 +461,18 @@ fn proportional(a: &[K], b: &[K]) -> bool {
 }
 
 /// Splits the square-free `p` into the parts whose roots have order `j` in `d`.
-fn split_by_order(p: &KPoly, d: &KPoly) -> Vec<(KPoly, usize)> {
+fn split_by_order(
+    p: &KPoly,
+    d: &KPoly,
+    spend: Spend<'_>,
+) -> Result<Vec<(KPoly, usize)>, Exhausted> {
     let mut out = Vec::new();
     let mut rest = p.clone();
     if !d.is_zero() {
+        let n = d.degree().unwrap_or(0);
+        spend.products(4 * (n + 2) * (n + 1) * (n + 1))?;
         for (dj, j) in d.squarefree_decomposition_field() {
+            spend.gcd(rest.degree().unwrap_or(0), dj.degree().unwrap_or(0))?;
             let h = rest.gcd_monic(&dj);
             if h.degree().unwrap_or(0) > 0 {
                 rest = rest.div_rem(&h).0;
@@ -372,7 +483,7 @@ fn split_by_order(p: &KPoly, d: &KPoly) -> Vec<(KPoly, usize)> {
     if rest.degree().unwrap_or(0) > 0 {
         out.push((rest, 0));
     }
-    out
+    Ok(out)
 }
 
 /// Jordan block sizes from the orders of a root in `D₁, D₂, D₃` and in `f = D₄`.
@@ -392,19 +503,29 @@ fn blocks_from_orders(m: usize, ords: [usize; 3]) -> Vec<u8> {
 
 /// The signed remainder sequence of `p` and `p′·q` (`q = 1` without `q`): a Sturm sequence,
 /// or the Sturm–Tarski sequence of `q` on the roots of `p`.
-fn sturm(p: &KPoly, q: Option<&KPoly>) -> Vec<KPoly> {
+fn sturm(p: &KPoly, q: Option<&KPoly>, spend: Spend<'_>) -> Result<Vec<KPoly>, Exhausted> {
     let second = match q {
-        Some(q) => &p.derivative() * q,
+        Some(q) => {
+            spend.products((p.degree().unwrap_or(0) + 1) * (q.degree().unwrap_or(0) + 1))?;
+            &p.derivative() * q
+        }
         None => p.derivative(),
     };
     let mut seq = vec![p.clone()];
     let mut next = second;
     while !next.is_zero() {
-        let r = seq.last().expect("nonempty").rem(&next);
+        let last = seq.last().expect("nonempty");
+        spend.step(last.degree().unwrap_or(0), next.degree().unwrap_or(0))?;
+        let r = last.rem(&next);
         seq.push(next);
         next = -&r;
     }
-    seq
+    Ok(seq)
+}
+
+/// The products in `K` of evaluating a sequence at a rational (Horner on each).
+fn evaluation_products(seq: &[KPoly]) -> usize {
+    seq.iter().map(|p| p.degree().unwrap_or(0) + 1).sum()
 }
 
 /// Sign changes of the sequence at a rational `x`.
@@ -421,20 +542,26 @@ enum Root {
 
 /// The real roots of the square-free `p ∈ K[λ]`, increasing: bisection of `(−B, B]` with
 /// Sturm counts (`V(a) − V(b)` roots in `(a, b]`). `None` past [`MAX_STEPS`].
-fn isolate(p: &KPoly) -> Option<Vec<Root>> {
+fn isolate(p: &KPoly, spend: Spend<'_>) -> Result<Option<Vec<Root>>, Exhausted> {
     if p.degree().unwrap_or(0) == 0 {
-        return Some(Vec::new());
+        return Ok(Some(Vec::new()));
     }
-    let seq = sturm(p, None);
-    let bound = RBig::from(root_bound(p)?);
+    let seq = sturm(p, None, spend)?;
+    spend.products(4 * p.degree().unwrap_or(0) * 64)?;
+    let Some(bound) = root_bound(p) else {
+        return Ok(None);
+    };
+    let bound = RBig::from(bound);
     let mut work = vec![(-bound.clone(), bound)];
     let mut out: Vec<Root> = Vec::new();
     let mut steps = 0;
+    let per_step = 2 * evaluation_products(&seq) + 2 * (p.degree().unwrap_or(0) + 1);
     while let Some((lo, hi)) = work.pop() {
         steps += 1;
         if steps > MAX_STEPS {
-            return None;
+            return Ok(None);
         }
+        spend.products(per_step)?;
         let count = variations(&seq, &lo) - variations(&seq, &hi);
         if count == 0 {
             continue;
@@ -457,7 +584,7 @@ fn isolate(p: &KPoly) -> Option<Vec<Root>> {
         work.push((lo, mid));
     }
     out.sort_by(|a, b| upper(a).cmp(upper(b)));
-    Some(out)
+    Ok(Some(out))
 }
 
 fn upper(r: &Root) -> &RBig {
@@ -486,11 +613,12 @@ fn root_bound(p: &KPoly) -> Option<IBig> {
 }
 
 /// The sign of `q` at the root of the square-free `p`.
-fn sign_at_root(p: &KPoly, q: &KPoly, root: &Root) -> Sign {
-    match root {
+fn sign_at_root(p: &KPoly, q: &KPoly, root: &Root, spend: Spend<'_>) -> Result<Sign, Exhausted> {
+    Ok(match root {
         Root::Exact(x) => q.eval(&K::rational(x.clone())).sign(),
         Root::Open(lo, hi) => {
-            let seq = sturm(p, Some(q));
+            let seq = sturm(p, Some(q), spend)?;
+            spend.products(2 * evaluation_products(&seq))?;
             let t = variations(&seq, lo) as i64 - variations(&seq, hi) as i64;
             match t {
                 0 => Sign::Zero,
@@ -498,20 +626,25 @@ fn sign_at_root(p: &KPoly, q: &KPoly, root: &Root) -> Sign {
                 _ => Sign::Negative,
             }
         }
-    }
+    })
 }
 
 /// One rational left of the first root, between each two, right of the last (`0` without).
-fn arc_samples(p: &KPoly, roots: &[Root]) -> Option<Vec<RBig>> {
+fn arc_samples(
+    p: &KPoly,
+    roots: &[Root],
+    spend: Spend<'_>,
+) -> Result<Option<Vec<RBig>>, Exhausted> {
     let (Some(first), Some(last)) = (roots.first(), roots.last()) else {
-        return Some(vec![RBig::ZERO]);
+        return Ok(Some(vec![RBig::ZERO]));
     };
     let lower = |r: &Root| match r {
         Root::Exact(x) => x.clone(),
         Root::Open(lo, _) => lo.clone(),
     };
     let mut out = vec![lower(first) - RBig::ONE];
-    let seq = sturm(p, None);
+    let seq = sturm(p, None, spend)?;
+    let per_step = 2 * evaluation_products(&seq);
     for w in roots.windows(2) {
         match (&w[0], &w[1]) {
             // cells are disjoint: the end of an open cell is not a root and the next root
@@ -525,8 +658,9 @@ fn arc_samples(p: &KPoly, roots: &[Root]) -> Option<Vec<RBig>> {
                 while lo <= *x {
                     steps += 1;
                     if steps > MAX_STEPS {
-                        return None;
+                        return Ok(None);
                     }
+                    spend.products(per_step)?;
                     let mid = (&lo + &hi) / RBig::from(2);
                     if variations(&seq, &lo) == variations(&seq, &mid) {
                         lo = mid;
@@ -539,5 +673,5 @@ fn arc_samples(p: &KPoly, roots: &[Root]) -> Option<Vec<RBig>> {
         }
     }
     out.push(upper(last) + RBig::ONE);
-    Some(out)
+    Ok(Some(out))
 }

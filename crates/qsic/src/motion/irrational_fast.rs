@@ -36,11 +36,18 @@
 //! value: a rank-2 member, `E₁` or `E₂` vanishing), the same steps run in `K` with its exact
 //! zero test. Floats only propose the samples. `None` means "not this shape or not certified":
 //! the caller then runs the reference, so an answer is never lost.
+//!
+//! **Work units.** Each enclosure stage spends, before it runs, the refinement of `α`'s
+//! interval to its precision and Horner on every coefficient it reads
+//! ([`enclosure_units`]); the exact zero tests their gcd's estimate; the stage in `K` the
+//! reduction of the coefficients into `K` and its products ([`super::irrational::Spend`]).
 
-use super::instants::TPoly;
+use super::instants::{subresultant_within, TPoly};
+use super::irrational::Spend;
 use crate::classify::{classify_regular_parts, Classification};
 use crate::pencil::SigItem;
 use crate::solids::PencilSigns;
+use qsic_algebra::budget::{poly_step_units, product_units, Budget, Exhausted};
 use qsic_algebra::field::number_field::{NumberField, NumberFieldElement as K};
 use qsic_algebra::matrix::{Inertia, MatrixPencil};
 use qsic_algebra::roots::simplest_between;
@@ -64,23 +71,30 @@ pub(crate) struct PencilPolys {
 }
 
 impl PencilPolys {
-    /// From the minors of the pencil over `ℤ[t]`.
-    pub(crate) fn of(pencil: &MatrixPencil<Poly>) -> PencilPolys {
+    /// From the minors of the pencil over `ℤ[t]`, the subresultants spending `budget`
+    /// ([`subresultant_within`]).
+    pub(crate) fn of(
+        pencil: &MatrixPencil<Poly>,
+        budget: &Budget,
+    ) -> Result<PencilPolys, Exhausted> {
         let f = pencil.det_poly();
         let (s1, psc0) = if f.degree() == Some(4) {
             let df = f.derivative();
-            (f.subresultant(&df, 1), f.subresultant(&df, 0).coeff(0))
+            (
+                subresultant_within(&f, &df, 1, budget)?,
+                subresultant_within(&f, &df, 0, budget)?.coeff(0),
+            )
         } else {
             // never of degree 4 at any t: the fast route does not apply
             (TPoly::zero(), Poly::zero())
         };
-        PencilPolys {
+        Ok(PencilPolys {
             f,
             e: pencil.principal_minor_sums(),
             minors3: pencil.minors(3),
             s1,
             psc0,
-        }
+        })
     }
 
     /// The same for the pencil with `M_A` negated (`negate_a`) and/or `M_B` negated: a
@@ -138,11 +152,17 @@ struct DoubleRootAnalysis {
 
 /// The class at `α` by the fast route; `None` when `f(λ; α)` has not the shape of the
 /// module docs or a float guess is not confirmed (the caller runs the reference).
+///
+/// # Errors
+/// [`Exhausted`] when the budget runs out.
 pub(crate) fn classify_at_irrational_fast(
     polys: &PencilPolys,
     alpha: &AlgebraicReal,
-) -> Option<Classification> {
-    let an = analyze(polys, alpha)?;
+    budget: &Budget,
+) -> Result<Option<Classification>, Exhausted> {
+    let Some(an) = analyze(polys, alpha, budget)? else {
+        return Ok(None);
+    };
     let mut real_blocks: Vec<Vec<u8>> = Vec::new();
     let mut seq = vec![SigItem::Interval(an.arcs[0].1.positive)];
     for (i, (root, inertia)) in an.roots.iter().enumerate() {
@@ -167,21 +187,31 @@ pub(crate) fn classify_at_irrational_fast(
         .iter()
         .map(Vec::as_slice)
         .chain(complex_blocks.iter().map(Vec::as_slice));
-    Some(classify_regular_parts(structures, real_blocks.len(), seq))
+    Ok(Some(classify_regular_parts(
+        structures,
+        real_blocks.len(),
+        seq,
+    )))
 }
 
 /// The signs and inertias along the λ-line (as the reference's
 /// `pencil_signs_at_irrational`) by the fast route; `None` as
 /// [`classify_at_irrational_fast`], or when `M_B(α)` is singular (a root at `λ = 0`).
+///
+/// # Errors
+/// [`Exhausted`] when the budget runs out.
 pub(crate) fn pencil_signs_at_irrational_fast(
     polys: &PencilPolys,
     alpha: &AlgebraicReal,
-) -> Option<PencilSigns> {
-    let an = analyze(polys, alpha)?;
+    budget: &Budget,
+) -> Result<Option<PencilSigns>, Exhausted> {
+    let Some(an) = analyze(polys, alpha, budget)? else {
+        return Ok(None);
+    };
     if an.root_signs.contains(&Sign::Zero) {
-        return None;
+        return Ok(None);
     }
-    Some(PencilSigns {
+    Ok(Some(PencilSigns {
         arcs: an
             .arcs
             .iter()
@@ -193,12 +223,53 @@ pub(crate) fn pencil_signs_at_irrational_fast(
             .zip(&an.roots)
             .map(|(s, (_, inertia))| (*s, *inertia))
             .collect(),
+    }))
+}
+
+/// Every coefficient (a polynomial in `t`) the stages read: `f`, `S₁`, `E₁…E₄`, the `3×3`
+/// minors, and `psc₀`.
+fn read_coefficients(polys: &PencilPolys) -> impl Iterator<Item = &Poly> {
+    let lambda = [&polys.f, &polys.s1]
+        .into_iter()
+        .chain(&polys.e)
+        .chain(&polys.minors3);
+    lambda
+        .flat_map(|p| p.coeffs())
+        .chain(std::iter::once(&polys.psc0))
+}
+
+/// The units of one enclosure stage at `prec` bits: `α`'s interval refined to `2^−prec`
+/// (about `log₂ prec` evaluations of its defining polynomial of degree `n` on numbers of
+/// `prec` bits, growing to `n·prec` bits in Horner's products), then Horner at `prec` bits on
+/// each coefficient read, `deg + 1` products of `prec` by `prec + bits` bits each.
+fn enclosure_units(polys: &PencilPolys, alpha: &AlgebraicReal, prec: usize) -> u64 {
+    let defining = alpha.poly();
+    let n = defining.degree().unwrap_or(1);
+    let steps = (usize::BITS - prec.leading_zeros()) as u64;
+    let refine = (n as u64 + 1)
+        .saturating_mul(product_units(defining.max_bits() + n * prec, prec))
+        .saturating_mul(steps);
+    read_coefficients(polys).fold(refine, |acc, c| {
+        let horner = (c.degree().unwrap_or(0) as u64 + 1)
+            .saturating_mul(product_units(prec + c.max_bits(), prec));
+        acc.saturating_add(horner)
     })
+}
+
+/// The units of an exact zero test `q(α) = 0` (a gcd of `q` with `α`'s polynomial, modulo
+/// a prime first: about the product of the sizes).
+fn zero_test_units(q: &Poly, alpha: &AlgebraicReal) -> u64 {
+    let d = alpha.poly().degree().unwrap_or(0) as u64 + 1;
+    poly_step_units(q.degree().unwrap_or(0), q.max_bits()).saturating_mul(d)
 }
 
 /// The analysis by enclosures ([`analyze_enclosed`]) where they decide every sign, else by
 /// exact arithmetic in `K` ([`analyze_in_field`]).
-fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnalysis> {
+fn analyze(
+    polys: &PencilPolys,
+    alpha: &AlgebraicReal,
+    budget: &Budget,
+) -> Result<Option<DoubleRootAnalysis>, Exhausted> {
     // a value's enclosure narrows like 2^−prec times its coefficients' size: past a few
     // times that size, a sign still undecided is most likely a zero for the exact route
     let size = polys
@@ -210,14 +281,25 @@ fn analyze(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnaly
         .unwrap_or(0);
     let cap = MAX_ENCLOSURE_BITS.min(1024 + 4 * size);
     let mut prec = 128;
+    let zero_tests = zero_test_units(&polys.psc0, alpha)
+        .saturating_add(zero_test_units(&polys.s1.coeff(1), alpha));
     while prec <= cap {
+        budget.spend(enclosure_units(polys, alpha, prec).saturating_add(zero_tests))?;
         match analyze_enclosed(polys, alpha, prec) {
-            Enclosed::Done(an) => return Some(an),
-            Enclosed::NotThisShape => return None,
+            Enclosed::Done(an) => return Ok(Some(an)),
+            Enclosed::NotThisShape => return Ok(None),
             Enclosed::Undecided => prec *= 2,
         }
     }
-    analyze_in_field(polys, alpha)
+    // the reduction of every coefficient into K (Horner in α: deg_t products each), then
+    // the route's few hundred products
+    let spend = Spend::new(budget, alpha);
+    let reductions: usize = read_coefficients(polys)
+        .map(|c| c.degree().unwrap_or(0) + 1)
+        .sum();
+    spend.products(reductions + 400)?;
+    budget.spend(zero_tests)?;
+    Ok(analyze_in_field(polys, alpha))
 }
 
 fn analyze_in_field(polys: &PencilPolys, alpha: &AlgebraicReal) -> Option<DoubleRootAnalysis> {
@@ -765,8 +847,13 @@ mod tests {
                 continue;
             }
             all += 1;
-            if let Some(fast) = classify_at_irrational_fast(&p.polys, &alpha) {
-                let reference = irrational::classify_at_irrational(&p.entries, &alpha);
+            let unlimited = Budget::unlimited();
+            if let Some(fast) =
+                classify_at_irrational_fast(p.fast_polys(&unlimited).unwrap(), &alpha, &unlimited)
+                    .unwrap()
+            {
+                let reference =
+                    irrational::classify_at_irrational(&p.entries, &alpha, &unlimited).unwrap();
                 assert_eq!(Some(fast), reference, "{what} at {alpha}");
                 answered += 1;
             }
@@ -831,7 +918,13 @@ mod tests {
         assert!(all >= 2 && answered == all, "{answered} of {all}");
         for alpha in p.candidate_instants().unwrap() {
             if alpha.as_rational().is_none() {
-                let c = classify_at_irrational_fast(&p.polys, &alpha).unwrap();
+                let c = classify_at_irrational_fast(
+                    p.fast_polys(&Budget::unlimited()).unwrap(),
+                    &alpha,
+                    &Budget::unlimited(),
+                )
+                .unwrap()
+                .unwrap();
                 let segre = c.segre.unwrap_or_default();
                 assert!(segre.starts_with("[211]"), "{segre} at {alpha}");
             }
@@ -857,8 +950,11 @@ mod tests {
                     continue;
                 }
                 for (na, nb) in [(false, false), (true, false), (false, true), (true, true)] {
-                    let polys = p.polys.oriented(na, nb);
-                    let Some(fast) = pencil_signs_at_irrational_fast(&polys, &alpha) else {
+                    let polys = p.fast_polys(&Budget::unlimited()).unwrap().oriented(na, nb);
+                    let unlimited = Budget::unlimited();
+                    let Some(fast) =
+                        pencil_signs_at_irrational_fast(&polys, &alpha, &unlimited).unwrap()
+                    else {
                         continue;
                     };
                     let sign = |m: &[[Poly; 4]; 4], neg: bool| -> [[Poly; 4]; 4] {
@@ -868,8 +964,10 @@ mod tests {
                     let (ma, mb) = p.numerators();
                     let entries =
                         super::super::instants::pencil_entries(&sign(ma, na), &sign(mb, nb));
-                    let reference = irrational::pencil_signs_at_irrational(&entries, &alpha)
-                        .expect("the reference answers where the fast route does");
+                    let reference =
+                        irrational::pencil_signs_at_irrational(&entries, &alpha, &unlimited)
+                            .unwrap()
+                            .expect("the reference answers where the fast route does");
                     assert_eq!(
                         crate::solids::relation_from_signs(&fast),
                         crate::solids::relation_from_signs(&reference),

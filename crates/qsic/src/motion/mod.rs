@@ -25,6 +25,14 @@
 //! arithmetic in `ℚ(α)` at irrational ones (module `irrational`) — then drops the candidates
 //! whose type equals that of both neighbours and merges the intervals around them.
 //!
+//! **Work budget.** [`MovingPencil::variations_within`] (and the `_within` forms of
+//! [`contact`]) spend a caller's [`Budget`]: the candidate stage per gcd step and per
+//! determinant (its estimate before it starts, module `instants`), the square-free parts
+//! and root isolation per step, the classifications at rational instants as
+//! [`crate::classify_within`], the irrational instants per step of their enclosures and
+//! remainder sequences; over it, [`Error::BudgetExceeded`]. The plain forms spend
+//! [`Budget::unlimited`].
+//!
 //! [`contact`]: the first contact of the two quadrics in a range, and the relation of two
 //! moving solid ellipsoids along the motion. [`TimeRange`]: the range of `t`, and its one
 //! reading from text (`-oo`/`oo` for an open side). [`rigid`]: a quadric under a rigid motion
@@ -41,16 +49,19 @@ pub mod rigid;
 pub use contact::{first_contact, solid_motion, FirstContact, SolidMotion, SolidState};
 pub use range::{TimeRange, MINUS_INFINITY, PLUS_INFINITY};
 
-use crate::classify::{classify_allowing_zero, Classification};
+use crate::classify::{classify_allowing_zero_within, Classification};
 use crate::error::Error;
 use crate::io::MovingMatrix;
 use crate::limits::{MAX_MOTION_COEFFICIENT_BITS, MAX_MOTION_DEGREE};
 use instants::{
     common_kernel_condition, discriminant_form, generic_gcd, pencil_entries, rank_conditions,
-    resultant_forms, squarefree_decomposition_t, t_content, t_primitive, Form, TPoly,
+    resultant_forms, squarefree_decomposition_t, t_content, t_primitive, tpoly_product_units, Form,
+    RankConditionError, TPoly,
 };
+use qsic_algebra::budget::{Budget, Exhausted};
 use qsic_algebra::matrix::MatrixPencil;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
+use std::sync::OnceLock;
 
 /// Two moving quadrics `A(t)`, `B(t)` and their characteristic polynomial
 /// `f(λ; t) = det(λM_A(t) − M_B(t))`.
@@ -64,8 +75,10 @@ pub struct MovingPencil {
     /// `λM_A(t) − M_B(t)` over ℤ\[t\] with every minor, as polynomials in `λ`.
     pencil: MatrixPencil<Poly>,
     f: TPoly,
-    /// The polynomials in `λ` over `ℤ[t]` the fast route at irrational instants reads.
-    polys: irrational_fast::PencilPolys,
+    /// The polynomials in `λ` over `ℤ[t]` the fast route at irrational instants reads, made
+    /// when first needed ([`Self::fast_polys`]): a motion without irrational instants to
+    /// classify never pays for their subresultants.
+    polys: OnceLock<irrational_fast::PencilPolys>,
 }
 
 /// The type compared between neighbours: pencil kind, case, complex and real type.
@@ -186,14 +199,13 @@ impl MovingPencil {
         let entries = pencil_entries(ma, mb);
         let pencil = MatrixPencil::from_entries(ma.clone(), mb.clone());
         let f = pencil.det_poly();
-        let polys = irrational_fast::PencilPolys::of(&pencil);
         Ok(MovingPencil {
             a,
             b,
             entries,
             pencil,
             f,
-            polys,
+            polys: OnceLock::new(),
         })
     }
 
@@ -226,13 +238,30 @@ impl MovingPencil {
     /// None in practice: `M_A(t)` and `M_B(t)` never vanish (their entries have no common
     /// root); [`Error::ZeroQuadric`] would name that case.
     pub fn classify_at(&self, t: &RBig) -> Result<Classification, Error> {
+        self.classify_at_within(t, &Budget::unlimited())
+    }
+
+    /// [`Self::classify_at`] spending `budget`: the evaluation of the entries at `t` (per
+    /// coefficient, by the sizes of `t` and the coefficients), then
+    /// [`crate::classify_within`].
+    ///
+    /// # Errors
+    /// As [`Self::classify_at`]; [`Error::BudgetExceeded`] when the budget runs out.
+    pub fn classify_at_within(&self, t: &RBig, budget: &Budget) -> Result<Classification, Error> {
+        use dashu_int::ops::BitTest;
+        let t_bits = t.numerator().bit_len() + t.denominator().bit_len();
+        for e in self.entries.iter().flatten().flat_map(|p| p.coeffs()) {
+            let d = e.degree().unwrap_or(0);
+            let units = qsic_algebra::budget::product_units(e.max_bits() + d * t_bits, t_bits);
+            budget.spend((d as u64 + 1).saturating_mul(units))?;
+        }
         let at = |m: &[[Poly; 4]; 4]| {
             optional(crate::Quadric::from_matrix(std::array::from_fn(|i| {
                 std::array::from_fn(|j| m[i][j].eval_rational(t))
             })))
         };
         let (qa, qb) = (at(self.a.numerators())?, at(self.b.numerators())?);
-        classify_allowing_zero(qa.as_ref(), qb.as_ref())
+        classify_allowing_zero_within(qa.as_ref(), qb.as_ref(), budget)
     }
 
     /// Polynomials in `t` whose real roots contain every instant where the type can change
@@ -248,7 +277,16 @@ impl MovingPencil {
     /// [`Error::UnsupportedMotion`] if no integer combination of the `k×k` minors separates
     /// their common roots (not expected).
     pub fn candidate_polynomials(&self) -> Result<Vec<Poly>, Error> {
-        Ok(self.candidates_and_generic_condition()?.0)
+        self.candidate_polynomials_within(&Budget::unlimited())
+    }
+
+    /// [`Self::candidate_polynomials`] spending `budget` (module docs).
+    ///
+    /// # Errors
+    /// As [`Self::candidate_polynomials`]; [`Error::BudgetExceeded`] when the budget runs
+    /// out.
+    pub fn candidate_polynomials_within(&self, budget: &Budget) -> Result<Vec<Poly>, Error> {
+        Ok(self.candidates_and_generic_condition(budget)?.0)
     }
 
     /// [`Self::candidate_polynomials`], and for a pencil whose `f` is square-free over `ℚ(t)`
@@ -257,7 +295,10 @@ impl MovingPencil {
     /// distinct roots in `ℙ¹`: the Segre characteristic `[1111]` at `t₀` and around it, so
     /// the type at `t₀` is that of both neighbouring intervals (Theorem 3.2) and `t₀` is
     /// never an instant where it changes.
-    fn candidates_and_generic_condition(&self) -> Result<(Vec<Poly>, Option<Poly>), Error> {
+    fn candidates_and_generic_condition(
+        &self,
+        budget: &Budget,
+    ) -> Result<(Vec<Poly>, Option<Poly>), Error> {
         let rank = (1..=4)
             .rev()
             .find(|&k| self.pencil.minors(k).iter().any(|m| !m.is_zero()))
@@ -269,14 +310,14 @@ impl MovingPencil {
         let mut out = Vec::new();
         // The characteristic form (chart, formal degree): `f`, or `D_r` for a singular pencil.
         let (chi, degree) = if rank == 4 {
-            out.push(t_content(&self.f));
-            (t_primitive(&self.f), 4)
+            out.push(t_content(&self.f, budget)?);
+            (t_primitive(&self.f, budget)?, 4)
         } else {
-            let (g, at_infinity) = generic_gcd(&self.pencil.minors(rank), rank);
+            let (g, at_infinity) = generic_gcd(&self.pencil.minors(rank), rank, budget)?;
             let d = g.degree().unwrap_or(0) + at_infinity;
             (g, d)
         };
-        let mut forms: Vec<(Form, usize)> = squarefree_decomposition_t(&chi)
+        let mut forms: Vec<(Form, usize)> = squarefree_decomposition_t(&chi, budget)?
             .into_iter()
             .map(|(g, m)| {
                 let degree = g.degree().unwrap_or(0);
@@ -292,21 +333,27 @@ impl MovingPencil {
             forms.push((mu, m_inf));
         }
         let mut generic = None;
-        if let [(g, 1)] = forms.as_slice() {
-            if g.degree == 4 && rank == 4 {
-                generic = discriminant_form(g).map(|d| &d * &out[0]);
-            }
-        }
         for (i, (g, _)) in forms.iter().enumerate() {
-            out.extend(discriminant_form(g));
+            let discriminant = discriminant_form(g, budget)?;
+            if let ([(g, 1)], Some(d)) = (forms.as_slice(), &discriminant) {
+                if g.degree == 4 && rank == 4 {
+                    generic = Some(d * &out[0]);
+                }
+            }
+            out.extend(discriminant);
             for (h, _) in &forms[i + 1..] {
-                out.push(resultant_forms(g, h));
+                out.push(resultant_forms(g, h, budget)?);
             }
         }
         if rank < 4 || forms.iter().any(|(_, m)| *m > 1) {
             for k in 1..=3 {
                 let conditions =
-                    rank_conditions(&self.pencil.minors(k), k).map_err(Error::UnsupportedMotion)?;
+                    rank_conditions(&self.pencil.minors(k), k, budget).map_err(|e| match e {
+                        RankConditionError::NoSeparatingCombination(why) => {
+                            Error::UnsupportedMotion(why)
+                        }
+                        RankConditionError::Exhausted(e) => e.into(),
+                    })?;
                 out.extend(conditions);
             }
         }
@@ -314,7 +361,8 @@ impl MovingPencil {
             out.push(common_kernel_condition(
                 self.a.numerators(),
                 self.b.numerators(),
-            ));
+                budget,
+            )?);
         }
         out.push(self.a.denominator().clone());
         out.push(self.b.denominator().clone());
@@ -326,7 +374,8 @@ impl MovingPencil {
         let mut prop = Poly::zero();
         'pairs: for i in 0..16 {
             for j in i + 1..16 {
-                prop = prop.gcd(&(&(va[i] * vb[j]) - &(va[j] * vb[i])));
+                budget.spend(tpoly_product_units(va[i], vb[j]).saturating_mul(2))?;
+                prop = prop.gcd_within(&(&(va[i] * vb[j]) - &(va[j] * vb[i])), budget)?;
                 if prop.degree() == Some(0) {
                     break 'pairs;
                 }
@@ -345,7 +394,11 @@ impl MovingPencil {
     /// # Errors
     /// As [`Self::candidate_polynomials`].
     pub fn candidate_instants(&self) -> Result<Vec<AlgebraicReal>, Error> {
-        Ok(real_roots_of_all(&self.candidate_polynomials()?))
+        let unlimited = Budget::unlimited();
+        Ok(real_roots_of_all(
+            &self.candidate_polynomials_within(&unlimited)?,
+            &unlimited,
+        )?)
     }
 
     /// The type on every interval between consecutive instants and at every instant, with
@@ -388,6 +441,37 @@ impl MovingPencil {
     /// # Ok::<(), qsic::Error>(())
     /// ```
     pub fn variations_in(&self, from: Option<&RBig>, to: Option<&RBig>) -> Result<Motion, Error> {
+        self.variations_within(from, to, &Budget::unlimited())
+    }
+
+    /// [`Self::variations_in`] spending `budget` (module docs).
+    ///
+    /// # Errors
+    /// As [`Self::variations_in`]; [`Error::BudgetExceeded`] when the budget runs out.
+    ///
+    /// # Examples
+    /// ```
+    /// use qsic::io::moving_matrix_from_polynomial;
+    /// use qsic::motion::MovingPencil;
+    /// use qsic::{Budget, Error};
+    ///
+    /// let a = moving_matrix_from_polynomial("x^2 + y^2 + z^2 - 4")?;
+    /// let b = moving_matrix_from_polynomial("(x - t)^2 + y^2 + z^2 - 1")?;
+    /// let pencil = MovingPencil::new(a, b)?;
+    /// let budget = Budget::unlimited();
+    /// assert_eq!(pencil.variations_within(None, None, &budget)?.instants.len(), 5);
+    /// let spent = budget.used();
+    /// // the same work with one unit less runs out, deterministically
+    /// let short = pencil.variations_within(None, None, &Budget::new(spent - 1));
+    /// assert!(matches!(short, Err(Error::BudgetExceeded { .. })));
+    /// # Ok::<(), qsic::Error>(())
+    /// ```
+    pub fn variations_within(
+        &self,
+        from: Option<&RBig>,
+        to: Option<&RBig>,
+        budget: &Budget,
+    ) -> Result<Motion, Error> {
         let exact = |v: &RBig| AlgebraicReal::from_rational(v.clone());
         let (lo, hi) = (from.map(exact), to.map(exact));
         range::check_order(from, to)?;
@@ -398,30 +482,30 @@ impl MovingPencil {
                     intervals: Vec::new(),
                     instants: vec![MotionInstant {
                         t,
-                        class: InstantType::Exact(self.classify_at(a)?),
+                        class: InstantType::Exact(self.classify_at_within(a, budget)?),
                     }],
                 });
             }
         }
-        let (polys, generic) = self.candidates_and_generic_condition()?;
-        let candidates: Vec<AlgebraicReal> = real_roots_of_all(&polys)
+        let (polys, generic) = self.candidates_and_generic_condition(budget)?;
+        let candidates: Vec<AlgebraicReal> = real_roots_of_all(&polys, budget)?
             .into_iter()
             .filter(|c| lo.as_ref().is_none_or(|a| a < c) && hi.as_ref().is_none_or(|b| c < b))
             .collect();
         let samples = samples_between(&candidates, lo.as_ref(), hi.as_ref());
         let mut interval_types = Vec::with_capacity(samples.len());
         for s in &samples {
-            interval_types.push(self.classify_at(s)?);
+            interval_types.push(self.classify_at_within(s, budget)?);
         }
         // `None`: an irrational candidate where `f` has four distinct roots, of the type of
         // both neighbours (`candidates_and_generic_condition`), not classified
         let mut instant_types = Vec::with_capacity(candidates.len());
         for c in &candidates {
             instant_types.push(match c.as_rational() {
-                Some(v) => Some(InstantType::Exact(self.classify_at(v)?)),
+                Some(v) => Some(InstantType::Exact(self.classify_at_within(v, budget)?)),
                 None if generic.as_ref().is_some_and(|g| !c.is_root_of(g)) => None,
                 None => Some(
-                    self.classify_at_irrational(c)
+                    self.classify_at_irrational(c, budget)?
                         .map_or(InstantType::IrrationalUnclassified, InstantType::Exact),
                 ),
             });
@@ -445,7 +529,7 @@ impl MovingPencil {
                 // differ, the instant is classified all the same
                 None if MotionType::of(left) == MotionType::of(right) => continue,
                 None => self
-                    .classify_at_irrational(&t)
+                    .classify_at_irrational(&t, budget)?
                     .map_or(InstantType::IrrationalUnclassified, InstantType::Exact),
             };
             let unchanged = class.classification().is_some_and(|c| {
@@ -468,7 +552,7 @@ impl MovingPencil {
         // The ends of the range, where their type differs from the interval beside them.
         for (end, first) in [(from, true), (to, false)] {
             let Some(v) = end else { continue };
-            let c = self.classify_at(v)?;
+            let c = self.classify_at_within(v, budget)?;
             let beside = if first {
                 intervals.first()
             } else {
@@ -498,9 +582,31 @@ impl MovingPencil {
     /// The class at an irrational instant: the one dispatch point between the fast route
     /// (module `irrational_fast`: one double root, certified signs) and the reference
     /// (module `irrational`), which answers whatever the fast route hands back.
-    fn classify_at_irrational(&self, alpha: &AlgebraicReal) -> Option<Classification> {
-        irrational_fast::classify_at_irrational_fast(&self.polys, alpha)
-            .or_else(|| irrational::classify_at_irrational(&self.entries, alpha))
+    fn classify_at_irrational(
+        &self,
+        alpha: &AlgebraicReal,
+        budget: &Budget,
+    ) -> Result<Option<Classification>, Exhausted> {
+        match irrational_fast::classify_at_irrational_fast(self.fast_polys(budget)?, alpha, budget)?
+        {
+            Some(c) => Ok(Some(c)),
+            None => irrational::classify_at_irrational(&self.entries, alpha, budget),
+        }
+    }
+}
+
+impl MovingPencil {
+    /// The polynomials of the fast route at irrational instants, made on first use spending
+    /// `budget` (their subresultants over `ℤ[t]`).
+    pub(crate) fn fast_polys(
+        &self,
+        budget: &Budget,
+    ) -> Result<&irrational_fast::PencilPolys, Exhausted> {
+        if let Some(p) = self.polys.get() {
+            return Ok(p);
+        }
+        let made = irrational_fast::PencilPolys::of(&self.pencil, budget)?;
+        Ok(self.polys.get_or_init(|| made))
     }
 }
 
@@ -563,13 +669,17 @@ fn check_motion_size(m: &[[Poly; 4]; 4]) -> Result<(), Error> {
 /// The distinct real roots of the nonzero `polys`, increasing: each given by a square-free
 /// primitive polynomial (an element of their gcd-free basis without its rational roots) and
 /// an isolating interval; rational ones exact.
-fn real_roots_of_all(polys: &[Poly]) -> Vec<AlgebraicReal> {
+fn real_roots_of_all(polys: &[Poly], budget: &Budget) -> Result<Vec<AlgebraicReal>, Exhausted> {
     let mut roots = Vec::new();
-    for p in gcd_free_basis(polys) {
-        let all = AlgebraicReal::real_roots_of(&p);
+    for p in gcd_free_basis(polys, budget)? {
+        let all = AlgebraicReal::real_roots_of_within(&p, budget)?;
         let mut rest = p.clone();
         for r in &all {
             if let Some(v) = r.as_rational() {
+                budget.spend(qsic_algebra::budget::poly_step_units(
+                    rest.degree().unwrap_or(0),
+                    rest.max_bits(),
+                ))?;
                 rest = rest
                     .div_exact(&Poly::vanishing_at(v))
                     .expect("a rational root's linear factor divides");
@@ -586,25 +696,29 @@ fn real_roots_of_all(polys: &[Poly]) -> Vec<AlgebraicReal> {
     }
     roots.sort();
     roots.dedup();
-    roots
+    Ok(roots)
 }
 
 /// A gcd-free basis of the square-free parts of `polys`: pairwise coprime, square-free,
 /// primitive polynomials of positive degree with the same roots as the product.
-fn gcd_free_basis(polys: &[Poly]) -> Vec<Poly> {
+fn gcd_free_basis(polys: &[Poly], budget: &Budget) -> Result<Vec<Poly>, Exhausted> {
     let mut basis: Vec<Poly> = Vec::new();
     for p in polys {
         if p.degree().unwrap_or(0) == 0 {
             continue;
         }
-        let mut p = p.squarefree_part();
+        let mut p = p.squarefree_part_within(budget)?;
         let mut next = Vec::with_capacity(basis.len() + 2);
         for b in basis {
-            let g = p.gcd(&b);
+            let g = p.gcd_within(&b, budget)?;
             if g.degree().unwrap_or(0) == 0 {
                 next.push(b);
                 continue;
             }
+            budget.spend(
+                qsic_algebra::poly::gcd::prem_units(&b, &g)
+                    .saturating_add(qsic_algebra::poly::gcd::prem_units(&p, &g)),
+            )?;
             let rest = b.div_exact(&g).expect("gcd divides");
             p = p.div_exact(&g).expect("gcd divides");
             if rest.degree().unwrap_or(0) > 0 {
@@ -617,7 +731,7 @@ fn gcd_free_basis(polys: &[Poly]) -> Vec<Poly> {
         }
         basis = next;
     }
-    basis
+    Ok(basis)
 }
 
 #[cfg(test)]
@@ -652,7 +766,9 @@ mod tests {
                 let t = RBig::from_parts_signed(n.into(), 4u8.into());
                 let exact = p.classify_at(&t).unwrap();
                 let alpha = AlgebraicReal::from_rational(t.clone());
-                let via_field = irrational::classify_at_irrational(&p.entries, &alpha);
+                let via_field =
+                    irrational::classify_at_irrational(&p.entries, &alpha, &Budget::unlimited())
+                        .unwrap();
                 assert_eq!(via_field.as_ref(), Some(&exact), "{a}, {b} at t = {t}");
                 compared += 1;
                 singular += usize::from(exact.pencil.key() == "singular");
