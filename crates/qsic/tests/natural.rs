@@ -405,7 +405,7 @@ fn compare(id: &str, a: &Quadric, b: &Quadric, t: &[[RBig; 4]; 4], original: &Af
 
 #[test]
 fn natural_route_equals_the_general_route_on_cad_configurations() {
-    let mut rng = SplitMix(0x6e61_7475_7261_6c);
+    let mut rng = SplitMix(0x006e_6174_7572_616c);
     let (mut answered, mut general_failed) = (0, 0);
     for &(id, a, b, natural) in CONFIGURATIONS {
         let (a, b) = (parse_quadric(a).unwrap(), parse_quadric(b).unwrap());
