@@ -8,6 +8,7 @@
 //! | [`shapes`] | constructors for spheres, cylinders, cones, … from rational parameters |
 //! | [`pencil`] | the pencil `λA − μB`: characteristic form, real roots, Segre structure, inertia |
 //! | [`mod@classify`] | [`classify()`]: regular (35 cases), singular and single pencils |
+//! | [`natural`] | planes, spheres, circular cylinders and cones recognized exactly; closed forms for their pairs |
 //! | [`motion`] | moving quadrics: critical instants and the type between them, exactly |
 //! | [`solids`] | [`solids::solid_relation`]: separated, touching, overlapping or nested solid ellipsoids, exactly |
 //! | [`param`] | Levin's parameterization `a(u) ± d(u)√s(u)` of a nonsingular quartic, exactly; Theorem 12 |
@@ -30,6 +31,7 @@ pub mod error;
 pub mod io;
 pub mod limits;
 pub mod motion;
+pub mod natural;
 pub mod param;
 pub mod pencil;
 pub mod quadric;
@@ -53,5 +55,32 @@ pub mod test_support {
     /// the route the exact-path benchmarks time.
     pub fn classify_exact(a: &Quadric, b: &Quadric) -> Classification {
         crate::classify::classify_exact(a, b)
+    }
+
+    /// The natural route's answer (module [`crate::natural`]) alone: the classification and
+    /// the curve in ℝ³ in the default chart, or `None` where it declines.
+    pub fn natural_answer(
+        a: &Quadric,
+        b: &Quadric,
+    ) -> Option<(Classification, crate::affine::AffineCurve)> {
+        let chart = crate::affine::Chart::default();
+        Some((
+            crate::natural::classification(a, b)?,
+            crate::natural::affine_curve(a, b, &chart)?,
+        ))
+    }
+
+    /// The curve in ℝ³ by the general route alone (the fast affine route, else the curve
+    /// built and read): the reference of the natural route.
+    pub fn general_affine_curve(
+        a: &Quadric,
+        b: &Quadric,
+        chart: &crate::affine::Chart,
+    ) -> Result<crate::affine::AffineCurve, crate::Error> {
+        match crate::affine::fast_affine_curve(a, b, chart) {
+            Some(c) => Ok(c),
+            None => crate::param::parameterize(a, b)
+                .and_then(|c| crate::affine::affine_curve(&c, a, b, chart)),
+        }
     }
 }

@@ -12,6 +12,7 @@ use super::{
 };
 use crate::classify::ComponentKind;
 use crate::error::Error;
+use crate::natural::affine_curve as natural_affine_curve;
 use crate::param::Curve;
 use crate::quadric::Quadric;
 use crate::Budget;
@@ -181,13 +182,15 @@ pub fn affine_view_within(
     budget: &Budget,
 ) -> Result<AffineView, Error> {
     let curve = match (a, b) {
-        (Some(a), Some(b)) => match fast_affine_curve(a, b, chart) {
-            Some(c) => Ok(c),
-            None => match crate::param::parameterize_within(a, b, budget) {
-                Err(e @ Error::BudgetExceeded { .. }) => return Err(e),
-                curve => curve.and_then(|c| affine_curve(&c, a, b, chart)),
-            },
-        },
+        (Some(a), Some(b)) => {
+            match natural_affine_curve(a, b, chart).or_else(|| fast_affine_curve(a, b, chart)) {
+                Some(c) => Ok(c),
+                None => match crate::param::parameterize_within(a, b, budget) {
+                    Err(e @ Error::BudgetExceeded { .. }) => return Err(e),
+                    curve => curve.and_then(|c| affine_curve(&c, a, b, chart)),
+                },
+            }
+        }
         _ => Err(Error::Unsupported("a single quadric: no curve".into())),
     };
     Ok(assemble(a, b, chart, planes, curve))
@@ -213,10 +216,12 @@ pub fn affine_view_of_curve(
     planes: [bool; 2],
 ) -> AffineView {
     let curve = match (a, b, curve) {
-        (Some(a), Some(b), Some(c)) => match fast_affine_curve(a, b, chart) {
-            Some(fast) => Ok(fast),
-            None => affine_curve(c, a, b, chart),
-        },
+        (Some(a), Some(b), Some(c)) => {
+            match natural_affine_curve(a, b, chart).or_else(|| fast_affine_curve(a, b, chart)) {
+                Some(fast) => Ok(fast),
+                None => affine_curve(c, a, b, chart),
+            }
+        }
         _ => Err(Error::Unsupported("a single quadric: no curve".into())),
     };
     assemble(a, b, chart, planes, curve)

@@ -108,6 +108,9 @@ pub(crate) fn classify_keeping_sums_within(
     budget: &Budget,
 ) -> Result<(Classification, Option<MinorSums>), Error> {
     budget.spend(FAST_UNITS)?;
+    if let Some(c) = crate::natural::classification(a, b) {
+        return Ok((c, None));
+    }
     match classify_fast(a, b) {
         Some(fast::SimpleRoots { case, sums }) => {
             Ok((from_row(&CASES[usize::from(case) - 1], 0), Some(sums)))
@@ -129,6 +132,9 @@ pub(crate) fn classify_keeping_sums(
     a: &Quadric,
     b: &Quadric,
 ) -> (Classification, Option<[[i128; 5]; 4]>) {
+    if let Some(c) = crate::natural::classification(a, b) {
+        return (c, None);
+    }
     match classify_fast(a, b) {
         Some(fast::SimpleRoots { case, sums }) => {
             (from_row(&CASES[usize::from(case) - 1], 0), Some(sums))
@@ -142,6 +148,19 @@ pub(crate) fn classify_keeping_sums(
 fn classify_fast(a: &Quadric, b: &Quadric) -> Option<fast::SimpleRoots> {
     let (sa, sb) = (a.small_integer_matrix()?, b.small_integer_matrix()?);
     fast::simple_roots(sa, sb)
+}
+
+/// The classification the natural route's closed forms name (module [`crate::natural`]): a
+/// class of the table, or a singular type with its description.
+pub(crate) fn from_natural(class: crate::natural::pair::NaturalClass) -> Classification {
+    use crate::natural::pair::NaturalClass;
+    match class {
+        NaturalClass::Regular { case, class } => from_row(&CASES[usize::from(case) - 1], class),
+        NaturalClass::Singular(complex, real) => {
+            let m = Morphology { complex, real };
+            singular_classification(Some((m, singular::describe(m))))
+        }
+    }
 }
 
 /// The classification of a singular pencil from its type (`None`: undetermined, never guessed).

@@ -359,7 +359,7 @@ fn binary_pencil<C: Ring>(a: &[[C; 2]; 2], b: &[[C; 2]; 2]) -> Morphology {
 }
 
 /// The description of each singular type: real components, how they meet, a summary.
-fn describe(m: Morphology) -> Description {
+pub(super) fn describe(m: Morphology) -> Description {
     use ComplexType as C;
     use ComponentKind as K;
     use RealType as R;
