@@ -667,7 +667,7 @@ fn conic_component(plane: &Plane, delta: Option<&IBig>) -> Result<Component, Err
         });
         match find_point(&c).map_err(|e| Error::Algebra(format!("a conic's point: {e}")))? {
             ConicPoint::Rational(p) => (p.iter().map(qr).collect(), vec![], None, None),
-            ConicPoint::NoRationalPoint(qp) => {
+            ConicPoint::NoRationalPoint(qp) | ConicPoint::Undecided(qp) => {
                 (qp.coords.to_vec(), vec![], None, Some(qp.delta.clone()))
             }
             ConicPoint::NoRealPoint => return Ok(non_real(ComponentKind::Conic, m)),

@@ -270,7 +270,7 @@ fn point_on(s: &[[RBig; 4]; 4], avoid: Option<&[RBig; 4]>) -> Result<Option<Sect
         let found = find_point(&c).map_err(|e| Error::Algebra(e.to_string()))?;
         let coords: [Quadratic; 3] = match found {
             ConicPoint::Rational(p) => std::array::from_fn(|i| q(&p[i])),
-            ConicPoint::NoRationalPoint(p) => {
+            ConicPoint::NoRationalPoint(p) | ConicPoint::Undecided(p) => {
                 if fallback.is_none() {
                     fallback = Some((basis.clone(), p.coords.clone()));
                 }
@@ -535,7 +535,7 @@ pub(super) fn points_on(s: &[[RBig; 4]; 4]) -> Result<Vec<(bool, Vec4)>, Error> 
                 let coords = std::array::from_fn(|i| q(&p[i]));
                 return Ok(vec![(true, section_point(basis, coords).point)]);
             }
-            ConicPoint::NoRationalPoint(p) => {
+            ConicPoint::NoRationalPoint(p) | ConicPoint::Undecided(p) => {
                 // det S a square in ℚ(√e): det·e a rational square
                 let same = det_square
                     || Quadratic::sqrt(&(det.numerator() * det.denominator() * &p.delta))

@@ -9,34 +9,45 @@
 //! | [`parameterize`] | the lines through a rational point: quadratic forms `P¹(ℚ) → conic` |
 //!
 //! **Method.** `C` is diagonalized by congruence over ℚ, the diagonal is made integral,
-//! square-free and pairwise coprime (`a, b, c`), which needs their factorizations
-//! ([`crate::factor`]). Legendre: `a x² + b y² + c z² = 0` has a nonzero integer solution iff
-//! `a, b, c` are not all of one sign and `−bc`, `−ca`, `−ab` are squares modulo `|a|`, `|b|`, `|c|`.
-//! The solution is constructed (Minkowski's proof made effective): with square roots of those
-//! residues, the vectors of a lattice `Λ` of index `|abc|` all have `Q(v) ≡ 0 (mod abc)`; with
-//! `a, b > 0 > c`, an LLL-reduced (δ = 99/100) first vector of `Λ` for the norm
-//! `F = a x² + b y² + 2|c| z²` has `F < 1.71|abc|`, hence `Q(v) ∈ {0, −abc}`, and in the second
-//! case `(xz + by, yz − ax, z² + ab)` is a solution, since
-//! `a(xz + by)² + b(yz − ax)² + c(z² + ab)² = (z² + ab)(Q(v) + abc)`. No search.
+//! square-free and pairwise coprime (`a, b, c`) over *atoms* — the primes that trial division
+//! and a cheap Pollard rho find, and the cofactors they leave, made pairwise coprime by gcds —
+//! ([`legendre`] states why an atom serves like a prime). Legendre: `a x² + b y² + c z² = 0`
+//! has a nonzero integer solution iff `a, b, c` are not all of one sign and `−bc`, `−ca`, `−ab`
+//! are squares modulo `|a|`, `|b|`, `|c|`. The solution is constructed (Minkowski's proof made
+//! effective): with square roots of those residues, the vectors of a lattice `Λ` of index
+//! `|abc|` all have `Q(v) ≡ 0 (mod abc)`; with `a, b > 0 > c`, an LLL-reduced (δ = 99/100)
+//! first vector of `Λ` for the norm `F = a x² + b y² + 2|c| z²` has `F < 1.71|abc|`, hence
+//! `Q(v) ∈ {0, −abc}`, and in the second case `(xz + by, yz − ax, z² + ab)` is a solution,
+//! since `a(xz + by)² + b(yz − ax)² + c(z² + ab)² = (z² + ab)(Q(v) + abc)`. No search.
 //!
-//! **Certainty.** A returned point is checked on its conic, and every square root modulo a
-//! prime is checked by squaring. "No rational point" rests on a prime `p | a` with Jacobi
-//! symbol `(−bc/p) = −1`: exact for the primes [`crate::factor`] finds (proven primes below
-//! `2⁸¹`, strong probable primes to 20 bases above).
+//! **No factoring in the way.** A square root modulo a cofactor is tried as if it were prime
+//! (Tonelli–Shanks, checked by squaring); a Jacobi symbol `−1` modulo any atom proves there is
+//! no rational point. When neither settles it — a composite cofactor that was not split, with
+//! every symbol `+1` — [`find_point`] does not fail: it answers [`ConicPoint::Undecided`], a
+//! point over ℚ(√δ) with `δ = −fᵢfⱼ` for two opposite-sign reduced coefficients, the cofactor
+//! left under the radical (not proven square-free; exact all the same: the point is on the
+//! conic). No error comes from a number too large to factor.
 //!
-//! **Cost.** Factoring the numerators and denominators of the diagonal (primes found once are
-//! divided out of the others) dominates, bounded by [`crate::factor`]; then square roots modulo
-//! each prime (`O(log p)` products) and one LLL in dimension 3 on `O(log|abc|)`-bit numbers.
-//! Measured (release build) on random symmetric integer matrices: 16-bit entries ≈ 1.5 ms,
-//! 32-bit ≈ 5 ms, 40-bit ≈ 70 ms on average (≈ 1.5 s at worst, in Pollard's rho); from about
-//! 44-bit entries the determinant often leaves a cofactor above 2¹²⁸: [`ConicError::Factor`].
+//! **Certainty.** A returned point is checked on its conic, and every square root modulo an
+//! atom is checked by squaring. "No rational point" rests on an atom with Jacobi symbol
+//! `(−bc/N) = −1`: exact for any odd `N` (the symbol is multiplicative in `N`).
+//!
+//! **Cost.** Trial division of the numerators and denominators of the diagonal below `2¹⁶`
+//! (primes found once are divided out of the others), Pollard rho within
+//! [`legendre::CONIC_RHO_BUDGET`] steps for the whole conic, gcds and perfect-power tests of the
+//! cofactors, then square roots modulo each atom (`O(log N)` products) and one LLL in
+//! dimension 3 on `O(log|abc|)`-bit numbers. Measured (release build) on random symmetric
+//! integer matrices: 16-bit entries ≈ 1.5 ms, 32-bit ≈ 5 ms.
 
-use crate::factor::{factorize, jacobi, sqrt_mod_prime, FactorError, Factorization};
+use crate::factor::{FactorError, RHO_BUDGET};
 use crate::field::Quadratic;
 use crate::linalg::{minors, Matrix};
 use dashu_int::IBig;
 use dashu_ratio::RBig;
+use legendre::{factor_all, reduce, solve_reduced, Legendre};
 use std::fmt;
+
+mod legendre;
 
 /// Why a conic question was not answered.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -50,7 +61,8 @@ pub enum ConicError {
     },
     /// The zero matrix is no conic.
     ZeroMatrix,
-    /// A coefficient could not be factored within the bounds of [`crate::factor`].
+    /// [`solve_legendre`] only: a coefficient's cofactor could not be factored within the
+    /// bounds of [`crate::factor`] and Legendre's conditions were not decided without it.
     Factor(FactorError),
     /// The point given to [`parameterize`] is zero.
     ZeroPoint,
@@ -84,11 +96,12 @@ impl From<FactorError> for ConicError {
     }
 }
 
-/// A point with coordinates in ℚ(√δ), `δ > 1` a square-free integer, at least one coordinate
-/// irrational.
+/// A point with coordinates in ℚ(√δ), `δ > 1` an integer that is no square, at least one
+/// coordinate irrational; `δ` is square-free over the atoms (module doc), so square-free when
+/// the coefficients were factored completely.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct QuadraticPoint {
-    /// The square-free radicand `δ`.
+    /// The radicand `δ`.
     pub delta: IBig,
     /// Homogeneous coordinates `aᵢ + bᵢ√δ`, with integer `aᵢ, bᵢ` of gcd 1.
     pub coords: [Quadratic; 3],
@@ -101,6 +114,9 @@ pub enum ConicPoint {
     Rational([RBig; 3]),
     /// Real points but no rational one; a point over a quadratic field.
     NoRationalPoint(Box<QuadraticPoint>),
+    /// Real points, a point over a quadratic field, and no decision whether there is a
+    /// rational one: a coefficient's cofactor was not factored (module doc), it stays in `δ`.
+    Undecided(Box<QuadraticPoint>),
     /// A definite conic: no real point at all.
     NoRealPoint,
 }
@@ -112,9 +128,11 @@ pub enum ConicPoint {
 ///   reduced diagonal form `Σ fᵢWᵢ²` with the least `|fᵢfⱼ|`;
 /// * rank 2 (two lines): their rational intersection; rank 1 (a double line): a point of it.
 ///
+/// Where Legendre's conditions could not be decided without factoring a cofactor, the point
+/// over ℚ(√δ) is [`ConicPoint::Undecided`] (module doc): never an error.
+///
 /// # Errors
-/// [`ConicError::NotSymmetric`], [`ConicError::ZeroMatrix`], and [`ConicError::Factor`] when a
-/// numerator or denominator of the diagonalized form exceeds the factoring bounds.
+/// [`ConicError::NotSymmetric`], [`ConicError::ZeroMatrix`].
 ///
 /// # Examples
 /// ```
@@ -153,55 +171,39 @@ pub fn find_point(c: &[[RBig; 3]; 3]) -> Result<ConicPoint, ConicError> {
     }
     // dᵢ = nᵢ/mᵢ: dᵢYᵢ² = (nᵢmᵢ)(Yᵢ/mᵢ)², so Yᵢ = mᵢ·Y'ᵢ with the integer coefficient nᵢmᵢ.
     // The parts share primes (from an integer matrix they are quotients of leading minors):
-    // primes found once are divided out before factoring the rest.
-    let mut known: Vec<u128> = Vec::new();
-    let mut factor_once = |n: &IBig| -> Result<Factorization, ConicError> {
-        let mut rest = n.clone();
-        let mut factors = Vec::new();
-        for &p in &known {
-            let pb = IBig::from(p);
-            let mut e = 0;
-            while (&rest % &pb).is_zero() {
-                rest /= &pb;
-                e += 1;
-            }
-            if e > 0 {
-                factors.push((p, e));
-            }
-        }
-        let f = factorize(&rest)?;
-        for &(p, _) in &f.factors {
-            known.push(p);
-        }
-        factors.extend(f.factors);
-        factors.sort_unstable();
-        Ok(Factorization {
-            negative: false,
-            factors,
-        })
-    };
-    let mut factored = Vec::with_capacity(3);
-    let mut scale: Vec<RBig> = Vec::with_capacity(3);
-    for di in &d {
-        let den = IBig::from(di.denominator().clone());
-        let fnum = factor_once(&abs(di.numerator()))?;
-        let fden = factor_once(&den)?;
-        factored.push(multiply(&fnum, &fden, *di < RBig::ZERO));
-        scale.push(RBig::from(den));
-    }
-    let (coefs, s) = reduce(&factored);
-    for i in 0..3 {
-        scale[i] *= &s[i];
-    }
+    // one coprime base for all six.
+    let parts: Vec<IBig> = d
+        .iter()
+        .flat_map(|di| [di.numerator().clone(), IBig::from(di.denominator().clone())])
+        .collect();
+    let mut budget = legendre::CONIC_RHO_BUDGET;
+    let fac = factor_all(&parts, &mut budget);
+    let exps: [Vec<(usize, u32)>; 3] = std::array::from_fn(|i| {
+        let mut e = fac.parts[2 * i].clone();
+        e.extend(fac.parts[2 * i + 1].iter().copied()); // numerator and denominator coprime
+        e
+    });
+    let (coefs, s) = reduce(
+        &fac.atoms,
+        &exps,
+        std::array::from_fn(|i| d[i] < RBig::ZERO),
+    );
+    let scale: Vec<RBig> = (0..3)
+        .map(|i| RBig::from(IBig::from(d[i].denominator().clone())) * &s[i])
+        .collect();
     let apply = |w: &[RBig; 3]| -> [RBig; 3] {
         let y: Vec<RBig> = (0..3).map(|i| &scale[i] * &w[i]).collect();
         std::array::from_fn(|i| (0..3).fold(RBig::ZERO, |acc, j| acc + &t[i][j] * &y[j]))
     };
-    if let Some(w) = solve_reduced(&coefs)? {
-        let x = apply(&w.map(RBig::from));
-        return Ok(ConicPoint::Rational(to_array(primitive(&x))));
-    }
-    // No rational point: fᵢWᵢ² + fⱼWⱼ² = 0 at W = (√δ, fᵢ) with δ = −fᵢfⱼ.
+    let proven = match solve_reduced(&coefs, &fac.atoms) {
+        Legendre::Solution(w) => {
+            let x = apply(&w.map(RBig::from));
+            return Ok(ConicPoint::Rational(to_array(primitive(&x))));
+        }
+        Legendre::NoSolution => true,
+        Legendre::Undecided { .. } => false,
+    };
+    // fᵢWᵢ² + fⱼWⱼ² = 0 at W = (√δ, fᵢ) with δ = −fᵢfⱼ.
     let (i, j) = [(0, 1), (0, 2), (1, 2)]
         .into_iter()
         .filter(|&(i, j)| coefs[i].value.signum() != coefs[j].value.signum())
@@ -213,6 +215,11 @@ pub fn find_point(c: &[[RBig; 3]; 3]) -> Result<ConicPoint, ConicError> {
     wr[j] = RBig::from(coefs[i].value.clone());
     wi[i] = RBig::ONE;
     let (xr, xi) = (apply(&wr), apply(&wi));
+    if let Some(root) = Quadratic::sqrt(&delta).as_rational() {
+        // δ = 1 (atoms are no squares, nor their coprime products): a rational point after all
+        let x: Vec<RBig> = (0..3).map(|k| &xr[k] + root * &xi[k]).collect();
+        return Ok(ConicPoint::Rational(to_array(primitive(&x))));
+    }
     let all: Vec<RBig> = xr.iter().chain(xi.iter()).cloned().collect();
     let ints = primitive(&all);
     let coords = std::array::from_fn(|k| {
@@ -221,12 +228,14 @@ pub fn find_point(c: &[[RBig; 3]; 3]) -> Result<ConicPoint, ConicError> {
             RBig::from(ints[k + 3].clone()),
             delta.clone(),
         )
-        .expect("δ is not a square, else (1, 1, 0) would have been a rational point")
+        .expect("δ is not a square")
     });
-    Ok(ConicPoint::NoRationalPoint(Box::new(QuadraticPoint {
-        delta,
-        coords,
-    })))
+    let point = Box::new(QuadraticPoint { delta, coords });
+    Ok(if proven {
+        ConicPoint::NoRationalPoint(point)
+    } else {
+        ConicPoint::Undecided(point)
+    })
 }
 
 /// A nonzero integer solution of `a x² + b y² + c z² = 0` (coprime, first nonzero entry
@@ -234,7 +243,9 @@ pub fn find_point(c: &[[RBig; 3]; 3]) -> Result<ConicPoint, ConicError> {
 ///
 /// # Errors
 /// [`ConicError::ZeroMatrix`] if a coefficient is zero (the form is then degenerate: use
-/// [`find_point`]); [`ConicError::Factor`] if a coefficient exceeds the factoring bounds.
+/// [`find_point`]); [`ConicError::Factor`] if the answer needs a square root modulo a
+/// cofactor that was not factored (trial division, then Pollard rho within
+/// [`crate::factor::RHO_BUDGET`] steps) and no Jacobi symbol settles it.
 ///
 /// # Examples
 /// ```
@@ -250,10 +261,22 @@ pub fn solve_legendre(a: &IBig, b: &IBig, c: &IBig) -> Result<Option<[IBig; 3]>,
     if a.is_zero() || b.is_zero() || c.is_zero() {
         return Err(ConicError::ZeroMatrix);
     }
-    let factored = [factorize(a)?, factorize(b)?, factorize(c)?];
-    let (coefs, scale) = reduce(&factored);
-    let Some(w) = solve_reduced(&coefs)? else {
-        return Ok(None);
+    let mut budget = RHO_BUDGET;
+    let fac = factor_all(&[a.clone(), b.clone(), c.clone()], &mut budget);
+    let exps: [Vec<(usize, u32)>; 3] = std::array::from_fn(|i| fac.parts[i].clone());
+    let negative = [a, b, c].map(|v| *v < IBig::ZERO);
+    let (coefs, scale) = reduce(&fac.atoms, &exps, negative);
+    let w = match solve_reduced(&coefs, &fac.atoms) {
+        Legendre::Solution(w) => w,
+        Legendre::NoSolution => return Ok(None),
+        Legendre::Undecided { bits } if bits > 128 => {
+            return Err(ConicError::Factor(FactorError::TooLarge { bits }))
+        }
+        Legendre::Undecided { bits } => {
+            return Err(ConicError::Factor(FactorError::HardToFactor {
+                bits: bits as u32,
+            }))
+        }
     };
     let x: Vec<RBig> = (0..3)
         .map(|i| &scale[i] * RBig::from(w[i].clone()))
@@ -403,234 +426,6 @@ impl ConicParameterization {
     }
 }
 
-/// A square-free integer coefficient with its prime factors.
-#[derive(Clone, Debug)]
-struct Coefficient {
-    value: IBig,
-    primes: Vec<u128>,
-}
-
-/// `±` the product of two factorizations with disjoint primes (numerator and denominator of
-/// a reduced fraction).
-fn multiply(f: &Factorization, g: &Factorization, negative: bool) -> Factorization {
-    let mut factors: Vec<(u128, u32)> = f.factors.iter().chain(&g.factors).copied().collect();
-    factors.sort_unstable();
-    Factorization { negative, factors }
-}
-
-/// `Σ eᵢYᵢ² = 0` made square-free and pairwise coprime: `Σ fᵢWᵢ² = 0` with `Yᵢ = sᵢWᵢ`.
-/// Per prime `p`: squares leave with `Yᵢ = Wᵢ/r`; dividing all three coefficients divides the
-/// equation; dividing two (`fᵢ = p fᵢ'`, `fⱼ = p fⱼ'`) gives `fᵢ'Wᵢ² + fⱼ'Wⱼ² + p fₖWₖ²` with
-/// `Yᵢ = Wᵢ/p`, `Yⱼ = Wⱼ/p` (the equation times `p`).
-fn reduce(e: &[Factorization]) -> ([Coefficient; 3], [RBig; 3]) {
-    let mut scale: [RBig; 3] = std::array::from_fn(|_| RBig::ONE);
-    let mut sets: [Vec<u128>; 3] = Default::default();
-    for i in 0..3 {
-        let (part, root) = e[i].squarefree_split();
-        scale[i] = RBig::from_parts_signed(IBig::ONE, root);
-        sets[i] = part.factors.iter().map(|&(p, _)| p).collect();
-    }
-    let mut all: Vec<u128> = sets.iter().flatten().copied().collect();
-    all.sort_unstable();
-    all.dedup();
-    let mut out: [Vec<u128>; 3] = Default::default();
-    for p in all {
-        let has: Vec<usize> = (0..3)
-            .filter(|&i| sets[i].binary_search(&p).is_ok())
-            .collect();
-        match has.len() {
-            1 => out[has[0]].push(p),
-            2 => {
-                let k = 3 - has[0] - has[1];
-                out[k].push(p);
-                for &i in &has {
-                    scale[i] /= RBig::from(IBig::from(p));
-                }
-            }
-            _ => {}
-        }
-    }
-    let coefs = std::array::from_fn(|i| {
-        out[i].sort_unstable();
-        let mut value: IBig = out[i].iter().map(|&p| IBig::from(p)).product();
-        if e[i].negative {
-            value = -value;
-        }
-        Coefficient {
-            value,
-            primes: out[i].clone(),
-        }
-    });
-    (coefs, scale)
-}
-
-/// A nonzero solution of `a x² + b y² + c z² = 0` for square-free pairwise coprime `a, b, c`
-/// (module doc), or `None`.
-fn solve_reduced(f: &[Coefficient; 3]) -> Result<Option<[IBig; 3]>, ConicError> {
-    let negatives = f.iter().filter(|c| c.value < IBig::ZERO).count();
-    if negatives == 0 || negatives == 3 {
-        return Ok(None);
-    }
-    // Order (i, j, k) so that, after negating the equation if needed, a, b > 0 > c.
-    let flip = negatives == 2;
-    let val = |i: usize| {
-        if flip {
-            -&f[i].value
-        } else {
-            f[i].value.clone()
-        }
-    };
-    let k = (0..3)
-        .find(|&i| val(i) < IBig::ZERO)
-        .expect("one coefficient has the lone sign");
-    let (i, j) = match k {
-        0 => (1, 2),
-        1 => (0, 2),
-        _ => (0, 1),
-    };
-    let (a, b, c) = (val(i), val(j), val(k));
-    let Some(ra) = sqrt_ratio_mod(&-&c, &b, &f[i].primes)? else {
-        return Ok(None);
-    };
-    let Some(rb) = sqrt_ratio_mod(&-&a, &c, &f[j].primes)? else {
-        return Ok(None);
-    };
-    let Some(rc) = sqrt_ratio_mod(&-&b, &a, &f[k].primes)? else {
-        return Ok(None);
-    };
-    // Λ: y ≡ ra·z (mod a), z ≡ rb·x (mod b), x ≡ rc·y (mod c); as one congruence modulo
-    // N = |abc|: αx + βy + γz ≡ 0.
-    let (ma, mb, mc) = (abs(&a), abs(&b), abs(&c));
-    let n = &ma * &mb * &mc;
-    let alpha = crt(&[(IBig::ZERO, &ma), (-&rb, &mb), (IBig::ONE, &mc)]);
-    let beta = crt(&[(IBig::ONE, &ma), (IBig::ZERO, &mb), (-&rc, &mc)]);
-    let gamma = crt(&[(-&ra, &ma), (IBig::ONE, &mb), (IBig::ZERO, &mc)]);
-    let mut basis = congruence_lattice([alpha, beta, gamma], &n);
-    let weights = [ma.clone(), mb.clone(), IBig::from(2) * &mc];
-    lll(&mut basis, &weights);
-    let v = &basis[0];
-    let q = &a * &v[0] * &v[0] + &b * &v[1] * &v[1] + &c * &v[2] * &v[2];
-    let abc = &a * &b * &c;
-    let sol = if q.is_zero() {
-        v.clone()
-    } else {
-        assert_eq!(
-            q, -&abc,
-            "Minkowski bound: Q(v) ∈ {{0, −abc}} for the reduced vector"
-        );
-        [
-            &v[0] * &v[2] + &b * &v[1],
-            &v[1] * &v[2] - &a * &v[0],
-            &v[2] * &v[2] + &a * &b,
-        ]
-    };
-    let mut out: [IBig; 3] = Default::default();
-    out[i] = sol[0].clone();
-    out[j] = sol[1].clone();
-    out[k] = sol[2].clone();
-    let check: IBig = (0..3).map(|l| &f[l].value * &out[l] * &out[l]).sum();
-    assert!(
-        check.is_zero() && out.iter().any(|v| !v.is_zero()),
-        "Legendre solution checked"
-    );
-    Ok(Some(out))
-}
-
-/// A root `r` of `r² ≡ num/den` modulo the product of `primes` (each coprime to `den`), or
-/// `None` if `num·den` is a non-residue modulo one of them (Jacobi symbol −1).
-fn sqrt_ratio_mod(num: &IBig, den: &IBig, primes: &[u128]) -> Result<Option<IBig>, ConicError> {
-    let mut parts = Vec::with_capacity(primes.len());
-    for &p in primes {
-        let pb = IBig::from(p);
-        let x = residue(&(num * den), &pb);
-        if p != 2 && jacobi(x, p) == -1 {
-            return Ok(None);
-        }
-        // A failed root after Jacobi +1 means p was not prime after all.
-        let s = sqrt_mod_prime(x, p).ok_or(FactorError::HardToFactor {
-            bits: 128 - p.leading_zeros(),
-        })?;
-        let r = IBig::from(s) * inv_mod(den, &pb) % &pb;
-        parts.push((r, pb));
-    }
-    let refs: Vec<(IBig, &IBig)> = parts.iter().map(|(r, p)| (r.clone(), p)).collect();
-    Ok(Some(crt(&refs)))
-}
-
-/// A basis (rows) of `{v ∈ ℤ³ : coef·v ≡ 0 (mod n)}` for a surjective congruence
-/// (every prime of `n` divides some coefficient's complement): `U·diag(n, 1, 1)` for a
-/// unimodular `U` with `coef·U = (g, 0, 0)`, `gcd(g, n) = 1`.
-fn congruence_lattice(coef: [IBig; 3], n: &IBig) -> [[IBig; 3]; 3] {
-    // Columns of U, built by two extended-gcd steps.
-    let mut cols: [[IBig; 3]; 3] =
-        std::array::from_fn(|i| std::array::from_fn(|j| IBig::from((i == j) as i32)));
-    // Columns p, q of U so that coef·U has g = gcd(x, y) at p and 0 at q (x, y there before).
-    fn combine(cols: &mut [[IBig; 3]; 3], p: usize, q: usize, x: &IBig, y: &IBig) -> IBig {
-        let (g, s, t) = ext_gcd(x, y);
-        if !g.is_zero() {
-            let (u, w) = (cols[p].clone(), cols[q].clone());
-            let (yg, xg) = (y / &g, x / &g);
-            cols[p] = std::array::from_fn(|i| &s * &u[i] + &t * &w[i]);
-            cols[q] = std::array::from_fn(|i| &xg * &w[i] - &yg * &u[i]);
-        }
-        g
-    }
-    let g1 = combine(&mut cols, 0, 1, &coef[0], &coef[1]);
-    combine(&mut cols, 0, 2, &g1, &coef[2]);
-    cols[0] = std::array::from_fn(|i| n * &cols[0][i]);
-    debug_assert!(cols
-        .iter()
-        .all(|v| residue(&(0..3).map(|i| &coef[i] * &v[i]).sum::<IBig>(), n) == 0));
-    cols
-}
-
-/// LLL reduction (δ = 99/100) of the rows of `basis` for the norm `Σ wᵢvᵢ²` (exact rational
-/// Gram–Schmidt, recomputed after each change: dimension 3).
-fn lll(basis: &mut [[IBig; 3]; 3], w: &[IBig; 3]) {
-    let delta = RBig::from_parts(IBig::from(99), 100u8.into());
-    let dot =
-        |u: &[IBig; 3], v: &[IBig; 3]| -> IBig { (0..3).map(|i| &w[i] * &u[i] * &v[i]).sum() };
-    let gram_schmidt = |b: &[[IBig; 3]; 3]| -> ([[RBig; 3]; 3], [RBig; 3]) {
-        let mut mu: [[RBig; 3]; 3] = Default::default();
-        let mut bn: [RBig; 3] = Default::default();
-        for i in 0..3 {
-            for j in 0..i {
-                let mut v = RBig::from(dot(&b[i], &b[j]));
-                for l in 0..j {
-                    v -= &mu[j][l] * &mu[i][l] * &bn[l];
-                }
-                mu[i][j] = v / &bn[j];
-            }
-            let mut v = RBig::from(dot(&b[i], &b[i]));
-            for l in 0..i {
-                v -= &mu[i][l] * &mu[i][l] * &bn[l];
-            }
-            bn[i] = v;
-        }
-        (mu, bn)
-    };
-    let mut k = 1;
-    while k < 3 {
-        for j in (0..k).rev() {
-            let (mu, _) = gram_schmidt(basis);
-            let q = mu[k][j].round();
-            if !q.is_zero() {
-                let bj = basis[j].clone();
-                for i in 0..3 {
-                    basis[k][i] -= &q * &bj[i];
-                }
-            }
-        }
-        let (mu, bn) = gram_schmidt(basis);
-        if bn[k] >= (&delta - &mu[k][k - 1] * &mu[k][k - 1]) * &bn[k - 1] {
-            k += 1;
-        } else {
-            basis.swap(k, k - 1);
-            k = (k - 1).max(1);
-        }
-    }
-}
-
 fn check_symmetric(c: &[[RBig; 3]; 3]) -> Result<(), ConicError> {
     for row in 0..3 {
         for col in row + 1..3 {
@@ -689,60 +484,6 @@ fn abs(v: &IBig) -> IBig {
     } else {
         v.clone()
     }
-}
-
-/// `v mod m` in `0..m` as a machine integer (`m ≤ 2¹²⁸`, positive).
-fn residue(v: &IBig, m: &IBig) -> u128 {
-    let r = v % m;
-    let r = if r < IBig::ZERO { r + m } else { r };
-    u128::try_from(&r).expect("a residue modulo a 128-bit modulus")
-}
-
-/// `(g, s, t)` with `g = gcd(x, y) ≥ 0` and `s·x + t·y = g` (`(0, 1, 0)` for two zeros).
-fn ext_gcd(x: &IBig, y: &IBig) -> (IBig, IBig, IBig) {
-    let (mut r0, mut r1) = (x.clone(), y.clone());
-    let (mut s0, mut s1) = (IBig::ONE, IBig::ZERO);
-    let (mut t0, mut t1) = (IBig::ZERO, IBig::ONE);
-    while !r1.is_zero() {
-        let q = &r0 / &r1;
-        (r0, r1) = (r1.clone(), &r0 - &q * &r1);
-        (s0, s1) = (s1.clone(), &s0 - &q * &s1);
-        (t0, t1) = (t1.clone(), &t0 - &q * &t1);
-    }
-    if r0 < IBig::ZERO {
-        (-r0, -s0, -t0)
-    } else {
-        (r0, s0, t0)
-    }
-}
-
-/// `x⁻¹ mod m` in `0..m` for `gcd(x, m) = 1`, `m > 0`.
-fn inv_mod(x: &IBig, m: &IBig) -> IBig {
-    let (g, s, _) = ext_gcd(x, m);
-    debug_assert!(g.is_one() || m.is_one());
-    let r = s % m;
-    if r < IBig::ZERO {
-        r + m
-    } else {
-        r
-    }
-}
-
-/// The `r` in `0..∏m` with `r ≡ rᵢ (mod mᵢ)`, moduli pairwise coprime and positive.
-fn crt(parts: &[(IBig, &IBig)]) -> IBig {
-    let (mut r, mut m) = (IBig::ZERO, IBig::ONE);
-    for (ri, mi) in parts {
-        let mi: &IBig = mi;
-        // r + m·k ≡ ri (mod mi)
-        let k = (ri - &r) * inv_mod(&m, mi) % mi;
-        r += &m * k;
-        m *= mi;
-        r %= &m;
-        if r < IBig::ZERO {
-            r += &m;
-        }
-    }
-    r
 }
 
 fn dot(u: &[IBig; 3], v: &[IBig; 3]) -> IBig {
@@ -805,41 +546,10 @@ mod tests {
                     }
                 }
                 ConicPoint::NoRealPoint => assert!(!singular && !indefinite, "{c:?}"),
-                ConicPoint::NoRationalPoint(_) => panic!("{c:?}: a rational point exists"),
+                ConicPoint::NoRationalPoint(_) | ConicPoint::Undecided(_) => {
+                    panic!("{c:?}: a rational point exists")
+                }
             }
         }
-    }
-
-    #[test]
-    fn congruence_lattice_has_index_n() {
-        for (coef, n) in [
-            ([0i64, 4, 1], 15i64),
-            ([3, 0, 0], 7),
-            ([0, 0, 0], 1),
-            ([6, 10, 15], 7 * 11),
-        ] {
-            let coef = coef.map(IBig::from);
-            let n = IBig::from(n);
-            let b = congruence_lattice(coef.clone(), &n);
-            assert_eq!(abs(&minors::det(&b)), n);
-            for v in &b {
-                assert_eq!(residue(&dot(&coef, v), &n), 0);
-            }
-        }
-    }
-
-    #[test]
-    fn crt_and_inverses() {
-        let (m1, m2, m3) = (IBig::from(4), IBig::from(9), IBig::from(25));
-        let r = crt(&[
-            (IBig::from(3), &m1),
-            (IBig::from(-1), &m2),
-            (IBig::from(7), &m3),
-        ]);
-        assert_eq!(residue(&r, &m1), 3);
-        assert_eq!(residue(&r, &m2), 8);
-        assert_eq!(residue(&r, &m3), 7);
-        assert_eq!(inv_mod(&IBig::from(-3), &IBig::from(7)), IBig::from(2));
-        assert_eq!(ext_gcd(&IBig::from(-12), &IBig::from(18)).0, IBig::from(6));
     }
 }

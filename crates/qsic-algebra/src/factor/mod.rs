@@ -17,6 +17,8 @@ use dashu_int::ops::{BitTest, UnsignedAbs};
 use dashu_int::{IBig, UBig};
 use std::fmt;
 
+pub mod large;
+
 /// Primes below this are divided out by trial division.
 pub const TRIAL_LIMIT: u32 = 1 << 16;
 
@@ -121,6 +123,48 @@ impl Factorization {
 /// assert_eq!(factorize(&n).unwrap().factors, vec![(2147483629, 1), (2147483647, 1)]);
 /// ```
 pub fn factorize(n: &IBig) -> Result<Factorization, FactorError> {
+    let mut budget = RHO_BUDGET;
+    let partial = factorize_partial(n, &mut budget)?;
+    match partial.cofactors.iter().map(UBig::bit_len).max() {
+        None => Ok(Factorization {
+            negative: partial.negative,
+            factors: partial.factors,
+        }),
+        Some(bits) if bits > 128 => Err(FactorError::TooLarge { bits }),
+        Some(bits) => Err(FactorError::HardToFactor { bits: bits as u32 }),
+    }
+}
+
+/// What [`factorize_partial`] found: `n = ±∏ pᵢ^eᵢ · ∏ cⱼ`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PartialFactorization {
+    /// `n < 0`.
+    pub negative: bool,
+    /// `(prime, exponent)`, primes strictly increasing, exponents ≥ 1.
+    pub factors: Vec<(u128, u32)>,
+    /// The parts not factored: each above 1 without prime factors below [`TRIAL_LIMIT`],
+    /// either above `2¹²⁸` (not tested) or a composite below it that rho did not split.
+    pub cofactors: Vec<UBig>,
+}
+
+/// The primes of a nonzero `n` that trial division below [`TRIAL_LIMIT`] and Pollard's rho on
+/// a cofactor below `2¹²⁸` (spending at most `budget` steps, decremented) find, and what is
+/// left unfactored: never an error for a number too large to factor.
+///
+/// # Errors
+/// [`FactorError::Zero`] for 0.
+///
+/// # Examples
+/// ```
+/// use qsic_algebra::factor::factorize_partial;
+/// use qsic_algebra::{IBig, UBig};
+/// let big = (IBig::ONE << 521) - IBig::ONE; // no small factor, above 2¹²⁸
+/// let f = factorize_partial(&(IBig::from(-12) * &big), &mut 1000).unwrap();
+/// assert!(f.negative);
+/// assert_eq!(f.factors, vec![(2, 2), (3, 1)]);
+/// assert_eq!(f.cofactors, vec![(UBig::ONE << 521) - UBig::ONE]);
+/// ```
+pub fn factorize_partial(n: &IBig, budget: &mut u64) -> Result<PartialFactorization, FactorError> {
     if n.is_zero() {
         return Err(FactorError::Zero);
     }
@@ -137,8 +181,10 @@ pub fn factorize(n: &IBig) -> Result<Factorization, FactorError> {
             break m;
         }
         if next >= primes.len() {
-            return Err(FactorError::TooLarge {
-                bits: big.bit_len(),
+            return Ok(PartialFactorization {
+                negative,
+                factors,
+                cofactors: vec![big],
             });
         }
         let chunk = &primes[next..(next + 4).min(primes.len())];
@@ -186,9 +232,9 @@ pub fn factorize(n: &IBig) -> Result<Factorization, FactorError> {
         }
         factors.push((p, e));
     }
-    let mut budget = RHO_BUDGET;
     let mut stack = vec![m];
     let mut large: Vec<u128> = Vec::new();
+    let mut cofactors: Vec<UBig> = Vec::new();
     while let Some(q) = stack.pop() {
         if q == 1 {
             continue;
@@ -197,11 +243,13 @@ pub fn factorize(n: &IBig) -> Result<Factorization, FactorError> {
             large.push(q);
             continue;
         }
-        let d = split(q, &mut budget).ok_or(FactorError::HardToFactor {
-            bits: 128 - q.leading_zeros(),
-        })?;
-        stack.push(d);
-        stack.push(q / d);
+        match split(q, budget) {
+            Some(d) => {
+                stack.push(d);
+                stack.push(q / d);
+            }
+            None => cofactors.push(UBig::from(q)),
+        }
     }
     large.sort_unstable();
     for p in large {
@@ -210,7 +258,11 @@ pub fn factorize(n: &IBig) -> Result<Factorization, FactorError> {
             _ => factors.push((p, 1)),
         }
     }
-    Ok(Factorization { negative, factors })
+    Ok(PartialFactorization {
+        negative,
+        factors,
+        cofactors,
+    })
 }
 
 /// The number of primes below [`TRIAL_LIMIT`].
