@@ -42,6 +42,7 @@ pub mod testing;
 pub use algebraic::AlgebraicReal;
 pub use budget::{Budget, Exhausted};
 pub use dashu_int::IBig;
+pub use dashu_int::UBig;
 pub use dashu_ratio::RBig;
 pub use mpoly::MPoly;
 pub use poly::Poly;
