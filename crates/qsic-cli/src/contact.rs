@@ -25,8 +25,7 @@
 //! (`--line-budget`); [`answer_contact_line`] answers one line of `qsic contact --batch`
 //! (`{"id", "A", "B"}` in, `{"id", "range", …}` or the error record out).
 
-use crate::batch::{answer_with, catch_panic, open_record, read_record, LineFailure, RawLine};
-use crate::input::JsonForm;
+use crate::batch::{answer_with, LineFailure, RawLine};
 use crate::output::write_json_string;
 use qsic::io::MovingMatrix;
 use qsic::motion::contact::{
@@ -294,30 +293,12 @@ fn contact_line<'a>(
     range: &TimeRange,
     units: u64,
 ) -> Result<String, LineFailure<'a>> {
-    let record = read_record(line)?;
-    let id = record.id;
-    let fail = |message: String| LineFailure { id, message };
-    let read = |name: &str, form: &Option<JsonForm<'_>>| match form {
-        None => Err(fail(format!("missing field \"{name}\""))),
-        Some(form) => {
-            crate::motion::moving_from_form(form).map_err(|e| fail(format!("{name}: {e}")))
-        }
-    };
-    let a = read("A", &record.a)?;
-    let b = read("B", &record.b)?;
-    let report = match catch_panic(|| contact_within(a, b, range.clone(), &Budget::new(units))) {
-        Ok(Ok(r)) => r,
-        Ok(Err(e)) => return Err(fail(format!("A and B: {e}"))),
-        Err(what) => {
-            return Err(fail(format!(
-                "internal error in the contact analysis (a bug): {what}"
-            )))
-        }
-    };
-    let mut out = open_record(id);
-    write_report_fields(&mut out, &report);
-    out.push('}');
-    Ok(out)
+    crate::motion::moving_pair_line(
+        line,
+        "contact",
+        |a, b| contact_within(a, b, range.clone(), &Budget::new(units)),
+        write_report_fields,
+    )
 }
 
 /// Appends the report's fields `"range":…,"first_contact":…,"contact":…,"solids":…`,

@@ -322,6 +322,23 @@ fn motion_line<'a>(
     range: &TimeRange,
     units: u64,
 ) -> Result<String, LineFailure<'a>> {
+    moving_pair_line(
+        line,
+        "motion",
+        |a, b| analyze_within(a, b, range, &Budget::new(units)),
+        write_motion_fields,
+    )
+}
+
+/// One batch line of a moving pair (`qsic motion`, `qsic contact`): the record read, its
+/// `"A"` and `"B"` as moving matrices, `analyze` run on them (a panic caught and named as a
+/// bug of the `what` analysis), and the answer's fields written by `write` after the id.
+pub(crate) fn moving_pair_line<'a, T>(
+    line: &'a RawLine,
+    what: &str,
+    analyze: impl FnOnce(MovingMatrix, MovingMatrix) -> Result<T, Error>,
+    write: impl FnOnce(&mut String, &T),
+) -> Result<String, LineFailure<'a>> {
     let record = read_record(line)?;
     let id = record.id;
     let fail = |message: String| LineFailure { id, message };
@@ -331,17 +348,17 @@ fn motion_line<'a>(
     };
     let a = read("A", &record.a)?;
     let b = read("B", &record.b)?;
-    let motion = match catch_panic(|| analyze_within(a, b, range, &Budget::new(units))) {
+    let answer = match catch_panic(|| analyze(a, b)) {
         Ok(Ok(m)) => m,
         Ok(Err(e)) => return Err(fail(format!("A and B: {e}"))),
-        Err(what) => {
+        Err(cause) => {
             return Err(fail(format!(
-                "internal error in the motion analysis (a bug): {what}"
+                "internal error in the {what} analysis (a bug): {cause}"
             )))
         }
     };
     let mut out = open_record(id);
-    write_motion_fields(&mut out, &motion);
+    write(&mut out, &answer);
     out.push('}');
     Ok(out)
 }
