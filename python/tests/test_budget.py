@@ -61,3 +61,28 @@ def test_a_bad_budget_is_refused(bad):
 def test_the_default_is_the_cli_default():
     assert qsic.DEFAULT_BUDGET == 10**12
     assert qsic.classify(*SPHERES, budget=np.int64(10**12)).case == qsic.classify(*SPHERES).case
+
+
+# a sphere moving along the x axis through a fixed one: instants ±3, ±1 and 0 (concentric)
+MOVING = ("(x-t)^2+y^2+z^2-4", "x^2+y^2+z^2-1")
+
+
+def test_motion_and_first_contact_take_the_budget():
+    full = qsic.motion(*MOVING)
+    assert [i["t"] for i in full["instants"]] == ["-3", "-1", "0", "1", "3"]
+    with pytest.raises(QsicError, match="over the work budget: 100 units"):
+        qsic.motion(*MOVING, budget=100)
+    assert qsic.motion(*MOVING, budget=10**9) == full
+    contact = qsic.first_contact(*MOVING)
+    assert contact["first_contact"] == "-3"
+    with pytest.raises(QsicError, match="over the work budget: 100 units"):
+        qsic.first_contact(*MOVING, budget=100)
+    assert qsic.first_contact(*MOVING, budget=10**9) == contact
+
+
+@pytest.mark.parametrize("bad", [0, -5, 2**64, 2.5])
+def test_a_bad_motion_budget_is_refused(bad):
+    with pytest.raises(QsicError, match="budget must be a positive integer"):
+        qsic.motion(*MOVING, budget=bad)
+    with pytest.raises(QsicError, match="budget must be a positive integer"):
+        qsic.first_contact(*MOVING, budget=bad)
