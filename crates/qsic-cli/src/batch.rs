@@ -30,10 +30,7 @@ use std::io::{self, Read, Write};
 use std::panic::{self, AssertUnwindSafe};
 use std::time::Duration;
 
-/// Longest input line, in bytes, not counting its line terminator (1 MiB). A 4×4
-/// matrix of numbers at the library's digit limit, or two polynomial strings at its
-/// length limit, fit well within it.
-pub const MAX_LINE_BYTES: usize = 1 << 20;
+pub use crate::reader::MAX_LINE_BYTES;
 
 /// Most lines read and not yet written: the reader waits while this many are pending.
 pub const PENDING_LINES: usize = 4096;

@@ -4,8 +4,7 @@
 //! sorted eigenvalues (Jacobi's method) at a grid of `λ`, floats only to draw; the roots and
 //! the index on `u = 0` are exact.
 
-use crate::plot::{short, WIDTH};
-use crate::svg::{push_text, push_title, wrap, Panel};
+use crate::svg::{push_text, push_title, short, wrap, Panel, WIDTH};
 use qsic::classify::analyze_pencil;
 use qsic::pencil::PencilPoint;
 use qsic::Quadric;

@@ -22,7 +22,7 @@ use std::borrow::Cow;
 use std::fmt;
 
 /// Longest JSON matrix accepted as a command-line argument, in bytes: the batch line limit.
-pub const MAX_MATRIX_ARG_BYTES: usize = crate::batch::MAX_LINE_BYTES;
+pub const MAX_MATRIX_ARG_BYTES: usize = crate::reader::MAX_LINE_BYTES;
 
 /// Why a quadric could not be read.
 #[derive(Debug)]

@@ -26,7 +26,7 @@
 pub use crate::eigencurve::eigencurve_panel;
 use crate::param::curve_of;
 use crate::plot_common::{anchor, common_of, Common};
-use crate::svg::{colour, document, push_text, push_title, wrap, Panel};
+use crate::svg::{colour, document, push_text, push_title, short, wrap, Panel, WIDTH};
 use qsic::affine::{affine_view, AffineView, Chart};
 use qsic::param::sample::{sample, SampleOptions, Sampled};
 use qsic::param::Curve;
@@ -793,27 +793,10 @@ fn push_path_data(out: &mut String, camera: &Camera, line: &[[f64; 3]]) {
     }
 }
 
-/// A short decimal: three significant decimals, scientific notation for very large or small.
-pub(crate) fn short(v: f64) -> String {
-    let v = v + 0.0;
-    if v != 0.0 && !(1e-3..1e5).contains(&v.abs()) {
-        return format!("{v:.2e}");
-    }
-    let s = format!("{v:.3}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".into()
-    } else {
-        s.into()
-    }
-}
-
 fn point_text(p: &[f64; 3]) -> String {
     format!("({}, {}, {})", short(p[0]), short(p[1]), short(p[2]))
 }
 
-/// Page width of the panels.
-pub(crate) const WIDTH: f64 = 1000.0;
 /// The drawing rectangle of the curve panel.
 const DRAW: (f64, f64, f64, f64) = (10.0, 40.0, 600.0, 580.0);
 /// Left edge of the legend.

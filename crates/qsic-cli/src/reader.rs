@@ -6,6 +6,11 @@
 use std::io::{self, BufRead, BufReader, Read};
 
 /// Size of the input buffer.
+/// Longest input line, in bytes, not counting its line terminator (1 MiB). A 4×4
+/// matrix of numbers at the library's digit limit, or two polynomial strings at its
+/// length limit, fit well within it.
+pub const MAX_LINE_BYTES: usize = 1 << 20;
+
 const READ_BUFFER_BYTES: usize = 256 << 10;
 
 /// The UTF-8 byte-order mark, skipped at the very start of the input (editors on Windows

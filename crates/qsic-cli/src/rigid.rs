@@ -1,5 +1,7 @@
-//! The JSON object form of a moving quadric: a quadric under a rigid motion
-//! ([`qsic::motion::rigid`]), for `qsic motion`, `qsic contact`, their batch lines and Python.
+//! Moving quadrics as the user writes them, for `qsic motion`, `qsic contact`, their batch
+//! lines and Python: a polynomial string or a 4×4 array in `t` ([`moving_from_arg`],
+//! [`moving_from_form`]), or the JSON object form, a quadric under a rigid motion
+//! ([`qsic::motion::rigid`]):
 //!
 //! ```text
 //! {"quadric": Q,                                   a quadric: a polynomial string or a 4x4 array
@@ -15,9 +17,10 @@
 //! an axis (it is the axis' parameterization). A point `x` moves to
 //! `R(t)(x − p) + p + c(t)`.
 
-use crate::input::InputError;
-use crate::motion::moving_from_arg;
-use qsic::io::{parse_number, MovingMatrix};
+use crate::input::{matrix_texts, InputError, JsonForm};
+use qsic::io::{
+    moving_matrix_from_polynomial, moving_matrix_from_rows, parse_number, MovingMatrix,
+};
 use qsic::motion::rigid::{parse_polynomial_in_t, RationalPoly, RigidMotion, Rotation};
 use qsic::Error;
 use qsic_algebra::RBig;
@@ -182,6 +185,85 @@ pub fn moving_from_object_text(text: &str) -> Result<MovingMatrix, InputError> {
             crate::input::json_kind(other)
         ))),
     }
+}
+
+/// Reads a moving quadric from a command-line argument: a JSON array of 4 rows of 4 entries
+/// (numbers or strings of rational functions of `t`) if it starts with `[`, a quadric under
+/// a rigid motion (below) if it starts with `{`, otherwise a quadratic form in
+/// `x, y, z, w` (or affine in `x, y, z`) with coefficients rational in `t`.
+///
+/// # Errors
+/// [`InputError::Json`] or [`InputError::Type`] for a bad JSON matrix, otherwise the
+/// reader's error (syntax, symmetry, zero quadric, limits).
+pub fn moving_from_arg(text: &str) -> Result<MovingMatrix, InputError> {
+    let object = text.trim_start().starts_with('{');
+    if !text.trim_start().starts_with('[') && !object {
+        return Ok(moving_matrix_from_polynomial(text)?);
+    }
+    if text.len() > crate::input::MAX_MATRIX_ARG_BYTES {
+        return Err(InputError::TooLong(text.len()));
+    }
+    if object {
+        return moving_from_object_text(text);
+    }
+    let value: Value = serde_json::from_str(text).map_err(InputError::Json)?;
+    let Value::Array(rows) = &value else {
+        return Err(InputError::Type(format!(
+            "expected a 4x4 array, found {}",
+            crate::input::json_kind(&value)
+        )));
+    };
+    let mut texts = Vec::with_capacity(rows.len());
+    for (i, row) in rows.iter().enumerate() {
+        let Value::Array(entries) = row else {
+            return Err(InputError::Type(format!(
+                "row {i} of the matrix must be an array, found {}",
+                crate::input::json_kind(row)
+            )));
+        };
+        let mut out = Vec::with_capacity(entries.len());
+        for (j, e) in entries.iter().enumerate() {
+            out.push(match e {
+                Value::Number(n) => n.to_string(),
+                Value::String(s) => s.clone(),
+                other => {
+                    return Err(InputError::Type(format!(
+                        "entry ({i},{j}) must be a number or a string, found {}",
+                        crate::input::json_kind(other)
+                    )))
+                }
+            });
+        }
+        texts.push(out);
+    }
+    Ok(moving_matrix_from_rows(&texts)?)
+}
+
+/// Reads a moving quadric from a batch field: a string as in [`moving_from_arg`], a 4×4
+/// array of numbers and strings, or a rigid motion object (below).
+///
+/// # Errors
+/// As [`moving_from_arg`]; [`InputError::Type`] for a value of another JSON type.
+pub fn moving_from_form(form: &JsonForm<'_>) -> Result<MovingMatrix, InputError> {
+    let rows: Vec<Vec<&str>> = match form {
+        JsonForm::Text(text) => return Ok(moving_matrix_from_polynomial(text)?),
+        JsonForm::Array4(texts) => texts.iter().map(|r| r.to_vec()).collect(),
+        JsonForm::Matrix(m) => {
+            let texts = matrix_texts(m)?;
+            let rows: Vec<Vec<&str>> = texts
+                .iter()
+                .map(|r| r.iter().map(|c| c.as_ref()).collect())
+                .collect();
+            return Ok(moving_matrix_from_rows(&rows)?);
+        }
+        JsonForm::Object(map) => return moving_from_object(map),
+        JsonForm::Other(kind) => {
+            return Err(InputError::Type(format!(
+                "expected a polynomial string, a 4x4 array or a rigid motion object, found {kind}"
+            )))
+        }
+    };
+    Ok(moving_matrix_from_rows(&rows)?)
 }
 
 #[cfg(test)]

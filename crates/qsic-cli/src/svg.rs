@@ -114,6 +114,24 @@ pub fn wrap(text: &str, width: usize) -> Vec<String> {
     lines
 }
 
+/// Page width of the panels.
+pub(crate) const WIDTH: f64 = 1000.0;
+
+/// A short decimal: three significant decimals, scientific notation for very large or small.
+pub(crate) fn short(v: f64) -> String {
+    let v = v + 0.0;
+    if v != 0.0 && !(1e-3..1e5).contains(&v.abs()) {
+        return format!("{v:.2e}");
+    }
+    let s = format!("{v:.3}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".into()
+    } else {
+        s.into()
+    }
+}
+
 #[cfg(test)]
 #[path = "../tests/common/xml.rs"]
 pub(crate) mod xml;
