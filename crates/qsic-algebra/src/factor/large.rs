@@ -6,7 +6,8 @@
 //!   (gcd refinement: a pair with `g = gcd(x, y) > 1` becomes `g, x/g, y/g`; the product of the
 //!   elements above 1 falls, so at most `log₂ Π nᵢ` refinements), each `nᵢ = Π b_j^{e_ij}`;
 //! * [`perfect_power`]: `n = r^k` with `k` maximal, by integer `k`-th roots for the primes `k`
-//!   up to `log₂ n / log₂ m`, `m` a lower bound on the prime factors of `n`;
+//!   up to `log₂ n / log₂ m`, `m` a lower bound on the prime factors of `n`, each root taken
+//!   only when `n` is a `k`-th power residue modulo eight primes `p ≡ 1 (mod k)`;
 //! * [`jacobi_big`]: `(a/n)` for any odd `n`, multiplicative in `n`: `−1` proves that `a` is
 //!   no square modulo `n` (nor modulo any multiple of `n`), whatever `n`'s factors;
 //! * [`sqrt_mod_cofactor`]: a root `r² ≡ a (mod n)` by Tonelli–Shanks as if `n` were prime,
@@ -93,6 +94,9 @@ pub fn perfect_power(n: &UBig, min_bits: usize) -> (UBig, u32) {
     'root: loop {
         let most = r.bit_len() / min_bits.max(1);
         for e in (2..=most).filter(|&e| (2..e).take_while(|d| d * d <= e).all(|d| e % d != 0)) {
+            if !power_residue_everywhere(&r, e) {
+                continue;
+            }
             let root = r.nth_root(e);
             if root.pow(e) == r {
                 r = root;
@@ -102,6 +106,47 @@ pub fn perfect_power(n: &UBig, min_bits: usize) -> (UBig, u32) {
         }
         return (r, k);
     }
+}
+
+/// How many primes `p ≡ 1 (mod e)` [`power_residue_everywhere`] tries.
+const POWER_SIEVE_PRIMES: usize = 8;
+
+/// False when `n` is proven no `e`-th power (`e` prime): for primes `p = 2je + 1` below 2³²
+/// not dividing `n`, an `e`-th power `n` has `n^((p−1)/e) ≡ 1 (mod p)`, and a non-power
+/// passes each such `p` with probability about `1/e`. True (maybe a power) after
+/// [`POWER_SIEVE_PRIMES`] passes; each test costs one reduction of `n` by a word, so the
+/// `e`-th root (`O(M(log n))` per Newton step) is taken only for the rare survivors.
+fn power_residue_everywhere(n: &UBig, e: usize) -> bool {
+    let e = e as u64;
+    let mut tried = 0;
+    let mut p = 2 * e + 1;
+    while tried < POWER_SIEVE_PRIMES && p < 1 << 32 {
+        if super::is_prime(u128::from(p)) {
+            let m: u64 = n % p;
+            if m != 0 {
+                tried += 1;
+                if pow_mod_u64(m, (p - 1) / e, p) != 1 {
+                    return false;
+                }
+            }
+        }
+        p += 2 * e;
+    }
+    true
+}
+
+/// `b^x mod m` for `m < 2³²` (products below 2⁶⁴).
+fn pow_mod_u64(mut b: u64, mut x: u64, m: u64) -> u64 {
+    debug_assert!(m < 1 << 32 && b < m);
+    let mut r = 1 % m;
+    while x > 0 {
+        if x & 1 == 1 {
+            r = r * b % m;
+        }
+        b = b * b % m;
+        x >>= 1;
+    }
+    r
 }
 
 /// The Jacobi symbol `(a/n)` for an odd `n ≥ 1`: `0` when `gcd(a, n) > 1`, else `±1`.
@@ -236,6 +281,22 @@ mod tests {
                 assert_eq!(&prod, n, "{base:?} {e:?}");
             }
         }
+    }
+
+    #[test]
+    fn the_power_sieve_keeps_every_power_and_drops_most_others() {
+        let mut dropped = 0;
+        for (i, e) in [2usize, 3, 5, 7, 11, 13, 31, 61].into_iter().enumerate() {
+            let r = (UBig::ONE << (40 + 17 * i)) + UBig::from(12345u32 + i as u32);
+            assert!(power_residue_everywhere(&r.pow(e), e), "{r}^{e}");
+            dropped += usize::from(!power_residue_everywhere(&(r.pow(e) + UBig::ONE), e));
+        }
+        assert!(dropped >= 7, "only {dropped} of 8 non-powers dropped");
+        // a 40 000-bit number with no big power: every prime exponent up to 2 500 tried
+        let n = (UBig::ONE << 40_000) + UBig::from(3u8);
+        assert_eq!(perfect_power(&n, 16), (n.clone(), 1));
+        let m = (UBig::ONE << 89) - UBig::ONE;
+        assert_eq!(perfect_power(&m.pow(37), 16), (m, 37));
     }
 
     #[test]
