@@ -57,6 +57,12 @@ pub mod test_support {
         crate::classify::classify_exact(a, b)
     }
 
+    /// [`crate::natural::recognize`] without its machine-integer filter: the reference the
+    /// filtered recognizer must equal.
+    pub fn natural_recognize_exact(q: &Quadric) -> Option<crate::natural::NaturalQuadric> {
+        crate::natural::recognize_exact(q)
+    }
+
     /// The natural route's answer (module [`crate::natural`]) alone: the classification and
     /// the curve in ℝ³ in the default chart, or `None` where it declines.
     pub fn natural_answer(

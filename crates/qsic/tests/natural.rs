@@ -19,8 +19,11 @@ use common::read_form;
 use geometry::moved;
 use qsic::affine::{affine_view, AffineCurve, Chart};
 use qsic::io::parse_quadric;
+use qsic::natural::recognize;
 use qsic::param::Number;
-use qsic::test_support::{classify_exact, general_affine_curve, natural_answer};
+use qsic::test_support::{
+    classify_exact, general_affine_curve, natural_answer, natural_recognize_exact,
+};
 use qsic::{classify, Quadric};
 use qsic_algebra::testing::SplitMix;
 use qsic_algebra::RBig;
@@ -416,6 +419,9 @@ fn natural_route_equals_the_general_route_on_cad_configurations() {
         ];
         for (k, t) in placements(&mut rng).iter().enumerate() {
             let (ma, mb) = (moved(&a, t), moved(&b, t));
+            for q in [&ma, &mb] {
+                assert_eq!(recognize(q), natural_recognize_exact(q), "{id}: the filter");
+            }
             for (x, y, order, o) in [
                 (&ma, &mb, "AB", &original[0]),
                 (&mb, &ma, "BA", &original[1]),
@@ -462,6 +468,9 @@ fn corpus_lines_answer_the_same_through_the_dispatch() {
                 continue;
             };
             assert_eq!(classify(&a, &b), classify_exact(&a, &b), "{id}");
+            for q in [&a, &b] {
+                assert_eq!(recognize(q), natural_recognize_exact(q), "{id}: the filter");
+            }
             if let Some((c, curve)) = natural_answer(&a, &b) {
                 assert_eq!(c, classify_exact(&a, &b), "{id}");
                 let general = general_affine_curve(&a, &b, &Chart::default());

@@ -26,8 +26,11 @@
 //!     has `cos²θ = μ/(μ − ν) = N/(3N − E₁D)`.
 //!
 //! Everything else (ellipsoids, paraboloids, imaginary or point quadrics, elliptic cylinders
-//! and cones) is `None`. Cost: the 3×3 minors of `Q`, a handful of products.
+//! and cones) is `None`. Cost: the 3×3 minors of `Q`, a handful of products, after a
+//! machine-integer filter (`filter`: rank 1 or a repeated eigenvalue of `Q`, else not
+//! natural) that turns most quadrics away without the big-integer matrix.
 
+mod filter;
 pub(crate) mod pair;
 
 use crate::affine::{AffineCurve, Chart};
@@ -122,6 +125,16 @@ pub enum NaturalQuadric {
 /// assert!(recognize(&parse_quadric("x^2 + 2*y^2 + z^2 - 1").unwrap()).is_none());
 /// ```
 pub fn recognize(q: &Quadric) -> Option<NaturalQuadric> {
+    if q.small_integer_matrix()
+        .is_some_and(|m| !filter::may_be_natural(m))
+    {
+        return None;
+    }
+    recognize_exact(q)
+}
+
+/// [`recognize`] without the machine-integer filter: the reference.
+pub(crate) fn recognize_exact(q: &Quadric) -> Option<NaturalQuadric> {
     let m = q.integer_matrix().entries();
     let block: [[&IBig; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| &m[i][j]));
     let b: [&IBig; 3] = [&m[0][3], &m[1][3], &m[2][3]];
