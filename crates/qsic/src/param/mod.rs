@@ -17,6 +17,7 @@
 
 mod balance;
 mod biquadratic;
+mod concurrent;
 pub mod curve;
 pub mod expr;
 mod infinity;

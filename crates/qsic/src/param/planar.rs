@@ -4,7 +4,7 @@
 //! | entry point | what |
 //! |---|---|
 //! | [`plane_pair_curve`] | a member `P` of rank ≤ 2 at a rational λ, split into its planes; each plane cut by another member |
-//! | [`concurrent_lines_curve`] | no rational plane pair: four concurrent lines, the cone over two conics' meeting points |
+//! | [`super::concurrent::concurrent_lines_curve`] | no rational plane pair: four concurrent lines, the cone over two conics' meeting points |
 //! | [`conjugate_pair_curve`] | no rational plane pair: the skew quadrilateral at conjugate quadratic λ (real: kernels; complex: [`ruled_member_curve`]) |
 //!
 //! **Method.** At a real λ a symmetric member has rank ≤ 2 iff `E₃(λ) = E₄(λ) = 0` (`E_k` the
@@ -40,7 +40,7 @@ use qsic_algebra::linalg::Matrix;
 use qsic_algebra::roots::simplest_between;
 use qsic_algebra::{AlgebraicReal, Field, IBig, Poly, RBig, Ring, Sign};
 
-type Mat = [[RBig; 4]; 4];
+pub(super) type Mat = [[RBig; 4]; 4];
 /// A vector over ℚ or one ℚ(√δ).
 type Vq = Vec<Quadratic>;
 
@@ -214,12 +214,12 @@ impl Ext {
     }
 }
 
-fn to_point(v: &[Number]) -> Point {
+pub(super) fn to_point(v: &[Number]) -> Point {
     std::array::from_fn(|i| v[i].clone())
 }
 
 /// The line through `p` and `q`: `X(u) = p + u·q`.
-fn line_param(p: &[Number], q: &[Number]) -> ComponentParam {
+pub(super) fn line_param(p: &[Number], q: &[Number]) -> ComponentParam {
     ComponentParam::Rational {
         x: std::array::from_fn(|i| Poly::new(vec![p[i].clone(), q[i].clone()])),
         degree: 1,
@@ -266,7 +266,7 @@ struct Split {
 
 /// The rational roots of `g` (exact: each real root's interval is refined below
 /// `1/(2·lc²)`, where the only candidate is the simplest rational in it).
-fn rational_roots(g: &Poly<RBig>) -> Vec<RBig> {
+pub(super) fn rational_roots(g: &Poly<RBig>) -> Vec<RBig> {
     if g.degree().unwrap_or(0) == 0 {
         return Vec::new();
     }
@@ -371,7 +371,9 @@ pub(crate) fn plane_pair_curve(
     let split = match choose_split(&am, &bm) {
         Ok(split) => split,
         Err(e) => {
-            if let Some(curve) = concurrent_lines_curve(classification.clone(), &am, &bm)? {
+            if let Some(curve) =
+                super::concurrent::concurrent_lines_curve(classification.clone(), &am, &bm)
+            {
                 return Ok(curve);
             }
             return match conjugate_pair_curve(classification.clone(), &am, &bm)? {
@@ -492,7 +494,7 @@ fn push(components: &mut Vec<Component>, c: Component) -> usize {
     components.len() - 1
 }
 
-fn non_real(kind: ComponentKind, multiplicity: u32) -> Component {
+pub(super) fn non_real(kind: ComponentKind, multiplicity: u32) -> Component {
     Component {
         kind,
         multiplicity,
@@ -1083,163 +1085,6 @@ fn conjugate_pair_curve(
             }
         }
     }
-    Ok(Some(curve))
-}
-
-/// Four distinct concurrent lines (a singular pencil whose members share one vertex `v`)
-/// when their base points need irrational roots, or `None`.
-///
-/// With `v` the common kernel and `vₖ ≠ 0`, the members restricted to the coordinates
-/// `i ≠ k` are conics `C`, `D` of a plane missing `v`, and `A(s·v + X) = A(X)`: the curve
-/// is the cone from `v` over `C ∩ D`. A member conic with a rational point `y` is
-/// parameterized by the lines through `y`, `X(t) = 2(yᵀCw)w − (wᵀCw)y`, `w = e_a + t·e_b`;
-/// the other conic gives the binary quartic `q(t) = X(t)ᵀDX(t)` (`t = ∞` its degree drop).
-/// For square-free `q` its real roots `τ` (`ℚ(τ)`) are the real lines `v + s·X(τ)`, the
-/// others non-real; all meet at `v` (a multiple point), the real locus is connected.
-///
-/// # Errors
-/// [`Error::Algebra`] when a conic's rational point search fails.
-fn concurrent_lines_curve(
-    classification: Classification,
-    a: &Mat,
-    b: &Mat,
-) -> Result<Option<Curve>, Error> {
-    let rows: Vec<Vec<RBig>> = a.iter().chain(b.iter()).map(|r| r.to_vec()).collect();
-    let common = Matrix::from_rows(rows).expect("rows of four").kernel();
-    if common.len() != 1 {
-        return Ok(None);
-    }
-    let v = common[0].clone();
-    let k = (0..4)
-        .find(|&i| !v[i].is_zero())
-        .expect("a nonzero kernel vector");
-    let idx: Vec<usize> = (0..4).filter(|&i| i != k).collect();
-    let restrict = |m: &Mat| -> [[RBig; 3]; 3] {
-        std::array::from_fn(|i| std::array::from_fn(|j| m[idx[i]][idx[j]].clone()))
-    };
-    let (ca, cb) = (restrict(a), restrict(b));
-    // a nondegenerate member conic with a rational point, and another member
-    let mut found = None;
-    for lambda in std::iter::once(None).chain((-2..=2).map(|v| Some(RBig::from(v)))) {
-        let c: [[RBig; 3]; 3] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| match &lambda {
-                Some(l) => l * &ca[i][j] - &cb[i][j],
-                None => ca[i][j].clone(),
-            })
-        });
-        if Matrix::from_array(c.clone()).rank() != 3 {
-            continue;
-        }
-        let point = find_point(&c).map_err(|e| Error::Algebra(format!("a conic's point: {e}")))?;
-        if let ConicPoint::Rational(y) = point {
-            let d = if lambda.is_some() {
-                ca.clone()
-            } else {
-                cb.clone()
-            };
-            found = Some((c, d, y));
-            break;
-        }
-    }
-    let Some((c, d, y)) = found else {
-        return Ok(None);
-    };
-    let pivot = (0..3).find(|&i| !y[i].is_zero()).expect("a nonzero point");
-    let (ia, ib) = match pivot {
-        0 => (1, 2),
-        1 => (0, 2),
-        _ => (0, 1),
-    };
-    let rp = |c: Vec<RBig>| Poly::new(c);
-    let mut w: Vec<Poly<RBig>> = vec![Poly::zero(), Poly::zero(), Poly::zero()];
-    w[ia] = rp(vec![RBig::ONE]);
-    w[ib] = rp(vec![RBig::ZERO, RBig::ONE]);
-    let apply = |m: &[[RBig; 3]; 3], x: &[Poly<RBig>]| -> Vec<Poly<RBig>> {
-        (0..3)
-            .map(|i| (0..3).fold(Poly::zero(), |acc, j| &acc + &x[j].scale(&m[i][j])))
-            .collect()
-    };
-    let inner = |x: &[Poly<RBig>], y: &[Poly<RBig>]| -> Poly<RBig> {
-        (0..3).fold(Poly::zero(), |acc, i| &acc + &(&x[i] * &y[i]))
-    };
-    let cw = apply(&c, &w);
-    let ycw = (0..3).fold(Poly::zero(), |acc, i| &acc + &cw[i].scale(&y[i]));
-    let wcw = inner(&w, &cw);
-    let two = RBig::from(2);
-    let x: Vec<Poly<RBig>> = (0..3)
-        .map(|i| &(&ycw.scale(&two) * &w[i]) - &wcw.scale(&y[i]))
-        .collect();
-    let q = inner(&x, &apply(&d, &x));
-    let Some(deg) = q.degree() else {
-        return Ok(None);
-    };
-    // square-free as a binary quartic: no repeated finite root, at most a simple one at ∞
-    if deg < 3 || q.gcd_monic(&q.derivative()).degree() != Some(0) {
-        return Ok(None);
-    }
-    let qi = Poly::from_rational(&q).0;
-    let vn: Vec<Number> = v.iter().map(|c| curve::rational(c.clone())).collect();
-    let lift = |x3: Vec<Number>| -> Vec<Number> {
-        let mut x4 = vec![Number::zero(); 4];
-        for (i, &j) in idx.iter().enumerate() {
-            x4[j] = x3[i].clone();
-        }
-        x4
-    };
-    // rational roots first, the irrational ones in ℚ(τ) of the rest (degree ≤ 4 − #rational)
-    let rational = rational_roots(&q);
-    let rest = rational.iter().fold(qi, |p, r| {
-        p.div_exact(&Poly::vanishing_at(r))
-            .expect("a rational root divides")
-    });
-    let taus = rational.into_iter().map(curve::rational).chain(
-        AlgebraicReal::real_roots_of(&rest)
-            .into_iter()
-            .map(|root| NumberField::new(&root).generator()),
-    );
-    let mut ends: Vec<Vec<Number>> = Vec::new();
-    for tau in taus {
-        let x3: Vec<Number> = x
-            .iter()
-            .map(|p| {
-                p.coeffs().iter().rev().fold(Number::zero(), |acc, c| {
-                    acc.mul(&tau).add(&curve::rational(c.clone()))
-                })
-            })
-            .collect();
-        ends.push(lift(x3));
-    }
-    if deg == 3 {
-        ends.push(lift(
-            x.iter().map(|p| curve::rational(p.coeff(2))).collect(),
-        ));
-    }
-    let mut curve = Curve::empty(classification);
-    for end in &ends {
-        let component = curve.components.len();
-        curve.components.push(Component {
-            kind: ComponentKind::Line,
-            multiplicity: 1,
-            real: true,
-            param: Some(line_param(&vn, end)),
-            plane: None,
-        });
-        curve.pieces.push(RealPiece::whole(component));
-    }
-    for _ in ends.len()..4 {
-        curve.components.push(non_real(ComponentKind::Line, 1));
-    }
-    if ends.is_empty() {
-        curve.pieces.push(RealPiece::Point {
-            component: 0,
-            point: to_point(&vn),
-        });
-    }
-    curve.connected.push((0..curve.pieces.len()).collect());
-    curve.singular_points.push(SingularPoint {
-        kind: SingularPointKind::Multiple,
-        point: to_point(&vn),
-    });
     Ok(Some(curve))
 }
 
