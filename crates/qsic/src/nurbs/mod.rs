@@ -601,7 +601,11 @@ fn unbounded_pieces(r: &Rational, bounds: &BoxBounds) -> Result<(Vec<NurbsCurve>
                     "a component in a face plane of the box: choose another box".into(),
                 ));
             }
-            crossings.extend(projective_roots(&f, r.n));
+            for rho in projective_roots(&f, r.n) {
+                if on_box(r, bounds, c, &rho) {
+                    crossings.push(rho);
+                }
+            }
         }
     }
     // a rational beyond every finite root involved
@@ -662,6 +666,25 @@ fn unbounded_pieces(r: &Rational, bounds: &BoxBounds) -> Result<(Vec<NurbsCurve>
         out.push(spline(r, &breaks, [clipped_start, true])?);
     }
     Ok((out, missed))
+}
+
+/// Whether the point at `rho`, a root of the face polynomial of coordinate `c`, lies on the
+/// box: every other coordinate within its bounds, decided exactly (signs of
+/// `(x_d − L·w)·w` at `rho`; at `u = ∞` the leading coefficients).
+fn on_box(r: &Rational, bounds: &BoxBounds, c: usize, rho: &Proj) -> bool {
+    let w = &r.x[3];
+    let sign = |p: &NumberPoly| -> Sign {
+        match rho {
+            Proj::Finite(t) => p.sign_at(t),
+            Proj::Infinity => p.coeff(r.n).sign(),
+        }
+    };
+    let sw = sign(w);
+    (0..3).filter(|d| *d != c).all(|d| {
+        let below = sign(&(&r.x[d] - &w.scale(&num(bounds.lo[d].clone()))));
+        let above = sign(&(&w.scale(&num(bounds.hi[d].clone())) - &r.x[d]));
+        below * sw != Sign::Negative && above * sw != Sign::Negative
+    })
 }
 
 /// A rational parameter between the arc's start `s` and the crossing `p` (the first),
