@@ -144,7 +144,11 @@ struct NurbsArgs {
     format: NurbsFormatArg,
 
     /// The box unbounded pieces are clipped to: six exact numbers X0,Y0,Z0,X1,Y1,Z1.
-    #[arg(long = "box", value_name = "X0,Y0,Z0,X1,Y1,Z1", allow_hyphen_values = true)]
+    #[arg(
+        long = "box",
+        value_name = "X0,Y0,Z0,X1,Y1,Z1",
+        allow_hyphen_values = true
+    )]
     bounds: Option<String>,
 }
 

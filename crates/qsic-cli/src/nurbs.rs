@@ -45,7 +45,10 @@ pub fn nurbs_of(
 pub fn parse_box(text: &str) -> Result<BoxBounds, String> {
     let parts: Vec<&str> = text.split(',').map(str::trim).collect();
     if parts.len() != 6 {
-        return Err(format!("six numbers X0,Y0,Z0,X1,Y1,Z1 expected, got {}", parts.len()));
+        return Err(format!(
+            "six numbers X0,Y0,Z0,X1,Y1,Z1 expected, got {}",
+            parts.len()
+        ));
     }
     let mut v = Vec::with_capacity(6);
     for p in parts {
@@ -142,7 +145,10 @@ fn parameter(p: &[RBig; 2]) -> String {
 fn curve_json(c: &NurbsCurve, names: &mut Names) -> CurveJson {
     let points = c.control_points();
     let weights = c.weights();
-    let (knots, multiplicities) = c.knot_multiplicities().into_iter().unzip::<_, _, Vec<_>, Vec<_>>();
+    let (knots, multiplicities) = c
+        .knot_multiplicities()
+        .into_iter()
+        .unzip::<_, _, Vec<_>, Vec<_>>();
     CurveJson {
         piece: c.piece,
         component: c.component,
@@ -160,7 +166,10 @@ fn curve_json(c: &NurbsCurve, names: &mut Names) -> CurveJson {
         clipped: c.clipped,
         u: [parameter(&c.ends[0]), parameter(&c.ends[1])],
         approx: CurveApproxJson {
-            control_points: points.iter().map(|p| p.each_ref().map(|v| v.to_f64())).collect(),
+            control_points: points
+                .iter()
+                .map(|p| p.each_ref().map(|v| v.to_f64()))
+                .collect(),
             weights: weights.iter().map(|w| w.to_f64()).collect(),
         },
     }
@@ -203,7 +212,11 @@ pub fn step_of(json: &NurbsJson, name: &str) -> String {
             multiplicities: c.multiplicities.clone(),
         })
         .collect();
-    step_text(&curves, name, "qsic: the intersection curve of two quadrics as NURBS curves")
+    step_text(
+        &curves,
+        name,
+        "qsic: the intersection curve of two quadrics as NURBS curves",
+    )
 }
 
 /// The text summary of `qsic nurbs A B`.

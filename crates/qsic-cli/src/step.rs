@@ -68,8 +68,12 @@ pub fn step_text(curves: &[StepCurve], name: &str, description: &str) -> String 
     let pc = add(format!("PRODUCT_CONTEXT('',#{app},'mechanical')"));
     let product = add(format!("PRODUCT({n},{n},'',(#{pc}))", n = string(name)));
     let formation = add(format!("PRODUCT_DEFINITION_FORMATION('','',#{product})"));
-    let pdc = add(format!("PRODUCT_DEFINITION_CONTEXT('part definition',#{app},'design')"));
-    let pd = add(format!("PRODUCT_DEFINITION('design','',#{formation},#{pdc})"));
+    let pdc = add(format!(
+        "PRODUCT_DEFINITION_CONTEXT('part definition',#{app},'design')"
+    ));
+    let pd = add(format!(
+        "PRODUCT_DEFINITION('design','',#{formation},#{pdc})"
+    ));
     let pds = add(format!("PRODUCT_DEFINITION_SHAPE('','',#{pd})"));
     let length = add("( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) )".into());
     let angle = add("( NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.) )".into());
@@ -166,7 +170,10 @@ mod tests {
             multiplicities: vec![3, 3],
         };
         let text = step_text(std::slice::from_ref(&c), "q'1", "test");
-        assert!(text.contains("RATIONAL_B_SPLINE_CURVE((1.,0.7071067811865476,1.))"), "{text}");
+        assert!(
+            text.contains("RATIONAL_B_SPLINE_CURVE((1.,0.7071067811865476,1.))"),
+            "{text}"
+        );
         assert!(text.contains("B_SPLINE_CURVE_WITH_KNOTS((3,3),(0.,1.),.UNSPECIFIED.)"));
         assert!(text.contains("'q''1'"));
         assert_eq!(text.matches("CARTESIAN_POINT").count(), 3);

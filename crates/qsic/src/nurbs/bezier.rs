@@ -52,9 +52,7 @@ pub(crate) fn oriented(p: &ParamPoint, q: &ParamPoint) -> ParamPoint {
 /// The coefficients of `(A·s + B·t)ᵏ` as a form in `(s, t)`: index `j` is `s^(k−j) tʲ`.
 fn linear_power(a: &RBig, b: &RBig, k: usize) -> Vec<RBig> {
     (0..=k)
-        .map(|j| {
-            RBig::from(binomial(k, j)) * pow(a, k - j) * pow(b, j)
-        })
+        .map(|j| RBig::from(binomial(k, j)) * pow(a, k - j) * pow(b, j))
         .collect()
 }
 
@@ -83,7 +81,12 @@ fn convolve(a: &[RBig], b: &[RBig]) -> Vec<RBig> {
 pub(crate) fn bezier_on(x: &PointPoly, n: usize, p: &ParamPoint, q: &ParamPoint) -> Vec<Point> {
     // (U₀)ⁱ (U₁)ⁿ⁻ⁱ as forms in (s, t) = (1 − t, t)
     let monomials: Vec<Vec<RBig>> = (0..=n)
-        .map(|i| convolve(&linear_power(&p[0], &q[0], i), &linear_power(&p[1], &q[1], n - i)))
+        .map(|i| {
+            convolve(
+                &linear_power(&p[0], &q[0], i),
+                &linear_power(&p[1], &q[1], n - i),
+            )
+        })
         .collect();
     (0..=n)
         .map(|j| {

@@ -31,8 +31,7 @@ pub mod bezier;
 
 use crate::error::Error;
 use crate::param::{
-    ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue, Point, PointPoly,
-    RealPiece,
+    ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue, Point, PointPoly, RealPiece,
 };
 use crate::quadric::Quadric;
 use bezier::{divide, num, oriented, positive_segments, scaled, ParamPoint};
@@ -234,9 +233,7 @@ fn rational_value(x: &AlgebraicReal) -> Option<RBig> {
         return Some(v.clone());
     }
     let p = x.poly();
-    (p.degree() == Some(1)).then(|| {
-        -RBig::from(p.coeff(0)) / RBig::from(p.coeff(1))
-    })
+    (p.degree() == Some(1)).then(|| -RBig::from(p.coeff(0)) / RBig::from(p.coeff(1)))
 }
 
 /// The rational point `v` of ℝP¹.
@@ -466,7 +463,12 @@ fn bounded_pieces(r: &Rational) -> Result<Vec<NurbsCurve>, Error> {
     let one = RBig::ONE;
     match r.cuts.as_slice() {
         [] => {
-            let breaks = [finite(RBig::ZERO), finite(one), infinity(), finite(RBig::ZERO)];
+            let breaks = [
+                finite(RBig::ZERO),
+                finite(one),
+                infinity(),
+                finite(RBig::ZERO),
+            ];
             Ok(vec![spline(r, &breaks, [false; 2])?])
         }
         [c] => {
@@ -532,8 +534,9 @@ fn centre(q: &Quadric) -> Option<[f64; 3]> {
     }
     let rhs: [RBig; 3] = std::array::from_fn(|i| -m[i][3].clone());
     Some(std::array::from_fn(|k| {
-        let c: [[&RBig; 3]; 3] =
-            std::array::from_fn(|i| std::array::from_fn(|j| if j == k { &rhs[i] } else { &m[i][j] }));
+        let c: [[&RBig; 3]; 3] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| if j == k { &rhs[i] } else { &m[i][j] })
+        });
         (d3(c) / &det).to_f64().value()
     }))
 }
@@ -551,11 +554,17 @@ fn default_bounds(
     points.extend(centre(b));
     for sp in &curve.singular_points {
         if !sp.point[3].is_zero() {
-            points.push(std::array::from_fn(|i| divide(&sp.point[i], &sp.point[3]).to_f64()));
+            points.push(std::array::from_fn(|i| {
+                divide(&sp.point[i], &sp.point[3]).to_f64()
+            }));
         }
     }
     for c in bounded {
-        points.extend(c.control_points().iter().map(|p| p.each_ref().map(Number::to_f64)));
+        points.extend(
+            c.control_points()
+                .iter()
+                .map(|p| p.each_ref().map(Number::to_f64)),
+        );
     }
     for r in rationals.iter().filter(|r| !r.infinity.is_empty()) {
         for (s, e) in branches(r) {
@@ -565,7 +574,9 @@ fn default_bounds(
     for p in &curve.pieces {
         if let RealPiece::Point { point, .. } = p {
             if !point[3].is_zero() {
-                points.push(std::array::from_fn(|i| divide(&point[i], &point[3]).to_f64()));
+                points.push(std::array::from_fn(|i| {
+                    divide(&point[i], &point[3]).to_f64()
+                }));
             }
         }
     }
@@ -573,8 +584,10 @@ fn default_bounds(
     if points.is_empty() {
         points.push([0.0; 3]);
     }
-    let lo: [f64; 3] = std::array::from_fn(|i| points.iter().map(|p| p[i]).fold(f64::MAX, f64::min));
-    let hi: [f64; 3] = std::array::from_fn(|i| points.iter().map(|p| p[i]).fold(f64::MIN, f64::max));
+    let lo: [f64; 3] =
+        std::array::from_fn(|i| points.iter().map(|p| p[i]).fold(f64::MAX, f64::min));
+    let hi: [f64; 3] =
+        std::array::from_fn(|i| points.iter().map(|p| p[i]).fold(f64::MIN, f64::max));
     let extent = (0..3).map(|i| hi[i] - lo[i]).fold(0.0, f64::max);
     let margin = if extent > 0.0 { extent / 2.0 } else { 1.0 };
     let grid = |v: f64, up: bool| -> RBig {
@@ -614,7 +627,11 @@ fn unbounded_pieces(r: &Rational, bounds: &BoxBounds) -> Result<(Vec<NurbsCurve>
         if let Proj::Finite(x) = p {
             let iv = x.interval();
             for v in [iv.lo(), iv.hi()] {
-                let v = if *v < RBig::ZERO { -v.clone() } else { v.clone() };
+                let v = if *v < RBig::ZERO {
+                    -v.clone()
+                } else {
+                    v.clone()
+                };
                 if v > big {
                     big = v;
                 }
