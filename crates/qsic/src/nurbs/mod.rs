@@ -400,7 +400,7 @@ fn singular_cuts(curve: &Curve, x: &PointPoly, n: usize) -> (Vec<ParamPoint>, Ve
             Err(e) => remarks.push(format!("a singular point not placed: {e}")),
         }
     }
-    cuts.sort_by(|p, q| order_key(p).cmp(&order_key(q)));
+    cuts.sort_by_key(order_key);
     cuts.dedup();
     (cuts, remarks)
 }
