@@ -35,6 +35,7 @@ __all__ = [
     "classify_many",
     "param",
     "sample",
+    "nurbs",
     "motion",
     "first_contact",
     "FIELDS",
@@ -473,6 +474,48 @@ def sample(
         aff["branches"] = [np.array(br, dtype=float).reshape(-1, 3) for br in aff["branches"]]
         aff["points_at_infinity"] = np.array(aff["points_at_infinity"], dtype=float).reshape(-1, 4)
     return out
+
+
+def nurbs(
+    a: QuadricLike,
+    b: QuadricLike,
+    *,
+    bounds: Optional[Sequence[Any]] = None,
+    step: bool = False,
+    budget: Optional[int] = None,
+    floats: str = "binary",
+) -> Any:
+    """Every real piece of the curve as a NURBS curve: the JSON object of ``qsic nurbs --json
+    A B`` (README, "qsic nurbs") — ``bounds`` (the box), ``curves`` (degree, knots and
+    multiplicities, control points and weights as exact strings, their decimals under
+    ``"approx"``, ``exact``, ``bound``, ``closed``, ``clipped``, ``piece``) and ``left`` (the
+    pieces not given, and why); with ``step=True`` the STEP text of ``--format step``
+    instead (a ``str``). ``bounds``: the box unbounded pieces are clipped to, six exact
+    numbers ``(x0, y0, z0, x1, y1, z1)`` (int, ``Fraction``, str), as ``--box``. ``floats``
+    as for :func:`classify`.
+
+    >>> n = nurbs("x^2+y^2+z^2-4", "x^2+y^2-2*x")  # Viviani: two loops through the node
+    >>> [(c["degree"], c["exact"], c["multiplicities"][0]) for c in n["curves"]]
+    [(4, True, 5), (4, True, 5)]
+
+    Raises:
+        QsicError: a bad quadric or box, ``not yet: …``, or ``over the work budget: …``.
+    """
+    floats = _inputs.check_floats(floats)
+    box = None
+    if bounds is not None:
+        values = list(bounds)
+        if len(values) != 6:
+            raise QsicError(f"bounds: six numbers x0, y0, z0, x1, y1, z1 expected, got {len(values)}")
+        box = ",".join(str(v) for v in values)
+    out = _qsic.nurbs(
+        _side_native("A", a, floats),
+        _side_native("B", b, floats),
+        bounds=box,
+        step=step,
+        budget=_budget(budget),
+    )
+    return out if step else json.loads(out)
 
 
 MovingLike = Union[str, Sequence[Sequence[Any]], np.ndarray, Dict[str, Any]]

@@ -104,6 +104,15 @@ def param(
     budget: Optional[int] = None,
     floats: str = "binary",
 ) -> Dict[str, Any]: ...
+def nurbs(
+    a: QuadricLike,
+    b: QuadricLike,
+    *,
+    bounds: Optional[Sequence[Any]] = None,
+    step: bool = False,
+    budget: Optional[int] = None,
+    floats: str = "binary",
+) -> Any: ...
 def sample(
     a: QuadricLike,
     b: QuadricLike,

@@ -43,6 +43,13 @@ def param(
     chart: Optional[str] = None,
     budget: Optional[int] = None,
 ) -> str: ...
+def nurbs(
+    a: Optional[NativeQuadric],
+    b: Optional[NativeQuadric],
+    bounds: Optional[str] = None,
+    step: bool = False,
+    budget: Optional[int] = None,
+) -> str: ...
 def sample(
     a: Optional[NativeQuadric],
     b: Optional[NativeQuadric],

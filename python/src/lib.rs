@@ -629,6 +629,33 @@ fn param(
     answer_json(py, &answer, (a.as_deref(), b.as_deref()), budget)
 }
 
+/// The JSON object of `qsic nurbs --json` (`bounds`: `--box`, six exact numbers
+/// `X0,Y0,Z0,X1,Y1,Z1`), or with `step = true` the STEP text of `qsic nurbs --format step`.
+#[pyfunction]
+#[pyo3(signature = (a, b, bounds = None, step = false, budget = None))]
+fn nurbs(
+    py: Python<'_>,
+    a: Option<PyRef<'_, NativeQuadric>>,
+    b: Option<PyRef<'_, NativeQuadric>>,
+    bounds: Option<&str>,
+    step: bool,
+    budget: Option<u64>,
+) -> PyResult<String> {
+    let bounds = bounds.map(qsic_cli::nurbs::parse_box).transpose().map_err(err)?;
+    let options = qsic::nurbs::NurbsOptions { bounds };
+    let format = if step {
+        qsic_cli::nurbs::NurbsFormat::Step
+    } else {
+        qsic_cli::nurbs::NurbsFormat::Json
+    };
+    let (qa, qb, _) = quadrics((a.as_deref(), b.as_deref()));
+    let budget = Budget::new(budget.unwrap_or(DEFAULT_LINE_BUDGET));
+    py.detach(|| {
+        catch_panic(|| qsic_cli::nurbs::render(qa, qb, &options, &budget, format)).and_then(|r| r)
+    })
+    .map_err(err)
+}
+
 /// The JSON object of `qsic sample --format json` with at least `points` points per piece,
 /// chords within `tolerance` in the chart, and `chart = 0` at infinity (`None`: `w`);
 /// `affine = false`: `--projective`.
@@ -745,6 +772,7 @@ fn _qsic(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(classify_many, m)?)?;
     m.add_function(wrap_pyfunction!(param, m)?)?;
     m.add_function(wrap_pyfunction!(sample, m)?)?;
+    m.add_function(wrap_pyfunction!(nurbs, m)?)?;
     m.add_function(wrap_pyfunction!(motion, m)?)?;
     m.add_function(wrap_pyfunction!(first_contact, m)?)?;
     Ok(())

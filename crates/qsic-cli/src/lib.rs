@@ -15,6 +15,8 @@
 //! | [`rigid`] | the JSON object form of a quadric under a rigid motion (`{"quadric", "rotate", "translate"}`) |
 //! | [`motion_plot`] | `qsic motion --plot`: the timeline as an SVG picture |
 //! | [`param`] | `qsic param`: the exact curve as JSON and text |
+//! | [`nurbs`] | `qsic nurbs`: the real pieces as NURBS curves (JSON, STEP, text) |
+//! | [`step`] | ISO 10303-21 text of NURBS curves |
 //! | [`mod@sample`] | `qsic sample`: real points as JSON, CSV, OBJ |
 //! | [`plot`] | `qsic plot`: the curve in a 3D view and the eigencurve, as SVG |
 //! | `eigencurve` | the eigencurve panel of `qsic plot --eigencurve` |
@@ -34,6 +36,7 @@ pub mod large;
 pub mod line;
 pub mod motion;
 pub mod motion_plot;
+pub mod nurbs;
 pub mod output;
 pub mod param;
 pub mod plot;
@@ -41,5 +44,6 @@ mod plot_common;
 pub mod reader;
 pub mod rigid;
 pub mod sample;
+pub mod step;
 pub mod stream;
 pub mod svg;

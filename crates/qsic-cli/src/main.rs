@@ -9,7 +9,7 @@ use qsic::param::sample::SampleOptions;
 use qsic::Quadric;
 use qsic_cli::floats::{rewrite_floats, FloatReading};
 use qsic_cli::motion::{self, TimeRange};
-use qsic_cli::{batch, contact, input, output, param, plot, sample};
+use qsic_cli::{batch, contact, input, nurbs, output, param, plot, sample};
 use std::fs::File;
 use std::io::{self, IsTerminal, Write};
 use std::path::PathBuf;
@@ -111,6 +111,45 @@ enum Command {
     /// with their kind, the two surfaces faintly as their sections by planes x, y, z = const,
     /// unbounded branches clipped to a box; the legend names the class and the affine view.
     Plot(PlotArgs),
+    /// Every real piece of the curve as a NURBS curve: JSON, STEP (--format step) or text.
+    ///
+    /// Rational components (lines, conics, cubics, nodal and cuspidal quartics) are exact
+    /// rational B-splines, cut at singular points and at infinity; unbounded pieces are
+    /// clipped to a box (--box, default around the bounded parts, the singular points and
+    /// the surfaces' centres) at rational parameters just outside it.
+    Nurbs(NurbsArgs),
+}
+
+/// Output formats of `qsic nurbs`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+enum NurbsFormatArg {
+    Text,
+    Json,
+    Step,
+}
+
+/// Arguments of `qsic nurbs`.
+#[derive(Args, Debug)]
+#[command(after_help = "Input forms, batch format and exit codes as for 'qsic classify --help'.")]
+struct NurbsArgs {
+    #[command(flatten)]
+    input: PairArgs,
+
+    /// Print one JSON object (the same as --format json; batch output is always JSON).
+    #[arg(long, conflicts_with = "format")]
+    json: bool,
+
+    /// The output: text (a summary), json, or step (ISO 10303-21).
+    #[arg(long, value_enum, value_name = "FORMAT", default_value_t = NurbsFormatArg::Text)]
+    format: NurbsFormatArg,
+
+    /// The box unbounded pieces are clipped to: six exact numbers X0,Y0,Z0,X1,Y1,Z1.
+    #[arg(
+        long = "box",
+        value_name = "X0,Y0,Z0,X1,Y1,Z1",
+        allow_hyphen_values = true
+    )]
+    bounds: Option<String>,
 }
 
 const PLOT_HELP: &str = "\
@@ -460,6 +499,7 @@ fn main() -> ExitCode {
         Command::Param(args) => run_param(&args, units),
         Command::Sample(args) => run_sample(&args, units),
         Command::Plot(args) => run_plot(&args),
+        Command::Nurbs(args) => run_nurbs(&args, units),
         Command::Classify(args) => {
             let chart = match args.chart.as_deref().map(classify_chart).transpose() {
                 Ok(chart) => chart,
@@ -826,6 +866,43 @@ fn run_param(args: &ParamArgs, units: u64) -> ExitCode {
         param::human_report(&json)
     };
     write_out(&text)
+}
+
+/// `qsic nurbs`.
+fn run_nurbs(args: &NurbsArgs, units: u64) -> ExitCode {
+    let bounds = match args.bounds.as_deref().map(nurbs::parse_box).transpose() {
+        Ok(b) => b,
+        Err(message) => {
+            eprintln!("error: --box: {message}");
+            return ExitCode::from(2);
+        }
+    };
+    let options = qsic::nurbs::NurbsOptions { bounds };
+    let (a, b) = match (&args.input.batch, &args.input.a, &args.input.b) {
+        (Some(path), _, _) => {
+            let answer = nurbs::NurbsAnswer { options };
+            return run_batch_with(path, &answer, args.input.floats, units);
+        }
+        (None, Some(a), Some(b)) => (a, b),
+        _ => return usage_error("two quadrics A and B, or --batch FILE, are required"),
+    };
+    let (qa, qb, _) = match read_pair(a, b, args.input.floats) {
+        Ok(pair) => pair,
+        Err(code) => return code,
+    };
+    let format = match (args.json, args.format) {
+        (true, _) | (_, NurbsFormatArg::Json) => nurbs::NurbsFormat::Json,
+        (_, NurbsFormatArg::Step) => nurbs::NurbsFormat::Step,
+        (_, NurbsFormatArg::Text) => nurbs::NurbsFormat::Text,
+    };
+    let budget = qsic::Budget::new(units);
+    match nurbs::render(qa.as_ref(), qb.as_ref(), &options, &budget, format) {
+        Ok(text) => write_out(&text),
+        Err(message) => {
+            eprintln!("error: {message}");
+            ExitCode::from(1)
+        }
+    }
 }
 
 /// `qsic sample`.

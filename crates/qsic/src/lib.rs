@@ -32,6 +32,7 @@ pub mod io;
 pub mod limits;
 pub mod motion;
 pub mod natural;
+pub mod nurbs;
 pub mod param;
 pub mod pencil;
 pub mod quadric;
