@@ -1,4 +1,10 @@
-//! TODO(doc)
+//! The chart: the plane at infinity `h(X) = aX₀ + bX₁ + cX₂ + dX₃ = 0`, exactly and as
+//! floats, and the affine coordinates `X/h(X)` without the last coordinate whose coefficient
+//! in `h` is nonzero (`(x/w, y/w, z/w)` for the default `h = w`). A float `h` only places a
+//! point in the chart; whether a point is at infinity is decided exactly
+//! ([`super::crossings`]). Also the exact parameters of the curve's real singular points on
+//! a rational component ([`singular_params`], by [`super::plane::params_of_point`]) and the
+//! small float vector helpers of the walk.
 
 use crate::param::curve::{ComponentParam, Curve, ParamValue};
 use qsic_algebra::{RBig, Ring};

@@ -1,4 +1,13 @@
-//! TODO(doc)
+//! Exact coefficients to floats, once per parameterization.
+//!
+//! A coefficient `c₀ + c₁α` of ℚ(√δ) (`α = ±√δ`) goes through double-double
+//! ([`super::kernels::dd`]): summed where the terms agree in sign or cancel by fewer than 6
+//! bits, else computed as `(c₀² − c₁²δ)/(c₀ − c₁α)` with the integer norm exact, so that no
+//! cancellation costs more than 6 of the ~104 bits; any other number by
+//! [`Number::to_f64`](crate::param::Number). A parameterization whose estimates
+//! (`log₂|c|` from bit lengths) leave `[2⁻⁹⁰⁰, 2^FLOAT_SCALE]` is first scaled by powers of two
+//! ([`in_float_range`]): `X = a ± d√s` is projective, so `a`, `d` and `s` take factors
+//! `2^(−g)`, `2^(−f−g)`, `2^(2f)` that keep the point and both sheets.
 
 use crate::error::Error;
 use crate::param::curve::{ComponentParam, Number, NumberPoly};

@@ -1,8 +1,17 @@
-//! TODO(doc)
+//! The exact crossings of a component with the chart's plane at infinity `h(X) = 0`, marked
+//! on the polyline (a point is at infinity iff it is marked, whatever its float `h`).
+//!
+//! For a rational `X(u)` they are the real roots of `h(X(u))` (over a number field by the
+//! norm: [`crate::param::infinity`]); for Levin's form `a ± d√s` with rational coefficients the
+//! real roots of `h(a)² − h(d)²s` with `s ≥ 0`, the sheet from the signs of `h(a)`, `h(d)`
+//! ([`crossing_sheets`]); with irrational coefficients those of
+//! [`super::plane::levin_plane_crossings`]. Tangential touches are included. Where no exact
+//! route places a crossing (both Levin forms vanish at one parameter) sampling is an error.
 
 use crate::error::Error;
 use crate::param::curve::{ComponentParam, Number, NumberPoly, ParamRange, ParamValue, Sheet};
 use crate::param::sample::kernels::dd::int_dd;
+use crate::param::sample::plane::same_value;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Sign};
 
 /// A float on the side of `q` given by `up` (`> q` for `up`, `< q` otherwise; `q` itself
@@ -238,14 +247,6 @@ pub(super) fn levin_crossings(events: Vec<(ParamValue, Option<Sheet>)>) -> Vec<C
         }
     }
     out
-}
-
-pub(super) fn same_value(a: &ParamValue, b: &ParamValue) -> bool {
-    match (a, b) {
-        (ParamValue::Infinity, ParamValue::Infinity) => true,
-        (ParamValue::Finite(x), ParamValue::Finite(y)) => x == y,
-        _ => false,
-    }
 }
 
 pub(super) fn exact_crossings_of(exact: &ExactParam, h: &[RBig; 4]) -> Option<Vec<Crossing>> {

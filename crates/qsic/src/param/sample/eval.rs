@@ -1,4 +1,26 @@
-//! TODO(doc)
+//! Evaluation of a parameterization at a parameter `(U₀, U₁)` of ℙ¹, certified.
+//!
+//! The homogenized `X` is evaluated at `t = U₀/U₁` when `|t| ≤ 1`, else with the reversed
+//! coefficients at `1/t`, so Horner's rule ([`super::kernels::horner`]) always runs on
+//! `[−1, 1]`. Levin's form `a ± d√s` is homogeneous of degree `D = max(deg a, deg d + 2)`,
+//! `s` a quartic form clamped at 0 (which moves a point off the curve by `O(|s|)` only:
+//! `aᵀMd ≡ 0` cancels the first-order error of `√s`).
+//!
+//! # Bound
+//! Horner's rounding error is at most `γ·Σₖ|cₖ||t|ᵏ` per coordinate (Higham, §5.1). An
+//! evaluation is accepted when that bound, for `x` and `d·√s`, is at most `10⁻¹⁰·‖X‖`. The
+//! bound is majorized first once per parameterization (`Σ|x| + Σ|d|·√(Σ|s|)`, [`sure_bounds`]),
+//! then by `|c₀| + |t|·Σₖ₌₁|cₖ|`, and computed only where neither certifies.
+//!
+//! # Dispatch
+//! [`Evaluator::eval_unit`] is the one dispatch point of a point's evaluation: the float
+//! route, certified by the bound; where it fails (a sheet passing through the zero vector, a
+//! removable zero of Levin's form) the double-double route ([`super::kernels::dd`],
+//! [`Evaluator::eval_dd`]) with its own bound; where that fails, `None` (the caller moves to
+//! a nearby parameter). Both routes return the same unit vector type. Arc ends, the roots of
+//! `s`, come from [`Evaluator::root_of_s`]: safeguarded Newton ([`super::kernels::newton`])
+//! on `s` in double-double inside the root's isolating interval, else
+//! [`qsic_algebra::AlgebraicReal::to_f64`].
 
 use crate::error::Error;
 use crate::param::curve::{ComponentParam, Number, NumberPoly, Sheet};

@@ -7,55 +7,49 @@
 //! | [`sample`] | every [`RealPiece`] as an ordered polyline of unit vectors in ℝ⁴, and its affine view |
 //! | [`SampleOptions`] | points per piece, chord tolerance, the plane at infinity |
 //! | [`Sampled`], [`SampledPiece`], [`AffinePiece`] | the result |
+//! | [`verify_on_quadrics`] | the last guard: every point on both quadrics |
+//!
+//! # Stages
+//! Exact description → arcs → points, one module each; every stage type is complete when
+//! it exists.
+//!
+//! | stage | module | exact input → output |
+//! |---|---|---|
+//! | plane meetings | [`plane`] | a parameterization and a plane or point → the exact parameters where it meets them (read by the affine view too) |
+//! | crossings | `crossings` | a component and the chart → its exact crossings of the plane at infinity, with sheets |
+//! | floats | `convert` | exact coefficients → floats (and double-doubles), scaled into range |
+//! | evaluation | `eval` | a parameter on ℙ¹ → a certified unit vector, or none |
+//! | walk | `walk`, `sampler` | the arcs of a piece → an oriented polyline with its exact marks |
+//! | affine view | `view` | the polyline and its marks → branches in the chart, points at infinity |
+//!
+//! Float kernels (double-double, Horner, `sin`/`cos`, Newton) are in `kernels`, each called
+//! from one dispatch point: a point's evaluation from `Evaluator::eval_unit` (floats
+//! certified by the Horner bound, else double-double, else a nearby parameter), the arc ends
+//! from `Evaluator::root_of_s` (Newton in double-double, else the algebraic number's own
+//! float), the grid from `Sampler::grid` (rotations of the step, exact every 64 points),
+//! the affine view from `Sampler::piece` (`view::affine_view`, held equal to the reference
+//! `view::affine_view_two_pass` in debug builds and tests).
 //!
 //! # Parameter on the projective line
 //! A parameter value is a point `(U₀, U₁)` of ℙ¹ (`u = U₀/U₁`), written `(sin θ, cos θ)`, so
 //! `u = ∞` (`θ = ±π/2`) is an ordinary point and a range through ∞ is an interval of `θ`.
-//! The homogenized parameterization is evaluated at `t = U₀/U₁` when `|t| ≤ 1`, else with
-//! the reversed coefficients at `1/t`: Horner's rule always runs on `[−1, 1]`. Levin's form
-//! `a ± d√s` is homogeneous of degree `D = max(deg a, deg d + 2)` with `s` a quartic form.
-//! Arc ends are the exact roots of `s`, approximated by Newton's method on `s` (evaluated in
-//! double-double) inside the root's isolating interval (one simple root there), by
-//! [`AlgebraicReal::to_f64`] where that does not bracket it or the root is ill-conditioned. Coefficients go to floats
-//! once, through double-double: over ℚ(√δ) `c₀ + c₁√δ` is summed where the terms agree in
-//! sign or cancel by fewer than 6 bits, else computed as `(c₀² − c₁²δ)/(c₀ − c₁√δ)` with the
-//! integer norm exact, so that no cancellation costs more than 6 of the ~104 bits (the same
-//! double-doubles serve the retries). `s` is
-//! clamped at 0, which moves
-//! a point off the curve by `O(|s|)` only, because `aᵀMd ≡ 0` cancels the first-order error
-//! of `√s`. An evaluation whose rounding bound exceeds `10⁻¹⁰·‖X‖` (a sheet passing through
-//! the zero vector, a removable zero of Levin's form) is retried in double-double, then at a
-//! nearby parameter; the bound `Σₖ|cₖ||t|ᵏ` is first majorized once per parameterization
-//! (`Σ|x| + Σ|d|·√(Σ|s|)`: one comparison with the norm), then by the precomputed sums at
-//! `|t|`, and computed only where neither certifies. Horner's rule runs on fixed-size
-//! arrays, unrolled for the usual degrees.
+//! Arc ends are the exact roots of `s`; their floats only place the ends.
 //!
 //! # Density
-//! Each arc starts from a uniform grid in `θ` (together at least
-//! [`SampleOptions::points`] points per piece; `(sin θ, cos θ)` by rotations of the step,
-//! exact every 64 points; on Levin's form `a`, `d` and `√s` evaluated once for both sheets),
-//! walked in one pass and oriented as it goes: segments are bisected, from a work list,
+//! Each arc starts from a uniform grid in `θ` (together at least [`SampleOptions::points`]
+//! points per piece), walked in one pass and oriented as it goes: segments are bisected
 //! until consecutive unit vectors are within [`MAX_ANGLE`] radians up to sign and, with a
 //! tolerance, the chord deviation in the chart is at most the tolerance (checked where the
 //! three points lie within [`AFFINE_RADIUS`] of the origin). At most [`MAX_DEPTH`] bisections
 //! of a grid segment and [`MAX_POINTS`] points per call: beyond either, an error.
 //!
 //! # The chart
-//! `h(X) = aX₀ + bX₁ + cX₂ + dX₃` (default `w`) is the plane at infinity. The crossings of
-//! a rational `X(u)` are the exact real roots of `h(X(u))` (over a number field by the norm:
-//! [`super::infinity`]), those of Levin's form with rational coefficients the roots of
-//! `h(a)² − h(d)²s` (the sheet from the signs of `h(a)` and `h(d)`), tangential touches
-//! included; they are marked on the polyline ([`SampledPiece::infinity`]), and a point is at
-//! infinity iff it is marked, whatever its float `h`. On Levin's form with irrational
-//! coefficients they are the affine view's exact crossings
-//! ([`plane::levin_plane_crossings`]: the roots of `h(a)² − s·h(d)²` by the norm, sheets from
-//! exact signs); where that route cannot place a crossing (both Levin forms vanish at one
-//! parameter) sampling is an error. The walk's sign changes of `h`, located by regula falsi
-//! (Illinois), are kept only for a curve piece known neither way (none reaches the walk
-//! today). Affine coordinates are those of `X/h(X)` without the last
-//! coordinate whose coefficient in `h` is nonzero (`(x/w, y/w, z/w)` for the default); `h` is
-//! computed once per point during the walk and kept with the polyline, and the affine view
-//! is cut from it in stretches of one sign.
+//! `h(X) = aX₀ + bX₁ + cX₂ + dX₃` (default `w`) is the plane at infinity. A point is at
+//! infinity iff it is marked at an exact crossing (`crossings`), whatever its float `h`.
+//! The walk's sign changes of `h`, located by regula falsi (Illinois), are kept only for a
+//! curve piece known neither way (none reaches the walk today). Affine coordinates are those
+//! of `X/h(X)` without the last coordinate whose coefficient in `h` is nonzero
+//! (`(x/w, y/w, z/w)` for the default).
 
 mod chart;
 mod convert;

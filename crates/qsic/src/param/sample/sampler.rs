@@ -1,4 +1,12 @@
-//! TODO(doc)
+//! The sampler of one component: the initial grid of each arc, the refinement and the marks.
+//!
+//! Each arc starts from a uniform grid in `θ` ([`Sampler::grid`]; on Levin's form both sheets
+//! at once), walked in one pass: a segment is bisected, from a work list, until consecutive
+//! unit vectors are within [`MAX_ANGLE`] radians up to sign and, with a tolerance, the chord
+//! deviation in the chart is at most the tolerance (where the three points lie within
+//! [`AFFINE_RADIUS`] of the origin); at most [`MAX_DEPTH`] bisections of a grid segment. The
+//! exact events of the arc (crossings of the plane at infinity, singular points) are placed at
+//! their exact parameters and marked ([`Sampler::events`]).
 
 use crate::error::Error;
 use crate::param::curve::{Arc, ParamRange, ParamValue, Sheet};
@@ -6,7 +14,7 @@ use crate::param::sample::chart::{chord_deviation, dot, Chart};
 use crate::param::sample::crossings::{in_range, inner_f64, Crossings};
 use crate::param::sample::eval::Evaluator;
 use crate::param::sample::kernels::trig::sin_cos;
-use crate::param::sample::view::{affine_view, affine_view_two_pass};
+use crate::param::sample::view::affine_view;
 use crate::param::sample::walk::{
     grid_before_event, projective, push_oriented, run_of, span, Approximations, Line, OtherSheet,
     Sample, Walk,
@@ -609,7 +617,10 @@ impl<'a> Sampler<'a> {
             debug_assert!(line.h.len() == line.x.len());
             debug_assert!((line.h.iter().zip(&line.x)).all(|(h, x)| *h == dot(&self.chart.h, x)));
             #[cfg(debug_assertions)]
-            assert_eq!(affine, affine_view_two_pass(self.chart, &line, closed));
+            assert_eq!(
+                affine,
+                super::view::affine_view_two_pass(self.chart, &line, closed)
+            );
             affine
         };
         let breaks = line.marks.iter().filter(|m| m.2).map(|m| m.0).collect();

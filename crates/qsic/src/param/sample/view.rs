@@ -1,4 +1,12 @@
-//! TODO(doc)
+//! The affine view of a sampled polyline: the piece split at its crossings of the plane at
+//! infinity (the branches end before and start after them) and at the curve's real singular
+//! points (both branches keep the point), its points at infinity in order, and whether it is
+//! bounded — read from the polyline and its exact marks, with `h` computed once per point
+//! during the walk.
+//!
+//! [`affine_view`] walks the runs of plain points between marks; [`affine_view_two_pass`]
+//! (debug builds, and the tests) is the reference that visits every point twice: the two are
+//! held equal.
 
 use crate::param::sample::chart::{dot, Chart};
 use crate::param::sample::walk::{AffineSteps, Line};

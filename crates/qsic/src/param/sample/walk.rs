@@ -1,4 +1,10 @@
-//! TODO(doc)
+//! The walk along an arc: the polyline being built ([`Line`]), its points ([`Sample`]), the
+//! arc's span in `θ` (`(U₀, U₁) = (sin θ, cos θ)`, so `u = ∞` is an ordinary point and a
+//! range through ∞ is an interval of `θ`), and the run of grid points accepted at once.
+//!
+//! A grid point is accepted when its unit vector is within [`MAX_ANGLE`] of the last one up
+//! to sign; [`run_of`] accepts a run of them in one pass, oriented as it goes (consecutive dot
+//! products nonnegative), and [`run_of_reference`] (tests) one at a time: the two agree.
 
 use crate::error::Error;
 use crate::param::curve::{ParamRange, ParamValue, Sheet};

@@ -1,4 +1,8 @@
-//! TODO(doc)
+//! Double-double arithmetic: `hi + lo` with `|lo| ≤ ulp(hi)/2`, about 106 bits (Dekker 1971;
+//! Hida, Li, Bailey 2001): error-free `two_sum` and the product by `mul_add` or by Veltkamp's
+//! split ([`split`], [`product_error`]); exact conversion of integers below `2¹⁰⁶`, rounded
+//! beyond ([`int_dd`]). [`Dd4`] runs the same operations on four lanes. Used where a float
+//! evaluation is not certified ([`super::super::eval`]) and for the coefficients of ℚ(√δ).
 
 use crate::param::curve::Number;
 use crate::param::sample::kernels::Lanes;

@@ -1,4 +1,6 @@
-//! TODO(doc)
+//! Horner's rule on four coordinates at once (`Σₖ cₖ tᵏ`, or reversed for `|t| > 1`), and on
+//! the absolute values at `|t|`: the majorant `Σₖ|cₖ||t|ᵏ` of the rounding error, which is at
+//! most `γ_{2n}` times it for `n` terms (Higham, *Accuracy and Stability*, §5.1).
 
 use crate::param::sample::kernels::Lanes;
 

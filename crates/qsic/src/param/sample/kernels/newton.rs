@@ -1,4 +1,6 @@
-//! TODO(doc)
+//! Newton's method safeguarded by bisection on a bracketing interval: every step stays inside
+//! the interval, which halves when Newton leaves it, so it converges where the bracket holds
+//! one root; it stops at the rounding level of `f`.
 
 /// Newton's method on `f` (value, derivative) safeguarded by bisection in `(lo, hi)`, where
 /// `f(lo) = flo` and `f(hi)` have opposite signs: a float near the root, returned once

@@ -1,4 +1,9 @@
-//! TODO(doc)
+//! `(sin θ, cos θ)` for the parameters of the walk. [`sin_cos`] reduces `θ` by the nearest
+//! multiple of `π/2` in two parts (`k·P₁` exact for `|k| < 2²⁰`) and sums the Taylor series
+//! on `|r| ≤ π/4` to `r¹⁸`: within a few ulps (any `(U₀, U₁)` is a parameter: the accuracy
+//! only places the point at `θ`); the library's beyond `|θ| ≤ 2¹⁸`. [`grid_parameters`]
+//! advances a grid by rotations of the step, exact again every [`RESYNC`] points, so the
+//! drift stays below `RESYNC` roundings.
 
 /// Grid points between exact values of `(sin θ, cos θ)` ([`Evaluator::grid`]).
 pub(in crate::param::sample) const RESYNC: usize = 64;
