@@ -19,7 +19,13 @@ use std::path::{Path, PathBuf};
 /// Cycles that exist outside the sampler and the expressions, each as its strongly connected
 /// set of sibling modules. They are to be broken in their own modules; a cycle not listed
 /// here, or one of these grown by a module, fails the test.
-const KNOWN_CYCLES: &[&[&str]] = &[];
+const KNOWN_CYCLES: &[&[&str]] = &[
+    // the crate's top level: through affine, classify, natural and solids (not the sampler:
+    // param::sample no longer uses affine)
+    &["affine", "classify", "natural", "param", "solids"],
+    &["contact", "contact_point"],
+    &["surface", "zsqrt"],
+];
 
 /// Most lines of code (blank lines, comments and `#[cfg(test)]` modules left out) of a file
 /// of the sampler or of the expressions.
