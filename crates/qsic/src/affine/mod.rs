@@ -29,7 +29,6 @@ mod view;
 pub use common::common_surfaces;
 pub use conic::{affine_conic, approx, AffineConic, Axis, ConicShape, Direction, Surd};
 pub use curve::{affine_curve, AffineComponent, AffineCurve, AffineSingularPoint};
-pub(crate) use curve::{chart_value, levin_plane_crossings, params_of_point};
 pub use fast::{conic_real_intersections, fast_affine_curve};
 pub use frame::{
     component_frame, conic_frame, point_frame, Frame, FrameDirection, FrameLength, Placement,
