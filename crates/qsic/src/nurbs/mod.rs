@@ -382,7 +382,7 @@ fn singular_cuts(curve: &Curve, x: &PointPoly, n: usize) -> (Vec<ParamPoint>, Ve
     let mut cuts: Vec<ParamPoint> = Vec::new();
     let mut remarks = Vec::new();
     for sp in &curve.singular_points {
-        match crate::affine::params_of_point(x, n, &sp.point) {
+        match crate::param::sample::plane::params_of_point(x, n, &sp.point) {
             Ok(values) => {
                 for v in values {
                     match v {

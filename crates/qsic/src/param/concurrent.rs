@@ -20,7 +20,7 @@
 //! (a multiple point) and the real locus is connected.
 
 use super::curve::{self, Component, Curve, Number, RealPiece, SingularPoint};
-use super::planar::{line_param, non_real, rational_roots, to_point, Mat};
+use super::parts::{line_param, non_real, rational_roots, to_point, Mat};
 use crate::classify::{Classification, ComponentKind, SingularPointKind};
 use qsic_algebra::field::NumberField;
 use qsic_algebra::linalg::Matrix;

@@ -23,6 +23,7 @@ pub mod expr;
 mod infinity;
 mod line_cubic;
 mod nodal;
+mod parts;
 mod planar;
 pub mod sample;
 mod single;

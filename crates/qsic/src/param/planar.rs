@@ -24,8 +24,9 @@
 //! `v = e_a + u·e_b`. ℚ(√δ, √r) is written ℚ(γ) with an explicit primitive element: `γ = √δ + √r`
 //! for a rational `r`, `γ = √r` otherwise (`√δ = (γ² − a)/b` for `r = a + b√δ`).
 
-use super::curve::{self, Component, ComponentParam, Curve, Number, Point};
+use super::curve::{self, Component, ComponentParam, Curve, Number};
 use super::curve::{RealPiece, SingularPoint};
+pub(super) use super::parts::{line_param, non_real, rational_roots, to_point, Mat};
 use super::surface::{
     parameterize_doubly_ruled, poly_form, sqrt_in_field, to_quadratic, RuledParameterization,
 };
@@ -37,10 +38,8 @@ use qsic_algebra::field::{NumberField, Quadratic};
 use qsic_algebra::linalg::forms::{plane_pair, sqrt_rational, PlanePair, PlanePairKind};
 use qsic_algebra::linalg::pencil::pencil_principal_minor_sums;
 use qsic_algebra::linalg::Matrix;
-use qsic_algebra::roots::simplest_between;
 use qsic_algebra::{AlgebraicReal, Field, IBig, Poly, RBig, Ring, Sign};
 
-pub(super) type Mat = [[RBig; 4]; 4];
 /// A vector over ℚ or one ℚ(√δ).
 type Vq = Vec<Quadratic>;
 
@@ -214,18 +213,6 @@ impl Ext {
     }
 }
 
-pub(super) fn to_point(v: &[Number]) -> Point {
-    std::array::from_fn(|i| v[i].clone())
-}
-
-/// The line through `p` and `q`: `X(u) = p + u·q`.
-pub(super) fn line_param(p: &[Number], q: &[Number]) -> ComponentParam {
-    ComponentParam::Rational {
-        x: std::array::from_fn(|i| Poly::new(vec![p[i].clone(), q[i].clone()])),
-        degree: 1,
-    }
-}
-
 /// The conic `yᵀCy = 0` of the plane spanned by the columns of `e` (4×3), through its point
 /// `y`: `X(u) = E·(2(yᵀCv)v − (vᵀCv)y)`, `v = e_a + u·e_b` (module docs).
 fn conic_param(e: &[Vec<Number>], c: &[Vec<Number>], y: &[Number]) -> ComponentParam {
@@ -262,28 +249,6 @@ struct Split {
     /// Another member: `A` for finite λ, `B` for `λ = ∞`.
     other: Mat,
     pair: PlanePair,
-}
-
-/// The rational roots of `g` (exact: each real root's interval is refined below
-/// `1/(2·lc²)`, where the only candidate is the simplest rational in it).
-pub(super) fn rational_roots(g: &Poly<RBig>) -> Vec<RBig> {
-    if g.degree().unwrap_or(0) == 0 {
-        return Vec::new();
-    }
-    let p = Poly::from_rational(g).0.squarefree_part();
-    let lc = RBig::from(p.leading());
-    let width = RBig::ONE / (RBig::from(2) * &lc * &lc);
-    AlgebraicReal::real_roots_of(&p)
-        .into_iter()
-        .filter_map(|root| {
-            if let Some(r) = root.as_rational() {
-                return Some(r.clone());
-            }
-            let iv = root.refined_interval(&width);
-            let r = simplest_between(iv.lo(), iv.hi(), true, true);
-            p.eval_rational(&r).is_zero().then_some(r)
-        })
-        .collect()
 }
 
 /// The member of rank ≤ 2 at a rational λ whose planes need the least: rational, double,
@@ -492,16 +457,6 @@ enum VLine {
 fn push(components: &mut Vec<Component>, c: Component) -> usize {
     components.push(c);
     components.len() - 1
-}
-
-pub(super) fn non_real(kind: ComponentKind, multiplicity: u32) -> Component {
-    Component {
-        kind,
-        multiplicity,
-        real: false,
-        param: None,
-        plane: None,
-    }
 }
 
 /// The components of `C = Q|plane`: conic, line pair, double line or the plane itself.
