@@ -42,7 +42,7 @@
 //! ([`enclosure_units`]); the exact zero tests their gcd's estimate; the stage in `K` the
 //! reduction of the coefficients into `K` and its products ([`super::irrational::Spend`]).
 
-use super::instants::{subresultant_within, TPoly};
+use super::instants::{subresultant_within, DeterminantRoute, TPoly};
 use super::irrational::Spend;
 use crate::classify::{classify_regular_parts, Classification};
 use crate::pencil::SigItem;
@@ -75,14 +75,15 @@ impl PencilPolys {
     /// ([`subresultant_within`]).
     pub(crate) fn of(
         pencil: &MatrixPencil<Poly>,
+        route: DeterminantRoute,
         budget: &Budget,
     ) -> Result<PencilPolys, Exhausted> {
         let f = pencil.det_poly();
         let (s1, psc0) = if f.degree() == Some(4) {
             let df = f.derivative();
             (
-                subresultant_within(&f, &df, 1, budget)?,
-                subresultant_within(&f, &df, 0, budget)?.coeff(0),
+                subresultant_within(&f, &df, 1, route, budget)?,
+                subresultant_within(&f, &df, 0, route, budget)?.coeff(0),
             )
         } else {
             // never of degree 4 at any t: the fast route does not apply

@@ -47,6 +47,7 @@ mod range;
 pub mod rigid;
 
 pub use contact::{first_contact, solid_motion, FirstContact, SolidMotion, SolidState};
+pub use instants::DeterminantRoute;
 pub use range::{TimeRange, MINUS_INFINITY, PLUS_INFINITY};
 
 use crate::classify::{classify_allowing_zero_within, Classification};
@@ -79,6 +80,8 @@ pub struct MovingPencil {
     /// when first needed ([`Self::fast_polys`]): a motion without irrational instants to
     /// classify never pays for their subresultants.
     polys: OnceLock<irrational_fast::PencilPolys>,
+    /// How its determinants over `ℤ[t]` are computed ([`Self::with_determinant_route`]).
+    route: DeterminantRoute,
 }
 
 /// The type compared between neighbours: pencil kind, case, complex and real type.
@@ -206,7 +209,20 @@ impl MovingPencil {
             pencil,
             f,
             polys: OnceLock::new(),
+            route: DeterminantRoute::Fastest,
         })
+    }
+
+    /// The same pencil computing its determinants over `ℤ[t]` by `route` (the default is
+    /// [`DeterminantRoute::Fastest`]; [`DeterminantRoute::Bareiss`] is the reference the
+    /// tests compare it with). Every answer is the same on both routes; only the time and
+    /// the units spent differ.
+    pub fn with_determinant_route(self, route: DeterminantRoute) -> MovingPencil {
+        MovingPencil {
+            route,
+            polys: OnceLock::new(),
+            ..self
+        }
     }
 
     /// `A(t)`.
@@ -334,7 +350,7 @@ impl MovingPencil {
         }
         let mut generic = None;
         for (i, (g, _)) in forms.iter().enumerate() {
-            let discriminant = discriminant_form(g, budget)?;
+            let discriminant = discriminant_form(g, self.route, budget)?;
             if let ([(g, 1)], Some(d)) = (forms.as_slice(), &discriminant) {
                 if g.degree == 4 && rank == 4 {
                     generic = Some(d * &out[0]);
@@ -342,13 +358,13 @@ impl MovingPencil {
             }
             out.extend(discriminant);
             for (h, _) in &forms[i + 1..] {
-                out.push(resultant_forms(g, h, budget)?);
+                out.push(resultant_forms(g, h, self.route, budget)?);
             }
         }
         if rank < 4 || forms.iter().any(|(_, m)| *m > 1) {
             for k in 1..=3 {
                 let conditions =
-                    rank_conditions(&self.pencil.minors(k), k, budget).map_err(|e| match e {
+                    rank_conditions(&self.pencil.minors(k), k, self.route, budget).map_err(|e| match e {
                         RankConditionError::NoSeparatingCombination(why) => {
                             Error::UnsupportedMotion(why)
                         }
@@ -361,6 +377,7 @@ impl MovingPencil {
             out.push(common_kernel_condition(
                 self.a.numerators(),
                 self.b.numerators(),
+                self.route,
                 budget,
             )?);
         }
@@ -605,7 +622,7 @@ impl MovingPencil {
         if let Some(p) = self.polys.get() {
             return Ok(p);
         }
-        let made = irrational_fast::PencilPolys::of(&self.pencil, budget)?;
+        let made = irrational_fast::PencilPolys::of(&self.pencil, self.route, budget)?;
         Ok(self.polys.get_or_init(|| made))
     }
 }
