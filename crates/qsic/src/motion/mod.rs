@@ -45,6 +45,7 @@ mod irrational;
 mod irrational_fast;
 mod range;
 pub mod rigid;
+mod shared_roots;
 
 pub use contact::{first_contact, solid_motion, FirstContact, SolidMotion, SolidState};
 pub use instants::DeterminantRoute;
@@ -82,6 +83,9 @@ pub struct MovingPencil {
     polys: OnceLock<irrational_fast::PencilPolys>,
     /// How its determinants over `ℤ[t]` are computed ([`Self::with_determinant_route`]).
     route: DeterminantRoute,
+    /// The zero tests of the generic condition at the irrational candidates, shared between
+    /// the roots of one polynomial.
+    zero_tests: shared_roots::ZeroTests,
 }
 
 /// The type compared between neighbours: pencil kind, case, complex and real type.
@@ -195,10 +199,24 @@ impl MovingPencil {
     /// # Ok::<(), qsic::Error>(())
     /// ```
     pub fn new(a: MovingMatrix, b: MovingMatrix) -> Result<MovingPencil, Error> {
+        MovingPencil::new_within(a, b, &Budget::unlimited())
+    }
+
+    /// [`Self::new`] spending `budget`: the minors of `λM_A − M_B` over `ℤ[t]`, their units
+    /// ([`minors_units`]) before they are formed, so a small budget stops before the work.
+    ///
+    /// # Errors
+    /// As [`Self::new`]; [`Error::BudgetExceeded`] when the budget runs out.
+    pub fn new_within(
+        a: MovingMatrix,
+        b: MovingMatrix,
+        budget: &Budget,
+    ) -> Result<MovingPencil, Error> {
         let (ma, mb) = (a.numerators(), b.numerators());
         for m in [ma, mb] {
             check_motion_size(m)?;
         }
+        budget.spend(minors_units(ma, mb))?;
         let entries = pencil_entries(ma, mb);
         let pencil = MatrixPencil::from_entries(ma.clone(), mb.clone());
         let f = pencil.det_poly();
@@ -210,6 +228,7 @@ impl MovingPencil {
             f,
             polys: OnceLock::new(),
             route: DeterminantRoute::Fastest,
+            zero_tests: shared_roots::ZeroTests::default(),
         })
     }
 
@@ -518,9 +537,13 @@ impl MovingPencil {
         // both neighbours (`candidates_and_generic_condition`), not classified
         let mut instant_types = Vec::with_capacity(candidates.len());
         for c in &candidates {
+            let generic_here = match (c.as_rational(), &generic) {
+                (None, Some(g)) => !self.zero_tests.is_root(c, g, budget)?,
+                _ => false,
+            };
             instant_types.push(match c.as_rational() {
                 Some(v) => Some(InstantType::Exact(self.classify_at_within(v, budget)?)),
-                None if generic.as_ref().is_some_and(|g| !c.is_root_of(g)) => None,
+                None if generic_here => None,
                 None => Some(
                     self.classify_at_irrational(c, budget)?
                         .map_or(InstantType::IrrationalUnclassified, InstantType::Exact),
@@ -659,6 +682,28 @@ fn samples_between(
         out.push(RBig::from(last.interval().hi().ceil() + IBig::ONE));
     }
     out
+}
+
+/// The units of every minor of `λM_A − M_B` over `ℤ[t]` ([`MatrixPencil::from_entries`]:
+/// the minors of the members `M_A`, `−M_B`, `±M_A − M_B` and the determinant of
+/// `2M_A − M_B`, by expansion along `2×2` minors): per member, `72` products of two entries
+/// for the `2×2` minors, `48` of a `2×2` minor by an entry for the `3×3` ones and `4` of a
+/// `3×3` minor by an entry for the determinant, each [`tpoly_product_units`]-sized (an entry
+/// of degree `d`, `b + 2` bits: a member's entries are sums of two).
+fn minors_units(a: &[[Poly; 4]; 4], b: &[[Poly; 4]; 4]) -> u64 {
+    let (d, bits) = a.iter().chain(b).flatten().fold((0, 0), |(d, bits), e| {
+        (d.max(e.degree().unwrap_or(0)), bits.max(e.max_bits()))
+    });
+    let bits = bits + 2;
+    let product = |k: usize| -> u64 {
+        // a k×k minor (degree k·d, about k·bits bits) times an entry
+        ((k * d + 1) as u64 * (d + 1) as u64)
+            .saturating_mul(qsic_algebra::budget::product_units(k * bits, bits))
+    };
+    let member = (72 * product(1))
+        .saturating_add(48 * product(2))
+        .saturating_add(4 * product(3));
+    member.saturating_mul(5)
 }
 
 /// [`Error::Limit`] if an entry of `m` exceeds [`MAX_MOTION_DEGREE`] or a coefficient
