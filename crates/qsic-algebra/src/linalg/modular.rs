@@ -101,10 +101,9 @@ fn primes() -> impl Iterator<Item = u64> {
 /// `x mod p` for an integer given by its sign and words (least significant first).
 fn reduce(x: &IBig, p: u64) -> u64 {
     let (sign, words) = x.as_sign_words();
-    let r = words
-        .iter()
-        .rev()
-        .fold(0u64, |r, &w| (((r as u128) << 64 | w as u128) % p as u128) as u64);
+    let r = words.iter().rev().fold(0u64, |r, &w| {
+        (((r as u128) << 64 | w as u128) % p as u128) as u64
+    });
     if sign == DSign::Negative && r != 0 {
         p - r
     } else {
@@ -296,12 +295,7 @@ fn interpolate(mut v: Vec<u64>, p: u64) -> Vec<u64> {
 }
 
 /// `det M` modulo one prime, as the coefficients of a polynomial of degree `≤ degree`.
-fn det_residues(
-    distinct: &[&Poly],
-    index: &[Vec<usize>],
-    degree: usize,
-    p: u64,
-) -> Vec<u64> {
+fn det_residues(distinct: &[&Poly], index: &[Vec<usize>], degree: usize, p: u64) -> Vec<u64> {
     let n = index.len();
     let reduced: Vec<Vec<u64>> = distinct
         .iter()
@@ -312,7 +306,10 @@ fn det_residues(
     let mut m = vec![0u64; n * n];
     for x in 0..=degree as u64 {
         for (slot, e) in at.iter_mut().zip(&reduced) {
-            *slot = e.iter().rev().fold(0u64, |acc, &c| (mul(acc, x, p) + c) % p);
+            *slot = e
+                .iter()
+                .rev()
+                .fold(0u64, |acc, &c| (mul(acc, x, p) + c) % p);
         }
         for (i, row) in index.iter().enumerate() {
             for (j, &e) in row.iter().enumerate() {
@@ -408,6 +405,87 @@ pub fn det_modular_within(rows: &[Vec<Poly>], budget: &Budget) -> Result<Poly, E
     Ok(Poly::new(coeffs))
 }
 
+/// The coefficients (lowest first) modulo `p` of `a mod b` over `𝔽_p`, `b` with a nonzero
+/// leading coefficient and no trailing zeros.
+fn rem_mod_p(mut a: Vec<u64>, b: &[u64], p: u64) -> Vec<u64> {
+    let db = b.len() - 1;
+    let lead_inv = inv(b[db], p);
+    while a.len() > db {
+        let top = a.pop().expect("longer than b");
+        if top == 0 {
+            continue;
+        }
+        let f = mul(top, lead_inv, p);
+        let shift = a.len() - db;
+        for (j, &bj) in b[..db].iter().enumerate() {
+            let s = mul(f, bj, p);
+            let v = a[shift + j];
+            a[shift + j] = if v >= s { v - s } else { v + p - s };
+        }
+    }
+    while a.last() == Some(&0) {
+        a.pop();
+    }
+    a
+}
+
+/// Whether `f ∈ ℤ[t][λ]` is square-free over `ℚ(t)`, certified by specialisations: `true`
+/// if at some `t₀ ∈ {2, 3, 5, 7}`, modulo `p = 2⁶¹ − 1`, `f(λ; t₀)` keeps its degree in `λ`
+/// and is coprime to its derivative over `𝔽_p`. (Were `f = g²h` over `ℚ(t)` with
+/// `deg_λ g ≥ 1`, then by Gauss' lemma over `ℤ[t]` the specialisation that keeps the
+/// degree keeps every factor's degree and `g(t₀)²` divides `f(t₀)` over `𝔽_p`.) `false`
+/// proves nothing: the caller then computes the decomposition. Each try spends the
+/// reduction of the coefficients and Horner at `t₀` (their words) and the gcd of degree 4.
+///
+/// # Errors
+/// [`Exhausted`] when the budget runs out.
+pub fn squarefree_by_specialisation(f: &Poly<Poly>, budget: &Budget) -> Result<bool, Exhausted> {
+    let p = TOP;
+    let Some(n) = f.degree() else {
+        return Ok(false);
+    };
+    if n == 0 {
+        return Ok(true);
+    }
+    let words: u64 = f
+        .coeffs()
+        .iter()
+        .flat_map(|c| c.coeffs())
+        .map(|c| c.as_sign_words().1.len().max(1) as u64 + 1)
+        .sum();
+    for t0 in [2u64, 3, 5, 7] {
+        budget.spend(words.saturating_add((n as u64 + 1) * (n as u64 + 1)))?;
+        let at: Vec<u64> = f
+            .coeffs()
+            .iter()
+            .map(|c| {
+                c.coeffs()
+                    .iter()
+                    .rev()
+                    .fold(0u64, |acc, v| (mul(acc, t0, p) + reduce(v, p)) % p)
+            })
+            .collect();
+        if at[n] == 0 {
+            continue;
+        }
+        let derivative: Vec<u64> = (1..=n).map(|i| mul(at[i], i as u64 % p, p)).collect();
+        // Euclid: the last nonzero remainder has degree 0 exactly when they are coprime
+        let (mut a, mut b) = (at, derivative);
+        while b.last() == Some(&0) {
+            b.pop();
+        }
+        while !b.is_empty() {
+            let r = rem_mod_p(a, &b, p);
+            a = b;
+            b = r;
+        }
+        if a.len() == 1 {
+            return Ok(true);
+        }
+    }
+    Ok(false)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -482,10 +560,7 @@ mod tests {
         assert!(det_modular_within(&rank1, &Budget::unlimited())
             .unwrap()
             .is_zero());
-        assert_eq!(
-            det_modular_within(&[], &Budget::unlimited()),
-            Ok(p(&[1]))
-        );
+        assert_eq!(det_modular_within(&[], &Budget::unlimited()), Ok(p(&[1])));
         // a negative constant at the bound: det [[−2⁶⁰ − 1, 0], [0, 2⁶⁰]] needs two primes
         let big = IBig::ONE << 60;
         let rows = vec![
@@ -503,7 +578,11 @@ mod tests {
         // diag(3t + 4, …): |det| coefficients ≤ 7ⁿ, the bound ⌈log₂ 7ⁿ⌉ or one more
         let e = Poly::from_i64s(&[4, 3]);
         let rows: Vec<Vec<Poly>> = (0..3)
-            .map(|i| (0..3).map(|j| if i == j { e.clone() } else { Poly::zero() }).collect())
+            .map(|i| {
+                (0..3)
+                    .map(|j| if i == j { e.clone() } else { Poly::zero() })
+                    .collect()
+            })
             .collect();
         let bits = coefficient_bound_bits(&rows);
         let det = det_bareiss(rows);
@@ -519,6 +598,30 @@ mod tests {
         assert!(det_modular_within(&rows, &Budget::new(units - 1)).is_err());
         assert!(det_modular_within(&rows, &Budget::new(units)).is_ok());
         assert!(det_modular_within(&rows, &Budget::new(10)).is_err());
+    }
+
+    #[test]
+    fn squarefree_certificates_only_for_squarefree_forms() {
+        let p = Poly::from_i64s;
+        // (λ − t)(λ − t − 1)(λ + 2t): square-free over ℚ(t)
+        let l = |c: i64, d: i64| Poly::new(vec![p(&[c, d]), p(&[1])]);
+        let squarefree = &(&l(0, -1) * &l(-1, -1)) * &l(0, 2);
+        assert_eq!(
+            squarefree_by_specialisation(&squarefree, &Budget::unlimited()),
+            Ok(true)
+        );
+        // (λ − t)²(λ + 1): never certified
+        let square = &(&l(0, -1) * &l(0, -1)) * &l(1, 0);
+        assert_eq!(
+            squarefree_by_specialisation(&square, &Budget::unlimited()),
+            Ok(false)
+        );
+        // t·λ² − 2t·λ + t = t(λ − 1)²: a square whatever its content
+        let scaled = Poly::new(vec![p(&[0, 1]), p(&[0, -2]), p(&[0, 1])]);
+        assert_eq!(
+            squarefree_by_specialisation(&scaled, &Budget::unlimited()),
+            Ok(false)
+        );
     }
 
     #[test]

@@ -382,8 +382,8 @@ impl MovingPencil {
         }
         if rank < 4 || forms.iter().any(|(_, m)| *m > 1) {
             for k in 1..=3 {
-                let conditions =
-                    rank_conditions(&self.pencil.minors(k), k, self.route, budget).map_err(|e| match e {
+                let conditions = rank_conditions(&self.pencil.minors(k), k, self.route, budget)
+                    .map_err(|e| match e {
                         RankConditionError::NoSeparatingCombination(why) => {
                             Error::UnsupportedMotion(why)
                         }
