@@ -127,14 +127,14 @@ pub fn coefficient_bound_bits(rows: &[Vec<Poly>]) -> usize {
     };
     let norms: Vec<Vec<IBig>> = rows.iter().map(|r| r.iter().map(norm1).collect()).collect();
     let product_bits = |by_rows: bool| -> usize {
-        let mut product = IBig::ONE;
-        for i in 0..n {
-            let s = (0..n).fold(IBig::ZERO, |s, j| {
-                let v = if by_rows { &norms[i][j] } else { &norms[j][i] };
-                s + v * v
-            });
-            product *= s;
-        }
+        let product = (0..n)
+            .map(|i| {
+                (0..n).fold(IBig::ZERO, |s, j| {
+                    let v = if by_rows { &norms[i][j] } else { &norms[j][i] };
+                    s + v * v
+                })
+            })
+            .fold(IBig::ONE, |acc, s| acc * s);
         // H² ≤ product < 2^bits, so H < 2^⌈bits/2⌉
         (&product).unsigned_abs().bit_len().div_ceil(2)
     };
@@ -324,22 +324,20 @@ fn det_residues(distinct: &[&Poly], index: &[Vec<usize>], degree: usize, p: u64)
 /// The integer in `(−P/2, P/2]`, `P = ∏ pᵢ`, with residues `r` modulo the primes `ps`
 /// (Garner's mixed radix digits, then the symmetric residue).
 fn crt(r: &[u64], ps: &[u64], inverses: &[Vec<u64>], product: &IBig, half: &IBig) -> IBig {
-    let k = ps.len();
-    let mut digits = vec![0u64; k];
-    for i in 0..k {
+    let mut digits: Vec<u64> = Vec::with_capacity(ps.len());
+    for ((&ri, &p), inv_i) in r.iter().zip(ps).zip(inverses) {
         // digit_i = (r_i − (d_0 + d_1 p_0 + … )) / (p_0⋯p_{i−1}) mod p_i
-        let p = ps[i];
-        let mut x = r[i] % p;
-        for j in 0..i {
-            let d = digits[j] % p;
+        let mut x = ri % p;
+        for (&dj, &inv_ij) in digits.iter().zip(inv_i) {
+            let d = dj % p;
             x = if x >= d { x - d } else { x + p - d };
-            x = mul(x, inverses[i][j], p);
+            x = mul(x, inv_ij, p);
         }
-        digits[i] = x;
+        digits.push(x);
     }
     let mut v = IBig::ZERO;
-    for i in (0..k).rev() {
-        v = v * IBig::from(ps[i]) + IBig::from(digits[i]);
+    for (&p, &d) in ps.iter().zip(&digits).rev() {
+        v = v * IBig::from(p) + IBig::from(d);
     }
     if &v > half {
         v - product

@@ -107,7 +107,7 @@ pub(crate) fn refined_within(
     let mut a = alpha.clone();
     loop {
         let iv = a.interval();
-        if matches!(iv, RootInterval::Exact(_)) || &(iv.hi() - iv.lo()) <= &width {
+        if matches!(iv, RootInterval::Exact(_)) || iv.hi() - iv.lo() <= width {
             return Ok(iv.clone());
         }
         budget.spend(step)?;
