@@ -73,7 +73,7 @@ pub fn contact_within(
     range: TimeRange,
     budget: &Budget,
 ) -> Result<ContactReport, Error> {
-    let pencil = MovingPencil::new(a, b)?;
+    let pencil = MovingPencil::new_within(a, b, budget)?;
     let motion = pencil.variations_within(None, None, budget)?;
     let first = first_contact_in_within(&pencil, &motion, &range, budget)?;
     let contact = match &first {

@@ -44,7 +44,7 @@ pub fn analyze_within(
     range: &TimeRange,
     budget: &Budget,
 ) -> Result<Motion, Error> {
-    MovingPencil::new(a, b)?.variations_within(range.from(), range.to(), budget)
+    MovingPencil::new_within(a, b, budget)?.variations_within(range.from(), range.to(), budget)
 }
 
 /// Appends an instant as JSON: `"p/q"`, or `{"poly", "interval", "approx"}`.

@@ -1,5 +1,5 @@
 //! CPU time of the stages of one motion: `MovingPencil::new`, the candidate polynomials, their
-//! real roots, and `variations` (README, "Moving quadrics").
+//! real roots, and the whole of `variations` (README, "Moving quadrics").
 //!
 //! `cargo run --release -p qsic --example motion_stages < LINES.jsonl` (JSON Lines
 //! `{"id", "A", "B"}` with `A`, `B` 4×4 arrays of polynomial strings in `t`, as
@@ -46,9 +46,14 @@ fn main() {
         let clock = Instant::now();
         let instants = pencil.candidate_instants().expect("instants");
         let roots = clock.elapsed().as_secs_f64() - cand;
+        let clock = Instant::now();
+        let motion = pencil.variations().expect("variations");
+        let all = clock.elapsed().as_secs_f64();
         println!(
-            "new {new:.2} s, candidates {cand:.2} s (degrees {degrees:?}), roots {roots:.2} s ({} real)",
-            instants.len()
+            "new {new:.2} s, candidates {cand:.2} s (degrees {degrees:?}), roots {roots:.2} s \
+             ({} real), variations {all:.2} s ({} instants)",
+            instants.len(),
+            motion.instants.len()
         );
     }
 }

@@ -54,8 +54,9 @@ fn over_budget<T: std::fmt::Debug>(r: Result<T, Error>, limit: u64) {
 }
 
 /// The degree-16 pencil with 512-bit coefficients (the documented limits): a budget of
-/// 10⁷ units stops it in the candidate stage — the discriminant's elimination is charged
-/// its estimate before it starts, so the error comes without the elimination.
+/// 10⁷ units stops it in the candidate stage — the discriminant's determinant is charged
+/// one prime at a time as it runs, so the error comes long before the elimination ends;
+/// and `MovingPencil::new_within` stops before the minors on a smaller budget.
 #[test]
 fn a_small_budget_stops_the_largest_pencil_before_its_discriminant() {
     let (name, a, b) = random_families(true).pop().unwrap();
@@ -68,6 +69,8 @@ fn a_small_budget_stops_the_largest_pencil_before_its_discriminant() {
         pencil.candidate_polynomials_within(&Budget::new(10_000_000)),
         10_000_000,
     );
+    let (a, b) = (pencil.a().clone(), pencil.b().clone());
+    over_budget(MovingPencil::new_within(a, b, &Budget::new(1000)), 1000);
 }
 
 /// A degree-2 random pencil: the budgeted motion equals the plain one and spends the same

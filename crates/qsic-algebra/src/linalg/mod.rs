@@ -7,6 +7,7 @@
 //! | [`minors::det`], [`minors::principal_minor_sums`], [`minors::SmallMinors`] | ring | `N × N` (`N ≤ 4`, arrays, no division, no allocation): determinant, the sums `E_k` of principal minors (characteristic polynomial), every minor once |
 //! | [`pencil::pencil_principal_minor_sums`], [`SmallMinors::of_pencil`](minors::SmallMinors::of_pencil) | ring | the same for a pencil `λA − B`, as polynomials in `λ` (evaluation at `λ = ∞, 0, ±1, 2` and interpolation) |
 //! | [`Matrix::det`], [`Matrix::minors`], [`Matrix::principal_minor_sums`], [`Matrix::pivot_columns`] | ring | any size, by Bareiss' fraction-free elimination ([`minors::det_bareiss`]) |
+//! | [`modular::det_modular_within`] | ℤ\[t\] | the determinant by evaluation, interpolation and remaindering modulo 61-bit primes (an accelerator beside Bareiss) |
 //! | [`Matrix::rref`], [`Matrix::rank`], [`Matrix::kernel`], [`Matrix::solve`], [`Matrix::inverse`] | field | Gauss–Jordan elimination ([`echelon`]) |
 //! | [`Matrix::diagonalize_congruent`] | field | `PᵀSP = D` for a symmetric `S` ([`congruence`]); inertia over a [`RealField`], kernel |
 //! | [`forms::real_point`], [`forms::plane_pair`] | ℚ | a real point of an indefinite quadratic form, the two planes of a rank-2 form, over ℚ or ℚ(√δ) ([`forms`]) |
@@ -15,6 +16,7 @@ pub mod congruence;
 pub mod echelon;
 pub mod forms;
 pub mod minors;
+pub mod modular;
 pub mod pencil;
 
 pub use congruence::Diagonalization;

@@ -100,7 +100,7 @@ pub fn first_contact_within(
     range: &TimeRange,
     budget: &Budget,
 ) -> Result<Option<FirstContact>, Error> {
-    let pencil = MovingPencil::new(a.clone(), b.clone())?;
+    let pencil = MovingPencil::new_within(a.clone(), b.clone(), budget)?;
     let motion = pencil.variations_within(None, None, budget)?;
     first_contact_in_within(&pencil, &motion, range, budget)
 }
@@ -369,7 +369,7 @@ pub fn solid_motion_within(
     b: &MovingMatrix,
     budget: &Budget,
 ) -> Result<SolidMotion, Error> {
-    let pencil = MovingPencil::new(a.clone(), b.clone())?;
+    let pencil = MovingPencil::new_within(a.clone(), b.clone(), budget)?;
     solid_motion_in_within(&pencil, &TimeRange::all(), budget)
 }
 

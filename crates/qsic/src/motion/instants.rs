@@ -8,11 +8,22 @@
 //!
 //! **Work units.** Every function spends the caller's [`Budget`]: gcds over `ℤ[t]` per step
 //! ([`Poly::gcd_within`]), gcds over `ℚ(t)` per step of their remainder sequence
-//! ([`tprem_units`]), and each determinant its estimate ([`bareiss_units`]) before it starts,
-//! so a small budget stops before a long elimination rather than after it.
+//! ([`tprem_units`]), and each determinant by its route ([`det_within`]): Bareiss' elimination
+//! its estimate ([`bareiss_units`]) before it starts, so a small budget stops before a long
+//! elimination rather than after it; the modular route one prime at a time as it runs.
+//!
+//! **Determinants.** Every determinant over `ℤ[t]` of the motion stages (the Sylvester
+//! matrices of the resultants and subresultants, the minors of `[M_A; M_B]`) goes through
+//! [`det_within`], the one dispatch point: evaluation, interpolation and remaindering modulo
+//! 61-bit primes ([`det_modular_within`]) where its units are fewer than Bareiss', else
+//! Bareiss; [`DeterminantRoute::Bareiss`] forces the reference (the tests hold the two
+//! routes equal).
 
 use qsic_algebra::budget::{product_units, Budget, Exhausted};
 use qsic_algebra::linalg::minors::det_bareiss;
+use qsic_algebra::linalg::modular::{
+    det_modular_within, modular_units, squarefree_by_specialisation,
+};
 use qsic_algebra::{IBig, Poly, Ring};
 
 /// `ℤ[t][λ]`.
@@ -126,10 +137,38 @@ pub(crate) fn bareiss_units(rows: &[Vec<Poly>]) -> u64 {
     units.max(n as u64)
 }
 
-/// [`det_bareiss`] on a matrix over `ℤ[t]`, its estimated units ([`bareiss_units`]) spent
-/// before it starts.
-pub(crate) fn det_within(rows: Vec<Vec<Poly>>, budget: &Budget) -> Result<Poly, Exhausted> {
-    budget.spend(bareiss_units(&rows))?;
+/// How the determinants over `ℤ[t]` of a motion are computed ([`det_within`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum DeterminantRoute {
+    /// The cheaper by the two estimates: modular ([`det_modular_within`]) where its units
+    /// ([`modular_units`]) are fewer than Bareiss' ([`bareiss_units`]), else Bareiss.
+    #[default]
+    Fastest,
+    /// The modular route always (for the tests that hold it equal to the reference).
+    Modular,
+    /// Bareiss' fraction-free elimination always: the reference.
+    Bareiss,
+}
+
+/// The determinant of a square matrix over `ℤ[t]`, the one dispatch point (module docs):
+/// by `route`, spending its units — Bareiss its estimate before it starts, the modular route
+/// one prime at a time.
+pub(crate) fn det_within(
+    rows: Vec<Vec<Poly>>,
+    route: DeterminantRoute,
+    budget: &Budget,
+) -> Result<Poly, Exhausted> {
+    let bareiss = bareiss_units(&rows);
+    let modular = match route {
+        DeterminantRoute::Modular => true,
+        // below 3×3 elimination is a few products: nothing to gain
+        DeterminantRoute::Fastest => rows.len() >= 3 && modular_units(&rows) < bareiss,
+        DeterminantRoute::Bareiss => false,
+    };
+    if modular {
+        return det_modular_within(&rows, budget);
+    }
+    budget.spend(bareiss)?;
     Ok(det_bareiss(rows))
 }
 
@@ -142,7 +181,13 @@ pub(crate) fn squarefree_decomposition_t(
     f: &TPoly,
     budget: &Budget,
 ) -> Result<Vec<(TPoly, usize)>, Exhausted> {
-    let mut p = vec![t_primitive(f, budget)?];
+    let primitive = t_primitive(f, budget)?;
+    // generic pencils: one specialisation modulo a prime proves `f` square-free, without
+    // the remainder sequence over ℤ[t]
+    if squarefree_by_specialisation(&primitive, budget)? {
+        return Ok(vec![(primitive, 1)]);
+    }
+    let mut p = vec![primitive];
     while p.last().expect("nonempty").degree().unwrap_or(0) > 0 {
         let last = p.last().expect("nonempty");
         let next = gcd_t(last, &last.derivative(), budget)?;
@@ -173,7 +218,12 @@ pub(crate) fn squarefree_decomposition_t(
 
 /// The resultant of two binary forms over `ℤ[t]` with their formal degrees (the Sylvester
 /// determinant); `Res(F, G) = F₀^n` for `deg F = 0` and vice versa.
-pub(crate) fn resultant_forms(f: &Form, g: &Form, budget: &Budget) -> Result<Poly, Exhausted> {
+pub(crate) fn resultant_forms(
+    f: &Form,
+    g: &Form,
+    route: DeterminantRoute,
+    budget: &Budget,
+) -> Result<Poly, Exhausted> {
     let (m, n) = (f.degree, g.degree);
     let (fc, gc) = (f.coefficients(), g.coefficients());
     if m == 0 {
@@ -197,7 +247,7 @@ pub(crate) fn resultant_forms(f: &Form, g: &Form, budget: &Budget) -> Result<Pol
             rows[n + r][r + n - i] = c.clone();
         }
     }
-    det_within(rows, budget)
+    det_within(rows, route, budget)
 }
 
 /// The `j`-th subresultant `S_j(a, b)` over `ℤ[t]` (`deg_λ a = m`, `deg_λ b = n`,
@@ -209,6 +259,7 @@ pub(crate) fn subresultant_within(
     a: &TPoly,
     b: &TPoly,
     j: usize,
+    route: DeterminantRoute,
     budget: &Budget,
 ) -> Result<TPoly, Exhausted> {
     let (m, n) = (a.degree().unwrap_or(0), b.degree().unwrap_or(0));
@@ -239,7 +290,7 @@ pub(crate) fn subresultant_within(
                 r
             })
             .collect();
-        coeffs.push(det_within(square, budget)?);
+        coeffs.push(det_within(square, route, budget)?);
     }
     Ok(Poly::new(coeffs))
 }
@@ -247,7 +298,11 @@ pub(crate) fn subresultant_within(
 /// The discriminant of a binary form of degree `d ≥ 2` up to a nonzero integer factor:
 /// `Res(∂F/∂λ, ∂F/∂μ)`, which vanishes at `t₀` exactly when `F(t₀)` has a repeated root in
 /// `ℙ¹` (or is zero). `None` for `d < 2` (no condition).
-pub(crate) fn discriminant_form(f: &Form, budget: &Budget) -> Result<Option<Poly>, Exhausted> {
+pub(crate) fn discriminant_form(
+    f: &Form,
+    route: DeterminantRoute,
+    budget: &Budget,
+) -> Result<Option<Poly>, Exhausted> {
     let d = f.degree;
     if d < 2 {
         return Ok(None);
@@ -263,7 +318,7 @@ pub(crate) fn discriminant_form(f: &Form, budget: &Budget) -> Result<Option<Poly
         chart: Poly::new(dm),
         degree: d - 1,
     };
-    Ok(Some(resultant_forms(&fl, &fm, budget)?))
+    Ok(Some(resultant_forms(&fl, &fm, route, budget)?))
 }
 
 /// The entries `λ·A(t) − B(t)` of the pencil's chart.
@@ -296,6 +351,7 @@ pub(crate) fn generic_gcd(
 pub(crate) fn common_kernel_condition(
     a: &[[Poly; 4]; 4],
     b: &[[Poly; 4]; 4],
+    route: DeterminantRoute,
     budget: &Budget,
 ) -> Result<Poly, Exhausted> {
     let rows: Vec<&[Poly; 4]> = a.iter().chain(b.iter()).collect();
@@ -307,7 +363,7 @@ pub(crate) fn common_kernel_condition(
                     .iter()
                     .map(|&i| col_set.iter().map(|&j| rows[i][j].clone()).collect())
                     .collect();
-                g = g.gcd_within(&det_within(m, budget)?, budget)?;
+                g = g.gcd_within(&det_within(m, route, budget)?, budget)?;
                 if g.degree() == Some(0) {
                     return Ok(g);
                 }
@@ -351,6 +407,7 @@ impl From<Exhausted> for RankConditionError {
 pub(crate) fn rank_conditions(
     minors: &[TPoly],
     k: usize,
+    route: DeterminantRoute,
     budget: &Budget,
 ) -> Result<Vec<Poly>, RankConditionError> {
     let nonzero: Vec<&TPoly> = minors.iter().filter(|m| !m.is_zero()).collect();
@@ -389,7 +446,7 @@ pub(crate) fn rank_conditions(
     let mut g = Poly::zero();
     let mut found = 0;
     for (s1, s2) in [(1, 2), (-3, 5), (7, -2), (4, 11), (-5, -9), (13, 6)] {
-        let r = resultant_forms(&combination(s1), &combination(s2), budget)?;
+        let r = resultant_forms(&combination(s1), &combination(s2), route, budget)?;
         if !r.is_zero() {
             g = g.gcd_within(&r, budget)?;
             found += 1;

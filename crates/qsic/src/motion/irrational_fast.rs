@@ -42,8 +42,9 @@
 //! ([`enclosure_units`]); the exact zero tests their gcd's estimate; the stage in `K` the
 //! reduction of the coefficients into `K` and its products ([`super::irrational::Spend`]).
 
-use super::instants::{subresultant_within, TPoly};
+use super::instants::{subresultant_within, DeterminantRoute, TPoly};
 use super::irrational::Spend;
+use super::shared_roots::{refined_within, ZeroTests};
 use crate::classify::{classify_regular_parts, Classification};
 use crate::pencil::SigItem;
 use crate::solids::PencilSigns;
@@ -68,6 +69,8 @@ pub(crate) struct PencilPolys {
     s1: TPoly,
     /// `psc₀(f, ∂f/∂λ) = Res_λ(f, ∂f/∂λ)`.
     psc0: Poly,
+    /// The zero tests at the instants, shared between the roots of one polynomial.
+    zero_tests: ZeroTests,
 }
 
 impl PencilPolys {
@@ -75,14 +78,15 @@ impl PencilPolys {
     /// ([`subresultant_within`]).
     pub(crate) fn of(
         pencil: &MatrixPencil<Poly>,
+        route: DeterminantRoute,
         budget: &Budget,
     ) -> Result<PencilPolys, Exhausted> {
         let f = pencil.det_poly();
         let (s1, psc0) = if f.degree() == Some(4) {
             let df = f.derivative();
             (
-                subresultant_within(&f, &df, 1, budget)?,
-                subresultant_within(&f, &df, 0, budget)?.coeff(0),
+                subresultant_within(&f, &df, 1, route, budget)?,
+                subresultant_within(&f, &df, 0, route, budget)?.coeff(0),
             )
         } else {
             // never of degree 4 at any t: the fast route does not apply
@@ -94,6 +98,7 @@ impl PencilPolys {
             minors3: pencil.minors(3),
             s1,
             psc0,
+            zero_tests: ZeroTests::default(),
         })
     }
 
@@ -125,6 +130,7 @@ impl PencilPolys {
             // only the root of S₁ and the vanishing of psc₀ are read: S₁(λ) becomes ±S₁(∓λ)
             s1: map(&self.s1, 0),
             psc0: self.psc0.clone(),
+            zero_tests: self.zero_tests.clone(),
         }
     }
 }
@@ -238,18 +244,11 @@ fn read_coefficients(polys: &PencilPolys) -> impl Iterator<Item = &Poly> {
         .chain(std::iter::once(&polys.psc0))
 }
 
-/// The units of one enclosure stage at `prec` bits: `α`'s interval refined to `2^−prec`
-/// (about `log₂ prec` evaluations of its defining polynomial of degree `n` on numbers of
-/// `prec` bits, growing to `n·prec` bits in Horner's products), then Horner at `prec` bits on
-/// each coefficient read, `deg + 1` products of `prec` by `prec + bits` bits each.
-fn enclosure_units(polys: &PencilPolys, alpha: &AlgebraicReal, prec: usize) -> u64 {
-    let defining = alpha.poly();
-    let n = defining.degree().unwrap_or(1);
-    let steps = (usize::BITS - prec.leading_zeros()) as u64;
-    let refine = (n as u64 + 1)
-        .saturating_mul(product_units(defining.max_bits() + n * prec, prec))
-        .saturating_mul(steps);
-    read_coefficients(polys).fold(refine, |acc, c| {
+/// The units of one enclosure stage at `prec` bits besides the refinement of `α` (charged
+/// as it runs, [`refined_within`]): Horner at `prec` bits on each coefficient read,
+/// `deg + 1` products of `prec` by `prec + bits` bits each.
+fn enclosure_units(polys: &PencilPolys, prec: usize) -> u64 {
+    read_coefficients(polys).fold(0u64, |acc, c| {
         let horner = (c.degree().unwrap_or(0) as u64 + 1)
             .saturating_mul(product_units(prec + c.max_bits(), prec));
         acc.saturating_add(horner)
@@ -284,8 +283,8 @@ fn analyze(
     let zero_tests = zero_test_units(&polys.psc0, alpha)
         .saturating_add(zero_test_units(&polys.s1.coeff(1), alpha));
     while prec <= cap {
-        budget.spend(enclosure_units(polys, alpha, prec).saturating_add(zero_tests))?;
-        match analyze_enclosed(polys, alpha, prec) {
+        budget.spend(enclosure_units(polys, prec))?;
+        match analyze_enclosed(polys, alpha, prec, budget)? {
             Enclosed::Done(an) => return Ok(Some(an)),
             Enclosed::NotThisShape => return Ok(None),
             Enclosed::Undecided => prec *= 2,
@@ -572,13 +571,17 @@ fn enclose_homogeneous(q: &[Dyadic], k: usize, x: &Dyadic, y: &Dyadic) -> Dyadic
 /// The analysis of [`analyze_in_field`] with every sign read from dyadic enclosures of the
 /// values at `α` at `prec` bits (a sign is taken only where the enclosure excludes zero,
 /// so every sign is exact), and `psc₀(α) = 0` decided exactly: no arithmetic in `K`.
-fn analyze_enclosed(polys: &PencilPolys, alpha: &AlgebraicReal, prec: usize) -> Enclosed {
+fn analyze_enclosed(
+    polys: &PencilPolys,
+    alpha: &AlgebraicReal,
+    prec: usize,
+    budget: &Budget,
+) -> Result<Enclosed, Exhausted> {
     use Enclosed::{NotThisShape, Undecided};
     if polys.f.degree() != Some(4) {
-        return NotThisShape;
+        return Ok(NotThisShape);
     }
-    let width = RBig::from_parts(IBig::ONE, dashu_int::UBig::ONE << prec);
-    let iv = alpha.refined_interval(&width);
+    let iv = refined_within(alpha, prec, budget)?;
     let scale = RBig::from(IBig::ONE << prec);
     let a = Dyadic {
         lo: (iv.lo() * &scale).floor(),
@@ -589,16 +592,21 @@ fn analyze_enclosed(polys: &PencilPolys, alpha: &AlgebraicReal, prec: usize) -> 
     let f: Vec<Dyadic> = polys.f.coeffs().iter().map(at).collect();
     let (mut u, mut v) = (at(&polys.s1.coeff(0)).neg(), at(&polys.s1.coeff(1)));
     match v.sign() {
-        None if alpha.is_root_of(&polys.s1.coeff(1)) => return NotThisShape,
-        None => return Undecided,
+        None if polys
+            .zero_tests
+            .is_root(alpha, &polys.s1.coeff(1), budget)? =>
+        {
+            return Ok(NotThisShape)
+        }
+        None => return Ok(Undecided),
         Some(Sign::Negative) => (u, v) = (u.neg(), v.neg()),
         Some(_) => {}
     }
     if f[4].sign().is_none() {
-        return Undecided;
+        return Ok(Undecided);
     }
-    if !alpha.is_root_of(&polys.psc0) {
-        return NotThisShape;
+    if !polys.zero_tests.is_root(alpha, &polys.psc0, budget)? {
+        return Ok(NotThisShape);
     }
     let int = |k: i64| Dyadic::int(&IBig::from(k), prec);
     let (uu, uv, vv) = (u.mul(&u), u.mul(&v), v.mul(&v));
@@ -610,7 +618,7 @@ fn analyze_enclosed(polys: &PencilPolys, alpha: &AlgebraicReal, prec: usize) -> 
         .add(&int(3).mul(&f[4]).mul(&uu));
     let disc = hb.mul(&hb).sub(&int(4).mul(&ha).mul(&hc));
     let (Some(lead_sign), Some(disc_sign)) = (ha.sign(), disc.sign()) else {
-        return Undecided;
+        return Ok(Undecided);
     };
     let h_real = disc_sign == Sign::Positive;
     let rank3 = polys.minors3.iter().any(|m| {
@@ -618,15 +626,15 @@ fn analyze_enclosed(polys: &PencilPolys, alpha: &AlgebraicReal, prec: usize) -> 
         enclose_homogeneous(&q, 3, &u, &v).sign().is_some()
     });
     if !rank3 {
-        return Undecided; // rank 2, or an enclosure too wide: the exact route decides
+        return Ok(Undecided); // rank 2, or an enclosure too wide: the exact route decides
     }
     let ratio = |x: &Dyadic, y: &Dyadic| -> f64 { (x.mid() / y.mid()).to_f64().value() };
     let quadratic = h_real.then(|| (hb.mid() / ha.mid(), hc.mid() / ha.mid()));
     let Some(approx) = proposed_roots(ratio(&u, &v), quadratic) else {
-        return Undecided;
+        return Ok(Undecided);
     };
     let Some(samples) = arc_samples(&approx) else {
-        return Undecided;
+        return Ok(Undecided);
     };
     let at_double = approx
         .iter()
@@ -652,7 +660,7 @@ fn analyze_enclosed(polys: &PencilPolys, alpha: &AlgebraicReal, prec: usize) -> 
             Sign::Positive
         };
         if side != Some(expected) {
-            return Undecided;
+            return Ok(Undecided);
         }
         if h_real {
             let hs = enclose_homogeneous(&[hc.clone(), hb.clone(), ha.clone()], 2, &n, &d);
@@ -663,14 +671,14 @@ fn analyze_enclosed(polys: &PencilPolys, alpha: &AlgebraicReal, prec: usize) -> 
                 Sign::Positive
             };
             if hs.sign().map(|x| x * lead_sign) != Some(want) {
-                return Undecided;
+                return Ok(Undecided);
             }
         }
         let mut signs = [Sign::Zero; 4];
         for k in 0..4 {
             match enclose_homogeneous(&e[k], k + 1, &n, &d).sign() {
                 Some(x) => signs[k] = x,
-                None => return Undecided,
+                None => return Ok(Undecided),
             }
         }
         arcs.push((s, Inertia::from_minor_sum_signs(signs)));
@@ -680,7 +688,7 @@ fn analyze_enclosed(polys: &PencilPolys, alpha: &AlgebraicReal, prec: usize) -> 
     for k in 0..3 {
         match enclose_homogeneous(&e[k], k + 1, &u, &v).sign() {
             Some(x) => double_signs[k] = x,
-            None => return Undecided,
+            None => return Ok(Undecided),
         }
     }
     let roots = approx
@@ -722,13 +730,13 @@ fn analyze_enclosed(polys: &PencilPolys, alpha: &AlgebraicReal, prec: usize) -> 
             }
         })
         .collect();
-    Enclosed::Done(DoubleRootAnalysis {
+    Ok(Enclosed::Done(DoubleRootAnalysis {
         roots,
         root_signs,
         arcs,
         double_blocks: vec![2],
         h_real,
-    })
+    }))
 }
 
 /// A rational near the value of `x = C(α)/d` at `α`: `C` at a dyadic point near `α` by

@@ -45,8 +45,10 @@ mod irrational;
 mod irrational_fast;
 mod range;
 pub mod rigid;
+mod shared_roots;
 
 pub use contact::{first_contact, solid_motion, FirstContact, SolidMotion, SolidState};
+pub use instants::DeterminantRoute;
 pub use range::{TimeRange, MINUS_INFINITY, PLUS_INFINITY};
 
 use crate::classify::{classify_allowing_zero_within, Classification};
@@ -79,6 +81,11 @@ pub struct MovingPencil {
     /// when first needed ([`Self::fast_polys`]): a motion without irrational instants to
     /// classify never pays for their subresultants.
     polys: OnceLock<irrational_fast::PencilPolys>,
+    /// How its determinants over `ℤ[t]` are computed ([`Self::with_determinant_route`]).
+    route: DeterminantRoute,
+    /// The zero tests of the generic condition at the irrational candidates, shared between
+    /// the roots of one polynomial.
+    zero_tests: shared_roots::ZeroTests,
 }
 
 /// The type compared between neighbours: pencil kind, case, complex and real type.
@@ -192,10 +199,24 @@ impl MovingPencil {
     /// # Ok::<(), qsic::Error>(())
     /// ```
     pub fn new(a: MovingMatrix, b: MovingMatrix) -> Result<MovingPencil, Error> {
+        MovingPencil::new_within(a, b, &Budget::unlimited())
+    }
+
+    /// [`Self::new`] spending `budget`: the minors of `λM_A − M_B` over `ℤ[t]`, their units
+    /// ([`minors_units`]) before they are formed, so a small budget stops before the work.
+    ///
+    /// # Errors
+    /// As [`Self::new`]; [`Error::BudgetExceeded`] when the budget runs out.
+    pub fn new_within(
+        a: MovingMatrix,
+        b: MovingMatrix,
+        budget: &Budget,
+    ) -> Result<MovingPencil, Error> {
         let (ma, mb) = (a.numerators(), b.numerators());
         for m in [ma, mb] {
             check_motion_size(m)?;
         }
+        budget.spend(minors_units(ma, mb))?;
         let entries = pencil_entries(ma, mb);
         let pencil = MatrixPencil::from_entries(ma.clone(), mb.clone());
         let f = pencil.det_poly();
@@ -206,7 +227,21 @@ impl MovingPencil {
             pencil,
             f,
             polys: OnceLock::new(),
+            route: DeterminantRoute::Fastest,
+            zero_tests: shared_roots::ZeroTests::default(),
         })
+    }
+
+    /// The same pencil computing its determinants over `ℤ[t]` by `route` (the default is
+    /// [`DeterminantRoute::Fastest`]; [`DeterminantRoute::Bareiss`] is the reference the
+    /// tests compare it with). Every answer is the same on both routes; only the time and
+    /// the units spent differ.
+    pub fn with_determinant_route(self, route: DeterminantRoute) -> MovingPencil {
+        MovingPencil {
+            route,
+            polys: OnceLock::new(),
+            ..self
+        }
     }
 
     /// `A(t)`.
@@ -334,7 +369,7 @@ impl MovingPencil {
         }
         let mut generic = None;
         for (i, (g, _)) in forms.iter().enumerate() {
-            let discriminant = discriminant_form(g, budget)?;
+            let discriminant = discriminant_form(g, self.route, budget)?;
             if let ([(g, 1)], Some(d)) = (forms.as_slice(), &discriminant) {
                 if g.degree == 4 && rank == 4 {
                     generic = Some(d * &out[0]);
@@ -342,13 +377,13 @@ impl MovingPencil {
             }
             out.extend(discriminant);
             for (h, _) in &forms[i + 1..] {
-                out.push(resultant_forms(g, h, budget)?);
+                out.push(resultant_forms(g, h, self.route, budget)?);
             }
         }
         if rank < 4 || forms.iter().any(|(_, m)| *m > 1) {
             for k in 1..=3 {
-                let conditions =
-                    rank_conditions(&self.pencil.minors(k), k, budget).map_err(|e| match e {
+                let conditions = rank_conditions(&self.pencil.minors(k), k, self.route, budget)
+                    .map_err(|e| match e {
                         RankConditionError::NoSeparatingCombination(why) => {
                             Error::UnsupportedMotion(why)
                         }
@@ -361,6 +396,7 @@ impl MovingPencil {
             out.push(common_kernel_condition(
                 self.a.numerators(),
                 self.b.numerators(),
+                self.route,
                 budget,
             )?);
         }
@@ -501,9 +537,13 @@ impl MovingPencil {
         // both neighbours (`candidates_and_generic_condition`), not classified
         let mut instant_types = Vec::with_capacity(candidates.len());
         for c in &candidates {
+            let generic_here = match (c.as_rational(), &generic) {
+                (None, Some(g)) => !self.zero_tests.is_root(c, g, budget)?,
+                _ => false,
+            };
             instant_types.push(match c.as_rational() {
                 Some(v) => Some(InstantType::Exact(self.classify_at_within(v, budget)?)),
-                None if generic.as_ref().is_some_and(|g| !c.is_root_of(g)) => None,
+                None if generic_here => None,
                 None => Some(
                     self.classify_at_irrational(c, budget)?
                         .map_or(InstantType::IrrationalUnclassified, InstantType::Exact),
@@ -605,7 +645,7 @@ impl MovingPencil {
         if let Some(p) = self.polys.get() {
             return Ok(p);
         }
-        let made = irrational_fast::PencilPolys::of(&self.pencil, budget)?;
+        let made = irrational_fast::PencilPolys::of(&self.pencil, self.route, budget)?;
         Ok(self.polys.get_or_init(|| made))
     }
 }
@@ -642,6 +682,28 @@ fn samples_between(
         out.push(RBig::from(last.interval().hi().ceil() + IBig::ONE));
     }
     out
+}
+
+/// The units of every minor of `λM_A − M_B` over `ℤ[t]` ([`MatrixPencil::from_entries`]:
+/// the minors of the members `M_A`, `−M_B`, `±M_A − M_B` and the determinant of
+/// `2M_A − M_B`, by expansion along `2×2` minors): per member, `72` products of two entries
+/// for the `2×2` minors, `48` of a `2×2` minor by an entry for the `3×3` ones and `4` of a
+/// `3×3` minor by an entry for the determinant, each [`tpoly_product_units`]-sized (an entry
+/// of degree `d`, `b + 2` bits: a member's entries are sums of two).
+fn minors_units(a: &[[Poly; 4]; 4], b: &[[Poly; 4]; 4]) -> u64 {
+    let (d, bits) = a.iter().chain(b).flatten().fold((0, 0), |(d, bits), e| {
+        (d.max(e.degree().unwrap_or(0)), bits.max(e.max_bits()))
+    });
+    let bits = bits + 2;
+    let product = |k: usize| -> u64 {
+        // a k×k minor (degree k·d, about k·bits bits) times an entry
+        ((k * d + 1) as u64 * (d + 1) as u64)
+            .saturating_mul(qsic_algebra::budget::product_units(k * bits, bits))
+    };
+    let member = (72 * product(1))
+        .saturating_add(48 * product(2))
+        .saturating_add(4 * product(3));
+    member.saturating_mul(5)
 }
 
 /// [`Error::Limit`] if an entry of `m` exceeds [`MAX_MOTION_DEGREE`] or a coefficient

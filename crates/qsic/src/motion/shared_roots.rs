@@ -1,0 +1,116 @@
+//! Work shared between the instants that are roots of one polynomial: the zero tests
+//! `q(α) = 0` of the classification, and the refinement of `α` charged as it runs.
+//!
+//! The irrational instants of a motion no one designed are, most of them, the real roots of
+//! one factor `p` of the discriminant, and the polynomials tested at them (`psc₀`, the
+//! generic condition `G`) are multiples of `p`. A zero test by `gcd(p, q)` costs a remainder
+//! sequence on polynomials of degree in the hundreds with coefficients of thousands of bits,
+//! per instant; instead [`ZeroTests::is_root`] asks once per pair `(p, q)` whether `p`
+//! divides `q` (one exact division: `p` primitive, so by Gauss' lemma over `ℤ`), and only
+//! where it does not, the exact sign of `q(α)` (which refines, then takes the gcd).
+
+use qsic_algebra::budget::{product_units, Budget, Exhausted};
+use qsic_algebra::roots::RootInterval;
+use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
+use std::sync::Mutex;
+
+/// Divisibility of tested polynomials by defining polynomials, remembered between instants.
+#[derive(Debug, Default)]
+pub(crate) struct ZeroTests {
+    /// `(p, q, p | q)` for the primitive defining polynomials `p` and the tested `q` seen.
+    known: Mutex<Vec<(Poly, Poly, bool)>>,
+}
+
+impl Clone for ZeroTests {
+    fn clone(&self) -> Self {
+        let known = self.known.lock().unwrap_or_else(|e| e.into_inner()).clone();
+        ZeroTests {
+            known: Mutex::new(known),
+        }
+    }
+}
+
+/// The units of `q / p` by exact division: `(deg q − deg p + 1)(deg p + 1)` products.
+fn division_units(q: &Poly, p: &Poly) -> u64 {
+    let (n, m) = (q.degree().unwrap_or(0), p.degree().unwrap_or(0));
+    ((n.saturating_sub(m) + 1) as u64 * (m + 1) as u64)
+        .saturating_mul(product_units(q.max_bits(), p.max_bits()))
+}
+
+/// The units of an exact zero test by a gcd (about the product of the sizes).
+fn gcd_units(q: &Poly, alpha: &AlgebraicReal) -> u64 {
+    let d = alpha.poly().degree().unwrap_or(0) as u64 + 1;
+    qsic_algebra::budget::poly_step_units(q.degree().unwrap_or(0), q.max_bits()).saturating_mul(d)
+}
+
+impl ZeroTests {
+    /// Whether `q(α) = 0`, exactly: `true` at once where `α`'s primitive defining polynomial
+    /// divides `q` (decided once for all its roots), else by the exact sign of `q(α)`.
+    ///
+    /// # Errors
+    /// [`Exhausted`] when the budget runs out.
+    pub(crate) fn is_root(
+        &self,
+        alpha: &AlgebraicReal,
+        q: &Poly,
+        budget: &Budget,
+    ) -> Result<bool, Exhausted> {
+        if q.is_zero() {
+            return Ok(true);
+        }
+        if let Some(v) = alpha.as_rational() {
+            return Ok(q.sign_at(v).is_zero());
+        }
+        let p = alpha.poly().primitive_part();
+        let known = {
+            let k = self.known.lock().unwrap_or_else(|e| e.into_inner());
+            k.iter()
+                .find(|(kp, kq, _)| kp == &p && kq == q)
+                .map(|(_, _, d)| *d)
+        };
+        let divides = match known {
+            Some(d) => d,
+            None => {
+                budget.spend(division_units(q, &p))?;
+                let d = q.div_exact(&p).is_some();
+                self.known
+                    .lock()
+                    .unwrap_or_else(|e| e.into_inner())
+                    .push((p, q.clone(), d));
+                d
+            }
+        };
+        if divides {
+            return Ok(true);
+        }
+        budget.spend(gcd_units(q, alpha))?;
+        Ok(alpha.is_root_of(q))
+    }
+}
+
+/// `α`'s interval refined to a width of at most `2^−prec`, each step of the refinement
+/// spending its units before it runs: an evaluation of `α`'s polynomial (degree `n`) at a
+/// point of about `prec` bits, `n + 1` products of numbers growing to `n·prec` bits. The
+/// refinement is `α`'s own (shared by its clones), so a later test starts from it.
+///
+/// # Errors
+/// [`Exhausted`] when the budget runs out.
+pub(crate) fn refined_within(
+    alpha: &AlgebraicReal,
+    prec: usize,
+    budget: &Budget,
+) -> Result<RootInterval, Exhausted> {
+    let width = RBig::from_parts(IBig::ONE, dashu_int::UBig::ONE << prec);
+    let p = alpha.poly();
+    let n = p.degree().unwrap_or(1);
+    let step = (n as u64 + 1).saturating_mul(product_units(p.max_bits() + n * prec, prec));
+    let mut a = alpha.clone();
+    loop {
+        let iv = a.interval();
+        if matches!(iv, RootInterval::Exact(_)) || iv.hi() - iv.lo() <= width {
+            return Ok(iv.clone());
+        }
+        budget.spend(step)?;
+        a.refine();
+    }
+}
