@@ -641,7 +641,10 @@ fn nurbs(
     step: bool,
     budget: Option<u64>,
 ) -> PyResult<String> {
-    let bounds = bounds.map(qsic_cli::nurbs::parse_box).transpose().map_err(err)?;
+    let bounds = bounds
+        .map(qsic_cli::nurbs::parse_box)
+        .transpose()
+        .map_err(err)?;
     let options = qsic::nurbs::NurbsOptions { bounds };
     let format = if step {
         qsic_cli::nurbs::NurbsFormat::Step
