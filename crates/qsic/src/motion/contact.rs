@@ -533,9 +533,14 @@ fn state_at_irrational(
     budget: &Budget,
 ) -> Result<SolidState, Exhausted> {
     let (ma, mb) = (pencil.a().numerators(), pencil.b().numerators());
-    // the minors' and the pair's 2×2 minors' signs at α: a zero test or an enclosure each
+    // the minors' and the pair's 2×2 minors' signs at α: a zero test or an enclosure each,
+    // on integer polynomials of at most twice the entries' degree and bits
     let spend = super::irrational::Spend::new(budget, alpha);
-    spend.products(8 + 120)?;
+    let entries = ma.iter().chain(mb).flatten();
+    let (degree, bits) = entries.fold((0, 0), |(d, b), p| {
+        (d.max(p.degree().unwrap_or(0)), b.max(p.max_bits()))
+    });
+    spend.sign_tests(8 + 120, 4 * degree, 4 * bits + 8, alpha)?;
     let orientation = |m: &[[Poly; 4]; 4], name: &str| {
         let signs = leading_minors(m).map(|p| alpha.sign_of(&p));
         ellipsoid_orientation(signs)

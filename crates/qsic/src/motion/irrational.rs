@@ -51,6 +51,29 @@ impl<'a> Spend<'a> {
         }
     }
 
+    /// Spends `count` sign or zero tests at `α` of integer polynomials of degree at most
+    /// `degree` with coefficients of at most `bits` bits: each a gcd with `α`'s defining
+    /// polynomial (degree `n`) in the worst case — a remainder of `(n − d + 1)(d + 1)`
+    /// coefficient steps, then `d²` more — priced at products of the larger of the two sizes.
+    /// These are polynomials over ℤ, not elements of `K`, so a test is not priced as a
+    /// product in `K` (`n²` coefficient products).
+    pub(crate) fn sign_tests(
+        &self,
+        count: usize,
+        degree: usize,
+        bits: usize,
+        alpha: &AlgebraicReal,
+    ) -> Result<(), Exhausted> {
+        let n = alpha.poly().degree().unwrap_or(1).max(1);
+        let size = bits.max(alpha.poly().max_bits());
+        let steps = ((n + 1) * (degree + 1) + degree * degree) as u64;
+        self.budget.spend(
+            (count as u64)
+                .saturating_mul(steps)
+                .saturating_mul(product_units(size, size)),
+        )
+    }
+
     /// Spends `count` products in `K`.
     pub(crate) fn products(&self, count: usize) -> Result<(), Exhausted> {
         self.budget

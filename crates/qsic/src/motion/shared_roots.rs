@@ -88,9 +88,20 @@ impl ZeroTests {
     }
 }
 
-/// `α`'s interval refined to a width of at most `2^−prec`, each step of the refinement
-/// spending its units before it runs: an evaluation of `α`'s polynomial (degree `n`) at a
-/// point of about `prec` bits, `n + 1` products of numbers growing to `n·prec` bits. The
+/// The bits of precision of an open interval: `k` with `width ≤ 2^−k` (0 for a width of at
+/// least 1 half).
+fn precision_of(iv: &RootInterval) -> usize {
+    let w = iv.hi() - iv.lo();
+    let (num, den) = (
+        dashu_int::ops::BitTest::bit_len(&dashu_int::ops::UnsignedAbs::unsigned_abs(w.numerator())),
+        dashu_int::ops::BitTest::bit_len(w.denominator()),
+    );
+    den.saturating_sub(num + 1)
+}
+
+/// `α`'s interval refined to a width of at most `2^−prec`, in rounds whose steps are charged
+/// before they run (at most `target − reached` steps a round, each an evaluation of `α`'s polynomial (degree `n`) at a
+/// point of about `prec` bits, `n + 1` products of numbers growing to `n·prec` bits). The
 /// refinement is `α`'s own (shared by its clones), so a later test starts from it.
 ///
 /// # Errors
@@ -104,13 +115,20 @@ pub(crate) fn refined_within(
     let p = alpha.poly();
     let n = p.degree().unwrap_or(1);
     let step = (n as u64 + 1).saturating_mul(product_units(p.max_bits() + n * prec, prec));
-    let mut a = alpha.clone();
+    // the steps run on α's shared refinement, in rounds that at most double the precision
+    // reached, each round's steps charged before it runs
+    let mut reached = 0usize;
     loop {
-        let iv = a.interval();
+        let iv = alpha.refined_interval(&RBig::ONE);
         if matches!(iv, RootInterval::Exact(_)) || iv.hi() - iv.lo() <= width {
-            return Ok(iv.clone());
+            return Ok(iv);
         }
-        budget.spend(step)?;
-        a.refine();
+        let have = precision_of(&iv);
+        let target = prec.min((2 * have.max(reached)).max(have + 8));
+        reached = target;
+        // quadratic refinement doubles the precision a step, bisection adds a bit: charge
+        // the bisection count of the round, an upper bound
+        budget.spend(step.saturating_mul((target - have) as u64))?;
+        alpha.refined_interval(&RBig::from_parts(IBig::ONE, dashu_int::UBig::ONE << target));
     }
 }
