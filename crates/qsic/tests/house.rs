@@ -24,7 +24,6 @@ const KNOWN_CYCLES: &[&[&str]] = &[
     // param::sample no longer uses affine)
     &["affine", "classify", "natural", "param", "solids"],
     &["contact", "contact_point"],
-    &["surface", "zsqrt"],
 ];
 
 /// Most lines of code (blank lines, comments and `#[cfg(test)]` modules left out) of a file

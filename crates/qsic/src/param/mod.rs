@@ -366,7 +366,7 @@ fn smooth_quartic(
     };
     if !fast {
         if let Some(r) = &fixed {
-            surface.ruling = r.to_ruling();
+            surface.ruling = (*r).into();
         }
     }
     let (qm, substituted) = match surface.lambda {
@@ -1134,7 +1134,7 @@ impl Chosen {
     fn into_surface(self) -> ParameterizationSurface {
         let mut surface = self.surface;
         if let Some(r) = self.fixed {
-            surface.ruling = r.to_ruling();
+            surface.ruling = r.into();
         }
         if let Some((m, den)) = self.member {
             surface.matrix = surface::member_from_small(&m, den);
