@@ -15,8 +15,9 @@
 
 use super::curve::{self, Curve, LevinForm, Number, ParamValue, PointPoly};
 use super::planar::Ext;
+use super::smooth::{balancing_exponent_of, quartic_curve, reduced_levin, theorem_12};
 use super::surface::{form, mat_vec, points_on, to_quadratic, Vec4};
-use super::{integer_matrix, member, quartic_curve, reduced_levin, theorem_12};
+use super::{integer_matrix, member};
 use crate::classify::{analyze_pencil, Classification};
 use crate::error::Error;
 use crate::quadric::Quadric;
@@ -188,7 +189,7 @@ fn levin_over_field(
         return Err(Error::Algebra("s(u) vanishes identically".into()));
     }
     // u ↦ 2ᵏu: the real roots of s near 1 in size for the floats of `sample`
-    let k = super::balancing_exponent_of(
+    let k = balancing_exponent_of(
         &s.coeffs()
             .iter()
             .map(|c| {
@@ -294,7 +295,7 @@ mod tests {
             .filter(|(_, i)| i.positive == 2 && i.negative == 2)
             .map(|(x, _)| x.clone())
             .chain(
-                super::super::more_candidates(&analysis)
+                super::super::choose::more_candidates(&analysis)
                     .into_iter()
                     .filter_map(|c| c.0),
             );

@@ -301,7 +301,11 @@ fn conversions_equal_the_general_routes() {
                     );
                     assert_eq!(to_poly_down(&p, d, e), want);
                 }
-                let sizes: Vec<f64> = old.coeffs().iter().map(super::super::log2_size).collect();
+                let sizes: Vec<f64> = old
+                    .coeffs()
+                    .iter()
+                    .map(crate::param::smooth::log2_size)
+                    .collect();
                 let new = log2_sizes(&p, d);
                 // the trailing zeros of p have no coefficient in `old`
                 assert!(new[sizes.len()..].iter().all(|v| *v == f64::NEG_INFINITY));
