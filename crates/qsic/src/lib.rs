@@ -77,6 +77,15 @@ pub mod test_support {
         ))
     }
 
+    /// [`crate::solids::solid_relation`] read from the pencil alone, without the closed form
+    /// for two spheres: the reference the closed form must equal.
+    pub fn solid_relation_by_pencil(
+        a: &Quadric,
+        b: &Quadric,
+    ) -> Result<crate::solids::SolidRelation, crate::Error> {
+        crate::solids::solid_relation_by_pencil(a, b, &crate::Budget::unlimited())
+    }
+
     /// The curve in ℝ³ by the general route alone (the fast affine route, else the curve
     /// built and read): the reference of the natural route.
     pub fn general_affine_curve(
