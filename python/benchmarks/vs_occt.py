@@ -13,7 +13,8 @@ near-degenerate ones at 10⁻⁹–10⁻¹²), it times per pair
 * qsic: `qsic.classify_many(A, B, affine=True)` on the same pairs as `(N, 4, 4)` float64
   arrays (one thread, and all cores), and `qsic.classify(a, b)` per pair;
 
-and reports the time per pair of each, the ratio, and every configuration where
+and reports the time per pair of each and the ratio on the configurations OpenCASCADE
+answers (qsic's time alone on the others), and every configuration where
 OpenCASCADE's answer differs from the exact one (qsic's, on the exact values of the same
 floats) or where it has none (`IntAna_NoGeometricSolution`: the quartics).
 
@@ -377,32 +378,22 @@ def main(argv: list[str]) -> int:
     import qsic
 
     # answers, one pair at a time
-    differ, missing = [], []
+    differ, missing, answered = [], [], set()
     for fam, name, a, b in configs:
         r = qsic.classify(np.array(float_matrix(a)), np.array(float_matrix(b)))
         exact = exact_answer(r.affine)
         occ = occ_answer(occ_intersect(occ_pair(a, b)))
         if occ is None:
             missing.append((fam, name, dict(exact)))
-        elif occ != exact:
-            differ.append((fam, name, dict(occ), dict(exact)))
-    # timing, family by family
-    rows = []
-    families = sorted({c[0] for c in configs}, key=[c[0] for c in configs].index)
-    for fam in families:
-        chosen = [c for c in configs if c[0] == fam]
+        else:
+            answered.add(name)
+            if occ != exact:
+                differ.append((fam, name, dict(occ), dict(exact)))
+
+    def qsic_times(chosen):
         pairs = [chosen[i % len(chosen)] for i in range(args.pairs)]
-        n = len(pairs)
         A = np.array([float_matrix(c[2]) for c in pairs])
         B = np.array([float_matrix(c[3]) for c in pairs])
-        occ_pairs = [occ_pair(c[2], c[3]) for c in pairs]
-
-        def occ_run():
-            for pair in occ_pairs:
-                q = occ_intersect(pair)
-                if q.IsDone():
-                    q.TypeInter()
-                    q.NbSolutions()
 
         def many(threads):
             def go():
@@ -411,24 +402,49 @@ def main(argv: list[str]) -> int:
             return go
 
         def single():
-            for i in range(n):
+            for i in range(len(pairs)):
                 qsic.classify(A[i], B[i])
 
-        occ_t = per_pair_seconds(occ_run, n, args.repeat)
-        one_t = per_pair_seconds(many(1), n, args.repeat)
-        all_t = per_pair_seconds(many(None), n, args.repeat)
-        single_t = per_pair_seconds(single, n, 1)
-        rows.append({"family": fam, "configurations": len(chosen), "pairs": n,
-                     "occt_us": occ_t * 1e6, "classify_many_1_us": one_t * 1e6,
-                     "classify_many_all_us": all_t * 1e6, "classify_us": single_t * 1e6})
+        return (per_pair_seconds(many(1), len(pairs), args.repeat),
+                per_pair_seconds(many(None), len(pairs), args.repeat),
+                per_pair_seconds(single, len(pairs), 1))
+
+    # timing, family by family: the configurations OpenCASCADE answers side by side, then
+    # qsic alone on those it has no answer for
+    rows = []
+    families = sorted({c[0] for c in configs}, key=[c[0] for c in configs].index)
+    for fam in families:
+        both = [c for c in configs if c[0] == fam and c[1] in answered]
+        alone = [c for c in configs if c[0] == fam and c[1] not in answered]
+        row = {"family": fam, "answered": len(both), "no_answer": len(alone)}
+        if both:
+            pairs = [both[i % len(both)] for i in range(args.pairs)]
+            occ_pairs = [occ_pair(c[2], c[3]) for c in pairs]
+
+            def occ_run():
+                for pair in occ_pairs:
+                    q = occ_intersect(pair)
+                    if q.IsDone():
+                        q.TypeInter()
+                        q.NbSolutions()
+
+            row["occt_us"] = per_pair_seconds(occ_run, len(pairs), args.repeat) * 1e6
+            one, many_, single = qsic_times(both)
+            row.update(classify_many_1_us=one * 1e6, classify_many_all_us=many_ * 1e6,
+                       classify_us=single * 1e6)
+        if alone:
+            row["no_answer_classify_many_1_us"] = qsic_times(alone)[0] * 1e6
+        rows.append(row)
     print(f"{len(configs)} configurations; per pair, best of {args.repeat} runs "
           f"(OpenCASCADE: surfaces + IntAna_QuadQuadGeo; qsic: affine view)\n")
-    print(f"{'family':<18} {'conf':>4} {'OCCT µs':>8} {'many/1 µs':>9} {'many µs':>8} "
-          f"{'classify µs':>11} {'OCCT/many1':>10}")
+    print(f"{'family':<18} {'both':>4} {'OCCT µs':>8} {'many/1 µs':>9} {'many µs':>8} "
+          f"{'classify µs':>11} {'OCCT/many1':>10} {'none':>4} {'many/1 µs':>9}")
     for r in rows:
-        print(f"{r['family']:<18} {r['configurations']:>4} {r['occt_us']:>8.2f} "
-              f"{r['classify_many_1_us']:>9.2f} {r['classify_many_all_us']:>8.2f} "
-              f"{r['classify_us']:>11.2f} {r['occt_us'] / r['classify_many_1_us']:>10.2f}")
+        side = (f"{r['occt_us']:>8.2f} {r['classify_many_1_us']:>9.2f} "
+                f"{r['classify_many_all_us']:>8.2f} {r['classify_us']:>11.2f} "
+                f"{r['occt_us'] / r['classify_many_1_us']:>10.2f}") if r["answered"] else " " * 51
+        rest = f"{r['no_answer_classify_many_1_us']:>9.2f}" if r["no_answer"] else ""
+        print(f"{r['family']:<18} {r['answered']:>4} {side} {r['no_answer']:>4} {rest}")
     print(f"\nOpenCASCADE differs from the exact answer on {len(differ)} of {len(configs)}:")
     for fam, name, occ, exact in differ:
         print(f"  {fam}: {name}: OpenCASCADE {occ or 'nothing'}, exact {exact or 'nothing'}")
