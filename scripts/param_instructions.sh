@@ -6,7 +6,7 @@
 # On 201 and on 1 line of `scripts/param_pairs.py` (random symmetric integer matrices, entries in
 # [-10, 10]): (Ir(201) − Ir(1)) / 200 is the cost of one pair end to end (reading, the curve, the
 # exact expressions, the JSON), with `--projective` and with the affine data (the default); the
-# inclusive Ir of `qsic::param::parameterize` in the same profiles, (201 lines − 1 line) / 200,
+# inclusive Ir of `qsic::param::parameterize_within` (the CLI's entry; `parameterize` is inlined into it) in the same profiles, (201 lines − 1 line) / 200,
 # is the curve's share.
 set -eu
 cd "$(dirname "$0")/.."
@@ -22,7 +22,7 @@ head -n 1 "$tmp/201.jsonl" > "$tmp/1.jsonl"
 # total Ir and inclusive Ir of `parameterize` of one run: "total parameterize"
 run() {
     total=$(valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" "$target/qsic" param "$@" 2>&1 >/dev/null | sed -n 's/.*refs: *//p' | tr -d ,)
-    curve=$(callgrind_annotate --inclusive=yes "$tmp/cg" | grep ':qsic::param::parameterize ' | head -n 1 | awk '{print $1}' | tr -d ,)
+    curve=$(callgrind_annotate --inclusive=yes "$tmp/cg" | grep -E ':qsic::param::parameterize(_within)? ' | head -n 1 | awk '{print $1}' | tr -d ,)
     echo "$total ${curve:-0}"
 }
 
