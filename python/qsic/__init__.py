@@ -67,6 +67,12 @@ def _native(q: Any, floats: str = "binary") -> Optional[_qsic.NativeQuadric]:
         return q._native
     if isinstance(q, str):
         return _qsic.quadric_from_text(q)
+    if isinstance(q, np.ndarray) and q.shape == (4, 4) and q.dtype.kind in "iuf":
+        # a machine array: its bytes, as classify_many reads a row (NaN and infinities go the
+        # text way, for its message naming the entry)
+        side = _inputs.machine_side(q, floats)
+        if side is not None and (q.dtype.kind != "f" or np.isfinite(q).all()):
+            return _qsic.quadric_from_machine(*side)
     return _qsic.quadric_from_entries(_inputs.matrix_texts(q, floats))
 
 

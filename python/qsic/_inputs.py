@@ -71,14 +71,15 @@ def _shortest(x: Any) -> Optional[str]:
     """The shortest decimal text of a float that rounds to it (``repr`` for a Python float,
     NumPy's ``str`` — shortest for the scalar's own precision — for a NumPy float); None
     for anything that is not a float."""
-    if isinstance(x, float):
-        if x != x or x in (float("inf"), float("-inf")):
-            raise QsicError("is not a finite number")
-        return repr(x)
+    # NumPy first: np.float64 is a float, and its repr is "np.float64(…)" since NumPy 2
     if isinstance(x, np.floating):
         if not np.isfinite(x):
             raise QsicError("is not a finite number")
         return str(x)
+    if isinstance(x, float):
+        if x != x or x in (float("inf"), float("-inf")):
+            raise QsicError("is not a finite number")
+        return repr(x)
     return None
 
 

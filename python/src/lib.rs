@@ -4,7 +4,7 @@
 //!
 //! | function | answers |
 //! |---|---|
-//! | [`quadric_from_text`], [`quadric_from_entries`], [`quadric_from_shape`] | a [`NativeQuadric`] (or `None` for the zero form) |
+//! | [`quadric_from_text`], [`quadric_from_entries`], [`quadric_from_machine`], [`quadric_from_shape`] | a [`NativeQuadric`] (or `None` for the zero form) |
 //! | [`classify`] | the JSON line of `qsic classify --json` and the text report |
 //! | [`classify_many`] | the columns of a batch, computed on all cores without the GIL |
 //! | [`param`], [`sample`] | the JSON of `qsic param --json`, `qsic sample` |
@@ -101,6 +101,19 @@ fn quadric_from_text(text: &str) -> PyResult<Option<NativeQuadric>> {
 fn quadric_from_entries(texts: Vec<String>) -> PyResult<Option<NativeQuadric>> {
     let rows = rows_of(&texts).map_err(err)?;
     let q = allow_zero(qsic::io::quadric_from_array(&rows)).map_err(|e| err(e.to_string()))?;
+    Ok(q.map(|q| native(q, false)))
+}
+
+/// A symmetric matrix from the native bytes of one 4×4 `int64` or `float64` array (`kind`
+/// as in [`classify_many`]: `int64`, `float64`, `float64_shortest`), read as a batch row is,
+/// without the 16 texts; `None` for the zero form.
+#[pyfunction]
+fn quadric_from_machine(kind: &str, data: &Bound<'_, PyAny>) -> PyResult<Option<NativeQuadric>> {
+    let side = side(kind, data)?;
+    if side.len() != 1 {
+        return Err(err("the bytes of one 4×4 matrix"));
+    }
+    let q = side.quadric(0).map_err(err)?;
     Ok(q.map(|q| native(q, false)))
 }
 
@@ -770,6 +783,7 @@ fn _qsic(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<NativeQuadric>()?;
     m.add_function(wrap_pyfunction!(quadric_from_text, m)?)?;
     m.add_function(wrap_pyfunction!(quadric_from_entries, m)?)?;
+    m.add_function(wrap_pyfunction!(quadric_from_machine, m)?)?;
     m.add_function(wrap_pyfunction!(quadric_from_shape, m)?)?;
     m.add_function(wrap_pyfunction!(classify, m)?)?;
     m.add_function(wrap_pyfunction!(classify_many, m)?)?;

@@ -70,3 +70,51 @@ def test_big_integers_and_unsigned_arrays():
 def test_bad_array_shapes_and_types_raise(bad):
     with pytest.raises(qsic.QsicError):
         qsic.classify_many(bad, bad)
+
+
+def test_a_machine_array_reads_as_its_entries_do():
+    """A 4×4 int, unsigned or float NumPy array goes to the library as bytes (the
+    route of a classify_many row); its quadric, its errors and its classification equal
+    those of the same entries read one by one (an object array), for every reading of
+    floats — an asymmetric matrix catches a transposed read, 0.1 and 2⁻⁶⁰ a rounded one."""
+    def entries(m):  # an object array of the NumPy scalars themselves (float32 stays float32)
+        out = np.empty((4, 4), dtype=object)
+        for i in range(4):
+            for j in range(4):
+                out[i, j] = m[i, j]
+        return out
+
+    rng = np.random.default_rng(3)
+    base = rng.integers(-9, 10, (4, 4))
+    sym = base + base.T
+    arrays = [
+        sym.astype(np.int64),
+        sym.astype(np.int16),
+        (sym + 10).astype(np.uint64),
+        sym.astype(np.float64) * 0.1 + 2.0**-60,
+        sym.astype(np.float32) / 3,
+    ]
+    for m in arrays:
+        for floats in ("binary", "shortest"):
+            fast = qsic.Quadric(m, floats=floats)
+            slow = qsic.Quadric(entries(m), floats=floats)
+            assert (fast.matrix == slow.matrix).all(), (m.dtype, floats)
+    big = np.array([[2**63 + 1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], dtype=np.uint64)
+    assert qsic.Quadric(big).matrix[0, 0] == 2**63 + 1
+    asym = sym.astype(np.float64)
+    asym[0, 1] += 0.5
+    for m in (asym, asym.astype(np.int64)):
+        with pytest.raises(qsic.QsicError) as fast:
+            qsic.Quadric(m)
+        with pytest.raises(qsic.QsicError) as slow:
+            qsic.Quadric(entries(m))
+        assert str(fast.value) == str(slow.value) and "not symmetric" in str(fast.value)
+    with pytest.raises(qsic.QsicError, match="is a bool"):
+        qsic.Quadric(sym > 0)  # as its entries: a bool is not a number
+    nan = sym.astype(np.float64)
+    nan[2, 2] = np.nan
+    with pytest.raises(qsic.QsicError, match=r"entry \(2,2\)"):
+        qsic.Quadric(nan)
+    a = np.diag([1.0, 1.0, 1.0, -4.0])
+    b = np.array([[1.0, 0, 0, -3], [0, 1, 0, 0], [0, 0, 1, 0], [-3, 0, 0, 8]])
+    assert qsic.classify(a, b).to_dict() == qsic.classify(entries(a), entries(b)).to_dict()
