@@ -14,7 +14,7 @@ use crate::output::ClassificationJson;
 use crate::param::{curve_within, fields_of, AffineContext};
 use qsic::affine::{common_surfaces, AffineComponent, Chart};
 use qsic::io::{parse_rational_function, Variable};
-use qsic::param::sample::{verify_on_quadrics, SampleOptions, Sampled, SampledPiece};
+use qsic::param::sample::{verify_on_quadrics, verify_turns, SampleOptions, Sampled, SampledPiece};
 use qsic::param::Curve;
 use qsic::{Budget, Quadric};
 use qsic_algebra::RBig;
@@ -214,6 +214,7 @@ pub fn sample_within(
     let mut surfaces = Vec::new();
     if let (Some(a), Some(b)) = (a, b) {
         verify_on_quadrics(&sampled, a, b).map_err(|e| e.to_string())?;
+        verify_turns(&sampled).map_err(|e| e.to_string())?;
         let chart = Chart::new(options.chart.clone()).map_err(|e| e.to_string())?;
         surfaces = common_surfaces(&curve, a, &chart);
     }

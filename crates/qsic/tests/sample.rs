@@ -557,6 +557,39 @@ fn points_are_verified_against_the_quadrics() {
     assert!(verify_on_quadrics(&s, &a, &other).is_err());
 }
 
+/// The turn guard: every branch of a sampled curve (a smooth quartic, a nodal one with its
+/// branches cut at the node, a conic pair) keeps consecutive points within `MAX_ANGLE`,
+/// and a gap made by dropping points from a branch is caught, naming the piece.
+#[test]
+fn turns_are_verified_along_every_branch() {
+    use qsic::param::sample::{verify_turns, MAX_ANGLE};
+    for (a, b) in [
+        ("x^2+y^2+z^2-w^2", "2*x^2+4*y^2-w^2"),
+        ("x^2+y^2+z^2-4*w^2", "x^2+y^2-2*x*w"),
+        ("x^2+y^2-z^2", "x^2+4*y^2-4*w^2"),
+    ] {
+        let (a, b) = (parse_quadric(a).unwrap(), parse_quadric(b).unwrap());
+        let s = sample(&parameterize(&a, &b).unwrap(), &SampleOptions::default()).unwrap();
+        verify_turns(&s).unwrap();
+        let mut gapped = s.clone();
+        let piece = &mut gapped.pieces[0];
+        let n = piece.points.len();
+        // drop a run of points from the middle of the first branch: a step of well over 0.1 rad
+        let (from, to) = (1, (n / 3).max(3).min(n - 1));
+        piece.points.drain(from..to);
+        for b in piece.breaks.iter_mut().chain(piece.infinity.iter_mut()) {
+            if *b >= to {
+                *b -= to - from;
+            }
+        }
+        let err = verify_turns(&gapped).expect_err("a gap").to_string();
+        assert!(
+            err.contains("piece 0") && err.contains(&MAX_ANGLE.to_string()),
+            "{err}"
+        );
+    }
+}
+
 /// Two random pairs whose Levin forms are over ℚ(√δ), where the float sign changes of `h`
 /// once missed crossings of the plane at infinity: one piece (case 4) said bounded with two
 /// of the curve's points at infinity on it, and a pair (case 1) with no point at infinity

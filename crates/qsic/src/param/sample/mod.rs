@@ -8,6 +8,7 @@
 //! | [`SampleOptions`] | points per piece, chord tolerance, the plane at infinity |
 //! | [`Sampled`], [`SampledPiece`], [`AffinePiece`] | the result |
 //! | [`verify_on_quadrics`] | the last guard: every point on both quadrics |
+//! | [`verify_turns`] | and every step along a branch within [`MAX_ANGLE`] |
 //!
 //! # Stages
 //! Exact description → arcs → points, one module each; every stage type is complete when
@@ -379,6 +380,33 @@ pub fn verify_on_quadrics(sampled: &Sampled, a: &Quadric, b: &Quadric) -> Result
                         "a sampled point of piece {k} is off a quadric (relative residual {:.1e}): \
                          the floats lost the curve there",
                         r.abs() / (norm * n2)
+                    )));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Checks the promised turn on every branch of every sampled piece: consecutive unit
+/// vectors within [`MAX_ANGLE`] of each other up to sign (`|x·y| ≥ cos MAX_ANGLE`, with
+/// 10⁻¹² of slack for the rounding of the dot product), the promise of [`sample`] that the
+/// walk keeps by construction; this is the guard that no gap reaches the caller silently.
+///
+/// # Errors
+/// [`Error::Algebra`] naming the piece, the point and the angle of the first wider step.
+pub fn verify_turns(sampled: &Sampled) -> Result<(), Error> {
+    let cos = MAX_ANGLE.cos() - 1e-12;
+    for (k, piece) in sampled.pieces.iter().enumerate() {
+        for branch in piece.branches() {
+            for (i, w) in branch.windows(2).enumerate() {
+                let d: f64 = (0..4).map(|j| w[0][j] * w[1][j]).sum();
+                if d.is_nan() || d.abs() < cos {
+                    return Err(Error::Algebra(format!(
+                        "piece {k}: the sampled points {i} and {} of a branch are {:.3} rad \
+                         apart, beyond the promised {MAX_ANGLE}: the floats lost the curve there",
+                        i + 1,
+                        d.abs().min(1.0).acos()
                     )));
                 }
             }
