@@ -101,9 +101,10 @@ impl Chart {
         &self.form
     }
 
-    /// Whether this is the default chart `w = 0`.
+    /// Whether this is the default chart `w = 0`: its form is `(0, 0, 0, 1)` (the basis and
+    /// its inverse follow from the form, so the form decides).
     pub fn is_default(&self) -> bool {
-        self == &Chart::default()
+        self.form[..3].iter().all(|v| *v == RBig::ZERO) && self.form[3] == RBig::ONE
     }
 
     /// The matrix of `q` in the chart's coordinates (plane at infinity `w′ = 0`):
@@ -437,6 +438,14 @@ mod tests {
         assert_eq!(default.solids.map(|s| s.key()), Some("overlapping"));
         let other = Chart::new([1, 0, 0, 3].map(RBig::from)).unwrap();
         assert!(!other.is_default() && Chart::default().is_default());
+        let chart = |f: [i64; 4]| Chart::new(f.map(RBig::from)).unwrap();
+        assert!(chart([0, 0, 0, 1]).is_default() && chart([0, 0, 0, 1]) == Chart::default());
+        for f in [[0, 0, 0, 2], [0, 0, 1, 1], [1, 0, 0, 0], [0, 0, 0, -1]] {
+            assert!(
+                !chart(f).is_default() && chart(f) != Chart::default(),
+                "{f:?}"
+            );
+        }
         assert_eq!(
             affine_view(Some(&q), Some(&b), &other, [false, false]).solids,
             None
