@@ -21,6 +21,7 @@
 //! | [`plot`] | `qsic plot`: the curve in a 3D view and the eigencurve, as SVG |
 //! | `eigencurve` | the eigencurve panel of `qsic plot --eigencurve` |
 //! | `plot_common` | the common surfaces in a plot (`A ∝ B`, a common plane): what is drawn, where the cube goes |
+//! | `sections` | the drawn cube, polylines clipped to it, the surfaces' sections by planes (floats, drawing only) |
 //! | [`stream`] | ordered streaming: answers in parallel, written in input order as soon as they and their predecessors are done, a bounded window of pending lines |
 //! | [`svg`] | SVG helpers shared by the pictures: escaping, palette, panels |
 
@@ -44,6 +45,7 @@ mod plot_common;
 pub mod reader;
 pub mod rigid;
 pub mod sample;
+mod sections;
 pub mod step;
 pub mod stream;
 pub mod svg;

@@ -6,7 +6,7 @@ use std::fs;
 use std::path::Path;
 
 /// Most lines of code (not blank, not a comment, before the tests) in one source file.
-const MAX_CODE_LINES: usize = 1_050;
+const MAX_CODE_LINES: usize = 1_000;
 
 /// Each module of `src/` and the modules of this crate it names (`crate::m`, `super::m`),
 /// comments and the test module left out.
