@@ -230,6 +230,23 @@ impl<C: Ring> MatrixPencil<C> {
             .collect()
     }
 
+    /// The minor of `λA − B` on the given rows and columns (increasing, of one length).
+    ///
+    /// # Panics
+    /// If the sets are not increasing subsets of `0..4` of one length `k ≥ 1`.
+    pub fn minor(&self, rows: &[usize], cols: &[usize]) -> &Poly<C> {
+        self.minors.minor(rows, cols)
+    }
+
+    /// The four principal `3×3` minors of `λA − B` (rows and columns `{0,1,2,3} ∖ {i}`,
+    /// `i = 3, 2, 1, 0`). For symmetric `A`, `B` a member has rank ≤ 2 iff these and the
+    /// determinant vanish (the rank of a symmetric matrix is the largest order of a nonzero
+    /// principal minor).
+    pub fn principal_minors3(&self) -> [Poly<C>; 4] {
+        const TRIPLES: [[usize; 3]; 4] = [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]];
+        TRIPLES.map(|t| self.minors.minor(&t, &t).clone())
+    }
+
     /// `[E₁(λ), …, E₄(λ)]`: the sums of principal minors of `λA − B` of each order.
     /// The inertia of the member at `λ` follows from their signs
     /// ([`Inertia::from_minor_sum_signs`]).

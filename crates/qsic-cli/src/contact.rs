@@ -29,8 +29,8 @@ use crate::batch::{answer_with, LineFailure, RawLine};
 use crate::output::write_json_string;
 use qsic::io::MovingMatrix;
 use qsic::motion::contact::{
-    contact_points_within, first_contact_in_within, solid_motion_in_within, CommonLocus,
-    ContactPoints, FirstContact, SolidMotion, SolidState, TimeRange,
+    contact_points_within, first_contact_of, solid_motion_in_within, CommonLocus, ContactPoints,
+    FirstContact, SolidMotion, SolidState, TimeRange,
 };
 use qsic::motion::{MovingPencil, MINUS_INFINITY, PLUS_INFINITY};
 use qsic::param::expr::Names;
@@ -74,8 +74,7 @@ pub fn contact_within(
     budget: &Budget,
 ) -> Result<ContactReport, Error> {
     let pencil = MovingPencil::new_within(a, b, budget)?;
-    let motion = pencil.variations_within(None, None, budget)?;
-    let first = first_contact_in_within(&pencil, &motion, &range, budget)?;
+    let first = first_contact_of(&pencil, &range, budget)?;
     let contact = match &first {
         Some(f) => contact_points_within(&pencil, f, &range, budget)?,
         None => None,

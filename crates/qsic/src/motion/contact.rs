@@ -101,8 +101,59 @@ pub fn first_contact_within(
     budget: &Budget,
 ) -> Result<Option<FirstContact>, Error> {
     let pencil = MovingPencil::new_within(a.clone(), b.clone(), budget)?;
-    let motion = pencil.variations_within(None, None, budget)?;
-    first_contact_in_within(&pencil, &motion, range, budget)
+    first_contact_of(&pencil, range, budget)
+}
+
+/// [`first_contact_within`] on a pencil, classifying only what the answer needs: the
+/// candidate instants of the whole line in order, and for each, the interval after it (a
+/// rational sample) before the instant itself — where that interval has a real point the
+/// instant is the answer by closedness, unclassified — and the instant only where it does
+/// not: an irrational instant where `f` has four distinct roots has its neighbours' type
+/// (the generic condition of [`MovingPencil::variations`]), any other is classified over
+/// `ℚ(α)`. The walk stops at the first contact. It answers what [`first_contact_in`] answers
+/// from the whole timeline (`tests::lazy_first_contact_equals_the_timeline_route`), and is
+/// the route of [`first_contact`].
+///
+/// # Errors
+/// As [`first_contact_within`].
+pub fn first_contact_of(
+    pencil: &MovingPencil,
+    range: &TimeRange,
+    budget: &Budget,
+) -> Result<Option<FirstContact>, Error> {
+    let (polys, generic) = pencil.candidates_and_generic_condition(budget)?;
+    let candidates = super::real_roots_of_all(&polys, budget)?;
+    let samples = super::samples_between(&candidates, None, None);
+    let interval_meets = |k: usize| -> Result<bool, Error> {
+        has_real_points(&pencil.classify_at_within(&samples[k], budget)?)
+    };
+    let instant_meets = |i: usize| -> Result<Option<bool>, Error> {
+        let c = &candidates[i];
+        if let Some(v) = c.as_rational() {
+            return has_real_points(&pencil.classify_at_within(v, budget)?).map(Some);
+        }
+        if let Some(g) = &generic {
+            if !pencil.zero_tests.is_root(c, g, budget)? {
+                // the type of both neighbours, and neither has a real point (the walk
+                // reaches an instant only past intervals without one)
+                return Ok(Some(false));
+            }
+        }
+        match pencil.classify_at_irrational(c, budget)? {
+            Some(class) => has_real_points(&class).map(Some),
+            None => Ok(None),
+        }
+    };
+    first_in_range(
+        range,
+        candidates.iter(),
+        Timeline {
+            first_interval: || interval_meets(0),
+            after_instant: |i: usize| interval_meets(i + 1),
+            instant: instant_meets,
+            at_start: |t: &RBig| has_real_points(&pencil.classify_at_within(t, budget)?),
+        },
+    )
 }
 
 /// [`first_contact`] from a pencil and its variations, computed once.
@@ -187,17 +238,18 @@ where
         if !range.not_after_end(t) {
             break;
         }
-        let here = match (holds.instant)(i)? {
-            Some(h) => h || (holds.after_instant)(i)?,
-            None if (holds.after_instant)(i)? => true,
-            None => {
-                return Err(Error::UnsupportedMotion(format!(
-                    "the class at the irrational instant {t} (≈ {:.12}) is not computed \
+        // the interval after first: where it holds, so does the instant (closedness)
+        let here = (holds.after_instant)(i)?
+            || match (holds.instant)(i)? {
+                Some(h) => h,
+                None => {
+                    return Err(Error::UnsupportedMotion(format!(
+                        "the class at the irrational instant {t} (≈ {:.12}) is not computed \
                      exactly, and the answer may be there",
-                    t.to_f64()
-                )))
-            }
-        };
+                        t.to_f64()
+                    )))
+                }
+            };
         if here {
             return Ok(Some(FirstContact::At(t.clone())));
         }
@@ -579,6 +631,85 @@ fn state_at_irrational(
 mod tests {
     use super::*;
     use crate::io::moving_matrix_from_polynomial as moving;
+
+    /// The lazy walk of [`first_contact_of`] answers what the whole timeline answers
+    /// ([`first_contact_in`] of [`MovingPencil::variations`]) on the moving corpus and on
+    /// motions of every kind of first contact (none, from −∞, at a rational or an irrational
+    /// instant, at the start of a range), for the whole line and ranges cut at rationals.
+    #[test]
+    fn lazy_first_contact_equals_the_timeline_route() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/moving.jsonl");
+        let text = std::fs::read_to_string(path).unwrap();
+        let entry = |v: &serde_json::Value| -> String {
+            match v {
+                serde_json::Value::String(s) => s.clone(),
+                other => other.to_string(),
+            }
+        };
+        let mut pencils = Vec::new();
+        for line in text.lines().filter(|l| !l.trim().is_empty()) {
+            let d: serde_json::Value = serde_json::from_str(line).unwrap();
+            let m = |key: &str| {
+                let rows: Vec<Vec<String>> = d[key]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|r| r.as_array().unwrap().iter().map(entry).collect())
+                    .collect();
+                crate::io::moving_matrix_from_rows(&rows).unwrap()
+            };
+            pencils.push((d["id"].as_str().unwrap().to_string(), m("A"), m("B")));
+        }
+        for (a, b) in [
+            ("x^2 + y^2 + z^2 - 4", "(x - t)^2 + (y - 1/2)^2 + z^2 - 1"),
+            (
+                "x^2/4 + y^2 + z^2/9 - 1",
+                "(x - 2*t + 6)^2 + (y - t)^2/4 + (z - 1)^2 - 1",
+            ),
+            (
+                "x^2 + y^2 + z^2 - 1",
+                "(x - t)^2 + (y - t^2/3)^2 + z^2 - 1/4",
+            ),
+            (
+                "x^2 + 2*y^2 + 3*z^2 - 1",
+                "(x - t)^2 + (y - t^2)^2 - z^2 - 1/2",
+            ),
+            ("x^2 + y^2 + z^2 - 1", "x^2 + y^2 + z^2 - t^2 - 2"),
+            ("x^2 + y^2 - 1", "(x - t)^2 + z^2 - 1/9"),
+            ("x^2 + y^2 + z^2 + 1", "(x - t)^2 + y^2 - z^2 - 1"),
+            // a pole at t = ±1/√2, an instant where nothing changes, before the contact at 1
+            (
+                "x^2 + 2*y^2 + 3*z^2 - 5",
+                "((x - t)^2 + (y - 1/2)^2 + (z - 1/3)^2 - 1/16)/(2*t^2 - 1)",
+            ),
+        ] {
+            pencils.push((format!("{a} | {b}"), moving(a).unwrap(), moving(b).unwrap()));
+        }
+        let ranges = [
+            TimeRange::all(),
+            TimeRange::new(Some(RBig::from(-1)), None).unwrap(),
+            TimeRange::new(Some(RBig::from(0)), Some(RBig::from(3))).unwrap(),
+            TimeRange::new(None, Some(RBig::from_parts_signed((-5).into(), 2u8.into()))).unwrap(),
+        ];
+        let unlimited = Budget::unlimited();
+        let mut kinds = std::collections::HashSet::new();
+        for (what, a, b) in &pencils {
+            let p = MovingPencil::new(a.clone(), b.clone()).unwrap();
+            let motion = p.variations().unwrap();
+            for range in &ranges {
+                let lazy = first_contact_of(&p, range, &unlimited).unwrap();
+                let timeline = first_contact_in(&p, &motion, range).unwrap();
+                assert_eq!(lazy, timeline, "{what} on {range:?}");
+                kinds.insert(match &lazy {
+                    None => "none",
+                    Some(FirstContact::FromMinusInfinity) => "from −∞",
+                    Some(FirstContact::At(t)) if t.as_rational().is_some() => "rational",
+                    Some(FirstContact::At(_)) => "irrational",
+                });
+            }
+        }
+        assert_eq!(kinds.len(), 4, "{kinds:?}");
+    }
 
     /// The `ℚ(α)` route given a rational `α` agrees with the rational route (the static
     /// [`solid_relation`]) at every sample of several motions, every relation occurring.

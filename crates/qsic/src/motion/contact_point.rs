@@ -24,7 +24,7 @@
 
 use super::contact::{FirstContact, TimeRange};
 use super::instants::squarefree_decomposition_t;
-use super::{irrational, MovingPencil};
+use super::{contact_point_fast, irrational, MovingPencil};
 use crate::classify::{Classification, ComponentKind, SingularPointKind};
 use crate::error::Error;
 use crate::param::{parameterize_within, Point, RealPiece};
@@ -283,37 +283,49 @@ fn common_points_at_irrational(
             alpha.to_f64()
         ))
     };
-    let Some(class) = irrational::classify_at_irrational(&pencil.entries, alpha, budget)? else {
+    let Some(class) = pencil.classify_at_irrational(alpha, budget)? else {
         return Ok(not_computed("the class is not computed"));
     };
-    let factors_t = squarefree_decomposition_t(pencil.characteristic(), budget)?;
-    Ok(points_at_irrational(
-        &a,
-        &b,
-        &class,
-        &factors_t,
-        &field,
-        not_computed,
-    ))
+    // the one dispatch point: the accelerator where `f(λ; α)` has one double root, else
+    // the reference
+    let members = match contact_point_fast::double_root(pencil, alpha, &field, budget)? {
+        Some(l0) => vec![(member(&a, &b, &l0), &a)],
+        None => {
+            let factors_t = squarefree_decomposition_t(pencil.characteristic(), budget)?;
+            match tangency_members(&a, &b, &factors_t, &field) {
+                Ok(members) => members,
+                Err(why) => return Ok(not_computed(why)),
+            }
+        }
+    };
+    match points_on_members(&members) {
+        Ok(points) => Ok(locus_of(&class, &points, not_computed)),
+        Err(why) => Ok(not_computed(why)),
+    }
 }
 
-/// The points of [`common_points_at_irrational`] from `A(α)`, `B(α)` over `K`, the class at
-/// `α` and the square-free factors of `f` over `ℚ(t)`.
-fn points_at_irrational(
-    a: &Matrix4,
-    b: &Matrix4,
-    class: &Classification,
+/// `λ₀A − B` over `K`.
+fn member(a: &Matrix4, b: &Matrix4, l0: &K) -> Matrix4 {
+    std::array::from_fn(|i| std::array::from_fn(|j| l0.mul(&a[i][j]).sub(&b[i][j])))
+}
+
+/// The tangency members of the pencil at `α`, each with the quadric its kernel is met with:
+/// `λ₀A − B` (with `A`) at each finite multiple root `λ₀` of `f(λ; α)` over `K`, and `A`
+/// (with `B`) when `λ = ∞` is one; from `A(α)`, `B(α)` over `K` and the square-free
+/// factors of `f` over `ℚ(t)`. `Err` says what is not computed.
+fn tangency_members<'m>(
+    a: &'m Matrix4,
+    b: &'m Matrix4,
     factors_t: &[(super::instants::TPoly, usize)],
     field: &NumberField,
-    not_computed: impl Fn(&str) -> CommonLocus,
-) -> CommonLocus {
+) -> Result<Vec<(Matrix4, &'m Matrix4)>, &'static str> {
     // f(λ) = det(λA − B) over K
     let pencil_entry = |i: usize, j: usize| Poly::new(vec![b[i][j].neg(), a[i][j].clone()]);
     let lambda_a_minus_b: [[Poly<K>; 4]; 4] =
         std::array::from_fn(|i| std::array::from_fn(|j| pencil_entry(i, j)));
     let f = det(&lambda_a_minus_b);
     if f.is_zero() {
-        return not_computed("a singular pencil");
+        return Err("a singular pencil");
     }
     // the finite multiple roots, split by the square-free factors of f over ℚ(t) at α
     let multiple = f.gcd_monic(&f.derivative()).squarefree_part_field();
@@ -324,18 +336,24 @@ fn points_at_irrational(
     let mut members: Vec<(Matrix4, &Matrix4)> = Vec::new();
     for piece in split_by(&multiple, &factors) {
         if piece.degree() != Some(1) {
-            return not_computed("tangency members of the pencil not split over ℚ(t)");
+            return Err("tangency members of the pencil not split over ℚ(t)");
         }
         let l0 = piece.coeff(0).neg().div(&piece.coeff(1)).expect("degree 1");
-        let s = std::array::from_fn(|i| std::array::from_fn(|j| l0.mul(&a[i][j]).sub(&b[i][j])));
-        members.push((s, a));
+        members.push((member(a, b, &l0), a));
     }
     if f.degree().unwrap_or(0) + 2 <= 4 {
         // λ = ∞ is a multiple root: the member A, its kernel met with B
         members.push((a.clone(), b));
     }
+    Ok(members)
+}
+
+/// The real common points on the tangency members: a kernel vector on the other quadric,
+/// or the double root of that quadric on a kernel line. `Err` says what is not computed.
+fn points_on_members(members: &[(Matrix4, &Matrix4)]) -> Result<Vec<Point>, &'static str> {
+    let not_computed = |why: &'static str| Err(why);
     let mut points: Vec<Point> = Vec::new();
-    for (s, q) in &members {
+    for (s, q) in members {
         let kernel = Matrix::from_array(s.clone()).kernel();
         match kernel.as_slice() {
             [v] => {
@@ -370,6 +388,16 @@ fn points_at_irrational(
             _ => return not_computed("a member of rank 2 or less"),
         }
     }
+    Ok(points)
+}
+
+/// The locus at `α` from the tangency points found, accepted only when their number is the
+/// one the class gives.
+fn locus_of(
+    class: &Classification,
+    points: &[Point],
+    not_computed: impl Fn(&str) -> CommonLocus,
+) -> CommonLocus {
     let Some(d) = &class.description else {
         return not_computed("the class has no description");
     };
@@ -453,6 +481,65 @@ mod tests {
             ),
             other => panic!("{other:?}"),
         }
+    }
+
+    /// The accelerator's double root gives the reference's one tangency member, at every
+    /// irrational candidate instant of several motions where it answers (ellipsoids
+    /// translated, turned by Cayley's rotation, on a screw; quadrics of other kinds), and
+    /// it answers at most of them.
+    #[test]
+    fn fast_double_root_is_the_reference_member() {
+        let motions = [
+            ("x^2 + y^2 + z^2 - 4", "(x - t)^2 + (y - 1/2)^2 + z^2 - 1"),
+            (
+                "x^2/4 + y^2 + z^2/9 - 1",
+                "(x - 2*t + 6)^2 + (y - t)^2/4 + (z - 1)^2 - 1",
+            ),
+            (
+                "(1 + t^2)^2*(x^2 + y^2/4 + z^2) - (1 + t^2)^2",
+                "(x - 2)^2 + (y - t)^2 + z^2 - 1/4",
+            ),
+            (
+                "x^2 + 2*y^2 + 3*z^2 - 1",
+                "(x - t)^2 + (y - t^2)^2 - z^2 - 1/2",
+            ),
+            (
+                "x^2 + y^2 - z^2 - 1",
+                "(x - 1)^2 + y^2/3 + (z - t)^2/2 - t^2 - 1",
+            ),
+        ];
+        let unlimited = Budget::unlimited();
+        let (mut answered, mut instants) = (0, 0);
+        for (ta, tb) in motions {
+            let p = MovingPencil::new(moving(ta).unwrap(), moving(tb).unwrap()).unwrap();
+            let factors_t = squarefree_decomposition_t(p.characteristic(), &unlimited).unwrap();
+            for alpha in p.candidate_instants().unwrap() {
+                if alpha.as_rational().is_some() {
+                    continue;
+                }
+                instants += 1;
+                let field = NumberField::new(&alpha);
+                let at = |m: &[[Poly; 4]; 4]| -> Matrix4 {
+                    std::array::from_fn(|i| {
+                        std::array::from_fn(|j| field.integer_element(&m[i][j]))
+                    })
+                };
+                let (a, b) = (at(p.numerators().0), at(p.numerators().1));
+                let Some(l0) =
+                    contact_point_fast::double_root(&p, &alpha, &field, &unlimited).unwrap()
+                else {
+                    continue;
+                };
+                answered += 1;
+                let members = tangency_members(&a, &b, &factors_t, &field).unwrap();
+                assert_eq!(members.len(), 1, "{ta} | {tb} at {alpha}");
+                assert_eq!(members[0].0, member(&a, &b, &l0), "{ta} | {tb} at {alpha}");
+            }
+        }
+        assert!(
+            answered >= 8 && 2 * answered >= instants,
+            "{answered} of {instants}"
+        );
     }
 
     /// Two spheres of radii 1 and 2 along a line through (0, 1/2, 0): they touch at

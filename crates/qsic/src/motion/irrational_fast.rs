@@ -17,7 +17,10 @@
 //!   sign of its discriminant in `K`;
 //! - the Segre block of `λ₀` is `[2]` if some `3×3` minor is nonzero at `λ₀` (rank 3), else
 //!   `[(11)]` (rank 2: the order of `λ₀` in `D₃` is 1, in `D₂` and `D₁` it is 0, since the
-//!   geometric multiplicity is at most the algebraic one); the roots of `h` are simple;
+//!   geometric multiplicity is at most the algebraic one); the roots of `h` are simple. A
+//!   symmetric matrix has rank ≤ 2 iff its principal minors of orders 3 and 4 vanish, and a
+//!   minor `q` of degree `k` in `λ` at `λ₀ = u/v` (`S₁ = vλ − u`) is `v^k·q(u/v)/v^k` with
+//!   `v^k·q(u/v)` an integer polynomial in `t`: rank 2 is four exact zero tests at `α`;
 //! - the real roots are ordered, and rational samples of the arcs between them chosen, from
 //!   float approximations, then certified by exact signs in `K`: at the samples
 //!   `s₀ < … < s_r`, `s − λ₀` and `lc(h)·h(s)` must show the claimed order (with two real
@@ -32,9 +35,11 @@
 //! and the minors, and their combinations above) are enclosed in dyadic intervals by Horner
 //! on `α`'s box, at a precision doubled up to a few times the coefficients' size; a sign
 //! is read only from an enclosure that excludes zero, `psc₀(α) = 0` is decided exactly,
-//! and `E₄(λ₀) = f(λ₀) = 0` by construction. Where an enclosure still holds zero (a zero
-//! value: a rank-2 member, `E₁` or `E₂` vanishing), the same steps run in `K` with its exact
-//! zero test. Floats only propose the samples. `None` means "not this shape or not certified":
+//! and `E₄(λ₀) = f(λ₀) = 0` by construction. Where no enclosure shows a `3×3` minor nonzero
+//! at `λ₀`, the zero tests above decide rank 2 (`E₃(λ₀) = 0` then); where one of `E₁(λ₀)`,
+//! `E₂(λ₀)` holds zero, the zero test of `v^k·E_k(u/v)`; a value that is not zero but not
+//! yet enclosed away from it takes more bits, and past the cap the same steps run in `K`
+//! with its exact zero test. Floats only propose the samples. `None` means "not this shape or not certified":
 //! the caller then runs the reference, so an answer is never lost.
 //!
 //! **Work units.** Each enclosure stage spends, before it runs, the refinement of `α`'s
@@ -42,7 +47,7 @@
 //! ([`enclosure_units`]); the exact zero tests their gcd's estimate; the stage in `K` the
 //! reduction of the coefficients into `K` and its products ([`super::irrational::Spend`]).
 
-use super::instants::{subresultant_within, DeterminantRoute, TPoly};
+use super::instants::{subresultant_within, tpoly_product_units, DeterminantRoute, TPoly};
 use super::irrational::Spend;
 use super::shared_roots::{refined_within, ZeroTests};
 use crate::classify::{classify_regular_parts, Classification};
@@ -53,6 +58,7 @@ use qsic_algebra::field::number_field::{NumberField, NumberFieldElement as K};
 use qsic_algebra::matrix::{Inertia, MatrixPencil};
 use qsic_algebra::roots::simplest_between;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring, Sign};
+use std::sync::OnceLock;
 
 type KPoly = Poly<K>;
 
@@ -71,6 +77,12 @@ pub(crate) struct PencilPolys {
     psc0: Poly,
     /// The zero tests at the instants, shared between the roots of one polynomial.
     zero_tests: ZeroTests,
+    /// The four principal `3×3` minors (they vanish at `λ₀` iff the member has rank ≤ 2).
+    principal3: [TPoly; 4],
+    /// `v³·m(u/v)` for each principal `3×3` minor `m`, with `S₁ = v·λ − u`: the minors at
+    /// the double root as integer polynomials in `t`, made on first use (their zeros at `α`
+    /// are those of the minors at `λ₀`, whatever the orientation).
+    minors3_at_double: OnceLock<Vec<Poly>>,
 }
 
 impl PencilPolys {
@@ -96,9 +108,11 @@ impl PencilPolys {
             f,
             e: pencil.principal_minor_sums(),
             minors3: pencil.minors(3),
+            principal3: pencil.principal_minors3(),
             s1,
             psc0,
             zero_tests: ZeroTests::default(),
+            minors3_at_double: OnceLock::new(),
         })
     }
 
@@ -131,7 +145,77 @@ impl PencilPolys {
             s1: map(&self.s1, 0),
             psc0: self.psc0.clone(),
             zero_tests: self.zero_tests.clone(),
+            principal3: std::array::from_fn(|k| map(&self.principal3[k], 3)),
+            minors3_at_double: self.minors3_at_double.clone(),
         }
+    }
+
+    /// `v^k·q(u/v)` for a polynomial `q` of degree ≤ `k` in `λ` and `S₁ = v·λ − u`
+    /// (`u = −S₁[0]`, `v = S₁[1]`): `q` at the double root as an integer polynomial in `t`,
+    /// spending its products.
+    pub(super) fn at_double(
+        &self,
+        q: &TPoly,
+        k: usize,
+        budget: &Budget,
+    ) -> Result<Poly, Exhausted> {
+        let u = self.s1.coeff(0).neg();
+        let v = self.s1.coeff(1);
+        let mut acc = Poly::zero();
+        let mut v_pow = Poly::constant(IBig::ONE);
+        for i in (0..=k).rev() {
+            // Horner in u with the powers of v carried: Σ qᵢ uⁱ v^(k−i)
+            let term = q.coeff(i);
+            budget.spend(
+                tpoly_product_units(&acc, &u).saturating_add(tpoly_product_units(&term, &v_pow)),
+            )?;
+            acc = &(&acc * &u) + &(&term * &v_pow);
+            if i > 0 {
+                budget.spend(tpoly_product_units(&v_pow, &v))?;
+                v_pow = &v_pow * &v;
+            }
+        }
+        Ok(acc)
+    }
+
+    /// `(u, v)` with `S₁ = v·λ − u`: the double root is `u(α)/v(α)` where there is one.
+    pub(super) fn double_root_fraction(&self) -> (Poly, Poly) {
+        (self.s1.coeff(0).neg(), self.s1.coeff(1))
+    }
+
+    /// Whether `f(λ; α)` has degree 4 and exactly one double root (`psc₀(α) = 0 ≠ S₁[1](α)`:
+    /// `λ₀ = u/v` of [`Self::at_double`]), by exact zero tests.
+    pub(super) fn one_double_root_at(
+        &self,
+        alpha: &AlgebraicReal,
+        budget: &Budget,
+    ) -> Result<bool, Exhausted> {
+        Ok(self.f.degree() == Some(4)
+            && !self.zero_tests.is_root(alpha, &self.f.coeff(4), budget)?
+            && self.zero_tests.is_root(alpha, &self.psc0, budget)?
+            && !self.zero_tests.is_root(alpha, &self.s1.coeff(1), budget)?)
+    }
+
+    /// Whether the member at the double root `λ₀` has rank 2 at `α`: every principal `3×3`
+    /// minor vanishes there ([`MatrixPencil::principal_minors3`]): exact zero tests of
+    /// [`Self::at_double`] of each (shared between the roots of one polynomial).
+    fn rank_two_at(&self, alpha: &AlgebraicReal, budget: &Budget) -> Result<bool, Exhausted> {
+        let values = match self.minors3_at_double.get() {
+            Some(v) => v,
+            None => {
+                let mut made = Vec::with_capacity(4);
+                for m in &self.principal3 {
+                    made.push(self.at_double(m, 3, budget)?);
+                }
+                self.minors3_at_double.get_or_init(|| made)
+            }
+        };
+        for q in values {
+            if !self.zero_tests.is_root(alpha, q, budget)? {
+                return Ok(false);
+            }
+        }
+        Ok(true)
     }
 }
 
@@ -621,13 +705,19 @@ fn analyze_enclosed(
         return Ok(Undecided);
     };
     let h_real = disc_sign == Sign::Positive;
+    // the Segre block of λ₀: [2] where an enclosure shows a 3×3 minor nonzero there, [(11)]
+    // where every minor vanishes exactly (rank 2), else more bits
     let rank3 = polys.minors3.iter().any(|m| {
         let q: Vec<Dyadic> = m.coeffs().iter().map(at).collect();
         enclose_homogeneous(&q, 3, &u, &v).sign().is_some()
     });
-    if !rank3 {
-        return Ok(Undecided); // rank 2, or an enclosure too wide: the exact route decides
-    }
+    let double_blocks = if rank3 {
+        vec![2]
+    } else if polys.rank_two_at(alpha, budget)? {
+        vec![1, 1]
+    } else {
+        return Ok(Undecided);
+    };
     let ratio = |x: &Dyadic, y: &Dyadic| -> f64 { (x.mid() / y.mid()).to_f64().value() };
     let quadratic = h_real.then(|| (hb.mid() / ha.mid(), hc.mid() / ha.mid()));
     let Some(approx) = proposed_roots(ratio(&u, &v), quadratic) else {
@@ -683,12 +773,21 @@ fn analyze_enclosed(
         }
         arcs.push((s, Inertia::from_minor_sum_signs(signs)));
     }
-    // E₄(λ₀) = f(λ₀) = 0; E₃(λ₀) ≠ 0 at rank 3, E₁, E₂ as the enclosures say
+    // E₄(λ₀) = f(λ₀) = 0; E₃(λ₀) ≠ 0 at rank 3 and 0 at rank 2 (every 3×3 minor vanishes);
+    // E₁, E₂ as the enclosures say, or zero by an exact test where they hold zero
     let mut double_signs = [Sign::Zero; 4];
     for k in 0..3 {
+        if k == 2 && !rank3 {
+            continue;
+        }
         match enclose_homogeneous(&e[k], k + 1, &u, &v).sign() {
             Some(x) => double_signs[k] = x,
-            None => return Ok(Undecided),
+            None => {
+                let q = polys.at_double(&polys.e[k], k + 1, budget)?;
+                if !polys.zero_tests.is_root(alpha, &q, budget)? {
+                    return Ok(Undecided);
+                }
+            }
         }
     }
     let roots = approx
@@ -734,7 +833,7 @@ fn analyze_enclosed(
         roots,
         root_signs,
         arcs,
-        double_blocks: vec![2],
+        double_blocks,
         h_real,
     }))
 }
@@ -937,6 +1036,58 @@ mod tests {
                 assert!(segre.starts_with("[211]"), "{segre} at {alpha}");
             }
         }
+    }
+
+    /// Instants where the double root's member has rank 2 (Segre `[(11)11]`): an ellipsoid
+    /// turned about the z axis by Cayley's rotation past a sphere (the rotation family of
+    /// the benchmarks). The fast route answers at each irrational instant, by exact zero
+    /// tests of the principal minors at `λ₀` (no arithmetic in `ℚ(α)`), with the reference's
+    /// class.
+    #[test]
+    fn fast_route_answers_at_rank_two_instants() {
+        let rows = |r: [[&str; 4]; 4]| -> Vec<Vec<String>> {
+            r.iter()
+                .map(|row| row.iter().map(|e| e.to_string()).collect())
+                .collect()
+        };
+        let a = rows([
+            ["t^4 + 14*t^2 + 1", "6*t^3 - 6*t", "0", "0"],
+            ["6*t^3 - 6*t", "4*t^4 - 4*t^2 + 4", "0", "0"],
+            ["0", "0", "4*t^4 + 8*t^2 + 4", "0"],
+            ["0", "0", "0", "-4*t^4 - 8*t^2 - 4"],
+        ]);
+        let b = rows([
+            ["4", "0", "0", "-12"],
+            ["0", "4", "0", "-16"],
+            ["0", "0", "9", "0"],
+            ["-12", "-16", "0", "64"],
+        ]);
+        let p = MovingPencil::new(
+            moving_matrix_from_rows(&a).unwrap(),
+            moving_matrix_from_rows(&b).unwrap(),
+        )
+        .unwrap();
+        let (answered, all) = compare(&p, "ellipsoid turning past a sphere");
+        assert!(all >= 4 && answered == all, "{answered} of {all}");
+        let unlimited = Budget::unlimited();
+        let mut rank_two = 0;
+        for alpha in p.candidate_instants().unwrap() {
+            if alpha.as_rational().is_none() {
+                let c = classify_at_irrational_fast(
+                    p.fast_polys(&unlimited).unwrap(),
+                    &alpha,
+                    &unlimited,
+                )
+                .unwrap()
+                .unwrap();
+                rank_two += usize::from(c.segre.unwrap_or_default().starts_with("[(11)11]"));
+                // decided by the enclosures and zero tests, not by the field route
+                let polys = p.fast_polys(&unlimited).unwrap();
+                let enclosed = analyze_enclosed(polys, &alpha, 512, &unlimited).unwrap();
+                assert!(matches!(enclosed, Enclosed::Done(_)), "at {alpha}");
+            }
+        }
+        assert!(rank_two >= 4, "{rank_two} instants of Segre [(11)11]");
     }
 
     /// The signs along the λ-line agree with the reference's for ellipsoids (the contact

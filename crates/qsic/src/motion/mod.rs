@@ -40,6 +40,7 @@
 
 pub mod contact;
 mod contact_point;
+mod contact_point_fast;
 mod instants;
 mod irrational;
 mod irrational_fast;
@@ -622,7 +623,7 @@ impl MovingPencil {
     /// The class at an irrational instant: the one dispatch point between the fast route
     /// (module `irrational_fast`: one double root, certified signs) and the reference
     /// (module `irrational`), which answers whatever the fast route hands back.
-    fn classify_at_irrational(
+    pub(super) fn classify_at_irrational(
         &self,
         alpha: &AlgebraicReal,
         budget: &Budget,

@@ -7,27 +7,23 @@
 //! sequence on polynomials of degree in the hundreds with coefficients of thousands of bits,
 //! per instant; instead [`ZeroTests::is_root`] asks once per pair `(p, q)` whether `p`
 //! divides `q` (one exact division: `p` primitive, so by Gauss' lemma over `ℤ`), and only
-//! where it does not, the exact sign of `q(α)` (which refines, then takes the gcd).
+//! where it does not, `g = gcd(p, q)` (also once per pair), whose sign change across `α`'s
+//! isolating interval says whether `α` is one of its roots (`p` square-free: its roots in
+//! that interval are `α` alone).
 
 use qsic_algebra::budget::{product_units, Budget, Exhausted};
 use qsic_algebra::roots::RootInterval;
+use qsic_algebra::Sign;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig};
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
 
-/// Divisibility of tested polynomials by defining polynomials, remembered between instants.
-#[derive(Debug, Default)]
+/// Divisibility of tested polynomials by defining polynomials, remembered between instants
+/// (and between the copies of one motion's polynomials: clones share it).
+#[derive(Debug, Default, Clone)]
 pub(crate) struct ZeroTests {
-    /// `(p, q, p | q)` for the primitive defining polynomials `p` and the tested `q` seen.
-    known: Mutex<Vec<(Poly, Poly, bool)>>,
-}
-
-impl Clone for ZeroTests {
-    fn clone(&self) -> Self {
-        let known = self.known.lock().unwrap_or_else(|e| e.into_inner()).clone();
-        ZeroTests {
-            known: Mutex::new(known),
-        }
-    }
+    /// `(p, q, g)` for the primitive defining polynomials `p` and the tested `q` seen:
+    /// `g = p` where `p | q`, else `gcd(p, q)`.
+    known: Arc<Mutex<Vec<(Poly, Poly, Poly)>>>,
 }
 
 /// The units of `q / p` by exact division: `(deg q − deg p + 1)(deg p + 1)` products.
@@ -45,7 +41,10 @@ fn gcd_units(q: &Poly, alpha: &AlgebraicReal) -> u64 {
 
 impl ZeroTests {
     /// Whether `q(α) = 0`, exactly: `true` at once where `α`'s primitive defining polynomial
-    /// divides `q` (decided once for all its roots), else by the exact sign of `q(α)`.
+    /// `p` divides `q`, else from `g = gcd(p, q)` (both decided once for all the roots of
+    /// `p`): `g` is square-free with roots among those of `p`, so `α` is a root of `g` iff
+    /// `g` changes sign across `α`'s isolating interval (an end where `g` vanishes: the
+    /// exact sign of `q(α)`).
     ///
     /// # Errors
     /// [`Exhausted`] when the budget runs out.
@@ -66,25 +65,38 @@ impl ZeroTests {
             let k = self.known.lock().unwrap_or_else(|e| e.into_inner());
             k.iter()
                 .find(|(kp, kq, _)| kp == &p && kq == q)
-                .map(|(_, _, d)| *d)
+                .map(|(_, _, g)| g.clone())
         };
-        let divides = match known {
-            Some(d) => d,
+        let g = match known {
+            Some(g) => g,
             None => {
                 budget.spend(division_units(q, &p))?;
-                let d = q.div_exact(&p).is_some();
-                self.known
-                    .lock()
-                    .unwrap_or_else(|e| e.into_inner())
-                    .push((p, q.clone(), d));
-                d
+                let g = if q.div_exact(&p).is_some() {
+                    p.clone()
+                } else {
+                    budget.spend(gcd_units(q, alpha))?;
+                    p.gcd_within(q, budget)?
+                };
+                self.known.lock().unwrap_or_else(|e| e.into_inner()).push((
+                    p.clone(),
+                    q.clone(),
+                    g.clone(),
+                ));
+                g
             }
         };
-        if divides {
+        if g == p {
             return Ok(true);
         }
-        budget.spend(gcd_units(q, alpha))?;
-        Ok(alpha.is_root_of(q))
+        if g.degree().unwrap_or(0) == 0 {
+            return Ok(false);
+        }
+        let iv = alpha.interval();
+        match g.sign_at(iv.lo()) * g.sign_at(iv.hi()) {
+            Sign::Negative => Ok(true),
+            Sign::Positive => Ok(false),
+            Sign::Zero => Ok(alpha.is_root_of(q)),
+        }
     }
 }
 
