@@ -23,7 +23,6 @@ const KNOWN_CYCLES: &[&[&str]] = &[
     // the crate's top level: through affine, classify, natural and solids (not the sampler:
     // param::sample no longer uses affine)
     &["affine", "classify", "natural", "param", "solids"],
-    &["contact", "contact_point"],
 ];
 
 /// Most lines of code (blank lines, comments and `#[cfg(test)]` modules left out) of a file

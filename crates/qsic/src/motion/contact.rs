@@ -29,7 +29,7 @@ pub use super::contact_point::{
     CommonPoint, CommonPointKind, ContactPoints,
 };
 use super::instants::pencil_entries;
-pub use super::range::TimeRange;
+pub use super::range::{FirstContact, TimeRange};
 use super::{irrational, irrational_fast, InstantType, Motion, MovingPencil};
 use crate::classify::Classification;
 use crate::error::Error;
@@ -40,15 +40,6 @@ use crate::solids::{
 };
 use qsic_algebra::budget::{Budget, Exhausted};
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring};
-
-/// The least `t` of a range where a closed condition holds.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum FirstContact {
-    /// It holds on a whole interval `(−∞, …)` of an unbounded range: there is no first `t`.
-    FromMinusInfinity,
-    /// The least `t` (the range's start if it holds there).
-    At(AlgebraicReal),
-}
 
 /// Whether the real intersection of a class has a real point (in real projective space).
 ///

@@ -22,8 +22,8 @@
 //!   quadratic extension of `K`, a singular pencil at `α` — the answer says what was not
 //!   computed ([`CommonLocus::NotComputed`]), never a guess.
 
-use super::contact::{FirstContact, TimeRange};
 use super::instants::squarefree_decomposition_t;
+use super::range::{FirstContact, TimeRange};
 use super::{contact_point_fast, irrational, MovingPencil};
 use crate::classify::{Classification, ComponentKind, SingularPointKind};
 use crate::error::Error;

@@ -1,6 +1,7 @@
 //! The range of time of a motion: `[from, to]` with rational ends or `∓∞`, its one reading
 //! from text (`--range T0 T1` of `qsic motion` and `qsic contact`, the `range` of the Python
-//! functions) and the one spelling of infinity in their output.
+//! functions) and the one spelling of infinity in their output; [`FirstContact`], the least
+//! `t` of a range where a closed condition holds.
 
 use crate::error::Error;
 use crate::io::parse_number;
@@ -132,6 +133,15 @@ pub(crate) fn check_order(from: Option<&RBig>, to: Option<&RBig>) -> Result<(), 
         ))),
         _ => Ok(()),
     }
+}
+
+/// The least `t` of a range where a closed condition holds.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum FirstContact {
+    /// It holds on a whole interval `(−∞, …)` of an unbounded range: there is no first `t`.
+    FromMinusInfinity,
+    /// The least `t` (the range's start if it holds there).
+    At(AlgebraicReal),
 }
 
 #[cfg(test)]
