@@ -629,28 +629,7 @@ mod tests {
     /// instant, at the start of a range), for the whole line and ranges cut at rationals.
     #[test]
     fn lazy_first_contact_equals_the_timeline_route() {
-        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/moving.jsonl");
-        let text = std::fs::read_to_string(path).unwrap();
-        let entry = |v: &serde_json::Value| -> String {
-            match v {
-                serde_json::Value::String(s) => s.clone(),
-                other => other.to_string(),
-            }
-        };
-        let mut pencils = Vec::new();
-        for line in text.lines().filter(|l| !l.trim().is_empty()) {
-            let d: serde_json::Value = serde_json::from_str(line).unwrap();
-            let m = |key: &str| {
-                let rows: Vec<Vec<String>> = d[key]
-                    .as_array()
-                    .unwrap()
-                    .iter()
-                    .map(|r| r.as_array().unwrap().iter().map(entry).collect())
-                    .collect();
-                crate::io::moving_matrix_from_rows(&rows).unwrap()
-            };
-            pencils.push((d["id"].as_str().unwrap().to_string(), m("A"), m("B")));
-        }
+        let mut pencils = crate::motion::moving_corpus();
         for (a, b) in [
             ("x^2 + y^2 + z^2 - 4", "(x - t)^2 + (y - 1/2)^2 + z^2 - 1"),
             (

@@ -973,27 +973,8 @@ mod tests {
     /// roots of the discriminant of a generic motion.
     #[test]
     fn fast_route_agrees_with_the_reference() {
-        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/moving.jsonl");
-        let text = std::fs::read_to_string(path).unwrap();
-        let entry = |v: &serde_json::Value| -> String {
-            match v {
-                serde_json::Value::String(s) => s.clone(),
-                other => other.to_string(),
-            }
-        };
-        for line in text.lines().filter(|l| !l.trim().is_empty()) {
-            let d: serde_json::Value = serde_json::from_str(line).unwrap();
-            let m = |key: &str| {
-                let rows: Vec<Vec<String>> = d[key]
-                    .as_array()
-                    .unwrap()
-                    .iter()
-                    .map(|r| r.as_array().unwrap().iter().map(entry).collect())
-                    .collect();
-                moving_matrix_from_rows(&rows).unwrap()
-            };
-            let p = MovingPencil::new(m("A"), m("B")).unwrap();
-            compare(&p, d["id"].as_str().unwrap());
+        for (id, a, b) in crate::motion::moving_corpus() {
+            compare(&MovingPencil::new(a, b).unwrap(), &id);
         }
         let mut rng = SplitMix(28);
         let (mut answered, mut all) = (0, 0);

@@ -797,6 +797,35 @@ fn gcd_free_basis(polys: &[Poly], budget: &Budget) -> Result<Vec<Poly>, Exhauste
     Ok(basis)
 }
 
+/// The lines of the moving corpus (`tests/data/moving.jsonl`) as `(id, A, B)`, for the tests
+/// that hold an accelerator equal to its reference on every line.
+#[cfg(test)]
+pub(crate) fn moving_corpus() -> Vec<(String, MovingMatrix, MovingMatrix)> {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/moving.jsonl");
+    let text = std::fs::read_to_string(path).expect("the moving corpus");
+    let entry = |v: &serde_json::Value| -> String {
+        match v {
+            serde_json::Value::String(s) => s.clone(),
+            other => other.to_string(),
+        }
+    };
+    let mut out = Vec::new();
+    for line in text.lines().filter(|l| !l.trim().is_empty()) {
+        let d: serde_json::Value = serde_json::from_str(line).expect("a JSON line");
+        let m = |key: &str| {
+            let rows: Vec<Vec<String>> = d[key]
+                .as_array()
+                .expect("a matrix")
+                .iter()
+                .map(|r| r.as_array().expect("a row").iter().map(entry).collect())
+                .collect();
+            crate::io::moving_matrix_from_rows(&rows).expect("a moving matrix")
+        };
+        out.push((d["id"].as_str().expect("an id").to_string(), m("A"), m("B")));
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
