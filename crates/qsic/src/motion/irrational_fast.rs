@@ -203,9 +203,21 @@ impl PencilPolys {
         let values = match self.minors3_at_double.get() {
             Some(v) => v,
             None => {
+                // the monomials uⁱv³⁻ⁱ once for the four minors
+                let (u, v) = self.double_root_fraction();
+                let pow = |x: &Poly, y: &Poly| -> Result<Poly, Exhausted> {
+                    budget.spend(tpoly_product_units(x, y))?;
+                    Ok(x * y)
+                };
+                let (uu, vv) = (pow(&u, &u)?, pow(&v, &v)?);
+                let monomials = [pow(&vv, &v)?, pow(&vv, &u)?, pow(&uu, &v)?, pow(&uu, &u)?];
                 let mut made = Vec::with_capacity(4);
                 for m in &self.principal3 {
-                    made.push(self.at_double(m, 3, budget)?);
+                    let mut q = Poly::zero();
+                    for (i, mono) in monomials.iter().enumerate() {
+                        q = &q + &pow(&m.coeff(i), mono)?;
+                    }
+                    made.push(q);
                 }
                 self.minors3_at_double.get_or_init(|| made)
             }
