@@ -103,7 +103,8 @@ pub fn first_contact_within(
 /// (the generic condition of [`MovingPencil::variations`]), any other is classified over
 /// `ℚ(α)`. The walk stops at the first contact. It answers what [`first_contact_in`] answers
 /// from the whole timeline (`tests::lazy_first_contact_equals_the_timeline_route`), and is
-/// the route of [`first_contact`].
+/// the route of [`first_contact`]. Gain (callgrind, one `qsic contact --batch -` line):
+/// `cylinder_cone_rotating` 223 M → 17 M, `ellipsoids_rotation` 153 M → 139 M.
 ///
 /// # Errors
 /// As [`first_contact_within`].

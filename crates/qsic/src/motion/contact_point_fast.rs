@@ -13,6 +13,9 @@
 //!
 //! **Work units**: the zero tests ([`PencilPolys::one_double_root_at`]) and the two
 //! reductions into `K` and the inverse as products in `K` ([`Spend::products`]).
+//!
+//! **Gain** (callgrind, one `qsic contact --batch -` line, against the reference alone):
+//! `ellipsoids_translation` 59 M → 40 M, `ellipsoids_screw` 1.05 G → 0.94 G.
 
 use super::irrational::Spend;
 use super::irrational_fast::PencilPolys;

@@ -42,6 +42,11 @@
 //! with its exact zero test. Floats only propose the samples. `None` means "not this shape or not certified":
 //! the caller then runs the reference, so an answer is never lost.
 //!
+//! **Gain** (callgrind, `qsic motion --batch -` on `ellipsoids_rotation`, whose four
+//! irrational instants have rank-2 members): 651 M with the enclosures handing rank 2 to
+//! `K`, 87 M with the zero tests at `λ₀`; the route as a whole against the reference is held
+//! by `fast_route_agrees_with_the_reference`'s corpus.
+//!
 //! **Work units.** Each enclosure stage spends, before it runs, the refinement of `α`'s
 //! interval to its precision and Horner on every coefficient it reads
 //! ([`enclosure_units`]); the exact zero tests their gcd's estimate; the stage in `K` the
