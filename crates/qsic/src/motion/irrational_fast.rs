@@ -39,8 +39,8 @@
 //! at `λ₀`, the zero tests above decide rank 2 (`E₃(λ₀) = 0` then); where one of `E₁(λ₀)`,
 //! `E₂(λ₀)` holds zero, the zero test of `v^k·E_k(u/v)`; a value that is not zero but not
 //! yet enclosed away from it takes more bits, and past the cap the same steps run in `K`
-//! with its exact zero test. Floats only propose the samples. `None` means "not this shape or not certified":
-//! the caller then runs the reference, so an answer is never lost.
+//! with its exact zero test. Floats only propose the samples. `None` means "not this shape
+//! or not certified": the caller then runs the reference, so an answer is never lost.
 //!
 //! **Gain** (callgrind, `qsic motion --batch -` on `ellipsoids_rotation`, whose four
 //! irrational instants have rank-2 members): 651 M with the enclosures handing rank 2 to
@@ -158,29 +158,34 @@ impl PencilPolys {
     /// `v^k·q(u/v)` for a polynomial `q` of degree ≤ `k` in `λ` and `S₁ = v·λ − u`
     /// (`u = −S₁[0]`, `v = S₁[1]`): `q` at the double root as an integer polynomial in `t`,
     /// spending its products.
-    pub(super) fn at_double(
-        &self,
-        q: &TPoly,
-        k: usize,
-        budget: &Budget,
-    ) -> Result<Poly, Exhausted> {
-        let u = self.s1.coeff(0).neg();
-        let v = self.s1.coeff(1);
-        let mut acc = Poly::zero();
-        let mut v_pow = Poly::constant(IBig::ONE);
-        for i in (0..=k).rev() {
-            // Horner in u with the powers of v carried: Σ qᵢ uⁱ v^(k−i)
-            let term = q.coeff(i);
-            budget.spend(
-                tpoly_product_units(&acc, &u).saturating_add(tpoly_product_units(&term, &v_pow)),
-            )?;
-            acc = &(&acc * &u) + &(&term * &v_pow);
-            if i > 0 {
-                budget.spend(tpoly_product_units(&v_pow, &v))?;
-                v_pow = &v_pow * &v;
+    fn at_double(&self, q: &TPoly, k: usize, budget: &Budget) -> Result<Poly, Exhausted> {
+        at_double_with(q, &self.double_root_monomials(k, budget)?, budget)
+    }
+
+    /// The monomials `uⁱ·v^(k−i)`, `i = 0…k`, of [`Self::at_double`], spending their
+    /// products (made once where several polynomials are taken at the double root).
+    fn double_root_monomials(&self, k: usize, budget: &Budget) -> Result<Vec<Poly>, Exhausted> {
+        let (u, v) = self.double_root_fraction();
+        let powers = |x: &Poly| -> Result<Vec<Poly>, Exhausted> {
+            let mut out = vec![Poly::constant(IBig::ONE), x.clone()];
+            while out.len() <= k {
+                let last = out.last().expect("two powers at least");
+                budget.spend(tpoly_product_units(last, x))?;
+                out.push(last * x);
             }
-        }
-        Ok(acc)
+            Ok(out)
+        };
+        let (pu, pv) = (powers(&u)?, powers(&v)?);
+        (0..=k)
+            .map(|i| {
+                let (a, b) = (&pu[i], &pv[k - i]);
+                if i == 0 || i == k {
+                    return Ok(if i == 0 { b.clone() } else { a.clone() });
+                }
+                budget.spend(tpoly_product_units(a, b))?;
+                Ok(a * b)
+            })
+            .collect()
     }
 
     /// `(u, v)` with `S₁ = v·λ − u`: the double root is `u(α)/v(α)` where there is one.
@@ -209,20 +214,10 @@ impl PencilPolys {
             Some(v) => v,
             None => {
                 // the monomials uⁱv³⁻ⁱ once for the four minors
-                let (u, v) = self.double_root_fraction();
-                let pow = |x: &Poly, y: &Poly| -> Result<Poly, Exhausted> {
-                    budget.spend(tpoly_product_units(x, y))?;
-                    Ok(x * y)
-                };
-                let (uu, vv) = (pow(&u, &u)?, pow(&v, &v)?);
-                let monomials = [pow(&vv, &v)?, pow(&vv, &u)?, pow(&uu, &v)?, pow(&uu, &u)?];
+                let monomials = self.double_root_monomials(3, budget)?;
                 let mut made = Vec::with_capacity(4);
                 for m in &self.principal3 {
-                    let mut q = Poly::zero();
-                    for (i, mono) in monomials.iter().enumerate() {
-                        q = &q + &pow(&m.coeff(i), mono)?;
-                    }
-                    made.push(q);
+                    made.push(at_double_with(m, &monomials, budget)?);
                 }
                 self.minors3_at_double.get_or_init(|| made)
             }
@@ -234,6 +229,20 @@ impl PencilPolys {
         }
         Ok(true)
     }
+}
+
+/// `Σ qᵢ·mᵢ` for the monomials `mᵢ = uⁱ·v^(k−i)` ([`PencilPolys::double_root_monomials`]):
+/// `v^k·q(u/v)`, spending its products.
+fn at_double_with(q: &TPoly, monomials: &[Poly], budget: &Budget) -> Result<Poly, Exhausted> {
+    let mut acc = Poly::zero();
+    for (i, mono) in monomials.iter().enumerate() {
+        let c = q.coeff(i);
+        if !c.is_zero() {
+            budget.spend(tpoly_product_units(&c, mono))?;
+            acc = &acc + &(&c * mono);
+        }
+    }
+    Ok(acc)
 }
 
 /// A real root of `f(λ; α)`: the double root `λ₀`, or a simple root of `h`.
