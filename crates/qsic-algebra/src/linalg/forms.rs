@@ -6,7 +6,7 @@
 //! | entry point | returns |
 //! |---|---|
 //! | [`real_point`] | `x ≠ 0` real with `Q(x) = 0`: rational if a cheap one exists, else in the ℚ(√δ) with the least `|δ|` among those tried |
-//! | [`plane_pair`] | `Q = c·l₁·l₂` for rank 1 or 2: rational, real conjugate (`δ > 0`) or complex conjugate (`δ < 0`) planes |
+//! | [`plane_pair`] | `Q = c·l₁·l₂` for rank 1 or 2: rational, real conjugate (`δ > 0`) or complex conjugate (`δ < 0`) planes, `δ` the least radicand that the principal minors show |
 //! | [`sqrt_rational`], [`split_square`] | `√q = m√δ` with small square factors taken out of `δ` (no factoring) |
 
 use super::{Diagonalization, Matrix};
@@ -232,7 +232,7 @@ pub fn plane_pair(s: &Matrix<RBig>) -> Option<PlanePair> {
             })
         }
         [a, b] => {
-            let root = sqrt_rational(&-(&dg.d[b] / &dg.d[a]));
+            let root = least_radicand(sqrt_rational(&-(&dg.d[b] / &dg.d[a])), s);
             let kind = match Sign::of(root.radicand()) {
                 Sign::Zero => PlanePairKind::Rational,
                 Sign::Positive => PlanePairKind::RealConjugate,
@@ -246,6 +246,67 @@ pub fn plane_pair(s: &Matrix<RBig>) -> Option<PlanePair> {
             })
         }
         _ => None,
+    }
+}
+
+/// `root = √q` (`q = −d_b/d_a`) rewritten over the least radicand of its square class that
+/// the form shows without factoring. For `S = c(aaᵀ − δbbᵀ)` each principal 2×2 minor is
+/// `S_iiS_jj − S_ij² = −c²δπ_ij²`, `π = a ∧ b` (Plücker coordinates), so the gcd `g` of the
+/// `|S_iiS_jj − S_ij²|` of `S` made integral, signed as `δ`, is in the square class of `q`:
+/// `δ` times the square of `c·gcd(π)`. A map `PᵀSP` multiplies `d_a`, `d_b` by unrelated
+/// squares and the radicand of `q` grows with `P`, while `g` stays as small as the planes
+/// themselves. `g` replaces the radicand when it is smaller and `q/g` is a rational square
+/// (checked, so the value never changes).
+fn least_radicand(root: Quadratic, s: &Matrix<RBig>) -> Quadratic {
+    use dashu_int::ops::{Gcd, UnsignedAbs};
+    if root.as_rational().is_some() {
+        return root;
+    }
+    let n = s.rows();
+    let lcm =
+        (0..n)
+            .flat_map(|i| (0..n).map(move |j| (i, j)))
+            .fold(dashu_int::UBig::ONE, |l, (i, j)| {
+                let d = s[(i, j)].denominator();
+                let g = l.clone().gcd(d);
+                l / g * d
+            });
+    let int = |i: usize, j: usize| -> IBig {
+        let v = &s[(i, j)];
+        v.numerator() * IBig::from(&lcm / v.denominator())
+    };
+    let mut g = dashu_int::UBig::ZERO;
+    for i in 0..n {
+        for j in i + 1..n {
+            let m = (int(i, i) * int(j, j) - int(i, j) * int(i, j)).unsigned_abs();
+            // gcd(0, 0) is not defined in dashu
+            g = if g.is_zero() {
+                m
+            } else if m.is_zero() {
+                g
+            } else {
+                g.gcd(m)
+            };
+        }
+    }
+    let delta = root.radicand().clone();
+    let signed = if delta < IBig::ZERO {
+        -IBig::from(g)
+    } else {
+        IBig::from(g)
+    };
+    let (_, reduced) = split_square(&signed);
+    if reduced.is_zero() || reduced.clone().unsigned_abs() >= delta.clone().unsigned_abs() {
+        return root;
+    }
+    let q = root.mul(&root);
+    let q = q
+        .as_rational()
+        .expect("the square of a pure root is rational");
+    let k = sqrt_rational(&(q / RBig::from(reduced.clone())));
+    match k.as_rational() {
+        Some(k) => Quadratic::new(RBig::ZERO, k.clone(), reduced).unwrap_or(root),
+        None => root,
     }
 }
 
@@ -306,6 +367,50 @@ mod tests {
             let v = RBig::from_parts_signed(IBig::from(n), IBig::from(d));
             let r = sqrt_rational(&v);
             assert_eq!(r.clone() * r, Quadratic::rational(v), "{n}/{d}");
+        }
+    }
+
+    /// `x² − 2y²` under integer maps `PᵀSP` whose minors grow with `P`: the planes stay over
+    /// ℚ(√2) (the gcd of the principal minors), not over the square class representative
+    /// that the diagonalization's `−d_b/d_a` carries (`2·k²` with `k` growing with `P`).
+    #[test]
+    fn disguised_plane_pairs_keep_their_least_radicand() {
+        let maps: [[[i64; 4]; 4]; 3] = [
+            [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]],
+            [[3, 7, 1, 0], [5, 2, 0, 1], [1, 4, 9, 2], [8, 1, 3, 5]],
+            [
+                [1009, 2713, 31, 7],
+                [997, -5003, 11, 2],
+                [13, 17, 4099, 5],
+                [-3, 8, 1, 7919],
+            ],
+        ];
+        let s0 = diag(&[1, -2, 0, 0]);
+        let disguised = maps.iter().map(|p| {
+            Matrix::from_fn(4, 4, |i, j| {
+                let mut acc = RBig::ZERO;
+                for k in 0..4 {
+                    for l in 0..4 {
+                        acc += q(p[k][i]) * &s0[(k, l)] * q(p[l][j]);
+                    }
+                }
+                acc
+            })
+        });
+        // aaᵀ − 2bbᵀ with a₀b₁ − a₁b₀ = 1009, a prime above the trial limit: the
+        // diagonalization's radicand is 2·1009²·(a₀² − 2b₀²)²
+        let (a, b) = ([1009, 0, 3, 5], [1, 1, 2, 7]);
+        let direct = Matrix::from_fn(4, 4, |i, j| q(a[i] * a[j] - 2 * b[i] * b[j]));
+        for s in disguised.chain([direct]) {
+            let p = &s;
+            let pair = plane_pair(&s).expect("rank 2");
+            assert_eq!(pair.kind, PlanePairKind::RealConjugate);
+            assert!(multiplies_back(&s, &pair), "{p:?}");
+            let radicand = pair.planes[0]
+                .iter()
+                .find(|v| v.as_rational().is_none())
+                .map(|v| v.radicand().clone());
+            assert_eq!(radicand, Some(IBig::from(2)), "{p:?}");
         }
     }
 
