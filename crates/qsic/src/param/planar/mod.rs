@@ -18,9 +18,13 @@
 //! at the roots of `Q|V`; `V` itself is a component when `Q|V ≡ 0`. Complex conjugate planes
 //! (`δ < 0`) hold no real point off `V`.
 //!
-//! A real conic gets a real point (a rational one by [`find_point`], else one over ℚ(√e); in a
-//! plane over ℚ(√δ) from a congruence diagonalization, over ℚ(√δ, √r) when `r` is no square
-//! there) and is parameterized by the lines through it, `X(u) = 2(yᵀCv)v − (vᵀCv)y`,
+//! A real conic gets a real point, the first of: a rational point of `V ∩ Q` (a rational root
+//! of the binary form `Q|V`; the meeting points lie on both planes, so no conic is solved and
+//! nothing factored); over ℚ a rational point by [`find_point`]; in a plane over ℚ(√δ) one over
+//! ℚ(√δ) from a congruence diagonalization; a point of `V ∩ Q` over ℚ(√D), `D` the
+//! discriminant of `Q|V`; over ℚ the point of [`find_point`] over ℚ(√e), in a plane over ℚ(√δ)
+//! one over ℚ(√δ, √r) from the diagonalization. The conic is parameterized by the lines through
+//! it, `X(u) = 2(yᵀCv)v − (vᵀCv)y`,
 //! `v = e_a + u·e_b`. ℚ(√δ, √r) is written ℚ(γ) with an explicit primitive element: `γ = √δ + √r`
 //! for a rational `r`, `γ = √r` otherwise (`√δ = (γ² − a)/b` for `r = a + b√δ`).
 
@@ -421,7 +425,8 @@ pub(crate) fn plane_pair_curve(
     let other_planes: Vec<Vq> = planes.iter().map(|p| p.l.clone()).collect();
     for (index, plane) in planes.iter_mut().enumerate() {
         let other = (other_planes.len() == 2).then(|| &other_planes[1 - index]);
-        build_plane(plane, other, v_line, delta.as_ref(), &mut components)?;
+        let on_v = v.as_ref().zip(qv.as_ref());
+        build_plane(plane, other, v_line, on_v, delta.as_ref(), &mut components)?;
     }
     let mut curve = Curve {
         classification,
@@ -465,6 +470,7 @@ fn build_plane(
     plane: &mut Plane,
     other: Option<&Vq>,
     v_line: VLine,
+    on_v: Option<(&[Vq; 2], &[Quadratic; 3])>,
     delta: Option<&IBig>,
     components: &mut Vec<Component>,
 ) -> Result<(), Error> {
@@ -605,55 +611,124 @@ fn build_plane(
             }
         }
         _ => {
-            let c = conic_component(plane, delta)?;
+            let given = on_v.and_then(|(v, qv)| point_on_v(v, qv));
+            let c = conic_component(plane, given, delta)?;
             plane.comps.push(push(components, c));
         }
     }
     Ok(())
 }
 
+/// A real point of `Q` on `V = l₁ ∩ l₂`, where the conics of the two planes meet: the roots of
+/// the rational binary form `Q|V = a s² + 2b st + c t²` (`qv = [a, b, c]`).
+enum PointOnV {
+    /// A rational point (`D = b² − ac` a square, a double root included).
+    Rational(Vq),
+    /// `y₀ + √D·y₁`, `D > 0` not a rational square.
+    Root(Vq, Vq, RBig),
+}
+
+/// The meeting points on `V` as a point the geometry gives for free: no conic solving, no
+/// factoring. `None` when they are complex.
+fn point_on_v(v: &[Vq; 2], qv: &[Quadratic; 3]) -> Option<PointOnV> {
+    let [a, b, c] = [0, 1, 2].map(|i| qv[i].as_rational().cloned());
+    let (a, b, c) = (a?, b?, c?);
+    let combine = |s: &RBig, t: &RBig| -> Vq {
+        v[0].iter()
+            .zip(&v[1])
+            .map(|(x, y)| x.scale(s).add(&y.scale(t)))
+            .collect()
+    };
+    if a == RBig::ZERO {
+        return Some(PointOnV::Rational(v[0].clone()));
+    }
+    let d = &b * &b - &a * &c;
+    if d < RBig::ZERO {
+        return None;
+    }
+    let root = sqrt_rational(&d);
+    match root.as_rational() {
+        Some(k) => Some(PointOnV::Rational(combine(&(k - &b), &a))),
+        None => Some(PointOnV::Root(combine(&-b, &a), v[0].clone(), d)),
+    }
+}
+
+/// A real point `y₀ + √r·y₁` of a conic in local coordinates, and the radicand of its
+/// coordinates' field (`r = None`: `y = y₀`).
+type ConicPointFound = (Vq, Vq, Option<Quadratic>, Option<IBig>);
+
 /// The conic `Q|plane` (rank 3): real with a parameterization through a real point, or not.
-fn conic_component(plane: &Plane, delta: Option<&IBig>) -> Result<Component, Error> {
+/// The point is the first of: a rational point on `V` (`given`), a rational point by
+/// Legendre (rational planes) or one over the planes' field (congruence diagonalization), a
+/// point of `V` over a rational `√D`, a point over `√r` from the diagonalization.
+fn conic_component(
+    plane: &Plane,
+    given: Option<PointOnV>,
+    delta: Option<&IBig>,
+) -> Result<Component, Error> {
     let m = plane.mult;
     if !plane.real {
         return Ok(non_real(ComponentKind::Conic, m));
     }
-    // a real point y = y0 + √r·y1 (r = None: y = y0), its coordinates' radicand
-    let (y0, y1, r, rad): (Vq, Vq, Option<Quadratic>, Option<IBig>) = if delta.is_none() {
-        let c: [[RBig; 3]; 3] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| plane.c[(i, j)].as_rational().expect("rational").clone())
-        });
-        match find_point(&c).map_err(|e| Error::Algebra(format!("a conic's point: {e}")))? {
-            ConicPoint::Rational(p) => (p.iter().map(qr).collect(), vec![], None, None),
-            ConicPoint::NoRationalPoint(qp) | ConicPoint::Undecided(qp) => {
-                (qp.coords.to_vec(), vec![], None, Some(qp.delta.clone()))
+    let local = |x: &Vq| plane.e.solve(x).expect("V lies in the plane");
+    // the point of V over ℚ(√D), or over the planes' field when √D lies there
+    let v_root = |y0: &Vq, y1: &Vq, d: &RBig| -> ConicPointFound {
+        let (y0, y1) = (local(y0), local(y1));
+        let dq = qr(d);
+        match sqrt_in_field(&dq, delta) {
+            Some(s) => {
+                let y: Vq = y0.iter().zip(&y1).map(|(a, b)| a.add(&s.mul(b))).collect();
+                let rad = radicand_of(y.iter()).or_else(|| delta.cloned());
+                (y, vec![], None, rad)
             }
-            ConicPoint::NoRealPoint => return Ok(non_real(ComponentKind::Conic, m)),
+            None => (y0, y1, Some(dq), delta.cloned()),
         }
-    } else {
-        let dg = plane.c.diagonalize_congruent().expect("symmetric");
-        let sign = |x: &Quadratic| x.sign().expect("a real field");
-        let mut found: Option<(Vq, Vq, Option<Quadratic>)> = None;
-        for i in 0..3 {
-            for j in 0..3 {
-                if sign(&dg.d[i]) != Sign::Positive || sign(&dg.d[j]) != Sign::Negative {
-                    continue;
+    };
+    let (y0, y1, r, rad): ConicPointFound = match (&given, delta) {
+        (Some(PointOnV::Rational(p)), _) => (local(p), vec![], None, delta.cloned()),
+        (_, None) => {
+            let c: [[RBig; 3]; 3] = std::array::from_fn(|i| {
+                std::array::from_fn(|j| plane.c[(i, j)].as_rational().expect("rational").clone())
+            });
+            match (find_point(&c), &given) {
+                (Ok(ConicPoint::Rational(p)), _) => {
+                    (p.iter().map(qr).collect(), vec![], None, None)
                 }
-                let r = dg.d[i].div(&dg.d[j]).expect("nonzero").neg();
-                let (pi, pj) = (dg.p.column(i), dg.p.column(j));
-                match sqrt_in_field(&r, delta) {
-                    Some(s) => {
-                        let y: Vq = pi.iter().zip(&pj).map(|(a, b)| a.add(&s.mul(b))).collect();
-                        found = Some((y, vec![], None));
+                (Ok(ConicPoint::NoRealPoint), _) => return Ok(non_real(ComponentKind::Conic, m)),
+                (_, Some(PointOnV::Root(y0, y1, d))) => v_root(y0, y1, d),
+                (Ok(ConicPoint::NoRationalPoint(qp) | ConicPoint::Undecided(qp)), _) => {
+                    (qp.coords.to_vec(), vec![], None, Some(qp.delta.clone()))
+                }
+                (Err(e), _) => return Err(Error::Algebra(format!("a conic's point: {e}"))),
+            }
+        }
+        (_, Some(_)) => {
+            let dg = plane.c.diagonalize_congruent().expect("symmetric");
+            let sign = |x: &Quadratic| x.sign().expect("a real field");
+            let mut found: Option<(Vq, Vq, Option<Quadratic>)> = None;
+            for i in 0..3 {
+                for j in 0..3 {
+                    if sign(&dg.d[i]) != Sign::Positive || sign(&dg.d[j]) != Sign::Negative {
+                        continue;
                     }
-                    None if found.is_none() => found = Some((pi, pj, Some(r))),
-                    None => {}
+                    let r = dg.d[i].div(&dg.d[j]).expect("nonzero").neg();
+                    let (pi, pj) = (dg.p.column(i), dg.p.column(j));
+                    match sqrt_in_field(&r, delta) {
+                        Some(s) => {
+                            let y: Vq = pi.iter().zip(&pj).map(|(a, b)| a.add(&s.mul(b))).collect();
+                            found = Some((y, vec![], None));
+                        }
+                        None if found.is_none() => found = Some((pi, pj, Some(r))),
+                        None => {}
+                    }
                 }
             }
-        }
-        match found {
-            None => return Ok(non_real(ComponentKind::Conic, m)),
-            Some((y0, y1, r)) => (y0, y1, r, delta.cloned()),
+            match (found, &given) {
+                (None, _) => return Ok(non_real(ComponentKind::Conic, m)),
+                (Some((y, _, None)), _) => (y, vec![], None, delta.cloned()),
+                (Some(_), Some(PointOnV::Root(y0, y1, d))) => v_root(y0, y1, d),
+                (Some((y0, y1, r)), _) => (y0, y1, r, delta.cloned()),
+            }
         }
     };
     let ext = Ext::new(rad.as_ref().or(delta), r.as_ref());

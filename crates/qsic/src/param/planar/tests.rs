@@ -209,3 +209,39 @@ fn case_30_at_real_quadratic_lambda_is_two_acnodes() {
         }
     }
 }
+
+/// The largest degree over ℚ of the field of a parameterization's coefficients.
+fn field_degree(p: &ComponentParam) -> usize {
+    let coefficient_degree = |n: &Number| n.field().map_or(1, |f| f.modulus().degree().unwrap());
+    match p {
+        ComponentParam::Rational { x, .. } => x
+            .iter()
+            .flat_map(|c| c.coeffs().iter())
+            .map(coefficient_degree)
+            .max()
+            .unwrap_or(1),
+        _ => panic!("a conic has a rational parameterization"),
+    }
+}
+
+/// Two secant conics in the planes `x = ±√2·y` meeting at the rational points
+/// `(0 : 0 : ±1 : 1)` of their common line (case 13: `x² − 2y² = 0` against the sphere
+/// `x² + y² + z² − w²`), also under integer changes of coordinates: each conic goes through
+/// a meeting point, so it is parameterized over the planes' field ℚ(√2), degree 2 — a point
+/// from the conic's own diagonalization would need a second square root (degree 4).
+#[test]
+fn secant_conics_through_rational_meeting_points_stay_in_the_planes_field() {
+    for t in &MOVES {
+        let a = transformed("x^2-2*y^2", t);
+        let b = transformed("x^2+y^2+z^2-w^2", t);
+        let curve = super::super::parameterize(&a, &b).unwrap();
+        assert_eq!(curve.classification.case, Some(13), "{t:?}");
+        let conics: Vec<&Component> = curve.components.iter().filter(|c| c.real).collect();
+        assert_eq!(conics.len(), 2);
+        for c in conics {
+            let p = c.param.as_ref().expect("real");
+            assert!(p.lies_on(a.matrix()) && p.lies_on(b.matrix()));
+            assert_eq!(field_degree(p), 2, "{t:?}");
+        }
+    }
+}
