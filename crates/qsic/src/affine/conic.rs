@@ -18,8 +18,8 @@
 //!   `det F·μ² − τκ·μ + det G·κ² = 0`, `τ = F₁₁G₂₂ + F₂₂G₁₁ − 2F₁₂G₁₂`: in `K(√D)`,
 //!   `D = τ² − 4 det F det G` (`D = 0`: a circle); the axis of `μ` spans the kernel of
 //!   `μF − κG`. Over `K = ℚ` they are exact in ℚ(√D); over a larger `K` exact in `K` when `D`
-//!   is the square of a rational, else `μ` is `p + q·sqrt(D)` ([`Surd`]) and the directions
-//!   are decimals;
+//!   is the square of a rational, else `μ = (sτ ± √D)/|2Δ det F|`, `s` the sign of `Δ det F`
+//!   ([`Surd`], no inverse in `K`) and the directions are decimals;
 //! * parabola: with the double root `u₀` of `W` moved to `t = ∞` (`u = u₀ + 1/t`) the affine
 //!   points are `a + bt + dt²`: the axis is `d` (pointing into the parabola), the vertex is at
 //!   `t = −(b·d)/(2d·d)`, the focal length `f` has `f² = |b⊥|⁴/(16|d|²)`, `b⊥` the part of `b`
@@ -34,15 +34,19 @@ use crate::param::{Component, ComponentParam, Number, Point};
 use qsic_algebra::field::Quadratic;
 use qsic_algebra::{Field, IBig, RBig, Ring, Sign};
 
-/// `p + q·√d` with `p, q, d` in the conic's field and `d ≥ 0` (not known to be a square).
+/// `(p + q·√d)/den` with `p, q, d, den` in the conic's field, `d ≥ 0` (not known to be a
+/// square) and `den > 0`; `den = 1` whenever `q = 0`. The denominator is kept apart because
+/// an inverse in a field of degree n is about n times as long as the element.
 #[derive(Clone, Debug)]
 pub struct Surd {
-    /// The rational part.
+    /// The rational part (over `den`).
     pub p: Number,
     /// The coefficient of the root (zero: the value is `p`).
     pub q: Number,
     /// The radicand, `≥ 0`.
     pub d: Number,
+    /// The positive denominator.
+    pub den: Number,
 }
 
 impl Surd {
@@ -52,6 +56,7 @@ impl Surd {
             p: v,
             q: Number::zero(),
             d: Number::zero(),
+            den: Number::one(),
         }
     }
 
@@ -60,22 +65,51 @@ impl Surd {
         self.q.is_zero().then_some(&self.p)
     }
 
-    /// A float approximation.
-    pub fn to_f64(&self) -> f64 {
-        approx(&self.p) + approx(&self.q) * approx(&self.d).max(0.0).sqrt()
+    /// `−value`.
+    pub fn neg(&self) -> Surd {
+        Surd {
+            p: self.p.neg(),
+            q: self.q.neg(),
+            d: self.d.clone(),
+            den: self.den.clone(),
+        }
     }
 
-    /// The value as an expression: `names.number(p)`, or `p + q*sqrt(d)` with each part an
-    /// expression in parentheses.
+    /// A float approximation (the quotients taken exactly at a rational point near `α`, so
+    /// parts far beyond the range of `f64` still give the value).
+    pub fn to_f64(&self) -> f64 {
+        if self.den.is_one() {
+            return approx(&self.p) + approx(&self.q) * approx(&self.d).max(0.0).sqrt();
+        }
+        let den = near(&self.den);
+        let p = (near(&self.p) / &den).to_f64().value();
+        let q = near(&self.q) / &den;
+        let root = (&q * &q * near(&self.d)).to_f64().value().max(0.0).sqrt();
+        if q < RBig::ZERO {
+            p - root
+        } else {
+            p + root
+        }
+    }
+
+    /// The value as an expression: `names.number(p)`, or `(p) + (q)*sqrt(d)`, over `(den)`
+    /// when that is not 1, each part an expression in parentheses.
     pub fn expr(&self, names: &mut Names) -> String {
         match self.as_number() {
             Some(v) => names.number(v),
-            None => format!(
-                "({}) + ({})*sqrt({})",
-                names.number(&self.p),
-                names.number(&self.q),
-                names.number(&self.d)
-            ),
+            None => {
+                let sum = format!(
+                    "({}) + ({})*sqrt({})",
+                    names.number(&self.p),
+                    names.number(&self.q),
+                    names.number(&self.d)
+                );
+                if self.den.is_one() {
+                    sum
+                } else {
+                    format!("({sum})/({})", names.number(&self.den))
+                }
+            }
         }
     }
 }
@@ -327,7 +361,15 @@ pub fn affine_conic(component: &Component, chart: &Chart) -> Result<Option<Affin
                 conic_form(&zb, &zb),
             ];
             let g = [dot(&va, &va), dot(&va, &vb), dot(&vb, &vb)];
-            central(centre, s == Sign::Positive, &f, &g, &kappa, &va, &vb)?
+            central(
+                centre,
+                s == Sign::Positive,
+                &f,
+                &g,
+                [&kappa, &delta],
+                &va,
+                &vb,
+            )?
         }
     };
     Ok(Some(AffineConic {
@@ -376,7 +418,7 @@ fn central(
     hyperbola: bool,
     f: &[Number; 3],
     g: &[Number; 3],
-    kappa: &Number,
+    [kappa, delta]: [&Number; 2],
     va: &[Number; 3],
     vb: &[Number; 3],
 ) -> Result<ConicShape, Error> {
@@ -402,14 +444,19 @@ fn central(
         .add(&f[2].mul(&g[0]))
         .sub(&int(2).mul(&f[1]).mul(&g[1]));
     let disc = tau.mul(&tau).sub(&int(4).mul(&det_f).mul(&det_g));
-    // μ = p ± c·√D, p = κτ/(2 det F), c = |κ/(2 det F)|
+    // μ = p ± c·√D, p = κτ/(2 det F), c = |κ/(2 det F)|; κ = 1/Δ
     let two_det_f = int(2).mul(&det_f);
-    let p = div(&kappa.mul(&tau), &two_det_f)?;
-    let mut c = div(kappa, &two_det_f)?;
-    if c.sign() == Sign::Negative {
-        c = c.neg();
-    }
+    let p_c = || -> Result<(Number, Number), Error> {
+        let p = div(&kappa.mul(&tau), &two_det_f)?;
+        let c = div(kappa, &two_det_f)?;
+        Ok(if c.sign() == Sign::Negative {
+            (p, c.neg())
+        } else {
+            (p, c)
+        })
+    };
     if disc.is_zero() {
+        let (p, _) = p_c()?;
         if hyperbola {
             return Err(Error::Algebra("affine conic: a circular hyperbola".into()));
         }
@@ -433,18 +480,23 @@ fn central(
     } else {
         None
     };
+    let pc = root.as_ref().map(|_| p_c()).transpose()?;
+    // without √D in the field: μ = (sτ ± √D)/|2Δ det F|, s the sign of 2Δ det F (no inverse)
+    let den = two_det_f.mul(&plain(delta));
+    let s = int(if den.sign() == Sign::Negative { -1 } else { 1 });
     let axis = |sign: i64| -> Result<Axis, Error> {
-        let (mu, semi): (Option<Number>, Surd) = match &root {
-            Some(r) => {
-                let mu = p.add(&int(sign).mul(&c).mul(r));
+        let (mu, semi): (Option<Number>, Surd) = match (&root, &pc) {
+            (Some(r), Some((p, c))) => {
+                let mu = p.add(&int(sign).mul(c).mul(r));
                 (Some(mu.clone()), Surd::number(plain(&mu)))
             }
-            None => (
+            _ => (
                 None,
                 Surd {
-                    p: plain(&p),
-                    q: plain(&int(sign).mul(&c)),
+                    p: plain(&s.mul(&tau)),
+                    q: int(sign),
                     d: plain(&disc),
+                    den: plain(&s.mul(&den)),
                 },
             ),
         };
@@ -479,11 +531,7 @@ fn central(
             direction,
         } = smaller;
         let conjugate = Axis {
-            semi_axis2: Surd {
-                p: s.p.neg(),
-                q: s.q.neg(),
-                d: s.d,
-            },
+            semi_axis2: s.neg(),
             direction,
         };
         ConicShape::Hyperbola {
@@ -555,13 +603,18 @@ fn float_axis(
 /// cancelling coefficients: the representative at a rational within `2⁻²⁰⁰` of `α`, exactly,
 /// then rounded (display only; [`Number::to_f64`] uses `2⁻⁶⁴`).
 pub fn approx(v: &Number) -> f64 {
+    near(v).to_f64().value()
+}
+
+/// `v` exactly, or its representative at a rational point within `2⁻²⁰⁰` of `α`.
+fn near(v: &Number) -> RBig {
     match v.field().filter(|_| v.numerator().len() > 1) {
-        None => constant(v).to_f64().value(),
+        None => constant(v),
         Some(field) => {
             let width = RBig::from_parts_signed(1.into(), IBig::ONE << 200);
             let iv = field.alpha().refined_interval(&width);
             let mid = (iv.lo() + iv.hi()) / RBig::from(2);
-            v.representative().eval(&mid).to_f64().value()
+            v.representative().eval(&mid)
         }
     }
 }
