@@ -1,5 +1,6 @@
-//! Balanced rational parameterizations: the parameter scaled by a power of two so that the
-//! curve shows for moderate `u`.
+//! Balanced parameterizations: the parameter scaled by a power of two so that the curve shows
+//! for moderate `u` — rational components, and Levin's forms `a ± d√s` (on `a`, or `s`), whose
+//! floats otherwise leave the range of `f64` under big disguises.
 //!
 //! A rational component `X(u) = Σ cᵢuⁱ` of homogeneous degree `D` (no common factor, so
 //! `c₀ ≠ 0` is the point at `u = 0` and `c_D ≠ 0` the point at `u = ∞`) traces the same curve
@@ -18,7 +19,9 @@
 //! float value of an element of a number field where it is finite): a choice of
 //! presentation, not a decision; every output is the same curve exactly.
 
-use super::curve::{ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue, RealPiece};
+use super::curve::{
+    ComponentParam, Curve, LevinForm, Number, NumberPoly, ParamRange, ParamValue, RealPiece,
+};
 use qsic_algebra::roots::RootInterval;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring};
 
@@ -26,18 +29,13 @@ use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring};
 /// check of the issue allows `2²⁰`, the rounding of `k` leaves at most `2^(D/2) = 2²`.
 pub const SLACK: f64 = 12.0;
 
-/// Balances every rational component of `curve` (module docs).
+/// Balances every rational component and every Levin form of `curve` (module docs).
 pub(super) fn balance_curve(curve: &mut Curve) {
     for i in 0..curve.components.len() {
-        let Some(ComponentParam::Rational { x, degree }) = &curve.components[i].param else {
+        let Some((param, k)) = curve.components[i].param.as_ref().and_then(balanced) else {
             continue;
         };
-        let Some(k) = balancing_exponent(x, *degree) else {
-            continue;
-        };
-        let degree = *degree;
-        let scaled = scaled_point(x, degree, k);
-        curve.components[i].param = Some(ComponentParam::Rational { x: scaled, degree });
+        curve.components[i].param = Some(param);
         for piece in &mut curve.pieces {
             if let RealPiece::Curve {
                 component, arcs, ..
@@ -56,6 +54,56 @@ pub(super) fn balance_curve(curve: &mut Curve) {
     }
 }
 
+/// `param` under `u ↦ 2ᵏu` and `k`, `None` when it is balanced already. A Levin form
+/// `a ± d√s` (degrees `D`, `D − 2`, 4) is balanced on `a`, or on `s` where `a` has a zero end
+/// vector: `a(2ᵏu) ± d(2ᵏu)√s(2ᵏu)` is the same curve, and for `k < 0` the homogeneous
+/// factors `2^(−kD)`, `2^(−k(D−2))`, `2^(−4k)` agree (`√s` takes half of the last), so both
+/// sheets are kept; its alternate form is scaled alike.
+fn balanced(param: &ComponentParam) -> Option<(ComponentParam, i64)> {
+    match param {
+        ComponentParam::Point(_) => None,
+        ComponentParam::Rational { x, degree } => {
+            let k = balancing_exponent(x, *degree)?;
+            let x = scaled_point(x, *degree, k);
+            Some((ComponentParam::Rational { x, degree: *degree }, k))
+        }
+        ComponentParam::Levin {
+            a,
+            d,
+            degree,
+            alternate,
+            s,
+        } => {
+            let k = balancing_exponent(a, *degree).or_else(|| form_exponent(s, 4))?;
+            let low = degree.saturating_sub(2);
+            let alternate = alternate.as_ref().map(|f| {
+                Box::new(LevinForm {
+                    a: scaled_point(&f.a, f.degree, k),
+                    d: scaled_point(&f.d, f.degree.saturating_sub(2), k),
+                    degree: f.degree,
+                })
+            });
+            Some((
+                ComponentParam::Levin {
+                    a: scaled_point(a, *degree, k),
+                    d: scaled_point(d, low, k),
+                    degree: *degree,
+                    alternate,
+                    s: scaled_form(s, 4, k),
+                },
+                k,
+            ))
+        }
+    }
+}
+
+/// The `k` that balances the end coefficients of one binary form of degree `degree`.
+fn form_exponent(p: &NumberPoly, degree: usize) -> Option<i64> {
+    let lo = number_log2(&p.coeff(0))?;
+    let hi = number_log2(&p.coeff(degree))?;
+    exponent_of_gap(lo - hi, degree)
+}
+
 /// The `k` of the module docs, `None` when the vectors are within [`SLACK`] already (or a
 /// vector is zero, or an estimate is not available).
 pub(super) fn balancing_exponent(x: &[NumberPoly; 4], degree: usize) -> Option<i64> {
@@ -64,8 +112,12 @@ pub(super) fn balancing_exponent(x: &[NumberPoly; 4], degree: usize) -> Option<i
     }
     let lo = vector_log2(x.iter().map(|p| p.coeff(0)))?;
     let hi = vector_log2(x.iter().map(|p| p.coeff(degree)))?;
-    let gap = lo - hi;
-    if gap.abs() <= SLACK {
+    exponent_of_gap(lo - hi, degree)
+}
+
+/// `round(gap/degree)`, `None` within [`SLACK`] (or a zero `k`).
+fn exponent_of_gap(gap: f64, degree: usize) -> Option<i64> {
+    if degree == 0 || gap.abs() <= SLACK {
         return None;
     }
     let k = (gap / degree as f64).round();
@@ -125,16 +177,19 @@ fn ibig_log2(v: &IBig) -> f64 {
 
 /// `X(2ᵏu)` (module docs): `cᵢ·2^(ki)` for `k > 0`, `cᵢ·2^(−k(D−i))` for `k < 0`.
 pub(super) fn scaled_point(x: &[NumberPoly; 4], degree: usize, k: i64) -> [NumberPoly; 4] {
+    std::array::from_fn(|j| scaled_form(&x[j], degree, k))
+}
+
+/// `p(2ᵏu)` for a binary form of homogeneous degree `degree`, times `2^(−kD)` for `k < 0`.
+fn scaled_form(p: &NumberPoly, degree: usize, k: i64) -> NumberPoly {
     let e = k.unsigned_abs() as usize;
-    std::array::from_fn(|j| {
-        let c: Vec<Number> = (0..=degree)
-            .map(|i| {
-                let shift = if k > 0 { e * i } else { e * (degree - i) };
-                times_power_of_two(&x[j].coeff(i), shift)
-            })
-            .collect();
-        Poly::new(c)
-    })
+    let c: Vec<Number> = (0..=degree)
+        .map(|i| {
+            let shift = if k > 0 { e * i } else { e * (degree - i) };
+            times_power_of_two(&p.coeff(i), shift)
+        })
+        .collect();
+    Poly::new(c)
 }
 
 /// `c·2^e`.
@@ -279,5 +334,61 @@ mod tests {
         assert!((moved.to_f64() - 2f64.sqrt()).abs() < 1e-12);
         assert!(moved.is_root_of(&Poly::from_i64s(&[-2, 0, 1])));
         assert!(moved.is_valid());
+    }
+
+    /// A Levin form (case 3, `2xy + z² + w²` and `−x² + y² + z² + 2w²`) put out of balance
+    /// by `u ↦ 2⁴⁰u`: balancing brings `k = −40` back (on `a`), and the form — `a`, `d`, `s`
+    /// and the alternate, each of its own degree — still lies on both quadrics, so every
+    /// sheet is kept; the balanced one is left alone.
+    #[test]
+    fn levin_forms_are_balanced_on_both_sheets() {
+        use crate::io::parse_quadric;
+        let (qa, qb) = (
+            parse_quadric("2*x*y+z^2+w^2").unwrap(),
+            parse_quadric("-x^2+y^2+z^2+2*w^2").unwrap(),
+        );
+        let curve = super::super::parameterize(&qa, &qb).unwrap();
+        let param = curve.components[0].param.clone().unwrap();
+        let ComponentParam::Levin {
+            a,
+            d,
+            degree,
+            alternate,
+            s,
+        } = param
+        else {
+            panic!("a smooth quartic has Levin's form");
+        };
+        assert!(balanced(&ComponentParam::Levin {
+            a: a.clone(),
+            d: d.clone(),
+            degree,
+            alternate: alternate.clone(),
+            s: s.clone(),
+        })
+        .is_none());
+        let k = 40;
+        let out_of_balance = ComponentParam::Levin {
+            a: scaled_point(&a, degree, k),
+            d: scaled_point(&d, degree - 2, k),
+            degree,
+            alternate: alternate.map(|f| {
+                Box::new(LevinForm {
+                    a: scaled_point(&f.a, f.degree, k),
+                    d: scaled_point(&f.d, f.degree - 2, k),
+                    degree: f.degree,
+                })
+            }),
+            s: scaled_form(&s, 4, k),
+        };
+        assert!(out_of_balance.lies_on(qa.matrix()) && out_of_balance.lies_on(qb.matrix()));
+        let (back, k2) = balanced(&out_of_balance).expect("out of balance");
+        assert!((k2 + k).abs() <= 1, "k = {k2}");
+        assert!(back.lies_on(qa.matrix()) && back.lies_on(qb.matrix()));
+        let ComponentParam::Levin { a, alternate, .. } = &back else {
+            panic!("still Levin's form");
+        };
+        assert!(balancing_exponent(a, degree).is_none());
+        assert!(alternate.is_some());
     }
 }
