@@ -411,6 +411,13 @@ fn parabola(
     })
 }
 
+/// The squared semi-axes `μ` of [`central`]: in the field (`√D`, and `p`, `c` of
+/// `μ = p ± c·√D`), or over a denominator (`p`, `D`, `den` of `μ = (p ± √D)/den`).
+enum Mu<'a> {
+    InField(&'a Number, (Number, Number)),
+    Over(Number, Number, Number),
+}
+
 /// An ellipse (`hyperbola = false`) or hyperbola about `centre`: `ZᵀFZ = κ` in the basis
 /// `v_a`, `v_b` of the plane's directions, whose Gram matrix is `G` (`[11, 12, 22]`).
 fn central(
@@ -480,23 +487,29 @@ fn central(
     } else {
         None
     };
-    let pc = root.as_ref().map(|_| p_c()).transpose()?;
-    // without √D in the field: μ = (sτ ± √D)/|2Δ det F|, s the sign of 2Δ det F (no inverse)
-    let den = two_det_f.mul(&plain(delta));
-    let s = int(if den.sign() == Sign::Negative { -1 } else { 1 });
+    // in K: μ = p ± c·√D; else μ = (sτ ± √D)/|2Δ det F|, s the sign of 2Δ det F (no
+    // inverse in K), its parts made once for both axes
+    let form = match &root {
+        Some(r) => Mu::InField(r, p_c()?),
+        None => {
+            let den = two_det_f.mul(&plain(delta));
+            let s = int(if den.sign() == Sign::Negative { -1 } else { 1 });
+            Mu::Over(plain(&s.mul(&tau)), plain(&disc), plain(&s.mul(&den)))
+        }
+    };
     let axis = |sign: i64| -> Result<Axis, Error> {
-        let (mu, semi): (Option<Number>, Surd) = match (&root, &pc) {
-            (Some(r), Some((p, c))) => {
+        let (mu, semi): (Option<Number>, Surd) = match &form {
+            Mu::InField(r, (p, c)) => {
                 let mu = p.add(&int(sign).mul(c).mul(r));
                 (Some(mu.clone()), Surd::number(plain(&mu)))
             }
-            _ => (
+            Mu::Over(p, d, den) => (
                 None,
                 Surd {
-                    p: plain(&s.mul(&tau)),
+                    p: p.clone(),
                     q: int(sign),
-                    d: plain(&disc),
-                    den: plain(&s.mul(&den)),
+                    d: d.clone(),
+                    den: den.clone(),
                 },
             ),
         };

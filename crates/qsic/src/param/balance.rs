@@ -22,6 +22,8 @@
 use super::curve::{
     ComponentParam, Curve, LevinForm, Number, NumberPoly, ParamRange, ParamValue, RealPiece,
 };
+use super::sample::convert::log2_estimate;
+use qsic_algebra::field::NumberField;
 use qsic_algebra::roots::RootInterval;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring};
 
@@ -74,9 +76,10 @@ fn balanced(param: &ComponentParam) -> Option<(ComponentParam, i64)> {
             alternate,
             s,
         } => {
-            let k = rough_exponent(a, *degree).or_else(|| {
-                let lo = rough_log2(&s.coeff(0))?;
-                let hi = rough_log2(&s.coeff(4))?;
+            let mut alphas = Vec::new();
+            let k = rough_exponent(a, *degree, &mut alphas).or_else(|| {
+                let lo = log2_estimate(&s.coeff(0), &mut alphas)?;
+                let hi = log2_estimate(&s.coeff(4), &mut alphas)?;
                 exponent_of_gap_beyond(lo - hi, 4, LEVIN_SLACK)
             })?;
             let low = degree.saturating_sub(2);
@@ -101,7 +104,7 @@ fn balanced(param: &ComponentParam) -> Option<(ComponentParam, i64)> {
     }
 }
 
-/// Levin's forms are balanced when the rough estimates ([`rough_log2`]) put their end vectors
+/// Levin's forms are balanced when the rough estimates ([`log2_estimate`]: bit lengths) put their end vectors
 /// further apart than `2^LEVIN_SLACK`: far enough that the forms of ordinary pairs are left as
 /// they are and cost only the estimates (~1 % of `parameterize` on random pairs), near enough
 /// that a big disguise's forms, whose parts otherwise span more than the `2¹⁸⁰⁰` that floats
@@ -109,48 +112,19 @@ fn balanced(param: &ComponentParam) -> Option<(ComponentParam, i64)> {
 pub const LEVIN_SLACK: f64 = 64.0;
 
 /// The `k` that balances the end vectors of `x` by the rough estimates, `None` within
-/// [`LEVIN_SLACK`].
-fn rough_exponent(x: &[NumberPoly; 4], degree: usize) -> Option<i64> {
-    let norm = |i: usize| {
+/// [`LEVIN_SLACK`]; `alphas` keeps each field's `log₂|α|`.
+fn rough_exponent(
+    x: &[NumberPoly; 4],
+    degree: usize,
+    alphas: &mut Vec<(NumberField, f64)>,
+) -> Option<i64> {
+    let mut norm = |i: usize| {
         x.iter()
-            .filter_map(|p| rough_log2(&p.coeff(i)))
+            .filter_map(|p| log2_estimate(&p.coeff(i), alphas))
             .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))))
     };
-    exponent_of_gap_beyond(norm(0)? - norm(degree)?, degree, LEVIN_SLACK)
-}
-
-/// An upper estimate of `log₂|c|` from bit lengths alone (no float of `α`, no refinement):
-/// the numerator's coefficients in the power basis with `log₂|α|` counted (half the bits of
-/// `δ` for `α = ±√δ`, else Cauchy's bound), less the denominator's bits. `None` for zero.
-fn rough_log2(c: &Number) -> Option<f64> {
-    use dashu_int::ops::BitTest;
-    // a zero representative (deciding zero in ℚ(α) costs a sign; an estimate needs none)
-    if c.numerator().iter().all(|v| v.is_zero()) {
-        return None;
-    }
-    let alpha = c
-        .field()
-        .filter(|_| c.numerator().len() > 1)
-        .map_or(0.0, |k| {
-            let alpha = k.alpha();
-            match alpha.poly().coeffs() {
-                [c0, c1, c2] if c1.is_zero() && *c2 == IBig::ONE => 0.5 * c0.bit_len() as f64,
-                // Cauchy's bound |α| ≤ 1 + max|cᵢ/cₙ|
-                [lower @ .., lead] => {
-                    let top = lower.iter().map(|v| v.bit_len()).max().unwrap_or(0) as f64;
-                    (top - (lead.bit_len() as f64 - 1.0)).max(0.0) + 1.0
-                }
-                [] => 0.0,
-            }
-        });
-    let top = c
-        .numerator()
-        .iter()
-        .enumerate()
-        .filter(|(_, v)| !v.is_zero())
-        .map(|(j, v)| v.bit_len() as f64 + j as f64 * alpha)
-        .fold(f64::NEG_INFINITY, f64::max);
-    Some(top - (c.denominator().bit_len() as f64 - 1.0))
+    let lo = norm(0)?;
+    exponent_of_gap_beyond(lo - norm(degree)?, degree, LEVIN_SLACK)
 }
 
 /// The `k` of the module docs, `None` when the vectors are within [`SLACK`] already (or a
@@ -443,7 +417,7 @@ mod tests {
         let ComponentParam::Levin { a, alternate, .. } = &back else {
             panic!("still Levin's form");
         };
-        assert!(rough_exponent(a, degree).is_none());
+        assert!(rough_exponent(a, degree, &mut Vec::new()).is_none());
         assert!(alternate.is_some());
     }
 }

@@ -423,9 +423,9 @@ pub(crate) fn plane_pair_curve(
         v_line = VLine::Component(0);
     }
     let other_planes: Vec<Vq> = planes.iter().map(|p| p.l.clone()).collect();
+    let on_v = v.as_ref().zip(qv.as_ref());
     for (index, plane) in planes.iter_mut().enumerate() {
         let other = (other_planes.len() == 2).then(|| &other_planes[1 - index]);
-        let on_v = v.as_ref().zip(qv.as_ref());
         build_plane(plane, other, v_line, on_v, delta.as_ref(), &mut components)?;
     }
     let mut curve = Curve {

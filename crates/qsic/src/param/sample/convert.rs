@@ -19,7 +19,10 @@ use qsic_algebra::{IBig, Ring};
 /// An upper estimate of `log₂|c|` from the bit lengths of its numerator's coefficients (a
 /// polynomial in the field's generator `α`), of `α` and of its denominator; `None` for zero.
 /// `log₂ max(|α|, 1)` comes from `alphas`, one entry per field met.
-pub(super) fn log2_estimate(c: &Number, alphas: &mut Vec<(NumberField, f64)>) -> Option<f64> {
+pub(in crate::param) fn log2_estimate(
+    c: &Number,
+    alphas: &mut Vec<(NumberField, f64)>,
+) -> Option<f64> {
     use dashu_int::ops::BitTest;
     let coeffs = c.numerator();
     let alpha = match c.field().filter(|_| coeffs.len() > 1) {

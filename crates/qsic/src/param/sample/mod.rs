@@ -53,7 +53,7 @@
 //! (`(x/w, y/w, z/w)` for the default).
 
 mod chart;
-mod convert;
+pub(super) mod convert;
 mod crossings;
 mod eval;
 mod kernels;
