@@ -412,6 +412,17 @@ mod tests {
                 .map(|v| v.radicand().clone());
             assert_eq!(radicand, Some(IBig::from(2)), "{p:?}");
         }
+        // complex conjugate planes x = ±√−2·y: the gcd signed as δ < 0
+        let (a, b) = ([1009, 0, 3, 5], [1, 1, 2, 7]);
+        let s = Matrix::from_fn(4, 4, |i, j| q(a[i] * a[j] + 2 * b[i] * b[j]));
+        let pair = plane_pair(&s).expect("rank 2");
+        assert_eq!(pair.kind, PlanePairKind::ComplexConjugate);
+        assert!(multiplies_back(&s, &pair));
+        let radicand = pair.planes[0]
+            .iter()
+            .find(|v| v.as_rational().is_none())
+            .map(|v| v.radicand().clone());
+        assert_eq!(radicand, Some(IBig::from(-2)));
     }
 
     #[test]
