@@ -6,8 +6,8 @@
 //!
 //! Group `motion_rigid` (README, "Moving quadrics"): rigid motions built by
 //! `qsic::motion::rigid` — two ellipsoids under a translation, a rotation (Cayley), a screw
-//! motion; a cylinder and a cone turning — each for `variations` and for the first contact
-//! with its points (`first_contact` + `contact_points`).
+//! motion; a cylinder and a cone turning — each for `variations`, for the first contact
+//! (`first_contact`) and for the first contact with its points (`+ contact_points`).
 //!
 //! Group `motion_random`, only with `QSIC_BENCH_RANDOM=1` (slow before the fast instants):
 //! random moving pencils, entries of degree 1, 2, 4 in `t` with 3-bit and 64-bit
@@ -126,6 +126,15 @@ fn bench_families(c: &mut Criterion) {
     for (name, a, b) in rigid_families() {
         g.bench_function(format!("{name}/motion"), |bench| {
             bench.iter(|| black_box(variations(black_box(&a), black_box(&b))))
+        });
+        g.bench_function(format!("{name}/first_contact"), |bench| {
+            bench.iter(|| {
+                black_box(first_contact(
+                    black_box(&a),
+                    black_box(&b),
+                    &TimeRange::all(),
+                ))
+            })
         });
         g.bench_function(format!("{name}/contact"), |bench| {
             bench.iter(|| black_box(contact(black_box(&a), black_box(&b))))

@@ -28,6 +28,7 @@ pub use super::contact_point::{
     common_points_at, common_points_at_within, contact_points, contact_points_within, CommonLocus,
     CommonPoint, CommonPointKind, ContactPoints,
 };
+use super::ellipsoid_contact::{first_contact_of_ellipsoids, EllipsoidContact};
 use super::instants::pencil_entries;
 pub use super::range::{FirstContact, TimeRange};
 use super::{irrational, irrational_fast, InstantType, Motion, MovingPencil};
@@ -95,7 +96,25 @@ pub fn first_contact_within(
     first_contact_of(&pencil, range, budget)
 }
 
-/// [`first_contact_within`] on a pencil, classifying only what the answer needs: the
+/// [`first_contact_within`] on a pencil: the one dispatch point between the ellipsoids'
+/// accelerator (module `ellipsoid_contact`: two ellipsoids throughout the range, separated
+/// at its start, read from the roots of `f` alone) and the class walk
+/// [`first_contact_by_class`], which answers whatever the accelerator declines.
+///
+/// # Errors
+/// As [`first_contact_within`].
+pub fn first_contact_of(
+    pencil: &MovingPencil,
+    range: &TimeRange,
+    budget: &Budget,
+) -> Result<Option<FirstContact>, Error> {
+    match first_contact_of_ellipsoids(pencil, range, budget)? {
+        EllipsoidContact::Decided(answer) => Ok(answer),
+        EllipsoidContact::Declined => first_contact_by_class(pencil, range, budget),
+    }
+}
+
+/// The reference of [`first_contact_of`], classifying only what the answer needs: the
 /// candidate instants of the whole line in order, and for each, the interval after it (a
 /// rational sample) before the instant itself — where that interval has a real point the
 /// instant is the answer by closedness, unclassified — and the instant only where it does
@@ -103,12 +122,11 @@ pub fn first_contact_within(
 /// (the generic condition of [`MovingPencil::variations`]), any other is classified over
 /// `ℚ(α)`. The walk stops at the first contact. It answers what [`first_contact_in`] answers
 /// from the whole timeline (`tests::lazy_first_contact_equals_the_timeline_route`), and is
-/// the route of [`first_contact`]. Gain (callgrind, one `qsic contact --batch -` line):
-/// `cylinder_cone_rotating` 223 M → 17 M, `ellipsoids_rotation` 153 M → 139 M.
+/// the route of [`first_contact`] wherever the ellipsoids' accelerator declines.
 ///
 /// # Errors
 /// As [`first_contact_within`].
-pub fn first_contact_of(
+pub fn first_contact_by_class(
     pencil: &MovingPencil,
     range: &TimeRange,
     budget: &Budget,

@@ -63,7 +63,7 @@ use qsic_algebra::field::number_field::{NumberField, NumberFieldElement as K};
 use qsic_algebra::matrix::{Inertia, MatrixPencil};
 use qsic_algebra::roots::simplest_between;
 use qsic_algebra::{AlgebraicReal, IBig, Poly, RBig, Ring, Sign};
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 type KPoly = Poly<K>;
 
@@ -86,8 +86,9 @@ pub(crate) struct PencilPolys {
     principal3: [TPoly; 4],
     /// `v³·m(u/v)` for each principal `3×3` minor `m`, with `S₁ = v·λ − u`: the minors at
     /// the double root as integer polynomials in `t`, made on first use (their zeros at `α`
-    /// are those of the minors at `λ₀`, whatever the orientation).
-    minors3_at_double: OnceLock<Vec<Poly>>,
+    /// are those of the minors at `λ₀`, whatever the orientation, so the oriented copies of
+    /// [`Self::oriented`] share them).
+    minors3_at_double: Arc<OnceLock<Vec<Poly>>>,
 }
 
 impl PencilPolys {
@@ -117,7 +118,7 @@ impl PencilPolys {
             s1,
             psc0,
             zero_tests: ZeroTests::default(),
-            minors3_at_double: OnceLock::new(),
+            minors3_at_double: Arc::default(),
         })
     }
 

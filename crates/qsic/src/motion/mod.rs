@@ -41,6 +41,7 @@
 pub mod contact;
 mod contact_point;
 mod contact_point_fast;
+mod ellipsoid_contact;
 mod instants;
 mod irrational;
 mod irrational_fast;
