@@ -38,6 +38,7 @@ pub mod pencil;
 pub mod quadric;
 pub mod shapes;
 pub mod solids;
+pub mod vocabulary;
 
 pub use classify::{
     classify, classify_allowing_zero, classify_single, classify_within, Classification,
@@ -70,11 +71,8 @@ pub mod test_support {
         a: &Quadric,
         b: &Quadric,
     ) -> Option<(Classification, crate::affine::AffineCurve)> {
-        let chart = crate::affine::Chart::default();
-        Some((
-            crate::natural::classification(a, b)?,
-            crate::natural::affine_curve(a, b, &chart)?,
-        ))
+        let p = crate::natural::answer(a, b)?;
+        Some((crate::classify::from_natural(p.class), p.curve))
     }
 
     /// [`crate::solids::solid_relation`] read from the pencil alone, without the closed form

@@ -9,21 +9,11 @@
 //! descendant is the ordinary shape of a Rust tree and is not an edge; otherwise the use of
 //! `B` by `A` is an edge between the two children of their lowest common ancestor that hold
 //! them (`param::sample::chart` using `affine::curve` is `param → affine` among the
-//! children of the crate). Among the children of every module the edges must form no cycle
-//! other than those listed in [`KNOWN_CYCLES`].
+//! children of the crate). Among the children of every module the edges must form no cycle.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
 use std::path::{Path, PathBuf};
-
-/// Cycles that exist outside the sampler and the expressions, each as its strongly connected
-/// set of sibling modules. They are to be broken in their own modules; a cycle not listed
-/// here, or one of these grown by a module, fails the test.
-const KNOWN_CYCLES: &[&[&str]] = &[
-    // the crate's top level: through affine, classify, natural and solids (not the sampler:
-    // param::sample no longer uses affine)
-    &["affine", "classify", "natural", "param", "solids"],
-];
 
 /// Most lines of code (blank lines, comments and `#[cfg(test)]` modules left out) of a file
 /// of the library.
@@ -388,17 +378,12 @@ fn all_cycles() -> Vec<String> {
 }
 
 #[test]
-fn no_new_import_cycles_between_modules() {
-    let known: Vec<String> = KNOWN_CYCLES.iter().map(|c| c.join(" ↔ ")).collect();
-    let new: Vec<String> = all_cycles()
-        .into_iter()
-        .filter(|c| {
-            !known
-                .iter()
-                .any(|k| c.split_once(": ").is_some_and(|(_, m)| m == k))
-        })
-        .collect();
-    assert!(new.is_empty(), "import cycles between modules: {new:#?}");
+fn no_import_cycles_between_modules() {
+    let cycles = all_cycles();
+    assert!(
+        cycles.is_empty(),
+        "import cycles between modules: {cycles:#?}"
+    );
 }
 
 #[test]

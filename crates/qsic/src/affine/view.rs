@@ -12,7 +12,6 @@ use super::{
 };
 use crate::classify::ComponentKind;
 use crate::error::Error;
-use crate::natural::affine_curve as natural_affine_curve;
 use crate::param::Curve;
 use crate::quadric::Quadric;
 use crate::Budget;
@@ -194,6 +193,15 @@ pub fn affine_view_within(
         _ => Err(Error::Unsupported("a single quadric: no curve".into())),
     };
     Ok(assemble(a, b, chart, planes, curve))
+}
+
+/// The curve in ℝ³ by the natural route's closed forms (module [`crate::natural`]), which
+/// answer in the default chart only; `None`: the next route answers.
+fn natural_affine_curve(a: &Quadric, b: &Quadric, chart: &Chart) -> Option<AffineCurve> {
+    if !chart.is_default() {
+        return None;
+    }
+    crate::natural::affine_curve(a, b)
 }
 
 /// [`affine_view`] of `a` and `b` with their curve given (`None` when either is the

@@ -20,7 +20,6 @@
 //! **Single** (`A ∝ B`): the module `single`, by inertia.
 
 mod fast;
-mod morphology;
 mod notation;
 mod signature;
 mod single;
@@ -28,7 +27,7 @@ mod singular;
 pub(crate) use singular::OrderedDomain;
 mod table;
 
-pub use morphology::{
+pub use crate::vocabulary::{
     ComplexType, Component, ComponentKind, Description, Morphology, PencilKind, RealType,
     SingularPointKind, SingularPoints,
 };
@@ -108,7 +107,7 @@ pub(crate) fn classify_keeping_sums_within(
     budget: &Budget,
 ) -> Result<(Classification, Option<MinorSums>), Error> {
     budget.spend(FAST_UNITS)?;
-    if let Some(c) = crate::natural::classification(a, b) {
+    if let Some(c) = natural_classification(a, b) {
         return Ok((c, None));
     }
     match classify_fast(a, b) {
@@ -132,7 +131,7 @@ pub(crate) fn classify_keeping_sums(
     a: &Quadric,
     b: &Quadric,
 ) -> (Classification, Option<[[i128; 5]; 4]>) {
-    if let Some(c) = crate::natural::classification(a, b) {
+    if let Some(c) = natural_classification(a, b) {
         return (c, None);
     }
     match classify_fast(a, b) {
@@ -148,6 +147,12 @@ pub(crate) fn classify_keeping_sums(
 fn classify_fast(a: &Quadric, b: &Quadric) -> Option<fast::SimpleRoots> {
     let (sa, sb) = (a.small_integer_matrix()?, b.small_integer_matrix()?);
     fast::simple_roots(sa, sb)
+}
+
+/// The natural route's class (module [`crate::natural`]), or `None` (the general route
+/// answers): the first stage of [`classify()`].
+fn natural_classification(a: &Quadric, b: &Quadric) -> Option<Classification> {
+    crate::natural::answer(a, b).map(|p| from_natural(p.class))
 }
 
 /// The classification the natural route's closed forms name (module [`crate::natural`]): a

@@ -1,10 +1,10 @@
 //! A quadric paired with itself: the "intersection" is the quadric, typed by its inertia.
 
-use super::morphology::{
-    ComplexType, Component, ComponentKind, Description, Morphology, PencilKind, RealType,
-};
 use super::Classification;
 use crate::quadric::Quadric;
+use crate::vocabulary::{
+    ComplexType, Component, ComponentKind, Description, Morphology, PencilKind, RealType,
+};
 use qsic_algebra::matrix::Inertia;
 
 /// Classifies the single quadric `q` (taxonomy.md, "Single quadric"): by rank and by its

@@ -118,7 +118,7 @@
 //! Sturm–Tarski sequence. Rational pencils run it over ℤ (the primitive integer matrices); a
 //! moving pencil at an irrational instant `α` over ℚ(α) (`motion::irrational`).
 
-use super::morphology::{
+use crate::vocabulary::{
     ComplexType, Component, ComponentKind, Description, Morphology, RealType, SingularPointKind,
     SingularPoints,
 };

@@ -6,11 +6,11 @@
 //! `notation`): a malformed entry, or one whose index sequence disagrees with its signature
 //! sequence or Segre characteristic, does not compile.
 
-use super::morphology::{
+use super::notation::{case_class, case_segre, IndexSequence, Segre, SignatureSequence};
+use crate::vocabulary::{
     ComplexType as C, Component, ComponentKind as K, Description, RealType as R,
     SingularPointKind as S, SingularPoints,
 };
-use super::notation::{case_class, case_segre, IndexSequence, Segre, SignatureSequence};
 
 /// One row of the table: a case and the sequences that characterise it.
 pub(crate) struct CaseRow {

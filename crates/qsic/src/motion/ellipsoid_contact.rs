@@ -44,9 +44,8 @@
 //! `instants`), the leading minors' roots per step of their isolation, the refinement of `α`
 //! ([`refined_within`]) and each interval evaluation by its products.
 
-use super::contact::FirstContact;
 use super::instants::{discriminant_form, t_primitive, Form, TPoly};
-use super::range::TimeRange;
+use super::range::{FirstContact, TimeRange};
 use super::shared_roots::refined_within;
 use super::MovingPencil;
 use crate::error::Error;

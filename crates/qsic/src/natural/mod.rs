@@ -33,14 +33,14 @@
 mod filter;
 pub(crate) mod pair;
 
-use crate::affine::{AffineCurve, Chart};
-use crate::classify::Classification;
 use crate::quadric::Quadric;
+use crate::vocabulary::AffineCurve;
 use qsic_algebra::{IBig, RBig};
 
 /// The natural route's answer for `a` and `b`: both recognized and a closed form for the
-/// pair, else `None`.
-fn answer(a: &Quadric, b: &Quadric) -> Option<pair::PairAnswer> {
+/// pair, else `None` (the general route answers). [`crate::classify()`] takes its class
+/// first, [`crate::affine::affine_view`] its curve in the default chart.
+pub(crate) fn answer(a: &Quadric, b: &Quadric) -> Option<pair::PairAnswer> {
     let na = recognize(a)?;
     let nb = recognize(b)?;
     pair::pair(
@@ -51,18 +51,8 @@ fn answer(a: &Quadric, b: &Quadric) -> Option<pair::PairAnswer> {
     )
 }
 
-/// The classification of a natural pair by closed forms, or `None` (the general route
-/// answers): the first stage of [`crate::classify()`].
-pub(crate) fn classification(a: &Quadric, b: &Quadric) -> Option<Classification> {
-    answer(a, b).map(|p| crate::classify::from_natural(p.class))
-}
-
-/// The curve in ℝ³ of a natural pair by closed forms in the default chart, or `None`: the
-/// first stage of [`crate::affine::affine_view`].
-pub(crate) fn affine_curve(a: &Quadric, b: &Quadric, chart: &Chart) -> Option<AffineCurve> {
-    if !chart.is_default() {
-        return None;
-    }
+/// The curve in ℝ³ of a natural pair by closed forms (in the default chart), or `None`.
+pub(crate) fn affine_curve(a: &Quadric, b: &Quadric) -> Option<AffineCurve> {
     answer(a, b).map(|p| p.curve)
 }
 

@@ -29,9 +29,11 @@
 //! multiplicities.
 
 use super::{NaturalQuadric, Vec3};
-use crate::affine::{AffineComponent, AffineCurve, AffineSingularPoint};
-use crate::classify::{ComplexType, ComponentKind, RealType, SingularPointKind};
-use crate::param::Number;
+use crate::vocabulary::{
+    AffineComponent, AffineCurve, AffineSingularPoint, ComplexType, ComponentKind, RealType,
+    SingularPointKind,
+};
+use qsic_algebra::field::NumberFieldElement as Number;
 use qsic_algebra::field::NumberFieldElement;
 use qsic_algebra::linalg::forms::plane_pair;
 use qsic_algebra::linalg::Matrix;
