@@ -28,7 +28,9 @@ pub use super::contact_point::{
     common_points_at, common_points_at_within, contact_points, contact_points_within, CommonLocus,
     CommonPoint, CommonPointKind, ContactPoints,
 };
-use super::ellipsoid_contact::{first_contact_of_ellipsoids, EllipsoidContact};
+use super::ellipsoid_contact::{
+    first_contact_of_ellipsoids, flip_lambda, negative_pair_distinct, EllipsoidContact,
+};
 use super::instants::pencil_entries;
 pub use super::range::{FirstContact, TimeRange};
 use super::{irrational, irrational_fast, InstantType, Motion, MovingPencil};
@@ -518,12 +520,15 @@ pub fn solid_motion_in_within(
     }];
     let mut instants = Vec::new();
     for (j, t) in candidates.into_iter().enumerate() {
-        let state = match t.as_rational() {
-            Some(v) => state_at_rational(pencil, v, budget)?,
-            None => state_at_irrational(pencil, &t, budget)?,
-        };
         let right = &interval_states[j + 1];
         let left = &intervals.last().expect("one interval at least").state;
+        let state = match t.as_rational() {
+            Some(v) => state_at_rational(pencil, v, budget)?,
+            None => match state_between(pencil, &t, left, right, budget)? {
+                Some(s) => s,
+                None => state_at_irrational(pencil, &t, budget)?,
+            },
+        };
         if state == *left && state == *right {
             continue;
         }
@@ -584,6 +589,51 @@ fn state_at_rational(
             Err(_) => SolidState::Undetermined,
         },
         Err(s) => s,
+    })
+}
+
+/// The relation at an irrational `α` read from the relations beside it, where they decide it
+/// (the accelerator of [`state_at_irrational`]; `None`: it answers). Both quadrics must be
+/// ellipsoids at `α` (their leading minors nonzero there, exact signs). Then:
+/// - separated on one side and overlapping on the other: touching externally — the solids
+///   meet at `α` (a closed condition) while their interiors, disjoint on the separated side
+///   (an open condition), are disjoint at `α`;
+/// - separated on both sides: separated at `α` where a certified `f(λ*; α) > 0` with `λ* < 0`
+///   shows the two negative roots of `f` distinct (module `ellipsoid_contact`).
+fn state_between(
+    pencil: &MovingPencil,
+    alpha: &AlgebraicReal,
+    left: &SolidState,
+    right: &SolidState,
+    budget: &Budget,
+) -> Result<Option<SolidState>, Error> {
+    use SolidRelation::{Overlapping, Separated};
+    let (Some(l), Some(r)) = (left.relation(), right.relation()) else {
+        return Ok(None);
+    };
+    let (ma, mb) = (pencil.a().numerators(), pencil.b().numerators());
+    let spend = super::irrational::Spend::new(budget, alpha);
+    let (degree, bits) = ma.iter().chain(mb).flatten().fold((0, 0), |(d, b), p| {
+        (d.max(p.degree().unwrap_or(0)), b.max(p.max_bits()))
+    });
+    spend.sign_tests(8, 4 * degree, 4 * bits + 8, alpha)?;
+    let orientation = |m: &[[Poly; 4]; 4]| {
+        ellipsoid_orientation(leading_minors(m).map(|p| alpha.sign_of(&p))).ok()
+    };
+    let (Some(negate_a), Some(negate_b)) = (orientation(ma), orientation(mb)) else {
+        return Ok(None);
+    };
+    Ok(match (l, r) {
+        (Separated, Overlapping) | (Overlapping, Separated) => {
+            Some(SolidState::Relation(SolidRelation::TouchingExternally))
+        }
+        (Separated, Separated) => {
+            let f = flip_lambda(pencil.characteristic(), negate_a != negate_b);
+            negative_pair_distinct(&f, alpha, budget)?
+                .filter(|&distinct| distinct)
+                .map(|_| SolidState::Relation(Separated))
+        }
+        _ => None,
     })
 }
 
@@ -698,6 +748,77 @@ mod tests {
             }
         }
         assert_eq!(kinds.len(), 4, "{kinds:?}");
+    }
+
+    /// The relation read from the neighbours ([`state_between`]) is the one computed at the
+    /// instant ([`state_at_irrational`]) at every irrational candidate of motions where it
+    /// answers both ways (separated at a graze-free instant, touching externally between
+    /// separated and overlapping), and it declines elsewhere.
+    #[test]
+    fn relations_read_from_the_neighbours_are_those_at_the_instant() {
+        let turn = crate::motion::rigid::RigidMotion {
+            rotation: crate::motion::rigid::Rotation::Cayley {
+                axis: [0, 0, 1].map(RBig::from),
+            },
+            ..Default::default()
+        };
+        let turning = turn
+            .apply(&moving("x^2/4 + y^2 + z^2 - 1").unwrap())
+            .unwrap();
+        let pairs = [
+            (
+                moving("x^2/4 + y^2 + z^2/9 - 1").unwrap(),
+                moving("(x - 2*t + 6)^2/9 + (y - t)^2/4 + (z - 1)^2 - 1").unwrap(),
+            ),
+            (
+                moving("x^2/4 + y^2 + z^2/9 - 1").unwrap(),
+                moving("1 - (x - 5 - (t^2 - 2)^2)^2/9 - y^2/4 - z^2").unwrap(),
+            ),
+            (
+                turning,
+                moving("(x - 3)^2/9 + (y - 4)^2/9 + z^2/4 - 1").unwrap(),
+            ),
+            (
+                moving("x^2 + 2*y^2 + 3*z^2 - 4").unwrap(),
+                moving("(x - t)^2 + (y - t^2/2)^2 + z^2/4 - 1").unwrap(),
+            ),
+        ];
+        let unlimited = Budget::unlimited();
+        let mut answered = std::collections::BTreeMap::new();
+        let mut declined = 0;
+        for (a, b) in pairs {
+            let p = MovingPencil::new(a.clone(), b.clone()).unwrap();
+            let mut polys = p.candidate_polynomials().unwrap();
+            for m in [p.a(), p.b()] {
+                polys.extend(leading_minors(m.numerators()));
+            }
+            polys.retain(|q| !q.is_zero());
+            let candidates = crate::motion::real_roots_of_all(&polys, &unlimited).unwrap();
+            let samples = crate::motion::samples_between(&candidates, None, None);
+            let states: Vec<SolidState> = samples
+                .iter()
+                .map(|s| state_at_rational(&p, s, &unlimited).unwrap())
+                .collect();
+            for (j, t) in candidates.iter().enumerate() {
+                if t.as_rational().is_some() {
+                    continue;
+                }
+                let between = state_between(&p, t, &states[j], &states[j + 1], &unlimited);
+                match between.unwrap() {
+                    Some(s) => {
+                        assert_eq!(s, state_at_irrational(&p, t, &unlimited).unwrap(), "{t}");
+                        *answered.entry(s.key()).or_insert(0) += 1;
+                    }
+                    None => declined += 1,
+                }
+            }
+        }
+        assert!(
+            answered.get("separated").is_some_and(|&n| n >= 4)
+                && answered.contains_key("touching_externally")
+                && declined > 0,
+            "{answered:?}, {declined} declined"
+        );
     }
 
     /// The `ℚ(α)` route given a rational `α` agrees with the rational route (the static

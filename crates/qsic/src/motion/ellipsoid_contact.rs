@@ -166,7 +166,7 @@ fn orientation_throughout(
 
 /// `f(−λ)` where `flip` (one matrix negated: `det(−λM_A − M_B)` or `det(λM_A + M_B)`, of
 /// even degree 4), else `f`.
-fn flip_lambda(f: &TPoly, flip: bool) -> TPoly {
+pub(super) fn flip_lambda(f: &TPoly, flip: bool) -> TPoly {
     if !flip {
         return f.clone();
     }
@@ -200,7 +200,7 @@ fn separated_at(f: &TPoly, t: &RBig, budget: &Budget) -> Result<bool, Error> {
 /// At an irrational root `α` of the discriminant reached from a separated interval: whether the negative pair of roots is distinct there (`true`: still separated) or merged
 /// (`false`: the positive pair is distinct, certified), from a certified `f(λ*; α) > 0`
 /// (module docs); `None` when neither is certified.
-fn negative_pair_distinct(
+pub(super) fn negative_pair_distinct(
     f: &TPoly,
     alpha: &AlgebraicReal,
     budget: &Budget,
