@@ -602,6 +602,7 @@ def first_contact(
     b: MovingLike,
     range: Optional[Tuple[Any, Any]] = None,
     budget: Optional[int] = None,
+    first_only: bool = False,
 ) -> Dict[str, Any]:
     """The first ``t`` in ``range`` where moving quadrics have a real common point, and the
     relation of the solids along the motion where both are ellipsoids: the JSON object of
@@ -609,7 +610,9 @@ def first_contact(
     ``{"poly", "interval", "approx"}``, ``contact``: the common points there, exact and in
     decimals, and ``at_start`` when they already meet at the range's start; ``solids``: the
     relation on the range only). ``a``, ``b``, ``range = (t0, t1)`` and ``budget`` as for
-    :func:`motion` (rigid motions as dicts).
+    :func:`motion` (rigid motions as dicts). ``first_only=True``: the instant alone (``range``
+    and ``first_contact``, as ``qsic contact --first-only``), without the points and the
+    solids — the call for a loop over many pairs and time steps.
 
     Raises:
         QsicError: the reader's or the analysis' message, a bad budget, or ``over the work
@@ -618,5 +621,7 @@ def first_contact(
     t0, t1 = _range(range)
     units = _budget(budget)
     return json.loads(
-        _qsic.first_contact(_moving("A", a), _moving("B", b), t0, t1, budget=units)
+        _qsic.first_contact(
+            _moving("A", a), _moving("B", b), t0, t1, budget=units, first_only=first_only
+        )
     )

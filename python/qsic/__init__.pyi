@@ -128,5 +128,9 @@ def motion(
     a: MovingLike, b: MovingLike, range: Range = None, budget: Optional[int] = None
 ) -> Dict[str, Any]: ...
 def first_contact(
-    a: MovingLike, b: MovingLike, range: Range = None, budget: Optional[int] = None
+    a: MovingLike,
+    b: MovingLike,
+    range: Range = None,
+    budget: Optional[int] = None,
+    first_only: bool = False,
 ) -> Dict[str, Any]: ...

@@ -62,5 +62,10 @@ def sample(
 ) -> str: ...
 def motion(a: List[str], b: List[str], t0: Optional[str] = None, t1: Optional[str] = None) -> str: ...
 def first_contact(
-    a: List[str], b: List[str], t0: Optional[str] = None, t1: Optional[str] = None
+    a: List[str],
+    b: List[str],
+    t0: Optional[str] = None,
+    t1: Optional[str] = None,
+    budget: Optional[int] = None,
+    first_only: bool = False,
 ) -> str: ...

@@ -749,9 +749,10 @@ fn motion(
 }
 
 /// The JSON object of `qsic contact --json --range T0 T1` (`None`: an open side), spending
-/// at most `budget` work units (default [`DEFAULT_LINE_BUDGET`]).
+/// at most `budget` work units (default [`DEFAULT_LINE_BUDGET`]); with `first_only`, that of
+/// `--first-only` (the instant alone).
 #[pyfunction]
-#[pyo3(signature = (a, b, t0 = None, t1 = None, budget = None))]
+#[pyo3(signature = (a, b, t0 = None, t1 = None, budget = None, first_only = false))]
 fn first_contact(
     py: Python<'_>,
     a: Vec<String>,
@@ -759,13 +760,19 @@ fn first_contact(
     t0: Option<&str>,
     t1: Option<&str>,
     budget: Option<u64>,
+    first_only: bool,
 ) -> PyResult<String> {
     let (ma, mb) = (moving("A", a)?, moving("B", b)?);
     let range = time_range(t0, t1)?;
     let budget = Budget::new(budget.unwrap_or(DEFAULT_LINE_BUDGET));
     py.detach(|| {
         catch_panic(|| {
-            qsic_cli::contact::contact_within(ma, mb, range, &budget)
+            let report = if first_only {
+                qsic_cli::contact::first_contact_report_within(ma, mb, range, &budget)
+            } else {
+                qsic_cli::contact::contact_within(ma, mb, range, &budget)
+            };
+            report
                 .map(|r| qsic_cli::contact::report_to_json_line(&r))
                 .map_err(|e| format!("A and B: {e}"))
         })

@@ -90,6 +90,12 @@ def test_motion_with_a_range_and_first_contact_equal_cli(cli):
     assert later["first_contact"] == "1"  # inside (no common point) until |t| = 2 − 1
     # the documented key order, the solids on the range only
     assert list(later) == ["range", "first_contact", "contact", "solids"]
+    # the instant alone: the same instant, the same object as the CLI's, nothing else
+    only = qsic.first_contact(a, b, range=(0, None), first_only=True)
+    assert only == cli_json(
+        cli, "contact", "--json", "--first-only", "--range", "0", "oo", a, b
+    )
+    assert only == {"range": ["0", None], "first_contact": "1"}
     assert later["contact"]["points"][0]["point"] == ["2", "0", "0", "1"]  # the inner touching
     assert list(later["solids"]) == ["first_meeting", "intervals", "instants"]
     assert later["solids"]["intervals"][0]["from"] == "0"

@@ -18,7 +18,8 @@
 //! `qsic param`, algebraic numbers of degree > 2 named `a1`, … under `numbers`; `curves` the
 //! number of real curve pieces (0 at a touching; more when they already meet, `at_start`).
 //! `solids` covers the range only ([`solid_motion_in`]), and is null when the two are never
-//! both solid ellipsoids there.
+//! both solid ellipsoids there. With `--first-only` the object stops after `first_contact`
+//! ([`first_contact_report_within`]).
 //!
 //! The moving quadrics are read as by `qsic motion` ([`crate::motion::moving_from_arg`]),
 //! and the range too ([`TimeRange::parse`]). [`contact_within`] spends a work budget
@@ -52,6 +53,9 @@ pub struct ContactReport {
     pub solids: Option<SolidMotion>,
     /// The affine first contact in the range (solids no longer separated), or why not.
     pub first_meeting: Option<Result<Option<FirstContact>, Error>>,
+    /// Only the first contact was asked ([`first_contact_report_within`]): no points, no
+    /// solids, and the report says so by leaving them out.
+    pub first_only: bool,
 }
 
 /// First contact in `range` and the relation of the solids on it.
@@ -73,8 +77,43 @@ pub fn contact_within(
     range: TimeRange,
     budget: &Budget,
 ) -> Result<ContactReport, Error> {
+    report_within(a, b, range, budget, false)
+}
+
+/// The first contact alone (`qsic contact --first-only`): the instant, without the common
+/// points there and the solids' timeline — the call for a loop over many pairs and steps.
+///
+/// # Errors
+/// As [`contact_within`].
+pub fn first_contact_report_within(
+    a: MovingMatrix,
+    b: MovingMatrix,
+    range: TimeRange,
+    budget: &Budget,
+) -> Result<ContactReport, Error> {
+    report_within(a, b, range, budget, true)
+}
+
+/// [`contact_within`], or [`first_contact_report_within`] where `first_only`.
+fn report_within(
+    a: MovingMatrix,
+    b: MovingMatrix,
+    range: TimeRange,
+    budget: &Budget,
+    first_only: bool,
+) -> Result<ContactReport, Error> {
     let pencil = MovingPencil::new_within(a, b, budget)?;
     let first = first_contact_of(&pencil, &range, budget)?;
+    if first_only {
+        return Ok(ContactReport {
+            range,
+            first_contact: first,
+            contact: None,
+            solids: None,
+            first_meeting: None,
+            first_only,
+        });
+    }
     let contact = match &first {
         Some(f) => contact_points_within(&pencil, f, &range, budget)?,
         None => None,
@@ -98,6 +137,7 @@ pub fn contact_within(
         contact,
         solids,
         first_meeting,
+        first_only,
     })
 }
 
@@ -283,19 +323,26 @@ pub fn report_to_json_line(r: &ContactReport) -> String {
 /// The output line for one line of `qsic contact --batch` and whether it succeeded:
 /// `{"id", "range", "first_contact", "contact", "solids"}` or the error record of the
 /// batch conventions; the line may spend `units` work units.
-pub fn answer_contact_line(line: &RawLine, range: &TimeRange, units: u64) -> (String, bool) {
-    answer_with(line, |line| contact_line(line, range, units))
+/// With `first_only`, `{"id", "range", "first_contact"}`.
+pub fn answer_contact_line(
+    line: &RawLine,
+    range: &TimeRange,
+    units: u64,
+    first_only: bool,
+) -> (String, bool) {
+    answer_with(line, |line| contact_line(line, range, units, first_only))
 }
 
 fn contact_line<'a>(
     line: &'a RawLine,
     range: &TimeRange,
     units: u64,
+    first_only: bool,
 ) -> Result<String, LineFailure<'a>> {
     crate::motion::moving_pair_line(
         line,
         "contact",
-        |a, b| contact_within(a, b, range.clone(), &Budget::new(units)),
+        |a, b| report_within(a, b, range.clone(), &Budget::new(units), first_only),
         write_report_fields,
     )
 }
@@ -315,6 +362,9 @@ fn write_report_fields(out: &mut String, r: &ContactReport) {
     }
     out.push_str("],\"first_contact\":");
     write_contact(out, &r.first_contact);
+    if r.first_only {
+        return;
+    }
     out.push_str(",\"contact\":");
     match &r.contact {
         Some(c) => write_contact_points(out, c),
@@ -418,6 +468,9 @@ pub fn human_report(r: &ContactReport) -> String {
         "first contact (real common point): {}",
         contact_text(&r.first_contact, "none in the range")
     );
+    if r.first_only {
+        return s;
+    }
     if let Some(c) = &r.contact {
         s.push_str(&contact_points_text(c));
     }

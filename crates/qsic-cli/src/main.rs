@@ -249,6 +249,10 @@ struct ContactArgs {
     /// Print one JSON object instead of the text report.
     #[arg(long)]
     json: bool,
+    /// Only the first contact instant: no common points there and no solids' timeline (the
+    /// JSON object stops after "first_contact"), for loops over many pairs and time steps.
+    #[arg(long)]
+    first_only: bool,
 }
 
 /// Arguments of `qsic param`.
@@ -547,7 +551,7 @@ fn run_contact(args: &ContactArgs, units: u64) -> ExitCode {
     let range = range_arg(args.range.as_deref());
     if let Some(path) = &args.batch {
         return run_batch(path, |line: &batch::RawLine| {
-            contact::answer_contact_line(line, &range, units)
+            contact::answer_contact_line(line, &range, units, args.first_only)
         });
     }
     let (Some(a), Some(b)) = (&args.a, &args.b) else {
@@ -561,8 +565,13 @@ fn run_contact(args: &ContactArgs, units: u64) -> ExitCode {
     let result = (|| {
         let a = motion::moving_from_arg(a).map_err(|e| format!("A: {e}"))?;
         let b = motion::moving_from_arg(b).map_err(|e| format!("B: {e}"))?;
-        contact::contact_within(a, b, range, &qsic::Budget::new(units))
-            .map_err(|e| format!("A and B: {e}"))
+        let budget = qsic::Budget::new(units);
+        if args.first_only {
+            contact::first_contact_report_within(a, b, range, &budget)
+        } else {
+            contact::contact_within(a, b, range, &budget)
+        }
+        .map_err(|e| format!("A and B: {e}"))
     })();
     let report = match result {
         Ok(r) => r,

@@ -157,3 +157,59 @@ fn errors_name_the_argument() {
         assert!(err.contains(named), "{args:?}: {err}");
     }
 }
+
+/// `--first-only` gives the full report's first contact and nothing else, in JSON, in a
+/// batch and as text, on motions with a rational, an irrational and no first contact.
+#[test]
+fn first_only_is_the_reports_first_contact_alone() {
+    let motions = [
+        ("x^2/4 + y^2 + z^2 - 1", "(x - t)^2 + 4*y^2 + 4*z^2 - 1"),
+        (
+            "x^2/4 + y^2 + z^2/9 - 1",
+            "(x - 2*t + 6)^2/9 + (y - t)^2/4 + (z - 1)^2 - 1",
+        ),
+        (
+            "x^2/4 + y^2 + z^2/9 - 1",
+            "(x - t)^2 + (y - 5)^2/4 + z^2/4 - 1",
+        ),
+    ];
+    let mut batch = String::new();
+    let mut firsts = Vec::new();
+    for (k, (a, b)) in motions.iter().enumerate() {
+        let (code, full, _) = qsic(&["contact", "--json", a, b]);
+        assert_eq!(code, Some(0));
+        let full: Value = serde_json::from_str(&full).expect("JSON");
+        let (code, only, _) = qsic(&["contact", "--json", "--first-only", a, b]);
+        assert_eq!(code, Some(0));
+        let only: Value = serde_json::from_str(&only).expect("JSON");
+        let mut keys: Vec<&String> = only.as_object().expect("an object").keys().collect();
+        keys.sort();
+        assert_eq!(keys, ["first_contact", "range"], "{a} | {b}");
+        // the same instant (its printed interval is as refined as the work before left it)
+        let same = |x: &Value, y: &Value| {
+            x == y || (x["poly"] == y["poly"] && x["approx"] == y["approx"] && x.is_object())
+        };
+        assert!(
+            same(&only["first_contact"], &full["first_contact"]),
+            "{a} | {b}"
+        );
+        firsts.push(full["first_contact"].clone());
+        batch.push_str(&format!(
+            "{{\"id\": {k}, \"A\": \"{a}\", \"B\": \"{b}\"}}\n"
+        ));
+        let (_, text, _) = qsic(&["contact", "--first-only", a, b]);
+        assert!(text.contains("first contact (real common point)") && !text.contains("solids"));
+    }
+    assert!(firsts[1].is_object() && firsts[2].is_null(), "{firsts:?}");
+    let path = std::env::temp_dir().join(format!("qsic-first-only-{}.jsonl", std::process::id()));
+    std::fs::write(&path, batch).expect("a temporary file");
+    let (code, out, _) = qsic(&["contact", "--first-only", "--batch", path.to_str().unwrap()]);
+    std::fs::remove_file(&path).ok();
+    assert_eq!(code, Some(0));
+    for (line, first) in out.lines().zip(&firsts) {
+        let v: Value = serde_json::from_str(line).expect("JSON");
+        let f = &v["first_contact"];
+        assert!(f == first || (f["poly"] == first["poly"] && f["approx"] == first["approx"]));
+        assert!(v.get("solids").is_none() && v.get("contact").is_none());
+    }
+}
