@@ -382,6 +382,12 @@ mod tests {
                 "x^2/4 + y^2 + z^2/9 - 1",
                 "(x - t)^2 + (y - 5)^2/4 + z^2/4 - 1",
             ),
+            // moving off and back: overlapping as t → ±∞, separated around t = 0 (the start
+            // on an open range is a point left of every root, not right of one)
+            (
+                "x^2/4 + y^2 + z^2/9 - 1",
+                "(x - 10/(1 + t^2))^2/9 + y^2/4 + z^2 - 1",
+            ),
             // spheres: a double root for every t (declined)
             ("x^2 + y^2 + z^2 - 4", "(x - t)^2 + y^2 + z^2 - 1"),
         ]
@@ -437,6 +443,37 @@ mod tests {
         }
         let want = ["declined", "irrational", "none", "rational"];
         assert_eq!(kinds.into_iter().collect::<Vec<_>>(), want);
+    }
+
+    /// A quadric that is an ellipsoid on the range only (its leading minors vanish at
+    /// `t = 6`) is taken by the route on the range, and its answer is the class walk's.
+    #[test]
+    fn ellipsoids_on_the_range_only_are_taken() {
+        let unlimited = Budget::unlimited();
+        let p = MovingPencil::new(
+            moving("x^2/(6 - t) + y^2 + 2*z^2 - 1").unwrap(),
+            moving("(x - t - 8)^2 + y^2/4 + z^2/9 - 1").unwrap(),
+        )
+        .unwrap();
+        let range = TimeRange::new(None, Some(RBig::ZERO)).unwrap();
+        let fast = first_contact_of_ellipsoids(&p, &range, &unlimited).unwrap();
+        let walk = first_contact_by_class(&p, &range, &unlimited).unwrap();
+        assert_eq!(fast, EllipsoidContact::Decided(walk.clone()));
+        let Some(FirstContact::At(t)) = walk else {
+            panic!("{walk:?}");
+        };
+        // a range ending half a unit before the contact: nothing of Δ inside, no contact
+        let before = RBig::from(((t.to_f64() - 0.5) * 8.0).floor() as i64) / RBig::from(8);
+        let range = TimeRange::new(None, Some(before)).unwrap();
+        let fast = first_contact_of_ellipsoids(&p, &range, &unlimited).unwrap();
+        assert_eq!(fast, EllipsoidContact::Decided(None));
+        assert_eq!(
+            first_contact_by_class(&p, &range, &unlimited).unwrap(),
+            None
+        );
+        // on the whole line it is not an ellipsoid throughout
+        let all = first_contact_of_ellipsoids(&p, &TimeRange::all(), &unlimited).unwrap();
+        assert_eq!(all, EllipsoidContact::Declined);
     }
 
     /// Grazes are found, and the certificate at an irrational instant reads which pair of
