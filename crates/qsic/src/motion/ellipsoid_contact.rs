@@ -471,9 +471,28 @@ mod tests {
             first_contact_by_class(&p, &range, &unlimited).unwrap(),
             None
         );
-        // on the whole line it is not an ellipsoid throughout
-        let all = first_contact_of_ellipsoids(&p, &TimeRange::all(), &unlimited).unwrap();
-        assert_eq!(all, EllipsoidContact::Declined);
+        // one that degenerates at t = −5, before a range starting at −4
+        let q = MovingPencil::new(
+            moving("x^2/(t + 5) + y^2 + 2*z^2 - 1").unwrap(),
+            moving("(x + t - 8)^2 + y^2/4 + z^2/9 - 1").unwrap(),
+        )
+        .unwrap();
+        let after = TimeRange::new(Some(RBig::from(-4)), None).unwrap();
+        let walk = first_contact_by_class(&q, &after, &unlimited).unwrap();
+        assert!(walk.is_some());
+        assert_eq!(
+            first_contact_of_ellipsoids(&q, &after, &unlimited).unwrap(),
+            EllipsoidContact::Decided(walk)
+        );
+        // on the whole line, or a range holding t = 6, it is not an ellipsoid throughout
+        for range in [
+            TimeRange::all(),
+            TimeRange::new(Some(RBig::from(-10)), Some(RBig::from(10))).unwrap(),
+            TimeRange::new(Some(RBig::from(6)), None).unwrap(),
+        ] {
+            let declined = first_contact_of_ellipsoids(&p, &range, &unlimited).unwrap();
+            assert_eq!(declined, EllipsoidContact::Declined, "{range:?}");
+        }
     }
 
     /// Grazes are found, and the certificate at an irrational instant reads which pair of
