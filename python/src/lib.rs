@@ -767,12 +767,7 @@ fn first_contact(
     let budget = Budget::new(budget.unwrap_or(DEFAULT_LINE_BUDGET));
     py.detach(|| {
         catch_panic(|| {
-            let report = if first_only {
-                qsic_cli::contact::first_contact_report_within(ma, mb, range, &budget)
-            } else {
-                qsic_cli::contact::contact_within(ma, mb, range, &budget)
-            };
-            report
+            qsic_cli::contact::report_within(ma, mb, range, &budget, first_only)
                 .map(|r| qsic_cli::contact::report_to_json_line(&r))
                 .map_err(|e| format!("A and B: {e}"))
         })

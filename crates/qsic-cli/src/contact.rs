@@ -19,7 +19,7 @@
 //! number of real curve pieces (0 at a touching; more when they already meet, `at_start`).
 //! `solids` covers the range only ([`solid_motion_in`]), and is null when the two are never
 //! both solid ellipsoids there. With `--first-only` the object stops after `first_contact`
-//! ([`first_contact_report_within`]).
+//! ([`report_within`]).
 //!
 //! The moving quadrics are read as by `qsic motion` ([`crate::motion::moving_from_arg`]),
 //! and the range too ([`TimeRange::parse`]). [`contact_within`] spends a work budget
@@ -53,7 +53,7 @@ pub struct ContactReport {
     pub solids: Option<SolidMotion>,
     /// The affine first contact in the range (solids no longer separated), or why not.
     pub first_meeting: Option<Result<Option<FirstContact>, Error>>,
-    /// Only the first contact was asked ([`first_contact_report_within`]): no points, no
+    /// Only the first contact was asked ([`report_within`]): no points, no
     /// solids, and the report says so by leaving them out.
     pub first_only: bool,
 }
@@ -80,22 +80,13 @@ pub fn contact_within(
     report_within(a, b, range, budget, false)
 }
 
-/// The first contact alone (`qsic contact --first-only`): the instant, without the common
-/// points there and the solids' timeline — the call for a loop over many pairs and steps.
+/// [`contact_within`], or with `first_only` the first contact alone (`qsic contact
+/// --first-only`): the instant, without the common points there and the solids' timeline —
+/// the call for a loop over many pairs and steps.
 ///
 /// # Errors
 /// As [`contact_within`].
-pub fn first_contact_report_within(
-    a: MovingMatrix,
-    b: MovingMatrix,
-    range: TimeRange,
-    budget: &Budget,
-) -> Result<ContactReport, Error> {
-    report_within(a, b, range, budget, true)
-}
-
-/// [`contact_within`], or [`first_contact_report_within`] where `first_only`.
-fn report_within(
+pub fn report_within(
     a: MovingMatrix,
     b: MovingMatrix,
     range: TimeRange,

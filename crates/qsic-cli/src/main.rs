@@ -565,13 +565,8 @@ fn run_contact(args: &ContactArgs, units: u64) -> ExitCode {
     let result = (|| {
         let a = motion::moving_from_arg(a).map_err(|e| format!("A: {e}"))?;
         let b = motion::moving_from_arg(b).map_err(|e| format!("B: {e}"))?;
-        let budget = qsic::Budget::new(units);
-        if args.first_only {
-            contact::first_contact_report_within(a, b, range, &budget)
-        } else {
-            contact::contact_within(a, b, range, &budget)
-        }
-        .map_err(|e| format!("A and B: {e}"))
+        contact::report_within(a, b, range, &qsic::Budget::new(units), args.first_only)
+            .map_err(|e| format!("A and B: {e}"))
     })();
     let report = match result {
         Ok(r) => r,

@@ -143,6 +143,11 @@ fn orientation_throughout(
     budget: &Budget,
 ) -> Result<Option<bool>, Error> {
     let minors = leading_minors(m);
+    // no ellipsoid at one point of the range (most pencils): no root isolation
+    let at = range.from().or(range.to()).cloned().unwrap_or(RBig::ZERO);
+    let Ok(negate) = ellipsoid_orientation(minors.clone().map(|p| p.sign_at(&at))) else {
+        return Ok(None);
+    };
     for p in &minors {
         if p.is_zero() {
             return Ok(None);
@@ -159,9 +164,8 @@ fn orientation_throughout(
             }
         }
     }
-    // no minor changes sign in the range: its signs anywhere there
-    let at = range.from().or(range.to()).cloned().unwrap_or(RBig::ZERO);
-    Ok(ellipsoid_orientation(minors.map(|p| p.sign_at(&at))).ok())
+    // no minor changes sign in the range: its signs at `at` hold throughout
+    Ok(Some(negate))
 }
 
 /// `f(−λ)` where `flip` (one matrix negated: `det(−λM_A − M_B)` or `det(λM_A + M_B)`, of
