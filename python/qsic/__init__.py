@@ -415,7 +415,7 @@ def param(
     ``--projective``. Each real line, conic and point also has its ``frame``, what a CAD
     kernel takes (README, "Frames"): a conic's location (centre or vertex), normal, X and Y
     directions and radius, semi-axes or focal length, as OpenCASCADE's ``gp_Ax2`` and
-    ``gp_Circ``/``gp_Elips``/``gp_Hypr``/``gp_Parab``; a line's point nearest the origin and
+    ``gp_Circ``/``gp_Elips``/``gp_Hypr``/``gp_Parab``; a line's point nearest the origin (a point of it over a field larger than ℚ) and
     direction (``gp_Lin``); exact strings, decimals under ``"approx"``. ``floats`` as for
     :func:`classify`. ``budget``: the work units the call may spend (as :func:`classify`).
 

@@ -354,3 +354,51 @@ fn param_text_prints_points_in_r3() {
         "{text}"
     );
 }
+
+/// The longest run of digits in `v` (a string, or every string inside).
+fn longest_digits(v: &Value) -> usize {
+    match v {
+        Value::String(s) => s
+            .split(|c: char| !c.is_ascii_digit())
+            .map(str::len)
+            .max()
+            .unwrap_or(0),
+        Value::Array(a) => a.iter().map(longest_digits).max().unwrap_or(0),
+        Value::Object(o) => o.values().map(longest_digits).max().unwrap_or(0),
+        _ => 0,
+    }
+}
+
+#[test]
+fn frames_and_conic_data_of_big_disguises_are_no_longer_than_the_curve() {
+    // a conic of case 17 in a plane over ℚ(√δ), parameterized over a field of degree 4, and
+    // four concurrent lines over a field of degree 4, under 450-bit disguises: the frame and
+    // the affine data are read in the plane's field and at the line's own point, so they are
+    // at most twice as long as the parameterization (they were 6 and 4 times)
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/big_disguises.jsonl"
+    ))
+    .unwrap();
+    let mut checked = 0;
+    for line in text.lines() {
+        let pair: Value = serde_json::from_str(line).unwrap();
+        let input = serde_json::json!({"id": pair["id"], "A": pair["A"], "B": pair["B"]});
+        let out = qsic(&["param", "--batch", "-"], &format!("{input}\n"));
+        let v: Value = serde_json::from_slice(&out.stdout).expect("one JSON answer");
+        let comps = v["components"].as_array().expect("components");
+        for c in comps.iter().filter(|c| c["real"] == Value::Bool(true)) {
+            let curve = longest_digits(&c["param"]);
+            for key in ["frame", "affine"] {
+                let n = longest_digits(&c[key]);
+                assert!(
+                    n <= 2 * curve,
+                    "{}: {key} has {n} digits, the curve {curve}",
+                    pair["id"]
+                );
+            }
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 3);
+}

@@ -13,7 +13,7 @@
 mod common;
 
 use common::read_form;
-use qsic::affine::{affine_conic, affine_curve, AffineConic, Chart, ConicShape};
+use qsic::affine::{affine_conic, affine_curve, param_conic, AffineConic, Chart, ConicShape};
 use qsic::classify::ComponentKind;
 use qsic::io::parse_quadric;
 use qsic::param::{parameterize, ComponentParam, Number, NumberPoly, Point};
@@ -736,6 +736,7 @@ fn every_corpus_conic_passes_independent_checks_in_two_charts() {
     ];
     let mut counts = std::collections::BTreeMap::new();
     let mut stationary = 0;
+    let mut sections = 0;
     for file in ["cases.jsonl", "seed_examples.jsonl", "qi-quadrics.jsonl"] {
         let path = format!("{}/tests/data/{file}", env!("CARGO_MANIFEST_DIR"));
         let text = std::fs::read_to_string(&path).unwrap();
@@ -769,6 +770,17 @@ fn every_corpus_conic_passes_independent_checks_in_two_charts() {
                     };
                     let id = format!("{file} {id} chart {ci} component {k}");
                     *counts.entry(conic.shape.key()).or_insert(0) += 1;
+                    if comp.section.is_some() {
+                        sections += 1;
+                    }
+                    let Some(ComponentParam::Rational { x, .. }) = &comp.param else {
+                        panic!("{id}: a conic without its parameterization")
+                    };
+                    // the independent checks read X(u): on the route in its field, which the
+                    // plane section's route must equal
+                    let reference = param_conic(x, chart).unwrap();
+                    same_conic(&id, &conic, &reference);
+                    let conic = reference;
                     if let Ok(view) = &view {
                         assert_eq!(
                             view.components[k].name,
@@ -784,12 +796,124 @@ fn every_corpus_conic_passes_independent_checks_in_two_charts() {
             }
         }
     }
-    eprintln!("{counts:?}, {stationary} semi-axes checked exactly");
+    eprintln!("{counts:?}, {stationary} semi-axes checked exactly, {sections} from sections");
     assert!(stationary >= 20, "{stationary}");
+    assert!(sections >= 100, "{sections}");
     for key in ["ellipse", "hyperbola", "parabola", "circle"] {
         assert!(
             counts.get(key).copied().unwrap_or(0) >= 1,
             "{key}: {counts:?}"
         );
+    }
+}
+
+/// Relative closeness of two decimals.
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs()))
+}
+
+/// The plane-section route ([`affine_conic`]) and the parameterization's ([`param_conic`]) give
+/// the same conic: its type, normal, centre, lengths, axes (exactly where they share a field).
+fn same_conic(id: &str, got: &AffineConic, want: &AffineConic) {
+    assert_eq!(got.shape.key(), want.shape.key(), "{id}: the type");
+    match (&got.normal, &want.normal) {
+        (Some(g), Some(w)) => assert!(parallel(g, w), "{id}: the normal"),
+        (g, w) => assert_eq!(g.is_some(), w.is_some(), "{id}: the normal"),
+    }
+    let axis = |id: &str, g: &qsic::affine::Axis, w: &qsic::affine::Axis| {
+        assert!(
+            close(g.semi_axis2.to_f64(), w.semi_axis2.to_f64()),
+            "{id}: semi-axis² {} against {}",
+            g.semi_axis2.to_f64(),
+            w.semi_axis2.to_f64()
+        );
+        let (gu, wu) = (g.direction.unit, w.direction.unit);
+        let cos: f64 = (0..3).map(|i| gu[i] * wu[i]).sum();
+        assert!((cos.abs() - 1.0).abs() < 1e-9, "{id}: an axis");
+    };
+    match (&got.shape, &want.shape) {
+        (ConicShape::AtInfinity, ConicShape::AtInfinity) => {}
+        (
+            ConicShape::Circle { centre, radius2 },
+            ConicShape::Circle {
+                centre: c,
+                radius2: r,
+            },
+        ) => {
+            assert!(same_point(centre, c), "{id}: the centre");
+            assert!(close(radius2.to_f64(), r.to_f64()), "{id}: the radius");
+        }
+        (
+            ConicShape::Ellipse {
+                centre,
+                major,
+                minor,
+            },
+            ConicShape::Ellipse {
+                centre: c,
+                major: a,
+                minor: b,
+            },
+        )
+        | (
+            ConicShape::Hyperbola {
+                centre,
+                transverse: major,
+                conjugate: minor,
+            },
+            ConicShape::Hyperbola {
+                centre: c,
+                transverse: a,
+                conjugate: b,
+            },
+        ) => {
+            assert!(same_point(centre, c), "{id}: the centre");
+            axis(id, major, a);
+            axis(id, minor, b);
+        }
+        (
+            ConicShape::Parabola {
+                vertex,
+                axis,
+                focal_length2,
+            },
+            ConicShape::Parabola {
+                vertex: v,
+                axis: a,
+                focal_length2: f,
+            },
+        ) => {
+            assert!(same_point(vertex, v), "{id}: the vertex");
+            assert!(
+                (0..3).all(|i| close(axis.unit[i], a.unit[i])),
+                "{id}: the axis"
+            );
+            assert!(
+                close(focal_length2.to_f64(), f.to_f64()),
+                "{id}: the focal length"
+            );
+        }
+        _ => unreachable!("same keys"),
+    }
+}
+
+#[test]
+fn conics_in_planes_over_a_quadratic_field_have_their_data_in_that_field() {
+    // QI's pair 33: the planes x = c·w, c² + c − 1 = 0, cut the circles y² + z² = (3 + c)w²;
+    // their points need a further root (the parameterization is over a field of degree 4),
+    // their centres and radii do not
+    let found = conics_of("x^2+x*w-w^2", "-x*w+y^2+z^2-3*w^2");
+    assert_eq!(found.len(), 2);
+    for conic in &found {
+        let ConicShape::Circle { centre, radius2 } = &conic.shape else {
+            panic!("a circle: {:?}", conic.shape)
+        };
+        for v in centre.iter().chain([radius2]) {
+            assert!(v.numerator().len() <= 2, "in ℚ(√5): {v:?}");
+        }
+        let c = &centre[0];
+        assert!(c.mul(c).add(c).sub(&r(1, 1)).is_zero(), "c² + c = 1");
+        assert!(centre[1].is_zero() && centre[2].is_zero());
+        assert_eq!(*radius2, r(3, 1).add(c), "radius² = 3 + c");
     }
 }

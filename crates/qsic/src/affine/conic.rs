@@ -2,8 +2,11 @@
 //! — what a CAD kernel stores for a plane section of a natural quadric.
 //!
 //! The metric is the Euclidean one of the chart's affine coordinates `(x′, y′, z′)` (`w′ = 1`;
-//! `(x, y, z)` in the default chart `w = 0`). Everything is read from the parameterization
-//! `X(u) = x₀ + x₁u + x₂u²` alone (chart coordinates), no quadric needed. In the plane's
+//! `(x, y, z)` in the default chart `w = 0`). [`super::affine_conic`] reads a conic that carries its
+//! plane section ([`crate::param::PlaneSection`], every conic of `param`) there, over the
+//! plane's own field ([`super::section`]); [`param_conic`], the reference it is tested equal
+//! to, reads the parameterization `X(u) = x₀ + x₁u + x₂u²` alone (chart coordinates), no
+//! quadric needed, in the parameterization's field. In the plane's
 //! coordinates `Y` (`X = x₀Y₀ + x₁Y₁ + x₂Y₂`) the conic is `Y₀Y₂ − Y₁² = 0` (matrix `C`) and
 //! its line at infinity is `ℓ·Y = 0`, `ℓ = (w₀, w₁, w₂)` the `w′` coordinates of the `xᵢ`,
 //! so with `W(u) = w₀ + w₁u + w₂u²`:
@@ -26,11 +29,10 @@
 //!   orthogonal to `d` — all in `K`.
 
 use super::Chart;
-use crate::classify::ComponentKind;
 use crate::error::Error;
 use crate::param::curve::{from_quadratic, sqrt_field};
 use crate::param::expr::Names;
-use crate::param::{Component, ComponentParam, Number, Point};
+use crate::param::{Number, NumberPoly, Point};
 use qsic_algebra::field::Quadratic;
 use qsic_algebra::{Field, IBig, RBig, Ring, Sign};
 
@@ -239,7 +241,7 @@ pub(super) fn cross(a: &[Number; 3], b: &[Number; 3]) -> [Number; 3] {
     ]
 }
 
-fn scaled(v: &[Number; 3], k: &Number) -> [Number; 3] {
+pub(super) fn scaled(v: &[Number; 3], k: &Number) -> [Number; 3] {
     v.each_ref().map(|c| c.mul(k))
 }
 
@@ -247,11 +249,11 @@ fn combine(a: &Number, u: &[Number; 3], b: &Number, v: &[Number; 3]) -> [Number;
     std::array::from_fn(|i| a.mul(&u[i]).add(&b.mul(&v[i])))
 }
 
-fn int(v: i64) -> Number {
+pub(super) fn int(v: i64) -> Number {
     Number::from_int(&v.into())
 }
 
-fn div(a: &Number, b: &Number) -> Result<Number, Error> {
+pub(super) fn div(a: &Number, b: &Number) -> Result<Number, Error> {
     a.div(b)
         .ok_or_else(|| Error::Algebra("affine conic: division by zero".into()))
 }
@@ -280,40 +282,15 @@ fn conic_form(y: &[Number; 3], z: &[Number; 3]) -> Number {
 }
 
 /// `v` scaled so that its first nonzero coordinate is 1.
-fn normalized(v: [Number; 3]) -> Option<[Number; 3]> {
+pub(super) fn normalized(v: [Number; 3]) -> Option<[Number; 3]> {
     let k = v.iter().find(|c| !c.is_zero())?.inv()?;
     Some(scaled(&v, &k))
 }
 
-/// The affine data of a real conic component in `chart` (see the module documentation).
-///
-/// ```
-/// use qsic::{affine::{affine_conic, Chart, ConicShape}, io::parse_quadric, param::parameterize};
-/// use qsic_algebra::RBig;
-/// // the sphere x² + y² + z² = 25 and the planes z = ±3: two circles of radius 4
-/// let (a, b) = (parse_quadric("x^2+y^2+z^2-25").unwrap(), parse_quadric("z^2-9").unwrap());
-/// let curve = parameterize(&a, &b).unwrap();
-/// for c in &curve.components {
-///     let conic = affine_conic(c, &Chart::default()).unwrap().unwrap();
-///     let ConicShape::Circle { centre, radius2 } = conic.shape else { panic!("a circle") };
-///     assert_eq!(radius2, qsic::param::curve::rational(RBig::from(16)));
-///     assert_eq!(centre[2].mul(&centre[2]), qsic::param::curve::rational(RBig::from(9)));
-/// }
-/// # use qsic_algebra::Ring;
-/// ```
-///
-/// `Ok(None)` for a component that is not a real conic with a parameterization of degree 2
-/// (the only form [`crate::param::parameterize`] gives conics).
-///
-/// # Errors
-/// [`Error::Algebra`] for a degenerate parameterization (coefficient vectors not spanning a
-/// plane).
-pub fn affine_conic(component: &Component, chart: &Chart) -> Result<Option<AffineConic>, Error> {
-    let (ComponentKind::Conic, Some(ComponentParam::Rational { x, degree: 2 })) =
-        (component.kind, &component.param)
-    else {
-        return Ok(None);
-    };
+/// The affine data of the real conic `X(u)` (degree 2) in `chart`, from the parameterization
+/// alone (module documentation): the reference [`affine_conic`]'s plane-section route is held
+/// equal to, and the route of a conic without its section.
+pub fn param_conic(x: &[NumberPoly; 4], chart: &Chart) -> Result<AffineConic, Error> {
     // the coefficient vectors x₀, x₁, x₂ in chart coordinates
     let xs: [Point; 3] = std::array::from_fn(|k| {
         let p: Point = std::array::from_fn(|i| x[i].coeff(k));
@@ -324,25 +301,12 @@ pub fn affine_conic(component: &Component, chart: &Chart) -> Result<Option<Affin
     let image = |y: &[Number; 3]| -> [Number; 3] {
         std::array::from_fn(|i| (0..3).fold(Number::zero(), |acc, k| acc.add(&y[k].mul(&xs[k][i]))))
     };
-    let Some(k) = (0..3).find(|&k| !l[k].is_zero()) else {
-        return Ok(Some(AffineConic {
+    let Some((za, zb)) = at_infinity_basis(&l) else {
+        return Ok(AffineConic {
             normal: None,
             shape: ConicShape::AtInfinity,
-        }));
+        });
     };
-    // a basis of ℓ·Z = 0 and its images, the plane's directions
-    let (i, j) = match k {
-        0 => (1, 2),
-        1 => (0, 2),
-        _ => (0, 1),
-    };
-    let basis = |i: usize| -> [Number; 3] {
-        let mut z = [Number::zero(), Number::zero(), Number::zero()];
-        z[i] = l[k].clone();
-        z[k] = l[i].neg();
-        z
-    };
-    let (za, zb) = (basis(i), basis(j));
     let (va, vb) = (image(&za), image(&zb));
     let normal = normalized(cross(&va, &vb))
         .ok_or_else(|| Error::Algebra("affine conic: a degenerate parameterization".into()))?;
@@ -372,14 +336,31 @@ pub fn affine_conic(component: &Component, chart: &Chart) -> Result<Option<Affin
             )?
         }
     };
-    Ok(Some(AffineConic {
+    Ok(AffineConic {
         normal: Some(plain3(&normal)),
         shape,
-    }))
+    })
+}
+
+/// A basis `Z_a`, `Z_b` of the directions `ℓ·Z = 0` (entries of `ℓ` only), `None` for `ℓ = 0`.
+pub(super) fn at_infinity_basis(l: &[Number; 3]) -> Option<([Number; 3], [Number; 3])> {
+    let k = (0..3).find(|&k| !l[k].is_zero())?;
+    let (i, j) = match k {
+        0 => (1, 2),
+        1 => (0, 2),
+        _ => (0, 1),
+    };
+    let basis = |i: usize| -> [Number; 3] {
+        let mut z = [Number::zero(), Number::zero(), Number::zero()];
+        z[i] = l[k].clone();
+        z[k] = l[i].neg();
+        z
+    };
+    Some((basis(i), basis(j)))
 }
 
 /// The parabola `X(u)` (chart coordinates `x₀ + x₁u + x₂u²`, `w′ = W(u)` with a double root).
-fn parabola(
+pub(super) fn parabola(
     x0: &[Number; 3],
     x1: &[Number; 3],
     x2: &[Number; 3],
@@ -420,7 +401,7 @@ enum Mu<'a> {
 
 /// An ellipse (`hyperbola = false`) or hyperbola about `centre`: `ZᵀFZ = κ` in the basis
 /// `v_a`, `v_b` of the plane's directions, whose Gram matrix is `G` (`[11, 12, 22]`).
-fn central(
+pub(super) fn central(
     centre: [Number; 3],
     hyperbola: bool,
     f: &[Number; 3],

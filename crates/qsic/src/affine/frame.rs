@@ -12,7 +12,7 @@
 //! | ellipse | centre | the major axis | major, minor semi-axes |
 //! | hyperbola | centre | the transverse axis (the branch OpenCASCADE draws is on `+X`) | transverse (major), conjugate (minor) semi-axes |
 //! | parabola | vertex | the axis, from the vertex towards the focus | focal length `f` (`P + u²/(4f)·X + u·Y`) |
-//! | line | the point nearest the origin, `P − (P·d/d·d)d`; direction `d`, first nonzero coordinate positive | — | — |
+//! | line | over ℚ the point nearest the origin, `P − (P·d/d·d)d`, else the parameterization's point at `u = 0` (`u = ∞` when that is at infinity); direction `d`, first nonzero coordinate positive | — | — |
 //!
 //! `N` is the plane's normal, `Y = N × X`, so `(X, Y, N)` is right-handed and the conic is
 //! `location + a·cos θ·X + b·sin θ·Y` (ellipse) as in OpenCASCADE. A line `X(u) = x₀ + x₁u`
@@ -42,7 +42,8 @@ use qsic_algebra::{Field, IBig, RBig, Ring, Sign};
 pub struct FrameDirection {
     /// The exact vector (rational ones coprime integers), `None` when only decimals are known.
     pub vector: Option<[Number; 3]>,
-    /// `|vector|²`, exactly.
+    /// `|vector|²`, exactly; `None` with `vector` when only decimals are known, and for a
+    /// vector over a field of degree > 2 (no exact unit follows from it there).
     pub norm2: Option<Number>,
     /// `vector/|vector|` exactly, when `vector` is rational (coordinates in ℚ(√norm2)).
     pub unit: Option<[Number; 3]>,
@@ -115,7 +116,7 @@ pub enum Frame {
     },
     /// A line of ℝ³ (`gp_Lin`).
     Line {
-        /// Its point nearest the origin.
+        /// Its point nearest the origin (over ℚ), else the parameterization's point (module docs).
         location: [Number; 3],
         /// Its decimals.
         location_approx: [f64; 3],
@@ -296,8 +297,11 @@ fn direction_of(v: &[Number; 3]) -> FrameDirection {
             unit,
         };
     }
+    // in a field of degree > 2 no exact unit follows, and the square of the vector is about
+    // three times as long as the vector (the reduction by the defining polynomial)
+    let quadratic = v.iter().all(|c| c.field().is_none_or(|k| k.degree() <= 2));
     FrameDirection {
-        norm2: Some(plain(&dot(&v, &v))),
+        norm2: quadratic.then(|| plain(&dot(&v, &v))),
         approx: unit(decimals(&v)),
         vector: Some(v),
         unit: None,
@@ -442,9 +446,14 @@ fn line_frame(p: &Point, q: &Point) -> Result<Frame, Error> {
     if dd.sign() != Sign::Positive {
         return Err(Error::Algebra("frame: a degenerate line".into()));
     }
-    let t = div(&dot(&finite, &d), &dd)?;
-    let location: [Number; 3] = std::array::from_fn(|i| finite[i].sub(&t.mul(&d[i])));
-    let location = plain3(&location);
+    // over a larger field the quotient by |d|² would make the point several times as long
+    // as the line: its own point then
+    let location = if finite.iter().chain(&d).all(is_rational) {
+        let t = div(&dot(&finite, &d), &dd)?;
+        plain3(&std::array::from_fn(|i| finite[i].sub(&t.mul(&d[i]))))
+    } else {
+        plain3(&finite)
+    };
     Ok(Frame::Line {
         location_approx: decimals(&location),
         location,

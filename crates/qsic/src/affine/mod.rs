@@ -24,15 +24,17 @@ mod conic;
 mod curve;
 mod fast;
 mod frame;
+mod section;
 mod view;
 
 pub use common::common_surfaces;
-pub use conic::{affine_conic, approx, AffineConic, Axis, ConicShape, Direction, Surd};
+pub use conic::{approx, param_conic, AffineConic, Axis, ConicShape, Direction, Surd};
 pub use curve::{affine_curve, AffineComponent, AffineCurve, AffineSingularPoint};
 pub use fast::{conic_real_intersections, fast_affine_curve};
 pub use frame::{
     component_frame, conic_frame, point_frame, Frame, FrameDirection, FrameLength, Placement,
 };
+pub use section::affine_conic;
 pub use view::{affine_view, affine_view_of_curve, affine_view_within, surface_words, AffineView};
 
 use crate::error::Error;

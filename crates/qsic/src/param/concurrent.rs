@@ -65,6 +65,7 @@ pub(super) fn concurrent_lines_curve(
             real: true,
             param: Some(line_param(&vn, &lift(point))),
             plane: None,
+            section: None,
         });
         curve.pieces.push(RealPiece::whole(component));
     }

@@ -77,6 +77,21 @@ pub struct Component {
     pub param: Option<ComponentParam>,
     /// The plane `ax + by + cz + dw = 0` holding a conic, as `[a, b, c, d]`.
     pub plane: Option<Point>,
+    /// A real conic as its plane's section, over the plane's own field (see [`PlaneSection`]).
+    pub section: Option<PlaneSection>,
+}
+
+/// A conic as the section of a quadric by its plane: the points `E·Y` of ℙ³ for the `Y` of ℙ²
+/// with `YᵀCY = 0`, `E` (4×3, its columns spanning the plane) and `C` (3×3, symmetric,
+/// nonsingular) over the plane's own field — ℚ, or the ℚ(√δ) of a plane pair — which is
+/// usually smaller than the parameterization's (that also holds a point of the conic). The
+/// conic's affine data (centre, axes) are read from it.
+#[derive(Clone, Debug)]
+pub struct PlaneSection {
+    /// `E`: `basis[i][k]` is coordinate `i` of the plane's `k`-th spanning point.
+    pub basis: [[Number; 3]; 4],
+    /// `C`, the quadric restricted to the plane in that basis.
+    pub conic: [[Number; 3]; 3],
 }
 
 /// A value of the parameter `u` on the projective line.

@@ -303,6 +303,7 @@ pub(super) fn line_and_cubic_curve(
                 degree: 3,
             }),
             plane: None,
+            section: None,
         },
         Component {
             kind: ComponentKind::Line,
@@ -313,6 +314,7 @@ pub(super) fn line_and_cubic_curve(
                 degree: 1,
             }),
             plane: None,
+            section: None,
         },
     ];
     let singular_points: Vec<curve::SingularPoint> = match &lc.meeting {

@@ -39,7 +39,7 @@ mod zsqrt;
 
 pub use curve::{
     Arc, Component, ComponentParam, Curve, LevinForm, Number, NumberPoly, ParamRange, ParamValue,
-    Point, PointPoly, RealPiece, Sheet, SingularPoint,
+    PlaneSection, Point, PointPoly, RealPiece, Sheet, SingularPoint,
 };
 pub use line_cubic::{parameterize_line_and_cubic, LineAndCubic, Meeting};
 pub use nodal::{parameterize_singular_quartic, SingularQuartic};

@@ -323,6 +323,7 @@ pub(super) fn singular_quartic_curve(
             real: param.is_some(),
             param,
             plane: None,
+            section: None,
         }],
         singular_points,
         pieces,

@@ -51,5 +51,6 @@ pub(super) fn non_real(kind: ComponentKind, multiplicity: u32) -> Component {
         real: false,
         param: None,
         plane: None,
+        section: None,
     }
 }

@@ -105,6 +105,7 @@ pub(crate) fn single_curve(classification: Classification, q: &Quadric) -> Curve
             real: false,
             param: None,
             plane: None,
+            section: None,
         }),
         _ => curve
             .components
@@ -126,6 +127,7 @@ fn component(
         real: true,
         param,
         plane,
+        section: None,
     }
 }
 

@@ -792,6 +792,7 @@ pub(super) fn quartic_curve(
             real: n > 0,
             param: Some(param),
             plane: None,
+            section: None,
         }],
         singular_points: Vec::new(),
         pieces,

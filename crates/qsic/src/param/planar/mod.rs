@@ -30,7 +30,7 @@
 
 mod skew;
 
-use super::curve::{self, Component, ComponentParam, Curve, Number};
+use super::curve::{self, Component, ComponentParam, Curve, Number, PlaneSection};
 use super::curve::{RealPiece, SingularPoint};
 pub(super) use super::parts::{line_param, non_real, rational_roots, to_point, Mat};
 use super::surface::sqrt_in_field;
@@ -418,6 +418,7 @@ pub(crate) fn plane_pair_curve(
             real: true,
             param: Some(line_param(&ext.embed_vec(&v[0]), &ext.embed_vec(&v[1]))),
             plane: None,
+            section: None,
         });
         v_component = Some(0);
         v_line = VLine::Component(0);
@@ -485,6 +486,7 @@ fn build_plane(
                 real: plane.real,
                 param: None,
                 plane: plane.real.then(|| to_point(&ext.embed_vec(&plane.l))),
+                section: None,
             };
             plane.comps.push(push(components, c));
         }
@@ -507,6 +509,7 @@ fn build_plane(
                     real: true,
                     param: Some(line_param(&ext.embed_vec(&p0), &ext.embed_vec(&p1))),
                     plane: None,
+                    section: None,
                 }
             } else {
                 non_real(ComponentKind::Line, 2 * m)
@@ -558,6 +561,7 @@ fn build_plane(
                         real: true,
                         param: Some(line_param(&ext.embed_vec(&p0), &ext.embed_vec(&p1))),
                         plane: None,
+                        section: None,
                     }
                 } else {
                     non_real(ComponentKind::Line, m)
@@ -606,6 +610,7 @@ fn build_plane(
                     real: true,
                     param: Some(line_param(&k, &end)),
                     plane: None,
+                    section: None,
                 };
                 plane.comps.push(push(components, c));
             }
@@ -749,7 +754,18 @@ fn conic_component(
         real: true,
         param: Some(conic_param(&e, &c, &y)),
         plane: Some(to_point(&ext.embed_vec(&plane.l))),
+        section: Some(plane_section(plane, delta)),
     })
+}
+
+/// The conic of `plane` as its section over the plane's own field (ℚ, or ℚ(√δ)).
+fn plane_section(plane: &Plane, delta: Option<&IBig>) -> PlaneSection {
+    let field = delta.map(curve::sqrt_field);
+    let own = |q: &Quadratic| curve::from_quadratic(q, field.as_ref());
+    PlaneSection {
+        basis: std::array::from_fn(|i| std::array::from_fn(|j| own(&plane.e[(i, j)]))),
+        conic: std::array::from_fn(|i| std::array::from_fn(|j| own(&plane.c[(i, j)]))),
+    }
 }
 
 /// A real point where components meet: which planes' components pass and how.

@@ -137,6 +137,7 @@ pub(super) fn conjugate_pair_curve(
                 real: true,
                 param: Some(param),
                 plane: None,
+                section: None,
             });
         }
         // the vertices p±, q±, each in its own field
@@ -360,6 +361,7 @@ fn ruled_lines(
                 real: true,
                 param: Some(line_param(&end[..4], &end[4..])),
                 plane: None,
+                section: None,
             });
             curve.connected.push(vec![curve.pieces.len()]);
             curve.pieces.push(RealPiece::whole(component));
