@@ -28,6 +28,7 @@
 //! `v = e_a + u·e_b`. ℚ(√δ, √r) is written ℚ(γ) with an explicit primitive element: `γ = √δ + √r`
 //! for a rational `r`, `γ = √r` otherwise (`√δ = (γ² − a)/b` for `r = a + b√δ`).
 
+mod point;
 mod skew;
 
 use super::curve::{self, Component, ComponentParam, Curve, Number, PlaneSection};
@@ -726,6 +727,12 @@ fn conic_component(
                         None if found.is_none() => found = Some((pi, pj, Some(r))),
                         None => {}
                     }
+                }
+            }
+            // no ratio a square in K: a small point of K, before a root is adjoined
+            if let (Some((_, _, Some(_))), Some(delta)) = (&found, delta) {
+                if let Some(y) = point::small_point_in_field(&dg, delta) {
+                    found = Some((y, vec![], None));
                 }
             }
             match (found, &given) {

@@ -245,3 +245,31 @@ fn secant_conics_through_rational_meeting_points_stay_in_the_planes_field() {
         }
     }
 }
+
+/// QI's pair 33: the planes `x = c·w`, `c² + c = 1`, cut the circles `y² + z² = (3 + c)w²`,
+/// which meet at two imaginary points; no ratio of their diagonal form is a square in ℚ(√5),
+/// but `(y, z, w) = (φ, 1, 1)`, `φ² = 2 + c`, is a point over ℚ(√5): each circle is
+/// parameterized over the planes' field, degree 2 (QI's), not over ℚ(√5, √(3 + c)) — also
+/// under integer changes of coordinates, which the small search sees as other diagonal forms.
+#[test]
+fn secant_conics_with_a_small_point_of_the_planes_field_stay_in_it() {
+    let mut moved_in_field = 0;
+    for (k, t) in MOVES.iter().enumerate() {
+        let a = transformed("x^2+x*w-w^2", t);
+        let b = transformed("-x*w+y^2+z^2-3*w^2", t);
+        let curve = super::super::parameterize(&a, &b).unwrap();
+        assert_eq!(curve.classification.case, Some(14), "{t:?}");
+        let conics: Vec<&Component> = curve.components.iter().filter(|c| c.real).collect();
+        assert_eq!(conics.len(), 2);
+        for c in conics {
+            let p = c.param.as_ref().expect("real");
+            assert!(p.lies_on(a.matrix()) && p.lies_on(b.matrix()));
+            if k == 0 {
+                assert_eq!(field_degree(p), 2);
+            } else if field_degree(p) == 2 {
+                moved_in_field += 1;
+            }
+        }
+    }
+    eprintln!("{moved_in_field} conics of moved pairs over ℚ(√5)");
+}
