@@ -164,9 +164,10 @@ fn conics_in_irrational_planes_are_parameterized_over_their_field() {
         ],
     );
     assert_eq!(topology(&c), (1, 0));
-    // … and y² + z² = 3w² on the same planes needs √3 over ℚ(√2): a quartic field
-    let c = curve("x^2-y^2+z^2-3*w^2", "x^2-2*y^2");
-    assert_eq!(components(&c), [("conic", 1, true), ("conic", 1, true)]);
+    // … y² + z² = 3w² on the same planes has the point (1, √2, 1) over ℚ(√2) (3 = 1 + 2),
+    // though no ratio of its diagonal form is a square there: its conics stay in ℚ(√2); and
+    // y² + z² = 7w² has no point over ℚ(√2) at all (its quaternion algebra ramifies at the two
+    // primes over 7, which split there): a quartic field
     let degree = |k: &qsic::param::Component| match &k.param {
         Some(ComponentParam::Rational { x, .. }) => x
             .iter()
@@ -177,7 +178,17 @@ fn conics_in_irrational_planes_are_parameterized_over_their_field() {
             .unwrap_or(1),
         _ => 0,
     };
-    assert!(c.components.iter().all(|k| degree(k) == 4));
+    for (n, want) in [(3, 2), (7, 4)] {
+        let (a, b) = (format!("x^2-y^2+z^2-{n}*w^2"), "x^2-2*y^2");
+        let c = curve(&a, b);
+        assert_eq!(components(&c), [("conic", 1, true), ("conic", 1, true)]);
+        assert!(c.components.iter().all(|k| degree(k) == want), "{n}");
+        let (qa, qb) = (parse_quadric(&a).unwrap(), parse_quadric(b).unwrap());
+        for k in &c.components {
+            let p = k.param.as_ref().unwrap();
+            assert!(p.lies_on(qa.matrix()) && p.lies_on(qb.matrix()), "{n}");
+        }
+    }
 }
 
 #[test]
