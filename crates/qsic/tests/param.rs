@@ -9,7 +9,7 @@ mod common;
 
 use common::read_form;
 use qsic::io::parse_quadric;
-use qsic::param::{parameterize_smooth_quartic, LevinParameterization, PolyVector, Substituted};
+use qsic::param::{parameterize_smooth_quartic, LevinParameterization, PolyVector};
 use qsic::{classify, Quadric};
 use qsic_algebra::field::Quadratic;
 use qsic_algebra::{Poly, RBig, Sign};
@@ -210,21 +210,6 @@ fn disguised_pencils_keep_their_component_count() {
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
-}
-
-/// QI's pair 6: `A = xy + zw` is doubly ruled with rational rulings (`det A = 1/16`), while
-/// every member at a sample of the pencil's (2, 2) arcs needs `√2`: the curve is taken on `A`
-/// itself and is rational, as QI's — and `B` is substituted into its ruling.
-#[test]
-fn an_input_with_rational_rulings_is_the_parameterization_surface() {
-    let a = parse_quadric("x*y+z*w").unwrap();
-    let b = parse_quadric("x^2-y^2+z^2+2*z*w-w^2").unwrap();
-    let p = parameterize_smooth_quartic(&a, &b).unwrap();
-    check_identities("qi-006", &p, &a, &b);
-    assert_eq!(p.delta, None);
-    assert_eq!(p.surface.lambda, None);
-    assert_eq!(p.substituted, Substituted::B);
-    assert_eq!(p.real_components().unwrap(), 2);
 }
 
 #[test]

@@ -166,10 +166,6 @@ pub(super) fn choose_surface_quick(
     let Some(arcs) = arcs else {
         return Ok(None);
     };
-    // the last arc holds λ → +∞, where λA − B has the inertia of A (det A ≠ 0 here)
-    let a_ruled = arcs
-        .last()
-        .is_some_and(|(_, i)| i.positive == 2 && i.negative == 2);
     let lambdas: Vec<RBig> = arcs
         .into_iter()
         .filter(|(_, i)| i.positive == 2 && i.negative == 2)
@@ -183,17 +179,6 @@ pub(super) fn choose_surface_quick(
         return Ok(None);
     };
     let wide = |m: &[[i64; 4]; 4]| m.map(|row| row.map(i128::from));
-    if a_ruled {
-        // the input A itself (λ = ∞: the member 0·B − A of the pencil read the other way)
-        // when its rulings are rational — the simplest member, and often the only one whose
-        // rulings need no root where the arcs' samples' do
-        if let Some(Some(mut chosen)) = surface_among(&wide(bi), &wide(ai), vec![RBig::ZERO])? {
-            if chosen.surface.ruling.delta.is_none() {
-                chosen.surface.lambda = None;
-                return Ok(Some(chosen));
-            }
-        }
-    }
     Ok(surface_among(&wide(ai), &wide(bi), lambdas)?.flatten())
 }
 
