@@ -82,17 +82,7 @@ fn section_conic(section: &PlaneSection, chart: &Chart) -> Result<AffineConic, E
             (0..3).fold(Number::zero(), |acc, k| acc.add(&y[k].mul(&cols[k][i])))
         })
     };
-    let form = |y: &V3, z: &V3| -> Number {
-        let mut acc = Number::zero();
-        for i in 0..3 {
-            for j in 0..3 {
-                if !c[i][j].is_zero() {
-                    acc = acc.add(&y[i].mul(&c[i][j]).mul(&z[j]));
-                }
-            }
-        }
-        acc
-    };
+    let form = |y: &V3, z: &V3| bilinear(c, y, z);
     let Some((za, zb)) = at_infinity_basis(&l) else {
         return Ok(AffineConic {
             normal: None,
@@ -137,6 +127,19 @@ fn section_conic(section: &PlaneSection, chart: &Chart) -> Result<AffineConic, E
     })
 }
 
+/// `yᵀCz`.
+fn bilinear(c: &[[Number; 3]; 3], y: &V3, z: &V3) -> Number {
+    let mut acc = Number::zero();
+    for i in 0..3 {
+        for j in 0..3 {
+            if !c[i][j].is_zero() {
+                acc = acc.add(&y[i].mul(&c[i][j]).mul(&z[j]));
+            }
+        }
+    }
+    acc
+}
+
 /// The adjugate of the symmetric 3×3 matrix `c`.
 fn adjugate(c: &[[Number; 3]; 3]) -> [[Number; 3]; 3] {
     let m = |i: usize, j: usize| &c[i][j];
@@ -167,18 +170,8 @@ fn parabola_through(
         1 => (unit(0), unit(2)),
         _ => (unit(0), unit(1)),
     };
-    let cy: V3 =
-        std::array::from_fn(|i| (0..3).fold(Number::zero(), |acc, k| acc.add(&c[i][k].mul(&y[k]))));
-    let cf = |p: &V3, q: &V3| -> Number {
-        let mut acc = Number::zero();
-        for i in 0..3 {
-            for j in 0..3 {
-                acc = acc.add(&p[i].mul(&c[i][j]).mul(&q[j]));
-            }
-        }
-        acc
-    };
-    let (ya, yb) = (dot(&cy, &ea), dot(&cy, &eb));
+    let cf = |p: &V3, q: &V3| bilinear(c, p, q);
+    let (ya, yb) = (cf(y, &ea), cf(y, &eb));
     let two = int(2);
     let lin = |a: &Number, p: &V3, b: &Number, q: &V3| -> V3 {
         std::array::from_fn(|i| a.mul(&p[i]).add(&b.mul(&q[i])))

@@ -22,10 +22,8 @@ fn small_values(delta: &IBig) -> Vec<Quadratic> {
                 if !(0..=3).contains(&b_abs) {
                     continue;
                 }
-                for b in [b_abs, -b_abs] {
-                    if b == -b_abs && b == 0 {
-                        continue;
-                    }
+                let signs: &[i64] = if b_abs == 0 { &[0] } else { &[1, -1] };
+                for b in signs.iter().map(|s| s * b_abs) {
                     let r = |n: i64| RBig::from_parts_signed(n.into(), (c as u64).into());
                     if let Some(t) = Quadratic::new(r(a), r(b), delta.clone()) {
                         out.push(t);
