@@ -202,3 +202,60 @@ fn disguised_pairs_are_balanced_and_sampled() {
     }
     assert_eq!(seen, cases.len());
 }
+
+/// Steinmetz's cylinders `x² + y² = k²`, `(x − εk)² + z² = k²` with axes `εk` apart
+/// (`ε = 10⁻⁵, 10⁻¹⁰, 10⁻²⁰`, `k = 1, 10⁵, 10⁻⁵`): a smooth quartic within `√ε` of the two ellipses
+/// `z = ±y` it degenerates to, each of perimeter `4k·E(1/√2)·√2`. The near-nodes lie far below
+/// the floats' resolution in `u`, so the walk goes on in a local parameter there; the
+/// polyline is one closed branch, on both quadrics, every step within [`MAX_ANGLE`], and for
+/// `k ≥ 1` its length within 1 % of the two ellipses' (computed here by Simpson's rule).
+#[test]
+fn near_nodes_far_below_the_floats_are_sampled() {
+    use qsic::param::sample::verify_turns;
+    // the perimeter of the ellipse with semi-axes 1 and √2: ∫₀^{2π} √(1 + cos²φ) dφ
+    let n = 2000;
+    let h = 2.0 * std::f64::consts::PI / n as f64;
+    let f = |phi: f64| (1.0 + phi.cos() * phi.cos()).sqrt();
+    let simpson: f64 = (0..=n)
+        .map(|i| {
+            let w = if i == 0 || i == n {
+                1.0
+            } else if i % 2 == 1 {
+                4.0
+            } else {
+                2.0
+            };
+            w * f(i as f64 * h)
+        })
+        .sum::<f64>()
+        * h
+        / 3.0;
+    for eps in ["1/100000", "1/10000000000", "1/100000000000000000000"] {
+        for (k, size) in [("1", 1.0), ("100000", 1e5), ("1/100000", 1e-5)] {
+            let a = qsic::io::parse_quadric(&format!("x^2+y^2-({k})^2")).unwrap();
+            let b = qsic::io::parse_quadric(&format!("(x-{eps}*{k})^2+z^2-({k})^2")).unwrap();
+            let curve = parameterize(&a, &b).unwrap();
+            let s = sample(&curve, &SampleOptions::default())
+                .unwrap_or_else(|e| panic!("ε = {eps}, k = {k}: {e}"));
+            verify_on_quadrics(&s, &a, &b).unwrap();
+            verify_turns(&s).unwrap();
+            let [piece] = s.pieces.as_slice() else {
+                panic!("one piece");
+            };
+            let [branch] = piece.affine.branches.as_slice() else {
+                panic!("one closed branch");
+            };
+            let (length, _) = length_and_turn(branch);
+            let want = 2.0 * simpson * size;
+            // a piece 10⁻⁵ across is not yet walked at its own scale (the turn is measured
+            // between unit vectors of ℝ⁴): its points are checked, not its length
+            if size < 1.0 {
+                continue;
+            }
+            assert!(
+                (length / want - 1.0).abs() < 0.01,
+                "ε = {eps}, k = {k}: {length} against {want}"
+            );
+        }
+    }
+}

@@ -8,7 +8,9 @@
 //!
 //! # Bound
 //! Horner's rounding error is at most `γ·Σₖ|cₖ||t|ᵏ` per coordinate (Higham, §5.1). An
-//! evaluation is accepted when that bound, for `x` and `d·√s`, is at most `10⁻¹⁰·‖X‖`. The
+//! evaluation is accepted when that bound, for `x` and `d·√s`, is at most `10⁻¹⁰·‖X‖`; `√s`
+//! counts with its own error, `min(√e, e/√ŝ)` for `s` computed within `e`
+//! ([`Evaluator::root_bound`]), large where `s` is a small difference of large terms. The
 //! bound is majorized first once per parameterization (`Σ|x| + Σ|d|·√(Σ|s|)`, [`sure_bounds`]),
 //! then by `|c₀| + |t|·Σₖ₌₁|cₖ|`, and computed only where neither certifies.
 //!
@@ -40,6 +42,13 @@ pub(super) const NARROW: (f64, f64) = (
     f64::from_bits((1023 - 800) << 52),
     f64::from_bits((1023 + FLOAT_SCALE as u64) << 52),
 );
+
+/// Horner's rounding of `s` (five terms, the coefficients rounded once), per unit of
+/// `Σₖ|sₖ||t|ᵏ`: `γ₈ < 9ε`, with a margin.
+pub(super) const GAMMA_S: f64 = 16.0 * f64::EPSILON;
+
+/// The same in double-double arithmetic (the coefficients rounded to about `2⁻¹⁰⁵`).
+pub(super) const GAMMA_S_DD: f64 = 32.0 / (1u128 << 104) as f64;
 
 /// Most coefficients of one coordinate: homogeneous degree at most 8 (a quartic has 4).
 pub(super) const MAX_TERMS: usize = 9;
@@ -110,8 +119,23 @@ pub(super) struct HornerSet {
     pub(super) x: [Lanes; MAX_TERMS],
     pub(super) d: [Lanes; MAX_TERMS],
     pub(super) s: [f64; 5],
+    /// `|s|` in the same order, for `s`'s rounding bound ([`Evaluator::root_bound`]).
+    pub(super) s_abs: [f64; 5],
     pub(super) x_abs: [Lanes; MAX_TERMS],
     pub(super) d_abs: [Lanes; MAX_TERMS],
+}
+
+/// `|√s − √ŝ|` for an `s` within `e` of the computed `ŝ` (`root = √max(ŝ, 0)`):
+/// `min(√e, e/root)`; zero for `e = 0`.
+#[inline(always)]
+pub(super) fn root_error(e: f64, root: f64) -> f64 {
+    if e == 0.0 {
+        0.0
+    } else if root * root > e {
+        e / root
+    } else {
+        e.sqrt()
+    }
 }
 
 /// The bounds of [`Evaluator::sure`]: `R = √(Σ|sₖ|·(1 + 2⁻³⁰))` bounds the computed `√s` at
@@ -120,7 +144,8 @@ pub(super) struct HornerSet {
 /// this way) unless `K` is positive and the sum is below `10³⁰⁰`: the values are then finite.
 pub(super) fn sure_bounds(gamma: f64, x_abs_max: f64, d_abs_max: f64, s: &[f64; 5]) -> (f64, f64) {
     let margin = 1.0 + 2f64.powi(-30);
-    let root = (s.iter().map(|v| v.abs()).sum::<f64>() * margin).sqrt();
+    // the computed root and its rounding ([`Evaluator::root_bound`]) within twice the largest
+    let root = 2.0 * (s.iter().map(|v| v.abs()).sum::<f64>() * margin).sqrt();
     let size = x_abs_max + d_abs_max * root;
     let norm = 1e10 * gamma * size * margin;
     if size.is_finite() && size < 1e300 && norm > 0.0 && norm.is_finite() {
@@ -251,6 +276,7 @@ impl<'a> Evaluator<'a> {
                 x: x_desc,
                 d: d_desc,
                 s: s_desc,
+                s_abs: s_desc.map(f64::abs),
                 x_abs: abs(&x_desc),
                 d_abs: abs(&d_desc),
             },
@@ -258,6 +284,7 @@ impl<'a> Evaluator<'a> {
                 x,
                 d: dv,
                 s: sv,
+                s_abs: sv.map(f64::abs),
                 x_abs: abs(&x),
                 d_abs: abs(&dv),
             },
@@ -334,10 +361,24 @@ impl<'a> Evaluator<'a> {
     /// ([`Evaluator::majorant`]) certify an evaluation with `√s = root` and norm `norm`.
     #[inline(always)]
     pub(super) fn cheaply_certified(&self, t: f64, rev: bool, root: f64, norm: f64) -> bool {
+        let root = self.root_bound(t, rev, root);
         self.sure(root, norm)
             || norm.is_finite()
                 && norm > 0.0
                 && self.gamma * self.majorant(t, rev, root) <= 1e-10 * norm
+    }
+
+    /// The computed `√s = root` at `t` plus its rounding in units of `γ`: `s` is within
+    /// `e = GAMMA_S·Σₖ|sₖ||t|ᵏ` of the computed value, so `√s` within `min(√e, e/root)`
+    /// (`|√x − √y| ≤ √|x − y|` and `≤ |x − y|/(√x + √y)`). The bounds take this in place of
+    /// `root`: the error of `d·√s` is at most `|d|·(root + that)` in units of `γ`. Zero
+    /// added for a rational parameterization (`s = 0`).
+    #[inline(always)]
+    pub(super) fn root_bound(&self, t: f64, rev: bool, root: f64) -> f64 {
+        let sa = &self.horner[usize::from(rev)].s_abs;
+        let at = t.abs();
+        let size = sa[1..].iter().fold(sa[0], |acc, c| acc * at + c);
+        root + root_error(GAMMA_S * size, root) / self.gamma
     }
 
     /// The unit vector of the value `x` (with `√s = root`) at the reduced parameter `t`,
@@ -370,7 +411,7 @@ impl<'a> Evaluator<'a> {
         norm: f64,
         root: f64,
     ) -> Option<[f64; 4]> {
-        let bound = self.bound_of::<NA, ND>(t, rev, root);
+        let bound = self.bound_of::<NA, ND>(t, rev, self.root_bound(t, rev, root));
         if self.bound_certifies(bound, norm) {
             return Some(x.map(|v| v / norm));
         }
@@ -458,6 +499,7 @@ impl<'a> Evaluator<'a> {
                     m[i] += -root * w[i];
                 }
                 let (np, nm) = (dot(&p, &p).sqrt(), dot(&m, &m).sqrt());
+                let root = self.root_bound(t, rev, root);
                 if self.sure(root, np) && nm >= self.sure_norm {
                     *pu = p.map(|v| v / np);
                     *mu = m.map(|v| v / nm);
@@ -661,6 +703,7 @@ impl<'a> Evaluator<'a> {
         } else {
             [0.0; 4]
         };
+        let root = self.root_bound(t, rev, root);
         let bound = (0..4).map(|i| bx[i] + bd[i] * root).fold(0.0, f64::max);
         self.certify_with(bound, t, rev, sheet, x, norm)
     }
@@ -695,7 +738,25 @@ impl<'a> Evaluator<'a> {
         if !bound.is_finite() {
             return None;
         }
-        self.eval_dd(t, rev, sheet, bound).and_then(unit)
+        let x = self.eval_dd(t, rev, sheet, bound)?;
+        if self.levin {
+            // `√s`'s own rounding in double-double: `|d|·min(√e, e/√ŝ)`, `e` from
+            // `GAMMA_S_DD`, within `10⁻¹⁰·‖X‖` as well
+            let dd = self.dd();
+            let root = horner_dd(&dd.s, t, rev);
+            let root = (root.0 + root.1).max(0.0).sqrt();
+            let n = self.big_d + 1;
+            let s_abs = horner_scalar(&self.s().map(f64::abs), t.abs(), rev);
+            let bd = horner_lanes_abs(&self.d()[..n - 2], t, rev);
+            let err =
+                bd.iter().fold(0.0, |m: f64, v| m.max(*v)) * root_error(GAMMA_S_DD * s_abs, root);
+            let norm = dot(&x, &x).sqrt();
+            // NaN fails too
+            if err.is_nan() || err > 1e-10 * norm {
+                return None;
+            }
+        }
+        unit(x)
     }
 
     /// The root of `s` in `(lo, hi)` by Newton's method safeguarded by bisection, `s`

@@ -22,6 +22,7 @@
 //! | evaluation | `eval` | a parameter on ℙ¹ → a certified unit vector, or none |
 //! | walk | `walk`, `sampler` | the arcs of a piece → an oriented polyline with its exact marks |
 //! | affine view | `view` | the polyline and its marks → branches in the chart, points at infinity |
+//! | local parameter | `local` | a component and the place its walk stopped → the same component in `t = u − c`, `c` beside the cluster there |
 //!
 //! Float kernels (double-double, Horner, `sin`/`cos`, Newton) are in `kernels`, each called
 //! from one dispatch point: a point's evaluation from `Evaluator::eval_unit` (floats
@@ -44,6 +45,13 @@
 //! three points lie within [`AFFINE_RADIUS`] of the origin). At most [`MAX_DEPTH`] bisections
 //! of a grid segment and [`MAX_POINTS`] points per call: beyond either, an error.
 //!
+//! Where the walk stops (no certified point, no convergence, or a step wider than
+//! [`MAX_ANGLE`] beside an arc end it could not evaluate), the piece is walked again in a
+//! local parameter `t = u − c` with `c` at the cluster of roots there (`local`, at most three
+//! times, one inside the other), bisected geometrically towards it and at most
+//! [`MAX_LOCAL_DEPTH`] deep: near-nodes 10⁻³⁰ across come out with every step within the
+//! promised turn.
+//!
 //! # The chart
 //! `h(X) = aX₀ + bX₁ + cX₂ + dX₃` (default `w`) is the plane at infinity. A point is at
 //! infinity iff it is marked at an exact crossing (`crossings`), whatever its float `h`.
@@ -57,6 +65,7 @@ pub(super) mod convert;
 mod crossings;
 mod eval;
 mod kernels;
+mod local;
 pub(crate) mod plane;
 mod sampler;
 #[cfg(test)]
@@ -81,6 +90,9 @@ use std::cell::RefCell;
 pub const MAX_ANGLE: f64 = 0.1;
 /// Most bisections of one segment of the initial grid.
 pub const MAX_DEPTH: u32 = 48;
+/// Most bisections of one segment in a local parameter (`local`): its cluster may lie
+/// 10⁻³⁰ from the grid's points, a hundred halvings away.
+pub const MAX_LOCAL_DEPTH: u32 = 160;
 /// Most points of one [`sample`] call (requested and added by refinement together).
 pub const MAX_POINTS: usize = 1 << 22;
 /// The chord tolerance is enforced on segments within this distance of the chart's origin.
@@ -299,6 +311,12 @@ pub fn sample_within(
     // one sampler per component, made when its first piece is met
     let mut samplers: Vec<Option<Sampler>> = Vec::new();
     samplers.resize_with(curve.components.len(), || None);
+    let ctx = Context {
+        curve,
+        chart: &chart,
+        tolerance: options.tolerance,
+        approx: &approx,
+    };
     for piece in &curve.pieces {
         let sampled = match piece {
             RealPiece::Point { component, point } => point_piece(*component, point, &chart)?,
@@ -316,31 +334,30 @@ pub fn sample_within(
                     })?;
                 let slot = &mut samplers[*component];
                 if slot.is_none() {
-                    *slot = Some(Sampler {
-                        eval: match Evaluator::new(param) {
-                            // the floats as they are where none is near the ends of the range
-                            Ok(e) if e.narrow => e,
-                            _ => {
-                                let scaled =
-                                    in_range[*component].get_or_init(|| in_float_range(param));
-                                Evaluator::new(scaled.as_ref().unwrap_or(param))?
-                            }
-                        },
-                        crossings: if lies_in_plane(param, &chart.exact) {
-                            Crossings::InPlane
-                        } else {
-                            exact_crossings(param, &ExactParam::new(param), &chart.exact)?
-                        },
-                        singular: singular_params(curve, param, &chart.exact),
-                        chart: &chart,
-                        tolerance: options.tolerance,
-                        approx: &approx,
-                        ends: RefCell::new(Vec::new()),
-                        other_sheet: RefCell::new(None),
-                    });
+                    *slot = Some(ctx.sampler(param, &in_range[*component])?);
                 }
                 let sampler = slot.as_ref().expect("made above");
-                sampler.piece(*component, arcs, *closed, options.points, &mut budget)?
+                match checked_piece(
+                    sampler,
+                    *component,
+                    (arcs, *closed),
+                    options.points,
+                    &mut budget,
+                ) {
+                    Ok(p) => p,
+                    Err(e) => match sampler.stuck.take() {
+                        // the floats lost the curve: a local parameter there, exactly
+                        Some(theta) => ctx.local_piece(
+                            (param, arcs, *closed),
+                            *component,
+                            theta,
+                            options.points,
+                            &mut budget,
+                            e,
+                        )?,
+                        None => return Err(e),
+                    },
+                }
             }
         };
         pieces.push(sampled);
@@ -396,23 +413,138 @@ pub fn verify_on_quadrics(sampled: &Sampled, a: &Quadric, b: &Quadric) -> Result
 /// # Errors
 /// [`Error::Algebra`] naming the piece, the point and the angle of the first wider step.
 pub fn verify_turns(sampled: &Sampled) -> Result<(), Error> {
-    let cos = MAX_ANGLE.cos() - 1e-12;
     for (k, piece) in sampled.pieces.iter().enumerate() {
-        for branch in piece.branches() {
-            for (i, w) in branch.windows(2).enumerate() {
-                let d: f64 = (0..4).map(|j| w[0][j] * w[1][j]).sum();
-                if d.is_nan() || d.abs() < cos {
-                    return Err(Error::Algebra(format!(
-                        "piece {k}: the sampled points {i} and {} of a branch are {:.3} rad \
-                         apart, beyond the promised {MAX_ANGLE}: the floats lost the curve there",
-                        i + 1,
-                        d.abs().min(1.0).acos()
-                    )));
-                }
-            }
+        if let Some((i, angle)) = first_wide_step(piece) {
+            return Err(Error::Algebra(format!(
+                "piece {k}: the sampled points {i} and {} of a branch are {angle:.3} rad \
+                 apart, beyond the promised {MAX_ANGLE}: the floats lost the curve there",
+                i + 1,
+            )));
         }
     }
     Ok(())
+}
+
+/// The first step along a branch of `piece` wider than [`MAX_ANGLE`] (up to sign, with
+/// 10⁻¹² of slack): its index in the branch and its angle.
+fn first_wide_step(piece: &SampledPiece) -> Option<(usize, f64)> {
+    let cos = MAX_ANGLE.cos() - 1e-12;
+    for branch in piece.branches() {
+        for (i, w) in branch.windows(2).enumerate() {
+            let d: f64 = (0..4).map(|j| w[0][j] * w[1][j]).sum();
+            if d.is_nan() || d.abs() < cos {
+                return Some((i, d.abs().min(1.0).acos()));
+            }
+        }
+    }
+    None
+}
+
+/// [`Sampler::piece`], and an error where a step is wider than [`MAX_ANGLE`] beside a place
+/// where the floats lost the curve (the sampler's `stuck`, kept for a local parameter).
+fn checked_piece<'a>(
+    sampler: &Sampler<'a>,
+    component: usize,
+    (arcs, closed): (&'a [super::curve::Arc], bool),
+    points: usize,
+    budget: &mut PointBudget<'_>,
+) -> Result<SampledPiece, Error> {
+    let p = sampler.piece(component, arcs, closed, points, budget)?;
+    match (first_wide_step(&p), sampler.stuck.get()) {
+        (Some((_, angle)), Some(_)) => Err(Error::Algebra(format!(
+            "piece {component}: a step of {angle:.3} rad, wider than {MAX_ANGLE}"
+        ))),
+        _ => Ok(p),
+    }
+}
+
+/// What every sampler of one call shares.
+struct Context<'c> {
+    curve: &'c Curve,
+    chart: &'c Chart,
+    tolerance: Option<f64>,
+    approx: &'c Approximations,
+}
+
+/// Most local parameters tried for one piece, one inside the other
+/// ([`Context::local_piece`]).
+const MAX_LOCAL: usize = 3;
+
+impl<'c> Context<'c> {
+    /// The sampler of one component's `param`; `scaled` keeps its coefficients brought into
+    /// the range of f64 where some are not.
+    fn sampler<'a>(
+        &self,
+        param: &'a ComponentParam,
+        scaled: &'a std::cell::OnceCell<Option<ComponentParam>>,
+    ) -> Result<Sampler<'a>, Error>
+    where
+        'c: 'a,
+    {
+        let chart = self.chart;
+        Ok(Sampler {
+            eval: match Evaluator::new(param) {
+                // the floats as they are where none is near the ends of the range
+                Ok(e) if e.narrow => e,
+                _ => {
+                    let scaled = scaled.get_or_init(|| in_float_range(param));
+                    Evaluator::new(scaled.as_ref().unwrap_or(param))?
+                }
+            },
+            crossings: if lies_in_plane(param, &chart.exact) {
+                Crossings::InPlane
+            } else {
+                exact_crossings(param, &ExactParam::new(param), &chart.exact)?
+            },
+            singular: singular_params(self.curve, param, &chart.exact),
+            chart,
+            tolerance: self.tolerance,
+            approx: self.approx,
+            ends: RefCell::new(Vec::new()),
+            other_sheet: RefCell::new(None),
+            stuck: std::cell::Cell::new(None),
+            geometric: false,
+        })
+    }
+
+    /// The piece `(param, arcs, closed)` of `component` sampled in a local parameter around
+    /// `theta`, where the floats lost it ([`local`]): at most [`MAX_LOCAL`] parameters, each
+    /// around the place where the last one stopped; `first` (the error of the plain walk)
+    /// where no cluster lies there.
+    fn local_piece(
+        &self,
+        (param, arcs, closed): (&ComponentParam, &[super::curve::Arc], bool),
+        component: usize,
+        theta: f64,
+        points: usize,
+        budget: &mut PointBudget<'_>,
+        first: Error,
+    ) -> Result<SampledPiece, Error> {
+        let (mut param, mut arcs) = (param.clone(), arcs.to_vec());
+        let (mut theta, mut error) = (theta, first);
+        for _ in 0..MAX_LOCAL {
+            let Some(map) = local::local_map(&param, &arcs, theta) else {
+                return Err(error);
+            };
+            let Some(new_arcs) = local::local_arcs(&arcs, &map) else {
+                return Err(error);
+            };
+            (param, arcs) = (local::reparameterized(&param, &map), new_arcs);
+            let scaled = std::cell::OnceCell::new();
+            let sampler = Sampler {
+                geometric: true,
+                ..self.sampler(&param, &scaled)?
+            };
+            match checked_piece(&sampler, component, (&arcs, closed), points, budget) {
+                Ok(p) => return Ok(p),
+                Err(e) => match sampler.stuck.take() {
+                    Some(t) => (theta, error) = (t, e),
+                    None => return Err(e),
+                },
+            }
+        }
+        Err(error)
+    }
 }
 
 fn point_piece(
@@ -420,9 +552,17 @@ fn point_piece(
     point: &super::curve::Point,
     chart: &Chart,
 ) -> Result<SampledPiece, Error> {
+    // a projective point: scaled by a power of two near its largest coordinate first, so
+    // that big coordinates stay in the range of f64
+    let mut alphas = Vec::new();
+    let top = (point.iter())
+        .filter_map(|c| convert::log2_estimate(c, &mut alphas))
+        .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))))
+        .ok_or_else(|| Error::Algebra("an isolated point is the zero vector".into()))?;
+    let k = Number::rational(super::expr::power_of_two(-(top as i64)));
     let mut x = [0.0; 4];
     for i in 0..4 {
-        x[i] = to_f64(&point[i])?;
+        x[i] = to_f64(&point[i].mul(&k))?;
     }
     let x = unit(x).ok_or_else(|| Error::Algebra("an isolated point is the zero vector".into()))?;
     let h = (0..4).fold(Number::zero(), |acc, i| {

@@ -20,10 +20,10 @@ use crate::param::sample::walk::{
     Sample, Walk,
 };
 use crate::param::sample::{
-    AffinePiece, PointBudget, SampledPiece, AFFINE_RADIUS, MAX_ANGLE, MAX_DEPTH,
+    AffinePiece, PointBudget, SampledPiece, AFFINE_RADIUS, MAX_ANGLE, MAX_DEPTH, MAX_LOCAL_DEPTH,
 };
 use qsic_algebra::AlgebraicReal;
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Samples the pieces of one component.
@@ -42,6 +42,12 @@ pub(super) struct Sampler<'a> {
     /// The grid of the other sheet made with the last one of Levin's form: `(t₀, step, n)`
     /// as bits, the sheet and its points ([`Evaluator::grid_both`]).
     pub(super) other_sheet: RefCell<Option<OtherSheet>>,
+    /// Where the floats lost the curve, if they did: the `θ` of the last error of the walk
+    /// that a local parameter may cure ([`super::local`]).
+    pub(super) stuck: Cell<Option<f64>>,
+    /// Bisect towards `θ = 0` geometrically: the sampler of a local parameter
+    /// ([`super::local`]), whose cluster lies at the origin at a scale far below the grid's.
+    pub(super) geometric: bool,
 }
 
 impl<'a> Sampler<'a> {
@@ -133,6 +139,7 @@ impl<'a> Sampler<'a> {
                 return Ok(Sample::new(t, x));
             }
         }
+        self.stuck.set(Some(theta));
         Err(Error::Algebra(format!(
             "no well-conditioned point near θ = {theta} in ({lo}, {hi})"
         )))
@@ -149,15 +156,41 @@ impl<'a> Sampler<'a> {
         if let Some(x) = self.eval.eval_unit(u, sheet) {
             return Ok(Sample::new(theta, x));
         }
+        // a nudged end may leave a gap to the next arc: a local parameter there closes it
+        // if the turns say so ([`super::sample_within`])
+        self.stuck.set(Some(theta));
         for f in [1e-9, 1e-6, 1e-3] {
             let t = theta + f * (other - theta);
             if let Some(x) = self.eval.eval_unit(sin_cos(t), sheet) {
                 return Ok(Sample::new(t, x));
             }
         }
+        self.stuck.set(Some(theta));
         Err(Error::Algebra(format!(
             "no well-conditioned point near the end θ = {theta}"
         )))
+    }
+
+    /// Most bisections of a grid segment: [`MAX_DEPTH`], or [`MAX_LOCAL_DEPTH`] for a
+    /// [`Sampler::geometric`] one (its features lie far below the grid's scale).
+    pub(super) fn max_depth(&self) -> u32 {
+        if self.geometric {
+            MAX_LOCAL_DEPTH
+        } else {
+            MAX_DEPTH
+        }
+    }
+
+    /// The parameter between `lo < hi` where a segment is split: the middle, or for a
+    /// [`Sampler::geometric`] sampler the geometric mean where both lie on one side of 0 more
+    /// than a factor 8 apart (the origin reached in `log log` steps, not `log`).
+    pub(super) fn midpoint(&self, lo: f64, hi: f64) -> f64 {
+        let (a, b) = (lo.abs().min(hi.abs()), lo.abs().max(hi.abs()));
+        if self.geometric && lo * hi > 0.0 && b > 8.0 * a {
+            (a.sqrt() * b.sqrt()).copysign(lo)
+        } else {
+            0.5 * (lo + hi)
+        }
     }
 
     /// Whether the segment `p, q` needs a point between them; computes it if so.
@@ -177,7 +210,7 @@ impl<'a> Sampler<'a> {
             return Ok(None);
         }
         let (lo, hi) = (p.theta.min(q.theta), p.theta.max(q.theta));
-        let m = self.at(0.5 * (p.theta + q.theta), lo, hi, sheet)?;
+        let m = self.at(self.midpoint(lo, hi), lo, hi, sheet)?;
         let swung = opposite
             && (dot(&m.x, &p.x).abs() < MAX_ANGLE.cos() || dot(&m.x, &q.x).abs() < MAX_ANGLE.cos());
         if far || swung {
@@ -490,16 +523,17 @@ impl<'a> Sampler<'a> {
         while let Some((q, depth)) = walk.stack.pop() {
             let p = walk.prev;
             match self.split(&p, &q, sheet)? {
-                Some(m) if depth < MAX_DEPTH => {
+                Some(m) if depth < self.max_depth() => {
                     budget.take(1)?;
                     walk.stack.push((q, depth + 1));
                     walk.stack.push((m, depth + 1));
                 }
                 Some(_) => {
+                    self.stuck.set(Some(p.theta));
                     return Err(Error::Algebra(format!(
                         "sampling did not converge near θ = {}",
                         p.theta
-                    )))
+                    )));
                 }
                 None => self.accept(walk, q, dot(&p.x, &q.x), sheet, line)?,
             }

@@ -767,6 +767,8 @@ fn test_sampler<'a>(
         approx,
         ends: RefCell::new(Vec::new()),
         other_sheet: RefCell::new(None),
+        stuck: std::cell::Cell::new(None),
+        geometric: false,
     }
 }
 
@@ -1037,4 +1039,68 @@ fn indexed_coefficient_sets_match_generic_horner() {
         }
     }
     assert!(checked >= 4000, "{checked}");
+}
+
+/// A certified evaluation counts the rounding of `s` in `√s` ([`Evaluator::root_bound`]):
+/// beside the near-node of Steinmetz's cylinders `10⁻⁵` and `10⁻¹⁰` apart, where `s` is a
+/// small difference of huge terms, every point [`Evaluator::eval_unit`] returns lies on both
+/// quadrics (the residual test of [`verify_on_quadrics`], independent of the bound).
+#[test]
+fn certified_points_beside_a_near_node_lie_on_both_quadrics() {
+    let (mut certified, mut total) = (0, 0);
+    for offset in ["1/100000", "1/10000000000"] {
+        for k in ["1", "1/100000"] {
+            let a = crate::io::parse_quadric(&format!("x^2+y^2-({k})^2")).unwrap();
+            let b = crate::io::parse_quadric(&format!("(x-{offset}*{k})^2+z^2-({k})^2")).unwrap();
+            let curve = crate::param::parameterize(&a, &b).unwrap();
+            let param = curve.components[0].param.as_ref().unwrap();
+            let scaled = in_float_range(param);
+            let eval = Evaluator::new(scaled.as_ref().unwrap_or(param)).unwrap();
+            let mut points = Vec::new();
+            // about the arc ends (roots of `s`) near u = −1, and u = −1 itself
+            let mut centres = vec![-1.0];
+            if let RealPiece::Curve { arcs, .. } = &curve.pieces[0] {
+                for arc in arcs {
+                    if let ParamRange::Between(ParamValue::Finite(r), _) = &arc.range {
+                        centres.push(r.to_f64());
+                    }
+                }
+            }
+            for (c, e, j) in centres.iter().flat_map(|c| {
+                (4..17).flat_map(move |e| [-3.0, -1.0, 1.0, 2.0, 5.0].map(|j| (*c, e, j)))
+            }) {
+                {
+                    let u = c + j * 10f64.powi(-e) * c.abs().max(1e-300);
+                    for sheet in [Sheet::Plus, Sheet::Minus] {
+                        total += 1;
+                        if let Some(x) = eval.eval_unit((u, 1.0), sheet) {
+                            points.push(x);
+                        }
+                    }
+                }
+            }
+            certified += points.len();
+            let piece = SampledPiece {
+                component: 0,
+                isolated: false,
+                points,
+                closed: false,
+                breaks: Vec::new(),
+                infinity: Vec::new(),
+                affine: AffinePiece {
+                    branches: Vec::new(),
+                    bounded: true,
+                    points_at_infinity: Vec::new(),
+                    at_infinity: false,
+                    indices: Vec::new(),
+                },
+            };
+            let sampled = Sampled {
+                pieces: vec![piece],
+            };
+            verify_on_quadrics(&sampled, &a, &b)
+                .unwrap_or_else(|e| panic!("offset {offset}, k = {k}: {e}"));
+        }
+    }
+    assert!(certified > total / 4, "{certified} of {total}");
 }
