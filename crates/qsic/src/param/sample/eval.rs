@@ -375,10 +375,15 @@ impl<'a> Evaluator<'a> {
     /// added for a rational parameterization (`s = 0`).
     #[inline(always)]
     pub(super) fn root_bound(&self, t: f64, rev: bool, root: f64) -> f64 {
+        root + root_error(GAMMA_S * self.s_size(t, rev), root) / self.gamma
+    }
+
+    /// `Σₖ|sₖ||t|ᵏ` in the Horner order of `rev`: the unit of `s`'s rounding.
+    #[inline(always)]
+    pub(super) fn s_size(&self, t: f64, rev: bool) -> f64 {
         let sa = &self.horner[usize::from(rev)].s_abs;
         let at = t.abs();
-        let size = sa[1..].iter().fold(sa[0], |acc, c| acc * at + c);
-        root + root_error(GAMMA_S * size, root) / self.gamma
+        sa[1..].iter().fold(sa[0], |acc, c| acc * at + c)
     }
 
     /// The unit vector of the value `x` (with `√s = root`) at the reduced parameter `t`,
@@ -746,10 +751,9 @@ impl<'a> Evaluator<'a> {
             let root = horner_dd(&dd.s, t, rev);
             let root = (root.0 + root.1).max(0.0).sqrt();
             let n = self.big_d + 1;
-            let s_abs = horner_scalar(&self.s().map(f64::abs), t.abs(), rev);
             let bd = horner_lanes_abs(&self.d()[..n - 2], t, rev);
-            let err =
-                bd.iter().fold(0.0, |m: f64, v| m.max(*v)) * root_error(GAMMA_S_DD * s_abs, root);
+            let err = bd.iter().fold(0.0, |m: f64, v| m.max(*v))
+                * root_error(GAMMA_S_DD * self.s_size(t, rev), root);
             let norm = dot(&x, &x).sqrt();
             // NaN fails too
             if err.is_nan() || err > 1e-10 * norm {

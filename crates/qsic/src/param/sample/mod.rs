@@ -449,12 +449,19 @@ fn checked_piece<'a>(
     points: usize,
     budget: &mut PointBudget<'_>,
 ) -> Result<SampledPiece, Error> {
+    // a place lost on an earlier piece of the component says nothing of this one
+    sampler.stuck.set(None);
     let p = sampler.piece(component, arcs, closed, points, budget)?;
-    match (first_wide_step(&p), sampler.stuck.get()) {
-        (Some((_, angle)), Some(_)) => Err(Error::Algebra(format!(
+    // the steps checked only where the walk lost a place (the usual piece is not copied
+    // into branches for it)
+    if sampler.stuck.get().is_none() {
+        return Ok(p);
+    }
+    match first_wide_step(&p) {
+        Some((_, angle)) => Err(Error::Algebra(format!(
             "piece {component}: a step of {angle:.3} rad, wider than {MAX_ANGLE}"
         ))),
-        _ => Ok(p),
+        None => Ok(p),
     }
 }
 
