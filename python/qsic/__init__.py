@@ -490,6 +490,7 @@ def nurbs(
     step: bool = False,
     budget: Optional[int] = None,
     floats: str = "binary",
+    tolerance: Optional[float] = None,
 ) -> Any:
     """Every real piece of the curve as a NURBS curve: the JSON object of ``qsic nurbs --json
     A B`` (README, "qsic nurbs") — ``bounds`` (the box), ``curves`` (degree, knots and
@@ -498,7 +499,8 @@ def nurbs(
     pieces not given, and why); with ``step=True`` the STEP text of ``--format step``
     instead (a ``str``). ``bounds``: the box unbounded pieces are clipped to, six exact
     numbers ``(x0, y0, z0, x1, y1, z1)`` (int, ``Fraction``, str), as ``--box``. ``floats``
-    as for :func:`classify`.
+    as for :func:`classify`. ``tolerance``: the distance bound of the approximated quartic
+    branches to both surfaces, as ``--tolerance`` (default ``1e-9`` of each branch's size).
 
     >>> n = nurbs("x^2+y^2+z^2-4", "x^2+y^2-2*x")  # Viviani: two loops through the node
     >>> [(c["degree"], c["exact"], c["multiplicities"][0]) for c in n["curves"]]
@@ -520,6 +522,7 @@ def nurbs(
         bounds=box,
         step=step,
         budget=_budget(budget),
+        tolerance=None if tolerance is None else float(tolerance),
     )
     return out if step else json.loads(out)
 

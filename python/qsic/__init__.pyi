@@ -112,6 +112,7 @@ def nurbs(
     step: bool = False,
     budget: Optional[int] = None,
     floats: str = "binary",
+    tolerance: Optional[float] = None,
 ) -> Any: ...
 def sample(
     a: QuadricLike,

@@ -50,6 +50,7 @@ def nurbs(
     bounds: Optional[str] = None,
     step: bool = False,
     budget: Optional[int] = None,
+    tolerance: Optional[float] = None,
 ) -> str: ...
 def sample(
     a: Optional[NativeQuadric],

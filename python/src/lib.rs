@@ -645,7 +645,7 @@ fn param(
 /// The JSON object of `qsic nurbs --json` (`bounds`: `--box`, six exact numbers
 /// `X0,Y0,Z0,X1,Y1,Z1`), or with `step = true` the STEP text of `qsic nurbs --format step`.
 #[pyfunction]
-#[pyo3(signature = (a, b, bounds = None, step = false, budget = None))]
+#[pyo3(signature = (a, b, bounds = None, step = false, budget = None, tolerance = None))]
 fn nurbs(
     py: Python<'_>,
     a: Option<PyRef<'_, NativeQuadric>>,
@@ -653,12 +653,13 @@ fn nurbs(
     bounds: Option<&str>,
     step: bool,
     budget: Option<u64>,
+    tolerance: Option<f64>,
 ) -> PyResult<String> {
     let bounds = bounds
         .map(qsic_cli::nurbs::parse_box)
         .transpose()
         .map_err(err)?;
-    let options = qsic::nurbs::NurbsOptions { bounds };
+    let options = qsic::nurbs::NurbsOptions { bounds, tolerance };
     let format = if step {
         qsic_cli::nurbs::NurbsFormat::Step
     } else {

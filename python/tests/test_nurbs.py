@@ -75,7 +75,16 @@ def test_a_box_of_the_users_clips_the_hyperbola():
         qsic.nurbs("x^2+y^2-z^2", "y-1", bounds=(1, 2, 3))
 
 
-def test_quartic_branches_are_reported_left_out():
-    n = qsic.nurbs("x^2+y^2+z^2-4", "x^2+y^2-2*x+1/2")
-    assert n["curves"] == []
-    assert n["left"] and all("sqrt" in l["reason"] for l in n["left"])
+def test_quartic_branches_are_approximated_within_the_tolerance():
+    """Every control point's curve within the bound of both surfaces, checked at the decimals
+    (the residual over the gradient, a first-order distance) and the tolerance honoured."""
+    a, b = "x^2+y^2+z^2-4", "x^2+y^2-2*x+1/2"
+    for tolerance in (None, 1e-6):
+        n = qsic.nurbs(a, b, tolerance=tolerance)
+        assert [c["exact"] for c in n["curves"]] == [False, False], n["left"]
+        assert n["left"] == []
+        for c in n["curves"]:
+            assert c["u"] is None and c["degree"] == 7
+            assert 0 < c["bound"] <= (tolerance or 1e-8)
+    with pytest.raises(QsicError, match="tolerance"):
+        qsic.nurbs(a, b, tolerance=-1.0)

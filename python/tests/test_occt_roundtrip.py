@@ -82,6 +82,16 @@ CASES = [
      lambda: cone((0, 0, 0), (0, 0, 1), math.pi / 4), lambda: sphere((0, 0, 0), math.sqrt(2)), 2),
 ]
 
+# smooth quartics (Levin's form): B-spline approximations of degree 7 within their bound
+QUARTICS = [
+    ("two cylinders of radii 1 and 0.8 crossing", "x^2+y^2-1", "x^2+z^2-16/25",
+     lambda: cylinder((0, 0, 0), (0, 0, 1), 1.0), lambda: cylinder((0, 0, 0), (0, 1, 0), 0.8), 2),
+    ("sphere and an offset cylinder", "x^2+y^2+z^2-4", "(x-3/2)^2+y^2-1",
+     lambda: sphere((0, 0, 0), 2.0), lambda: cylinder((1.5, 0, 0), (0, 0, 1), 1.0), 1),
+    ("cone and a crossing cylinder", "x^2+y^2-z^2", "(x-2)^2+z^2-9/4",
+     lambda: cone((0, 0, 0), (0, 0, 1), math.pi / 4), lambda: cylinder((2, 0, 0), (0, 1, 0), 1.5), 2),
+]
+
 
 def edges_of_step(text: str):
     with tempfile.TemporaryDirectory() as d:
@@ -110,14 +120,20 @@ def box_size(n):
     return math.dist(lo, hi)
 
 
-@pytest.mark.parametrize("name,a,b,surf_a,surf_b,count", CASES, ids=[c[0] for c in CASES])
+@pytest.mark.parametrize(
+    "name,a,b,surf_a,surf_b,count", CASES + QUARTICS, ids=[c[0] for c in CASES + QUARTICS]
+)
 def test_step_curves_lie_on_opencascades_surfaces(name, a, b, surf_a, surf_b, count):
     n = qsic.nurbs(a, b)
     assert len(n["curves"]) == count, n["left"]
     curves = edges_of_step(qsic.nurbs(a, b, step=True))
     assert len(curves) == len(n["curves"])
-    # exact curves (bound 0) written as doubles: the bound plus the rounding of the file
+    # exact curves (bound 0) written as doubles: the bound plus the rounding of the file;
+    # approximations within their proved bound, of 1e-9 of their size
     bound = max(c["bound"] for c in n["curves"]) + 1e-9 * box_size(n)
+    assert all(c["exact"] == (c["bound"] == 0) for c in n["curves"])
+    if (name, a, b, surf_a, surf_b, count) in QUARTICS:
+        assert all(not c["exact"] and 0 < c["bound"] < 1e-8 for c in n["curves"])
     for k, (curve, ours) in enumerate(zip(curves, n["curves"])):
         assert curve.Degree() == ours["degree"]
         assert curve.NbPoles() == len(ours["control_points"])

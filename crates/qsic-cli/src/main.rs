@@ -150,6 +150,11 @@ struct NurbsArgs {
         allow_hyphen_values = true
     )]
     bounds: Option<String>,
+
+    /// The distance bound of approximated quartic branches to both surfaces (a positive
+    /// number; default 1e-9 of each branch's size).
+    #[arg(long, value_name = "DISTANCE")]
+    tolerance: Option<f64>,
 }
 
 const PLOT_HELP: &str = "\
@@ -881,7 +886,14 @@ fn run_nurbs(args: &NurbsArgs, units: u64) -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let options = qsic::nurbs::NurbsOptions { bounds };
+    if let Some(t) = args.tolerance.filter(|t| !(t.is_finite() && *t > 0.0)) {
+        eprintln!("error: --tolerance must be a positive finite number, not {t}");
+        return ExitCode::from(2);
+    }
+    let options = qsic::nurbs::NurbsOptions {
+        bounds,
+        tolerance: args.tolerance,
+    };
     let (a, b) = match (&args.input.batch, &args.input.a, &args.input.b) {
         (Some(path), _, _) => {
             let answer = nurbs::NurbsAnswer { options };

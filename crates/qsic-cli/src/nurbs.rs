@@ -12,7 +12,7 @@
 use crate::batch::Answer;
 use crate::param::{curve_within, fields_of, NumberJson};
 use crate::step::{step_text, StepCurve};
-use qsic::nurbs::{nurbs_of_curve, Accuracy, BoxBounds, Nurbs, NurbsCurve, NurbsOptions};
+use qsic::nurbs::{nurbs_of_curve_within, Accuracy, BoxBounds, Nurbs, NurbsCurve, NurbsOptions};
 use qsic::param::expr::{rational_to_string, Names};
 use qsic::{Budget, Quadric};
 use qsic_algebra::RBig;
@@ -32,7 +32,7 @@ pub fn nurbs_of(
     let (Some(a), Some(b)) = (a, b) else {
         return Err("A and B are required".into());
     };
-    nurbs_of_curve(&curve, a, b, options).map_err(|e| match e {
+    nurbs_of_curve_within(&curve, a, b, options, budget).map_err(|e| match e {
         qsic::Error::Unsupported(m) => format!("not yet: {m}"),
         e => e.to_string(),
     })
@@ -105,8 +105,9 @@ pub struct CurveJson {
     pub closed: bool,
     /// Whether the start and the end are cuts at the box (else singular points or a loop).
     pub clipped: [bool; 2],
-    /// The parameters `u` of the component where the piece starts and ends (`"oo"`: u = ∞).
-    pub u: [String; 2],
+    /// The parameters `u` of the component where the piece starts and ends (`"oo"`: u = ∞);
+    /// `null` for an approximation.
+    pub u: Option<[String; 2]>,
     /// Decimals of the control points and weights.
     pub approx: CurveApproxJson,
 }
@@ -161,10 +162,12 @@ fn curve_json(c: &NurbsCurve, names: &mut Names) -> CurveJson {
             .collect(),
         weights: weights.iter().map(|w| names.number(w)).collect(),
         exact: c.accuracy == Accuracy::Exact,
-        bound: 0.0,
+        bound: c.accuracy.bound(),
         closed: c.closed,
         clipped: c.clipped,
-        u: [parameter(&c.ends[0]), parameter(&c.ends[1])],
+        u: c.ends
+            .as_ref()
+            .map(|e| [parameter(&e[0]), parameter(&e[1])]),
         approx: CurveApproxJson {
             control_points: points
                 .iter()
@@ -236,14 +239,20 @@ pub fn human_report(json: &NurbsJson) -> String {
             (false, [false, false]) => "between singular points".into(),
         };
         out.push_str(&format!(
-            "curve {k}: piece {}, degree {}, {} segment(s), {} control points, {}, u from {} to {}, {}\n",
+            "curve {k}: piece {}, degree {}, {} segment(s), {} control points, {}, {}, {}\n",
             c.piece,
             c.degree,
             c.knots.len() - 1,
             c.control_points.len(),
-            if c.exact { "exact".to_string() } else { format!("within {:e}", c.bound) },
-            c.u[0],
-            c.u[1],
+            if c.exact {
+                "exact".to_string()
+            } else {
+                format!("within {:.1e} of both surfaces", c.bound)
+            },
+            match &c.u {
+                Some(u) => format!("u from {} to {}", u[0], u[1]),
+                None => "approximated".into(),
+            },
             ends
         ));
     }

@@ -106,14 +106,61 @@ fn a_box_of_the_users_clips_unbounded_pieces() {
 /// The text summary and the pieces left out.
 #[test]
 fn text_names_curves_and_pieces_left_out() {
-    let out = qsic(&["nurbs", "x^2+y^2+z^2-4", "x^2+y^2-2*x+1/2"], "");
+    // a sphere and a tangent plane: one isolated point
+    let out = qsic(&["nurbs", "x^2+y^2+z^2-1", "z-1"], "");
     assert!(out.status.success());
     let text = String::from_utf8(out.stdout).expect("UTF-8");
     assert!(text.starts_with("0 NURBS curve(s)"), "{text}");
-    assert!(text.contains("left out: piece 0"), "{text}");
+    assert!(
+        text.contains("left out: piece 0: an isolated point"),
+        "{text}"
+    );
+    let out = qsic(&["nurbs", "x^2+y^2+z^2-4", "x^2+y^2-2*x+1/2"], "");
+    let text = String::from_utf8(out.stdout).expect("UTF-8");
+    assert!(text.starts_with("2 NURBS curve(s)"), "{text}");
+    assert_eq!(text.matches("within ").count(), 2, "{text}");
     let out = qsic(&["nurbs", "x^2+y^2-z^2", "x"], "");
     let text = String::from_utf8(out.stdout).expect("UTF-8");
     assert_eq!(text.matches("exact").count(), 4, "{text}");
+}
+
+/// A smooth quartic: approximated loops, their bound within the tolerance asked for, no
+/// parameters at the ends; plain (non-rational) B-splines in STEP; a bad tolerance refused.
+#[test]
+fn quartic_loops_are_approximated_within_the_tolerance() {
+    let (a, b) = ("x^2+y^2+z^2-4", "x^2+y^2-2*x+1/2");
+    for tolerance in ["1e-6", "1e-10"] {
+        let v = json(&["nurbs", "--json", "--tolerance", tolerance, a, b]);
+        let curves = v["curves"].as_array().expect("curves");
+        assert_eq!(curves.len(), 2);
+        for c in curves {
+            assert_eq!(c["exact"], false);
+            assert_eq!(c["degree"], 7);
+            assert_eq!(c["closed"], true);
+            assert!(c["u"].is_null());
+            let bound = c["bound"].as_f64().expect("a bound");
+            let t: f64 = tolerance.parse().unwrap();
+            assert!(bound > 0.0 && bound <= t, "{bound} > {t}");
+            let m: Vec<u64> = c["multiplicities"]
+                .as_array()
+                .expect("multiplicities")
+                .iter()
+                .map(|v| v.as_u64().expect("an integer"))
+                .collect();
+            assert_eq!((m[0], m[m.len() - 1]), (8, 8));
+            assert!(m[1..m.len() - 1].iter().all(|k| *k == 7));
+            assert!(c["weights"].as_array().unwrap().iter().all(|w| w == "1"));
+        }
+    }
+    let out = qsic(&["nurbs", "--format", "step", a, b], "");
+    let text = String::from_utf8(out.stdout).expect("ASCII");
+    assert_eq!(text.matches("B_SPLINE_CURVE_WITH_KNOTS(").count(), 2);
+    assert_eq!(text.matches("RATIONAL_B_SPLINE_CURVE((").count(), 0);
+    for bad in ["0", "-1e-9", "nan", "inf"] {
+        let out = qsic(&["nurbs", "--tolerance", bad, a, b], "");
+        assert_eq!(out.status.code(), Some(2), "{bad}");
+        assert!(String::from_utf8_lossy(&out.stderr).contains("--tolerance"));
+    }
 }
 
 /// A batch line answers with the --json object's fields after the id.

@@ -1,10 +1,11 @@
 //! The real pieces of the intersection curve as NURBS curves a CAD kernel takes: exact
 //! rational B-splines for rational components (lines, conics, cubics, nodal and cuspidal
-//! quartics), in the affine chart `w = 0` at infinity.
+//! quartics), and B-splines of degree 7 within a proved distance of both surfaces for the
+//! others (quartic branches with `√s(u)`), in the affine chart `w = 0` at infinity.
 //!
 //! | entry point | what |
 //! |---|---|
-//! | [`nurbs_of_curve`] | every real piece of a [`Curve`] as [`NurbsCurve`]s, with the [`BoxBounds`] used and the pieces left out |
+//! | [`nurbs_of_curve`], [`nurbs_of_curve_within`] | every real piece of a [`Curve`] as [`NurbsCurve`]s, with the [`BoxBounds`] used and the pieces left out (the second within a work budget) |
 //! | [`NurbsCurve::point_at`] | the exact homogeneous point at a knot parameter (de Casteljau on one segment) |
 //! | [`bezier::evaluate`] | one rational Bézier segment at `t` |
 //!
@@ -23,17 +24,33 @@
 //! end control points, knots `0, 1, …, m` each of multiplicity `n` (the ends `n + 1`).
 //!
 //! Coefficients in a number field `K` give control points exact in `K`: exact rationals when
-//! the component is over ℚ. Pieces left out (reported in [`Nurbs::left`]): isolated points,
-//! Levin components (quartic branches with `√s(u)`: approximations are not built yet),
-//! unbounded branches that never enter the box.
+//! the component is over ℚ.
+//!
+//! **Approximations** (`approx`, `fit`, `geometry`, `certify`). Every other real piece
+//! (Levin's quartic branches, parts of components) is sampled from its exact
+//! parameterization, cut at infinity and at singular points, clipped just outside the box,
+//! and each branch fitted by Hermite segments of degree 7 built from the two quadrics alone
+//! (derivatives along the curve from their gradients and Hessians), halved until an exact
+//! certificate proves every point of the segment within the tolerance of both surfaces
+//! (default 10⁻⁹ of the branch's size): [`Accuracy::Within`] carries the bound.
+//!
+//! Pieces left out (reported in [`Nurbs::left`]): isolated points, unbounded branches that
+//! never enter the box, branches whose fit does not reach the tolerance (named with the
+//! place).
 
+mod approx;
 pub mod bezier;
+mod certify;
+mod fit;
+mod geometry;
 
 use crate::error::Error;
+use crate::param::sample::{sample_within, SampleOptions};
 use crate::param::{
     ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue, Point, PointPoly, RealPiece,
 };
 use crate::quadric::Quadric;
+use crate::Budget;
 use bezier::{divide, num, oriented, positive_segments, scaled, ParamPoint};
 use qsic_algebra::roots::RootInterval;
 use qsic_algebra::{AlgebraicReal, RBig, Ring, Sign};
@@ -54,6 +71,9 @@ pub struct NurbsOptions {
     /// singular points in ℝ³, the centres of the surfaces and a point of each unbounded
     /// branch, half as wide again on every side (at least 1).
     pub bounds: Option<BoxBounds>,
+    /// The distance bound of the approximated pieces to both surfaces; `None`: 10⁻⁹ of
+    /// each branch's size (the diagonal of its bounding box).
+    pub tolerance: Option<f64>,
 }
 
 /// How far a [`NurbsCurve`] may be from the curve.
@@ -61,6 +81,19 @@ pub struct NurbsOptions {
 pub enum Accuracy {
     /// Exactly on both quadrics: the rational curve itself.
     Exact,
+    /// Every point within this distance of both surfaces, proved (a polynomial B-spline of
+    /// degree 7 with dyadic control points approximating a branch).
+    Within(f64),
+}
+
+impl Accuracy {
+    /// The distance bound: 0 for an exact curve.
+    pub fn bound(&self) -> f64 {
+        match self {
+            Accuracy::Exact => 0.0,
+            Accuracy::Within(b) => *b,
+        }
+    }
 }
 
 /// One real piece as a rational B-spline (NURBS) curve in ℝ³.
@@ -81,13 +114,13 @@ pub struct NurbsCurve {
     /// The control points in homogeneous coordinates `(w·x, w·y, w·z, w)`, exact.
     pub poles: Vec<Point>,
     /// The parameters `(U₀, U₁)` (`u = U₀/U₁`) of the component where the piece starts and
-    /// ends.
-    pub ends: [ParamPoint; 2],
+    /// ends (`None` for an approximation).
+    pub ends: Option<[ParamPoint; 2]>,
     /// Whether each end is a cut at the box (else a singular point, or the start of a loop).
     pub clipped: [bool; 2],
     /// The last control point is the first.
     pub closed: bool,
-    /// Exact here (approximations of quartic branches are not built yet).
+    /// Exact, or within a proved distance of both surfaces.
     pub accuracy: Accuracy,
 }
 
@@ -281,7 +314,8 @@ struct Rational<'a> {
 /// B-splines for rational components, unbounded pieces clipped to a box (module docs).
 ///
 /// Postconditions: every curve [`NurbsCurve::is_valid`]; every point of an exact curve lies
-/// on both quadrics.
+/// on both quadrics, every point of an approximation within its [`Accuracy::Within`] bound
+/// of both surfaces.
 ///
 /// # Errors
 /// [`Error::Algebra`] when a segment cannot be given positive weights (an inconsistency:
@@ -305,8 +339,33 @@ pub fn nurbs_of_curve(
     b: &Quadric,
     options: &NurbsOptions,
 ) -> Result<Nurbs, Error> {
+    nurbs_of_curve_within(curve, a, b, options, &Budget::unlimited())
+}
+
+/// [`nurbs_of_curve`] spending `work` ([`crate::Budget`]) on the approximations: the
+/// sample's points ([`crate::param::sample::sample_within`]) and [`fit::TRY_UNITS`] a tried
+/// segment.
+///
+/// # Errors
+/// As [`nurbs_of_curve`]; [`Error::BudgetExceeded`]; [`Error::InvalidOption`] for a
+/// tolerance that is not a positive finite number.
+pub fn nurbs_of_curve_within(
+    curve: &Curve,
+    a: &Quadric,
+    b: &Quadric,
+    options: &NurbsOptions,
+    work: &Budget,
+) -> Result<Nurbs, Error> {
+    if let Some(t) = options.tolerance.filter(|t| !(t.is_finite() && *t > 0.0)) {
+        return Err(Error::InvalidOption(format!(
+            "the tolerance (the distance bound of approximated curves) must be a positive \
+             finite number, not {t}"
+        )));
+    }
     let mut left = Vec::new();
     let mut rationals = Vec::new();
+    // pieces approximated: (piece, component)
+    let mut approximated: Vec<(usize, usize)> = Vec::new();
     for (k, piece) in curve.pieces.iter().enumerate() {
         let leave = |reason: &str| LeftOut {
             piece: Some(k),
@@ -344,19 +403,42 @@ pub fn nurbs_of_curve(
                     infinity: projective_roots(&x[3], n),
                 });
             }
-            Some(ComponentParam::Levin { .. }) => left.push(leave(
-                "a quartic branch with sqrt(s(u)): its B-spline approximation is not built yet",
-            )),
-            _ => left.push(leave("a part of a component: not yet")),
+            Some(_) => approximated.push((k, component)),
+            None => left.push(leave("a piece without a parameterization")),
         }
     }
     let mut curves = Vec::new();
     for r in rationals.iter().filter(|r| r.infinity.is_empty()) {
         curves.extend(bounded_pieces(r)?);
     }
+    // the approximated pieces' points, from one sample of the curve
+    let sampled = if approximated.is_empty() {
+        None
+    } else {
+        match sample_within(curve, &SampleOptions::default(), work) {
+            Ok(s) => Some(s),
+            Err(e @ Error::BudgetExceeded { .. }) => return Err(e),
+            Err(e) => {
+                for (k, _) in approximated.drain(..) {
+                    left.push(LeftOut {
+                        piece: Some(k),
+                        reason: format!("not approximated: its points were not sampled: {e}"),
+                    });
+                }
+                None
+            }
+        }
+    };
     let bounds = match &options.bounds {
         Some(b) => b.clone(),
-        None => default_bounds(&curves, &rationals, curve, a, b),
+        None => {
+            let mut extra: Vec<[f64; 3]> = Vec::new();
+            for (k, _) in &approximated {
+                let piece = &sampled.as_ref().expect("sampled").pieces[*k];
+                extra.extend(approx::box_points(piece));
+            }
+            default_bounds(&curves, &rationals, curve, (a, b), &extra)
+        }
     };
     for r in rationals.iter().filter(|r| !r.infinity.is_empty()) {
         let (pieces, missed) = unbounded_pieces(r, &bounds)?;
@@ -367,6 +449,20 @@ pub fn nurbs_of_curve(
                 reason: format!("{missed} unbounded branch(es) outside the box"),
             });
         }
+    }
+    for (k, component) in approximated {
+        let input = approx::PieceInput {
+            piece: k,
+            component,
+            sampled: &sampled.as_ref().expect("sampled").pieces[k],
+            a,
+            b,
+            bounds: &bounds,
+            tolerance: options.tolerance,
+        };
+        let (c, l) = approx::approximate_piece(&input, work)?;
+        curves.extend(c);
+        left.extend(l);
     }
     curves.sort_by_key(|c| c.piece);
     Ok(Nurbs {
@@ -448,7 +544,7 @@ fn spline(r: &Rational, breaks: &[ParamPoint], clipped: [bool; 2]) -> Result<Nur
         degree: n,
         knots,
         poles,
-        ends,
+        ends: Some(ends),
         clipped,
         closed,
         accuracy: Accuracy::Exact,
@@ -546,10 +642,10 @@ fn default_bounds(
     bounded: &[NurbsCurve],
     rationals: &[Rational],
     curve: &Curve,
-    a: &Quadric,
-    b: &Quadric,
+    (a, b): (&Quadric, &Quadric),
+    extra: &[[f64; 3]],
 ) -> BoxBounds {
-    let mut points: Vec<[f64; 3]> = Vec::new();
+    let mut points: Vec<[f64; 3]> = extra.to_vec();
     points.extend(centre(a));
     points.extend(centre(b));
     for sp in &curve.singular_points {
