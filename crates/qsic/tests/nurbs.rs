@@ -410,3 +410,34 @@ fn unbounded_quartic_branches_are_clipped_just_outside_the_box() {
     }
     covers(a, b, &n, 1e-5);
 }
+
+/// Two lines through a cone's apex in the plane `x = 0`, a face plane of the box: on the
+/// closed box's boundary there, clipped by the other faces.
+#[test]
+fn lines_in_a_face_plane_are_clipped_by_the_other_faces() {
+    let face = BoxBounds {
+        lo: [0, -2, -2].map(RBig::from),
+        hi: [2, 2, 2].map(RBig::from),
+    };
+    let options = NurbsOptions {
+        bounds: Some(face.clone()),
+        tolerance: None,
+    };
+    let n = checked("x^2+y^2-z^2", "x", &options);
+    assert_eq!(n.curves.len(), 4, "{:?}", n.left);
+    for c in &n.curves {
+        for e in end_points(c) {
+            assert!(e[0] == 0.0 && excess(&e, &face) < 1e-6, "{e:?}");
+        }
+    }
+}
+
+/// A double plane at infinity: the two lines of the curve lie in it, no point in ℝ³, and
+/// each is named as such rather than failing.
+#[test]
+fn components_at_infinity_are_named() {
+    let n = checked("w^2", "x^2-y^2+z*w", &NurbsOptions::default());
+    assert!(n.curves.is_empty());
+    assert_eq!(n.left.len(), 2, "{:?}", n.left);
+    assert!(n.left.iter().all(|l| l.reason.contains("plane at infinity")));
+}

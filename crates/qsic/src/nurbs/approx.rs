@@ -224,14 +224,21 @@ pub(super) struct PieceInput<'a> {
     pub tolerance: Option<f64>,
 }
 
+/// What [`approximate_piece`] gives.
+pub(super) struct Approximated {
+    /// The curves of the branches fitted.
+    pub curves: Vec<NurbsCurve>,
+    /// The branches left out, and why.
+    pub left: Vec<LeftOut>,
+    /// The size of the smallest branch whose fit failed (a denser sample may help).
+    pub failed: Option<f64>,
+}
+
 /// The NURBS curves of one piece's branches, and what was left out.
 ///
 /// # Errors
 /// [`Error::BudgetExceeded`]; a branch that cannot be fitted is left out with the reason.
-pub(super) fn approximate_piece(
-    input: &PieceInput,
-    work: &Budget,
-) -> Result<(Vec<NurbsCurve>, Vec<LeftOut>), Error> {
+pub(super) fn approximate_piece(input: &PieceInput, work: &Budget) -> Result<Approximated, Error> {
     let lo: V3 = input.bounds.lo.each_ref().map(|v| v.to_f64().value());
     let hi: V3 = input.bounds.hi.each_ref().map(|v| v.to_f64().value());
     let box_centre: V3 = std::array::from_fn(|i| lo[i] / 2.0 + hi[i] / 2.0);
@@ -242,6 +249,7 @@ pub(super) fn approximate_piece(
         reason,
     };
     let mut missed = 0;
+    let mut failed = None;
     for branch in branches_of(input.sampled) {
         let unbounded = branch.to_infinity.iter().any(|v| *v);
         // unbounded branches are clipped in coordinates centred on the box
@@ -306,7 +314,10 @@ pub(super) fn approximate_piece(
                 curves.push(curve);
             }
             Err(e @ Error::BudgetExceeded { .. }) => return Err(e),
-            Err(e) => left.push(leave(format!("a branch not approximated: {e}"))),
+            Err(e) => {
+                failed = Some(failed.map_or(size, |f: f64| f.min(size)));
+                left.push(leave(format!("a branch not approximated: {e}")));
+            }
         }
     }
     if missed > 0 {
@@ -314,5 +325,9 @@ pub(super) fn approximate_piece(
             "{missed} unbounded branch(es) outside the box"
         )));
     }
-    Ok((curves, left))
+    Ok(Approximated {
+        curves,
+        left,
+        failed,
+    })
 }

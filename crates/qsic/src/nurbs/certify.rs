@@ -222,7 +222,7 @@ mod tests {
         // nearer the surface it is: (1.01, 0, 0), f ≈ 0.02, |∇f|² ≈ 4
         let near: Vec<[f64; 3]> = vec![[1.01, 0.0, 0.0]; 2];
         let b = sqrt_up(&segment_bound(&h, &near).expect("certified"));
-        assert!(b >= 0.01 && b < 0.021, "{b}");
+        assert!((0.01..0.021).contains(&b), "{b}");
     }
 
     #[test]

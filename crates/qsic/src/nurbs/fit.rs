@@ -147,6 +147,16 @@ fn try_span(pair: &Pair, pts: &[V3], tol2: &RBig) -> Try {
     Try::Within(poles, worst)
 }
 
+/// A point of the curve near `guess` (least-norm steps) strictly inside the chord from `p`
+/// to `q`: its chord coordinate within the middle 80 %.
+fn between(pair: &Pair, p: &V3, q: &V3, guess: &V3, len: f64) -> Option<V3> {
+    let y = pair.polish(guess, len);
+    let c = sub(q, p).map(|v| v / len);
+    let t = dot(&c, &sub(&y, p));
+    let on = pair.residuals(&y).iter().all(|r| r.abs() <= 1e-12);
+    (on && t > 0.1 * len && t < 0.9 * len).then_some(y)
+}
+
 /// The branch through `points` (local coordinates, on the curve, in order; a closed branch
 /// repeats its first point at the end) as one B-spline within `tol` of both surfaces;
 /// `scale` is the branch's size.
@@ -199,8 +209,11 @@ pub(super) fn fit_branch(
                 let mid = if depth >= MAX_SPLITS || too_fine {
                     None
                 } else {
-                    let guess = guess.unwrap_or_else(|| add_scaled(&p, 0.5, &sub(&q, &p)));
+                    let chord_mid = add_scaled(&p, 0.5, &sub(&q, &p));
+                    let guess = guess.unwrap_or(chord_mid);
                     pair.midpoint(&p, &q, &guess)
+                        .or_else(|| pair.midpoint(&p, &q, &chord_mid))
+                        .or_else(|| between(pair, &p, &q, &guess, len))
                 };
                 let Some(mid) = mid else {
                     return Err(Error::Algebra(format!(

@@ -45,7 +45,7 @@ mod fit;
 mod geometry;
 
 use crate::error::Error;
-use crate::param::sample::{sample_within, SampleOptions};
+use crate::param::sample::{sample_within, SampleOptions, Sampled};
 use crate::param::{
     ComponentParam, Curve, Number, NumberPoly, ParamRange, ParamValue, Point, PointPoly, RealPiece,
 };
@@ -318,9 +318,9 @@ struct Rational<'a> {
 /// of both surfaces.
 ///
 /// # Errors
-/// [`Error::Algebra`] when a segment cannot be given positive weights (an inconsistency:
-/// segments avoid the roots of `w`); [`Error::Unsupported`] when a component lies in a face
-/// plane of the box.
+/// [`Error::InvalidOption`] for a tolerance that is not a positive finite number; nothing
+/// else: a piece that cannot be given is listed in [`Nurbs::left`] with the reason, and an
+/// exact B-spline whose weights do not separate from 0 is approximated instead.
 ///
 /// # Examples
 /// ```
@@ -347,8 +347,7 @@ pub fn nurbs_of_curve(
 /// segment.
 ///
 /// # Errors
-/// As [`nurbs_of_curve`]; [`Error::BudgetExceeded`]; [`Error::InvalidOption`] for a
-/// tolerance that is not a positive finite number.
+/// As [`nurbs_of_curve`], and [`Error::BudgetExceeded`].
 pub fn nurbs_of_curve_within(
     curve: &Curve,
     a: &Quadric,
@@ -389,6 +388,10 @@ pub fn nurbs_of_curve_within(
                     left.push(leave("a constant parameterization"));
                     continue;
                 }
+                if x[3].is_zero() {
+                    left.push(leave("in the plane at infinity: no point in R^3"));
+                    continue;
+                }
                 let (cuts, remarks) = singular_cuts(curve, x, n);
                 left.extend(remarks.into_iter().map(|r| LeftOut {
                     piece: Some(k),
@@ -408,61 +411,135 @@ pub fn nurbs_of_curve_within(
         }
     }
     let mut curves = Vec::new();
+    // an exact B-spline that cannot be made (its weights do not separate from 0 within the
+    // splits: a root of w nearly real) is approximated instead, with a remark
+    let not_exact = |r: &Rational, e: Error, left: &mut Vec<LeftOut>| {
+        left.push(LeftOut {
+            piece: Some(r.piece),
+            reason: format!("approximated: no exact B-spline ({e})"),
+        });
+        (r.piece, r.component)
+    };
     for r in rationals.iter().filter(|r| r.infinity.is_empty()) {
-        curves.extend(bounded_pieces(r)?);
+        match bounded_pieces(r) {
+            Ok(c) => curves.extend(c),
+            Err(e) => approximated.push(not_exact(r, e, &mut left)),
+        }
     }
-    // the approximated pieces' points, from one sample of the curve
-    let sampled = if approximated.is_empty() {
-        None
-    } else {
-        match sample_within(curve, &SampleOptions::default(), work) {
-            Ok(s) => Some(s),
-            Err(e @ Error::BudgetExceeded { .. }) => return Err(e),
-            Err(e) => {
-                for (k, _) in approximated.drain(..) {
-                    left.push(LeftOut {
-                        piece: Some(k),
-                        reason: format!("not approximated: its points were not sampled: {e}"),
-                    });
-                }
-                None
+    // the approximated pieces' points, from one sample of the curve, made when first needed
+    let mut sampled: Option<Result<Sampled, Error>> = None;
+    let sample_once = |sampled: &mut Option<Result<Sampled, Error>>| -> Result<(), Error> {
+        if sampled.is_none() {
+            let s = sample_within(curve, &SampleOptions::default(), work);
+            if let Err(e @ Error::BudgetExceeded { .. }) = s {
+                return Err(e);
+            }
+            *sampled = Some(s);
+        }
+        Ok(())
+    };
+    let mut extra: Vec<[f64; 3]> = Vec::new();
+    if !approximated.is_empty() && options.bounds.is_none() {
+        sample_once(&mut sampled)?;
+        if let Some(Ok(s)) = &sampled {
+            for (k, _) in &approximated {
+                extra.extend(approx::box_points(&s.pieces[*k]));
             }
         }
-    };
+    }
     let bounds = match &options.bounds {
         Some(b) => b.clone(),
-        None => {
-            let mut extra: Vec<[f64; 3]> = Vec::new();
-            for (k, _) in &approximated {
-                let piece = &sampled.as_ref().expect("sampled").pieces[*k];
-                extra.extend(approx::box_points(piece));
-            }
-            default_bounds(&curves, &rationals, curve, (a, b), &extra)
-        }
+        None => default_bounds(&curves, &rationals, curve, (a, b), &extra),
     };
     for r in rationals.iter().filter(|r| !r.infinity.is_empty()) {
-        let (pieces, missed) = unbounded_pieces(r, &bounds)?;
-        curves.extend(pieces);
-        if missed > 0 {
-            left.push(LeftOut {
-                piece: Some(r.piece),
-                reason: format!("{missed} unbounded branch(es) outside the box"),
-            });
+        match unbounded_pieces(r, &bounds) {
+            Ok((pieces, missed)) => {
+                curves.extend(pieces);
+                if missed > 0 {
+                    left.push(LeftOut {
+                        piece: Some(r.piece),
+                        reason: format!("{missed} unbounded branch(es) outside the box"),
+                    });
+                }
+            }
+            Err(e) => approximated.push(not_exact(r, e, &mut left)),
         }
     }
+    if !approximated.is_empty() {
+        sample_once(&mut sampled)?;
+    }
+    // made above when anything is approximated
+    let sampled = sampled.unwrap_or_else(|| Ok(Sampled { pieces: Vec::new() }));
+    // a branch whose fit failed is tried once more from a sample whose chords are within
+    // 10⁻³ of the smallest such branch's size (between two points of the default sample
+    // the branch may turn back on itself)
+    let mut retry: Vec<(usize, usize)> = Vec::new();
+    let mut finest: Option<f64> = None;
     for (k, component) in approximated {
+        let pieces = match &sampled {
+            Ok(s) => &s.pieces,
+            Err(e) => {
+                left.push(LeftOut {
+                    piece: Some(k),
+                    reason: format!("not approximated: its points were not sampled: {e}"),
+                });
+                continue;
+            }
+        };
         let input = approx::PieceInput {
             piece: k,
             component,
-            sampled: &sampled.as_ref().expect("sampled").pieces[k],
+            sampled: &pieces[k],
             a,
             b,
             bounds: &bounds,
             tolerance: options.tolerance,
         };
-        let (c, l) = approx::approximate_piece(&input, work)?;
-        curves.extend(c);
-        left.extend(l);
+        let done = approx::approximate_piece(&input, work)?;
+        match done.failed {
+            Some(size) if size > 0.0 => {
+                finest = Some(finest.map_or(size, |f| f.min(size)));
+                retry.push((k, component));
+            }
+            _ => {
+                curves.extend(done.curves);
+                left.extend(done.left);
+            }
+        }
+    }
+    if let Some(size) = finest {
+        let denser = SampleOptions {
+            tolerance: Some(size * 1e-3),
+            ..SampleOptions::default()
+        };
+        let again = sample_within(curve, &denser, work);
+        if let Err(e @ Error::BudgetExceeded { .. }) = again {
+            return Err(e);
+        }
+        for (k, component) in retry {
+            let pieces = match (&again, &sampled) {
+                (Ok(s), _) | (Err(_), Ok(s)) => &s.pieces,
+                (Err(e), Err(_)) => {
+                    left.push(LeftOut {
+                        piece: Some(k),
+                        reason: format!("not approximated: its points were not sampled: {e}"),
+                    });
+                    continue;
+                }
+            };
+            let input = approx::PieceInput {
+                piece: k,
+                component,
+                sampled: &pieces[k],
+                a,
+                b,
+                bounds: &bounds,
+                tolerance: options.tolerance,
+            };
+            let done = approx::approximate_piece(&input, work)?;
+            curves.extend(done.curves);
+            left.extend(done.left);
+        }
     }
     curves.sort_by_key(|c| c.piece);
     Ok(Nurbs {
@@ -706,9 +783,9 @@ fn unbounded_pieces(r: &Rational, bounds: &BoxBounds) -> Result<(Vec<NurbsCurve>
         for l in [&bounds.lo[c], &bounds.hi[c]] {
             let f = &r.x[c] - &w.scale(&num(l.clone()));
             if f.is_zero() {
-                return Err(Error::Unsupported(
-                    "a component in a face plane of the box: choose another box".into(),
-                ));
+                // the component lies in this face's plane, on the closed box's boundary
+                // there: the other faces decide where it enters and leaves
+                continue;
             }
             for rho in projective_roots(&f, r.n) {
                 if on_box(r, bounds, c, &rho) {
