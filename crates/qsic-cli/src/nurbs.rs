@@ -258,6 +258,11 @@ pub fn human_report(json: &NurbsJson) -> String {
     }
     for l in &json.left {
         match l.piece {
+            // a remark on a piece that has curves (a cut beside a singular point, an
+            // approximation in place of an exact curve)
+            Some(p) if json.curves.iter().any(|c| c.piece == p) => {
+                out.push_str(&format!("note: piece {p}: {}\n", l.reason))
+            }
             Some(p) => out.push_str(&format!("left out: piece {p}: {}\n", l.reason)),
             None => out.push_str(&format!("note: {}\n", l.reason)),
         }

@@ -439,5 +439,37 @@ fn components_at_infinity_are_named() {
     let n = checked("w^2", "x^2-y^2+z*w", &NurbsOptions::default());
     assert!(n.curves.is_empty());
     assert_eq!(n.left.len(), 2, "{:?}", n.left);
-    assert!(n.left.iter().all(|l| l.reason.contains("plane at infinity")));
+    assert!(n
+        .left
+        .iter()
+        .all(|l| l.reason.contains("plane at infinity")));
+}
+
+/// A crunode at irrational parameters (Tu et al.'s case 8 with `x` and `w` swapped: the
+/// node at the origin, at `u = −1 ± √2`): the exact pieces are cut at rationals within 2⁻⁶⁰
+/// of them, so every piece ends at the node, to 10⁻¹², and stays exact.
+#[test]
+fn a_node_at_irrational_parameters_is_cut_beside_them() {
+    let (a, b) = ("w*y+z*x", "2*w*y+y^2-z^2+x^2");
+    let n = checked(a, b, &NurbsOptions::default());
+    assert_eq!(n.curves.len(), 4, "{:?}", n.left);
+    assert!(
+        n.left.iter().all(|l| l.reason.contains("within 2^-60")),
+        "{:?}",
+        n.left
+    );
+    assert_eq!(n.left.len(), 2);
+    let curve = parameterize(&quadric(a), &quadric(b)).unwrap();
+    let node = affine(&curve.singular_points[0].point);
+    for c in &n.curves {
+        let near = end_points(c)
+            .iter()
+            .map(|e| (0..3).map(|i| (e[i] - node[i]).abs()).fold(0.0, f64::max))
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            near < 1e-12,
+            "no end at the node {node:?}: {:?}",
+            end_points(c)
+        );
+    }
 }

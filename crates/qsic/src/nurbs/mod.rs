@@ -11,8 +11,8 @@
 //!
 //! **Method.** A rational component `X(u) = (x, y, z, w)(u)` of degree `n` (the largest
 //! degree of its coordinates) is a binary form on ℝP¹. Its real points in ℝ³ are cut into
-//! pieces: at the real roots of `w` (infinity), and at the rational parameters of its real
-//! singular points. A piece between two roots of `w` is unbounded at both ends: it is clipped
+//! pieces: at the real roots of `w` (infinity), and at the parameters of its real singular
+//! points in ℝ³ (an irrational one replaced by a rational within 2⁻⁶⁰, with a remark). A piece between two roots of `w` is unbounded at both ends: it is clipped
 //! to the box — along the arc of ℝP¹ the curve first enters the box at the first real root
 //! of the six face polynomials `x_c − L·w` (`L` a face of the box), and leaves it for good at
 //! the last; the piece runs from a rational parameter just before the first to one just after
@@ -555,6 +555,10 @@ fn singular_cuts(curve: &Curve, x: &PointPoly, n: usize) -> (Vec<ParamPoint>, Ve
     let mut cuts: Vec<ParamPoint> = Vec::new();
     let mut remarks = Vec::new();
     for sp in &curve.singular_points {
+        if sp.point[3].is_zero() {
+            // at infinity: the pieces end there anyway, at the roots of w
+            continue;
+        }
         match crate::param::sample::plane::params_of_point(x, n, &sp.point) {
             Ok(values) => {
                 for v in values {
@@ -562,10 +566,21 @@ fn singular_cuts(curve: &Curve, x: &PointPoly, n: usize) -> (Vec<ParamPoint>, Ve
                         ParamValue::Infinity => cuts.push(infinity()),
                         ParamValue::Finite(u) => match rational_value(&u) {
                             Some(u) => cuts.push(finite(u)),
-                            None => remarks.push(format!(
-                                "a singular point at the irrational parameter u = {:.6}: not a cut",
-                                u.to_f64()
-                            )),
+                            None => {
+                                // an exact cut there would need control points over the
+                                // parameter's field: cut at a rational beside it instead
+                                let width = RBig::ONE / RBig::from(1u128 << 60);
+                                let near = match u.refined_interval(&width) {
+                                    RootInterval::Exact(v) => v,
+                                    RootInterval::Open(lo, hi) => (lo + hi) / RBig::from(2),
+                                };
+                                remarks.push(format!(
+                                    "a singular point at the irrational parameter u = {:.6}: \
+                                     cut at a rational parameter within 2^-60 of it",
+                                    u.to_f64()
+                                ));
+                                cuts.push(finite(near));
+                            }
                         },
                     }
                 }
