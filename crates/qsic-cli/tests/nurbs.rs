@@ -16,6 +16,16 @@ fn json(args: &[&str]) -> Value {
     serde_json::from_slice(&out.stdout).expect("one JSON object")
 }
 
+/// A curve's knot multiplicities.
+fn multiplicities(c: &Value) -> Vec<u64> {
+    c["multiplicities"]
+        .as_array()
+        .expect("multiplicities")
+        .iter()
+        .map(|v| v.as_u64().expect("an integer"))
+        .collect()
+}
+
 /// Viviani's curve: two exact quartic loops, rational control points, clamped knots.
 #[test]
 fn viviani_json_has_two_exact_quartics() {
@@ -26,12 +36,7 @@ fn viviani_json_has_two_exact_quartics() {
         assert_eq!(c["degree"], 4);
         assert_eq!(c["exact"], true);
         assert_eq!(c["bound"], 0.0);
-        let m: Vec<u64> = c["multiplicities"]
-            .as_array()
-            .expect("multiplicities")
-            .iter()
-            .map(|v| v.as_u64().expect("an integer"))
-            .collect();
+        let m = multiplicities(c);
         assert_eq!((m[0], m[m.len() - 1]), (5, 5));
         let poles = c["control_points"].as_array().expect("points").len() as u64;
         assert_eq!(poles, m.iter().sum::<u64>() - 5);
@@ -141,12 +146,7 @@ fn quartic_loops_are_approximated_within_the_tolerance() {
             let bound = c["bound"].as_f64().expect("a bound");
             let t: f64 = tolerance.parse().unwrap();
             assert!(bound > 0.0 && bound <= t, "{bound} > {t}");
-            let m: Vec<u64> = c["multiplicities"]
-                .as_array()
-                .expect("multiplicities")
-                .iter()
-                .map(|v| v.as_u64().expect("an integer"))
-                .collect();
+            let m = multiplicities(c);
             assert_eq!((m[0], m[m.len() - 1]), (8, 8));
             assert!(m[1..m.len() - 1].iter().all(|k| *k == 7));
             assert!(c["weights"].as_array().unwrap().iter().all(|w| w == "1"));

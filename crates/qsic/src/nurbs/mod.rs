@@ -473,17 +473,21 @@ pub fn nurbs_of_curve_within(
     // a branch whose fit failed is tried once more from a sample whose chords are within
     // 10⁻³ of the smallest such branch's size (between two points of the default sample
     // the branch may turn back on itself)
-    let mut retry: Vec<(usize, usize)> = Vec::new();
-    let mut finest: Option<f64> = None;
-    for (k, component) in approximated {
-        let pieces = match &sampled {
+    let approximate = |k: usize,
+                       component: usize,
+                       from: &Result<Sampled, Error>|
+     -> Result<approx::Approximated, Error> {
+        let pieces = match from {
             Ok(s) => &s.pieces,
             Err(e) => {
-                left.push(LeftOut {
-                    piece: Some(k),
-                    reason: format!("not approximated: its points were not sampled: {e}"),
-                });
-                continue;
+                return Ok(approx::Approximated {
+                    curves: Vec::new(),
+                    left: vec![LeftOut {
+                        piece: Some(k),
+                        reason: format!("not approximated: its points were not sampled: {e}"),
+                    }],
+                    failed: None,
+                })
             }
         };
         let input = approx::PieceInput {
@@ -495,7 +499,12 @@ pub fn nurbs_of_curve_within(
             bounds: &bounds,
             tolerance: options.tolerance,
         };
-        let done = approx::approximate_piece(&input, work)?;
+        approx::approximate_piece(&input, work)
+    };
+    let mut retry: Vec<(usize, usize)> = Vec::new();
+    let mut finest: Option<f64> = None;
+    for (k, component) in approximated {
+        let done = approximate(k, component, &sampled)?;
         match done.failed {
             Some(size) if size > 0.0 => {
                 finest = Some(finest.map_or(size, |f| f.min(size)));
@@ -516,27 +525,9 @@ pub fn nurbs_of_curve_within(
         if let Err(e @ Error::BudgetExceeded { .. }) = again {
             return Err(e);
         }
+        let from = if again.is_ok() { &again } else { &sampled };
         for (k, component) in retry {
-            let pieces = match (&again, &sampled) {
-                (Ok(s), _) | (Err(_), Ok(s)) => &s.pieces,
-                (Err(e), Err(_)) => {
-                    left.push(LeftOut {
-                        piece: Some(k),
-                        reason: format!("not approximated: its points were not sampled: {e}"),
-                    });
-                    continue;
-                }
-            };
-            let input = approx::PieceInput {
-                piece: k,
-                component,
-                sampled: &pieces[k],
-                a,
-                b,
-                bounds: &bounds,
-                tolerance: options.tolerance,
-            };
-            let done = approx::approximate_piece(&input, work)?;
+            let done = approximate(k, component, from)?;
             curves.extend(done.curves);
             left.extend(done.left);
         }
