@@ -19,8 +19,6 @@
 
 use qsic_algebra::{IBig, RBig, UBig};
 
-use super::bezier::binomial;
-
 /// A quadric's matrix as integers (a positive multiple of the exact matrix) and the square
 /// of the Frobenius norm of its 3×3 block.
 #[derive(Clone, Debug)]
@@ -100,9 +98,28 @@ fn homogeneous(points: &[[f64; 3]]) -> (Vec<[IBig; 4]>, IBig) {
     (out, w)
 }
 
+/// `C(n, k)` for the small degrees of the segments (`n ≤ 60`: no overflow in `u64`).
+fn small_binomial(n: usize, k: usize) -> u64 {
+    debug_assert!(n <= 60);
+    (0..k).fold(1u64, |c, i| c * (n - i) as u64 / (i + 1) as u64)
+}
+
+fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
+}
+
 /// The square of the proved distance bound of the Bézier segment with control points
 /// `points` to the quadric `q` (module docs), or `None` when the certificate does not hold
 /// (the gradient may vanish on the segment, or `f` is too large for its gradient there).
+///
+/// In integers: with `P̃ⱼ = Vⱼ/W` and `L` a common multiple of the `C(2n, k)`, the sums
+/// `F′ₖ = |Σ C(n,i)C(n,j)·VᵢᵀMVⱼ|·L/C(2n,k)` and `G′ₖ = Σ C(n,i)C(n,j)·(MVᵢ)₃·(MVⱼ)₃·L/C(2n,k)`
+/// give `F = max F′/(LW²)` and `E = 4 min G′/(LW²)`, so `E² > 16N²F²` is `G′² > N²F′²` and
+/// the bound's square `4F²/E` is `F′²/(LW²G′)`; the terms `(i, j)` and `(j, i)` are equal
+/// (`M` symmetric), counted once, twice over.
 pub(super) fn segment_bound(q: &ExactQuadric, points: &[[f64; 3]]) -> Option<RBig> {
     let n = points.len().checked_sub(1)?;
     let (v, w) = homogeneous(points);
@@ -110,40 +127,44 @@ pub(super) fn segment_bound(q: &ExactQuadric, points: &[[f64; 3]]) -> Option<RBi
         .iter()
         .map(|p| std::array::from_fn(|i| (0..4).map(|j| &q.m[i][j] * &p[j]).sum()))
         .collect();
-    let binom: Vec<IBig> = (0..=n).map(|i| binomial(n, i)).collect();
-    let w2 = RBig::from(&w * &w);
-    let mut f_max = RBig::ZERO;
-    let mut e_min: Option<RBig> = None;
+    let binom: Vec<u64> = (0..=n).map(|i| small_binomial(n, i)).collect();
+    let outer: Vec<u64> = (0..=2 * n).map(|k| small_binomial(2 * n, k)).collect();
+    let l = outer.iter().fold(1u64, |l, c| l / gcd_u64(l, *c) * c);
+    let mut f_max = IBig::ZERO;
+    let mut g_min: Option<IBig> = None;
     for k in 0..=2 * n {
         let mut fk = IBig::ZERO;
         let mut gk = IBig::ZERO;
         for i in k.saturating_sub(n)..=k.min(n) {
             let j = k - i;
-            let c = &binom[i] * &binom[j];
+            if i > j {
+                continue;
+            }
+            let c = IBig::from(binom[i] * binom[j] * if i < j { 2 } else { 1 });
             let f: IBig = (0..4).map(|a| &v[i][a] * &mv[j][a]).sum();
             let g: IBig = (0..3).map(|a| &mv[i][a] * &mv[j][a]).sum();
             fk += &c * f;
             gk += c * g;
         }
-        let den = RBig::from(binomial(2 * n, k)) * &w2;
-        let fk = RBig::from(if fk < IBig::ZERO { -fk } else { fk }) / &den;
-        let ek = RBig::from(gk * IBig::from(4)) / den;
+        let scale = IBig::from(l / outer[k]);
+        let fk = if fk < IBig::ZERO { -fk } else { fk } * &scale;
+        let gk = gk * scale;
         if fk > f_max {
             f_max = fk;
         }
-        if e_min.as_ref().is_none_or(|e| ek < *e) {
-            e_min = Some(ek);
+        if g_min.as_ref().is_none_or(|g| gk < *g) {
+            g_min = Some(gk);
         }
     }
-    let e = e_min?;
-    if e <= RBig::ZERO {
+    let g = g_min?;
+    if g <= IBig::ZERO {
         return None;
     }
     let f2 = &f_max * &f_max;
-    if &e * &e <= RBig::from(IBig::from(16) * &q.frobenius2) * &f2 {
+    if &g * &g <= &q.frobenius2 * &f2 {
         return None;
     }
-    Some(RBig::from(4) * f2 / e)
+    Some(RBig::from(f2) / RBig::from(IBig::from(l) * &w * &w * g))
 }
 
 /// The smallest float at least `√x` (`x ≥ 0` exact).
