@@ -473,3 +473,34 @@ fn a_node_at_irrational_parameters_is_cut_beside_them() {
         );
     }
 }
+
+/// A small box far out on one branch of two hyperbolic cylinders, beyond every sampled
+/// point: the branch is followed out to it, and the one branch through it is clipped just
+/// outside it; the other three miss it.
+#[test]
+fn a_small_far_box_is_found_on_the_branch_through_it() {
+    let (a, b) = ("x^2-y^2-1", "y^2-z^2-1");
+    let far = BoxBounds {
+        lo: [100, 100, 100].map(RBig::from),
+        hi: [101, 101, 101].map(RBig::from),
+    };
+    let options = NurbsOptions {
+        bounds: Some(far.clone()),
+        tolerance: None,
+    };
+    let n = approximated(a, b, &options);
+    assert_eq!(n.curves.len(), 1, "{:?}", n.left);
+    let c = &n.curves[0];
+    assert_eq!(c.clipped, [true, true]);
+    for e in exact_ends(c) {
+        assert!(outside(&e, &far), "{:?} inside", affine(&e));
+    }
+    for e in end_points(c) {
+        assert!(excess(&e, &far) < 1e-4, "{e:?} far outside the box");
+    }
+    // the point of the branch at y = 100.5 lies on it
+    let y = 100.5f64;
+    let on = [(1.0 + y * y).sqrt(), y, (y * y - 1.0).sqrt()];
+    let d = distance_to_polyline(&on, &dense(c));
+    assert!(d < 1e-6, "{on:?} is {d:e} from the curve");
+}

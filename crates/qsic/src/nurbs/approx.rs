@@ -121,22 +121,33 @@ fn inside(x: &V3, lo: &V3, hi: &V3) -> bool {
 fn clip_start(pair: &Pair, points: &[V3], lo: &V3, hi: &V3) -> Option<Vec<V3>> {
     let local = |x: &V3| -> V3 { std::array::from_fn(|i| x[i] - pair.origin[i]) };
     let (llo, lhi) = (local(lo), local(hi));
-    let first = points.iter().position(|x| inside(x, &llo, &lhi))?;
     let diag = norm(&sub(hi, lo));
-    let mut out: Vec<V3> = points[first..].to_vec();
-    // a point outside: before the first inside, or followed outward along the curve
-    let mut outer = if first > 0 {
-        points[first - 1]
-    } else {
-        outward(
-            pair,
-            &points[0],
-            &points[1.min(points.len() - 1)],
-            &llo,
-            &lhi,
-            diag,
-        )?
+    // the branch beyond its first sampled point, followed outward past the box (coordinates
+    // are centred on the box: until it is farther from it than the start by the box's size)
+    let reach = norm(&points[0]) + 2.0 * norm(&llo).max(norm(&lhi)) + diag;
+    let mut trail = outward(
+        pair,
+        &points[0],
+        &points[1.min(points.len() - 1)],
+        reach,
+        diag,
+    );
+    trail.reverse();
+    trail.extend_from_slice(points);
+    let points = trail;
+    let (first, entry) = match points.iter().position(|x| inside(x, &llo, &lhi)) {
+        Some(k) => (k, None),
+        None => {
+            let (k, y) = entry_between(pair, &points, &llo, &lhi)?;
+            (k + 1, Some(y))
+        }
     };
+    // a point outside before the first inside: the trail ends beyond the box
+    let mut outer = *points[..first].last()?;
+    let mut out: Vec<V3> = entry
+        .into_iter()
+        .chain(points[first..].iter().copied())
+        .collect();
     // halve towards the box's surface; the inner points found are kept, nearest last
     let mut inner: Vec<V3> = Vec::new();
     for _ in 0..60 {
@@ -160,14 +171,87 @@ fn clip_start(pair: &Pair, points: &[V3], lo: &V3, hi: &V3) -> Option<Vec<V3>> {
     Some(start)
 }
 
-/// A point of the curve outside the box, followed from `p` away from `prev` in steps that
-/// double (at most 80): along the tangent, back onto the curve on the plane across it.
-fn outward(pair: &Pair, p: &V3, prev: &V3, lo: &V3, hi: &V3, diag: f64) -> Option<V3> {
+/// Whether the segment from `p` to `q`, its chord widened by a quarter of its length on
+/// every side (the curve between two sampled points bends off its chord), meets the box.
+fn near_box(p: &V3, q: &V3, lo: &V3, hi: &V3) -> bool {
+    let margin = norm(&sub(q, p)) / 4.0;
+    // the slab test: the parameters of the segment within each widened slab overlap
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for i in 0..3 {
+        let (a, b) = (lo[i] - margin, hi[i] + margin);
+        let d = q[i] - p[i];
+        if d == 0.0 {
+            if p[i] < a || p[i] > b {
+                return false;
+            }
+            continue;
+        }
+        let (u, v) = ((a - p[i]) / d, (b - p[i]) / d);
+        t0 = t0.max(u.min(v));
+        t1 = t1.min(u.max(v));
+    }
+    t0 <= t1
+}
+
+/// The distance from `x` to the segment from `p` to `q`.
+fn to_segment(x: &V3, p: &V3, q: &V3) -> f64 {
+    let d = sub(q, p);
+    let l2 = dot(&d, &d);
+    let t = if l2 > 0.0 {
+        (dot(&sub(x, p), &d) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    norm(&sub(x, &add_scaled(p, t, &d)))
+}
+
+/// Where the branch enters the box when none of its points lies inside: a point of the curve
+/// inside, found by halving along the curve (at most 40 times, keeping a half near the box)
+/// between the first two consecutive points near it, and the index of the first of them.
+fn entry_between(pair: &Pair, points: &[V3], lo: &V3, hi: &V3) -> Option<(usize, V3)> {
+    for k in 0..points.len().saturating_sub(1) {
+        let (mut p, mut q) = (points[k], points[k + 1]);
+        if !near_box(&p, &q, lo, hi) {
+            continue;
+        }
+        for _ in 0..40 {
+            let guess = add_scaled(&p, 0.5, &sub(&q, &p));
+            let Some(m) = pair.midpoint(&p, &q, &guess) else {
+                break;
+            };
+            if inside(&m, lo, hi) {
+                return Some((k, m));
+            }
+            // keep the half whose chord passes nearer the box's centre
+            let centre: V3 = std::array::from_fn(|i| lo[i] / 2.0 + hi[i] / 2.0);
+            if to_segment(&centre, &p, &m) <= to_segment(&centre, &m, &q) {
+                q = m;
+            } else {
+                p = m;
+            }
+            if !near_box(&p, &q, lo, hi) {
+                break;
+            }
+        }
+    }
+    None
+}
+
+/// Points of the curve followed from `p` away from `prev` in steps that double (at most 200
+/// steps): along the tangent, back onto the curve on the plane across it; until one lies
+/// farther than `reach` from the origin, or the curve cannot be followed.
+fn outward(pair: &Pair, p: &V3, prev: &V3, reach: f64, diag: f64) -> Vec<V3> {
+    let mut out = Vec::new();
     let mut p = *p;
     let mut dir = sub(&p, prev);
     let mut h = norm(&dir).max(diag * 1e-3);
-    for _ in 0..80 {
-        let t = pair.tangent(&p)?;
+    for _ in 0..200 {
+        if norm(&p) > reach {
+            break;
+        }
+        let Some(t) = pair.tangent(&p) else {
+            break;
+        };
         let t = if dot(&t, &dir) < 0.0 {
             t.map(|v| -v)
         } else {
@@ -178,15 +262,13 @@ fn outward(pair: &Pair, p: &V3, prev: &V3, lo: &V3, hi: &V3, diag: f64) -> Optio
             Some(next) if dot(&sub(&next, &p), &t) > 0.0 => {
                 dir = sub(&next, &p);
                 p = next;
-                if !inside(&p, lo, hi) {
-                    return Some(p);
-                }
+                out.push(p);
                 h *= 2.0;
             }
             _ => h /= 4.0,
         }
     }
-    None
+    out
 }
 
 /// The exact point `origin + y` as a homogeneous control point with weight 1.
@@ -239,8 +321,10 @@ pub(super) struct Approximated {
 /// # Errors
 /// [`Error::BudgetExceeded`]; a branch that cannot be fitted is left out with the reason.
 pub(super) fn approximate_piece(input: &PieceInput, work: &Budget) -> Result<Approximated, Error> {
-    let lo: V3 = input.bounds.lo.each_ref().map(|v| v.to_f64().value());
-    let hi: V3 = input.bounds.hi.each_ref().map(|v| v.to_f64().value());
+    // a box beyond the floats is the floats' own box (the branch leaves it all the same)
+    let clamp = |v: &RBig| v.to_f64().value().clamp(-f64::MAX / 4.0, f64::MAX / 4.0);
+    let lo: V3 = input.bounds.lo.each_ref().map(clamp);
+    let hi: V3 = input.bounds.hi.each_ref().map(clamp);
     let box_centre: V3 = std::array::from_fn(|i| lo[i] / 2.0 + hi[i] / 2.0);
     let mut curves = Vec::new();
     let mut left = Vec::new();
