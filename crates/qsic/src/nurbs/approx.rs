@@ -12,7 +12,7 @@
 
 use super::fit::{fit_branch, DEGREE};
 use super::geometry::{add_scaled, dot, norm, sub, Pair, V3};
-use super::{certify::sqrt_up, num, Accuracy, BoxBounds, LeftOut, NurbsCurve};
+use super::{certify::sqrt_up, clamped_knots, num, Accuracy, BoxBounds, LeftOut, NurbsCurve};
 use crate::error::Error;
 use crate::param::sample::SampledPiece;
 use crate::quadric::Quadric;
@@ -209,6 +209,7 @@ fn to_segment(x: &V3, p: &V3, q: &V3) -> f64 {
 /// inside, found by halving along the curve (at most 40 times, keeping a half near the box)
 /// between the first two consecutive points near it, and the index of the first of them.
 fn entry_between(pair: &Pair, points: &[V3], lo: &V3, hi: &V3) -> Option<(usize, V3)> {
+    let centre: V3 = std::array::from_fn(|i| lo[i] / 2.0 + hi[i] / 2.0);
     for k in 0..points.len().saturating_sub(1) {
         let (mut p, mut q) = (points[k], points[k + 1]);
         if !near_box(&p, &q, lo, hi) {
@@ -223,7 +224,6 @@ fn entry_between(pair: &Pair, points: &[V3], lo: &V3, hi: &V3) -> Option<(usize,
                 return Some((k, m));
             }
             // keep the half whose chord passes nearer the box's centre
-            let centre: V3 = std::array::from_fn(|i| lo[i] / 2.0 + hi[i] / 2.0);
             if to_segment(&centre, &p, &m) <= to_segment(&centre, &m, &q) {
                 q = m;
             } else {
@@ -273,6 +273,8 @@ fn outward(pair: &Pair, p: &V3, prev: &V3, reach: f64, diag: f64) -> Vec<V3> {
 
 /// The exact point `origin + y` as a homogeneous control point with weight 1.
 fn pole(origin: &V3, y: &V3) -> crate::param::Point {
+    // finite: the origin is the centre of finite points, and `fit` keeps only segments whose
+    // control points are all finite
     let exact = |o: f64, v: f64| {
         num(RBig::try_from(o).expect("finite") + RBig::try_from(v).expect("finite"))
     };
@@ -377,12 +379,7 @@ pub(super) fn approximate_piece(input: &PieceInput, work: &Budget) -> Result<App
         }
         match fit_branch(&pair, &local, tol, size, work) {
             Ok(fit) => {
-                let m = (fit.poles.len() - 1) / DEGREE;
-                let mut knots = vec![RBig::ZERO; DEGREE + 1];
-                for i in 1..m {
-                    knots.extend(std::iter::repeat_n(RBig::from(i), DEGREE));
-                }
-                knots.extend(std::iter::repeat_n(RBig::from(m), DEGREE + 1));
+                let knots = clamped_knots(DEGREE, (fit.poles.len() - 1) / DEGREE);
                 let curve = NurbsCurve {
                     piece: input.piece,
                     component: input.component,

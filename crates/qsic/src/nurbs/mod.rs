@@ -12,7 +12,8 @@
 //! **Method.** A rational component `X(u) = (x, y, z, w)(u)` of degree `n` (the largest
 //! degree of its coordinates) is a binary form on ℝP¹. Its real points in ℝ³ are cut into
 //! pieces: at the real roots of `w` (infinity), and at the parameters of its real singular
-//! points in ℝ³ (an irrational one replaced by a rational within 2⁻⁶⁰, with a remark). A piece between two roots of `w` is unbounded at both ends: it is clipped
+//! points in ℝ³ (an irrational one replaced by a rational within 2⁻⁶⁰, with a remark). A
+//! piece between two roots of `w` is unbounded at both ends: it is clipped
 //! to the box — along the arc of ℝP¹ the curve first enters the box at the first real root
 //! of the six face polynomials `x_c − L·w` (`L` a face of the box), and leaves it for good at
 //! the last; the piece runs from a rational parameter just before the first to one just after
@@ -177,14 +178,20 @@ impl NurbsCurve {
         if n == 0 || self.poles.len() < n + 1 || (self.poles.len() - 1) % n != 0 {
             return false;
         }
-        let m = self.segments();
-        let mut want = vec![RBig::ZERO; n + 1];
-        for i in 1..m {
-            want.extend(std::iter::repeat_n(RBig::from(i), n));
-        }
-        want.extend(std::iter::repeat_n(RBig::from(m), n + 1));
-        self.knots == want && self.poles.iter().all(|p| p[3].sign() == Sign::Positive)
+        self.knots == clamped_knots(n, self.segments())
+            && self.poles.iter().all(|p| p[3].sign() == Sign::Positive)
     }
+}
+
+/// The knots of `m` Bézier segments of degree `n` joined into one B-spline: `0, 1, …, m`,
+/// the ends of multiplicity `n + 1`, the others `n`.
+pub(crate) fn clamped_knots(n: usize, m: usize) -> Vec<RBig> {
+    let mut knots = vec![RBig::ZERO; n + 1];
+    for i in 1..m {
+        knots.extend(std::iter::repeat_n(RBig::from(i), n));
+    }
+    knots.extend(std::iter::repeat_n(RBig::from(m), n + 1));
+    knots
 }
 
 /// A real piece [`nurbs_of_curve`] gives no curve for, and why.
@@ -614,11 +621,7 @@ fn spline(r: &Rational, breaks: &[ParamPoint], clipped: [bool; 2]) -> Result<Nur
             m += 1;
         }
     }
-    let mut knots = vec![RBig::ZERO; n + 1];
-    for i in 1..m {
-        knots.extend(std::iter::repeat_n(RBig::from(i), n));
-    }
-    knots.extend(std::iter::repeat_n(RBig::from(m), n + 1));
+    let knots = clamped_knots(n, m);
     let ends = [breaks[0].clone(), breaks[breaks.len() - 1].clone()];
     let closed = order_key(&ends[0]) == order_key(&ends[1]);
     let c = NurbsCurve {
